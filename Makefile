@@ -1,0 +1,61 @@
+# HexBot toolchain: every set-up step, idempotent, for a fresh Debian machine.
+#
+#   make run    set up, then open the console on the embedded simulated cluster
+#   make test   set up, then lint, check firmware budgets and run the test suite
+#
+# Sub-steps: deps (Debian packages), venv (.venv + pip install -e .[dev]),
+# firmware (avr-gcc images).
+
+SHELL := /bin/bash
+PYTHON ?= python3
+VENV := .venv
+BIN := $(VENV)/bin
+STAMPS := .stamps
+
+# Debian packages the project needs: AVR toolchain, simavr library and headers
+# (our ATmega162 core links against it), avrdude, and what builds the Python
+# extension.
+APT_PACKAGES := gcc-avr avr-libc binutils-avr simavr libsimavr-dev libelf-dev \
+	avrdude pkg-config gcc make python3-venv python3-dev
+SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
+
+.PHONY: setup deps venv firmware run test lint clean
+
+setup: deps venv firmware
+
+deps:
+	@missing=$$(for p in $(APT_PACKAGES); do \
+		dpkg-query -W -f='$${Status}' $$p 2>/dev/null | grep -q 'ok installed' || echo $$p; done); \
+	if [ -n "$$missing" ]; then \
+		echo "installing Debian packages:" $$missing; \
+		$(SUDO) apt-get update -qq && \
+		$(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
+	else echo "Debian packages: all present"; fi
+
+# Reinstall when the packaging or the C sources of the simulator change.
+PY_BUILD_INPUTS := pyproject.toml setup.py $(wildcard hil_sim/core/*.c hil_sim/core/*.h)
+
+venv: $(STAMPS)/venv
+
+$(STAMPS)/venv: $(PY_BUILD_INPUTS)
+	@test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
+	$(BIN)/python -m pip install -q --upgrade pip
+	$(BIN)/python -m pip install -q -e '.[dev]'
+	@mkdir -p $(STAMPS) && touch $@
+
+firmware: deps
+	@if [ -f firmware/Makefile ]; then $(MAKE) --no-print-directory -C firmware all; fi
+
+run: setup
+	$(BIN)/hexbot --help
+
+lint: venv
+	$(BIN)/ruff check .
+
+test: setup lint
+	@if [ -f firmware/Makefile ]; then $(MAKE) --no-print-directory -C firmware check-size; fi
+	$(BIN)/python -m pytest
+
+clean:
+	rm -rf $(STAMPS) build *.egg-info
+	@if [ -f firmware/Makefile ]; then $(MAKE) --no-print-directory -C firmware clean; fi

@@ -1,0 +1,66 @@
+"""The ``hexbot`` command: one entry point, one subcommand per tool.
+
+Each subcommand lives in its own module, which provides
+``add_arguments(parser)`` and ``run(args) -> int``. Modules are imported
+only when their command runs, so a broken optional part (say, the simulator
+extension) does not stop the others from working.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+
+from hexbot import __version__
+from hexbot.errors import HexBotError
+
+# name -> (module, one-line help). Keep sorted by workflow, not alphabet.
+COMMANDS: dict[str, tuple[str, str]] = {
+    "codes": ("hexbot.protocol.cli_codes", "list the function codes of the HexBot protocol"),
+    "gen-header": (
+        "hexbot.protocol.cli_gen_header",
+        "generate firmware/include/hexbot_codes.h from the protocol table",
+    ),
+}
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(
+        prog="hexbot",
+        description="HexBot toolchain: console, simulator, flashing, planning.",
+    )
+    parser.add_argument("--version", action="version", version=f"hexbot {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND")
+    for name, (module_name, help_text) in COMMANDS.items():
+        p = sub.add_parser(name, help=help_text, description=help_text)
+        p.set_defaults(_module=module_name)
+        # Arguments are added lazily in main() for the chosen command only,
+        # except for --help of the top level, which needs names alone.
+    return parser
+
+
+def main(argv: list[str] | None = None) -> int:
+    argv = list(sys.argv[1:] if argv is None else argv)
+    parser = build_parser()
+    if not argv or argv[0].startswith("-") or argv[0] not in COMMANDS:
+        args = parser.parse_args(argv)
+        parser.print_help()
+        return 2 if argv else 0
+    name = argv[0]
+    module_name, help_text = COMMANDS[name]
+    module = importlib.import_module(module_name)
+    sub = argparse.ArgumentParser(prog=f"hexbot {name}", description=help_text)
+    module.add_arguments(sub)
+    args = sub.parse_args(argv[1:])
+    try:
+        return int(module.run(args) or 0)
+    except HexBotError as exc:
+        print(f"hexbot {name}: error: {exc}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        return 130
+
+
+if __name__ == "__main__":
+    sys.exit(main())

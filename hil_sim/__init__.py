@@ -1,0 +1,1 @@
+"""HIL simulator: firmware ELF images on simavr, UART/IR bus, hex-lattice plant."""

@@ -1,0 +1,1 @@
+"""Host side: Textual console, CLI tools, serial links."""

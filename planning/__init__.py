@@ -1,0 +1,1 @@
+"""Planners and lattice algorithms: hex reconfiguration, square-lattice locomotion."""

@@ -1,0 +1,1 @@
+"""The HexBot wire protocol: function codes, frame codecs, reply parser."""
