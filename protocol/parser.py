@@ -1,0 +1,372 @@
+"""Streaming parser for what modules send to the PC.
+
+Bytes arrive one at a time, possibly with noise, from several modules
+interleaved on the IR link or from one control board's debug port. The
+parser turns them into typed events and never raises on bad input: bytes
+that form nothing become a :class:`Garbage` event, emitted before the next
+valid event so that garbage never swallows it.
+
+Reply grammar (``\\n\\r`` = LF CR, as the firmware ends its lines)::
+
+    preamble   LF CR LF CR                        (sync only, no event)
+    prefix     ('M'|'S') [two-digit id] ': '      (applies to the next reply)
+    ack        'ACK' code LF CR                   code 'N' = did nothing,
+                                                  '~' = control board time-out
+    error      'ERR' code reason LF CR
+    status     'STA' id role localized x y yref error LF CR   (x, y signed bytes)
+    msg        'MSG' code a1 a2 a3 a4 LF CR       (control board debug port)
+    side       'Side: ' digit LF CR               (localization report)
+    yref       'Yref: ' digit LF CR
+    position   'Pos: ' sXX sYY LF CR
+    text       known phrase [tail] LF CR          (boot and status texts)
+
+Like pyserial's ``serial.threaded.Protocol`` the parser does no I/O: feed
+it bytes from any reader (pty, pyserial URL, capture file, simulator).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass, field
+
+from hexbot.protocol import wire
+from hexbot.protocol.codes import CODES, ErrorCode
+
+EOL = wire.EOL
+
+#: Phrases that start a text line; the firmware may append a short tail
+#: such as `` ID=03 FW=0.1.0``.
+KNOWN_TEXTS = (
+    "COMM. BOARD READY",
+    "CTR. BOARD READY",
+    "CTR. LISTENING",
+    "COMM. LISTENING",
+    "LOCALIZED",
+    "NOT LOCALIZED",
+    "RECEIVED",
+    "RF12 READY",
+)
+_TAIL_CHARS = re.compile(rb"[ A-Za-z0-9=._:+\-/]*")
+_MAX_TAIL = 40
+
+
+@dataclass(frozen=True)
+class Event:
+    raw: bytes = field(repr=False, compare=False)
+
+
+@dataclass(frozen=True)
+class Ack(Event):
+    code: int = 0
+    role: str | None = None  # 'M', 'S' or None without a prefix
+    module: int | None = None  # id from an addressed-mode prefix
+
+    @property
+    def did_nothing(self) -> bool:
+        return self.code == wire.UNUSED
+
+    @property
+    def timed_out(self) -> bool:
+        return self.code == wire.TIMEOUT
+
+    def describe(self) -> str:
+        if self.timed_out:
+            return "ACK ~ (control board time-out)"
+        if self.did_nothing:
+            return "ACK N (nothing done)"
+        fn = CODES.get(self.code)
+        return f"ACK {self.code} {fn.name if fn else '?'}"
+
+
+@dataclass(frozen=True)
+class ErrorReply(Event):
+    code: int = 0
+    reason: int = 0
+    role: str | None = None
+    module: int | None = None
+
+    def describe(self) -> str:
+        try:
+            why = ErrorCode(self.reason).name
+        except ValueError:
+            why = f"reason {self.reason}"
+        return f"ERR {self.code}: {why}"
+
+
+@dataclass(frozen=True)
+class StatusReport(Event):
+    module_id: int = 0
+    role: str = "-"
+    localized: bool = False
+    x: int = 0
+    y: int = 0
+    yref: int = 0
+    error: int = 0
+    prefix_role: str | None = None
+
+
+@dataclass(frozen=True)
+class ControlMessage(Event):
+    """``MSG`` on the control board's debug port: what it received."""
+
+    code: int = 0
+    args: tuple[int, ...] = ()
+
+
+@dataclass(frozen=True)
+class Text(Event):
+    phrase: str = ""  # one of KNOWN_TEXTS
+    tail: str = ""
+
+
+@dataclass(frozen=True)
+class SideReport(Event):
+    side: int = 0
+
+
+@dataclass(frozen=True)
+class YrefReport(Event):
+    yref: int = 0
+
+
+@dataclass(frozen=True)
+class PositionReport(Event):
+    x: int = 0
+    y: int = 0
+
+
+@dataclass(frozen=True)
+class Garbage(Event):
+    """Bytes that formed no reply (noise, collisions, truncated replies)."""
+
+
+# --- matchers: each returns (length, event) on a match, PARTIAL if the
+# buffer is a proper prefix of a possible match, or None. -----------------
+
+PARTIAL = "partial"
+_PREFIX = re.compile(rb"([MS])(\d\d)?: ")
+
+
+def _fixed(buf: bytes, head: bytes, nbody: int) -> bytes | str | None:
+    """Match head + nbody arbitrary bytes + EOL; return the body bytes."""
+    n = min(len(buf), len(head))
+    if buf[:n] != head[:n]:
+        return None
+    eol_at = len(head) + nbody
+    got = buf[eol_at : eol_at + len(EOL)]
+    if got != EOL[: len(got)]:
+        return None
+    if len(buf) < eol_at + len(EOL):
+        return PARTIAL
+    return buf[len(head) : eol_at]
+
+
+def _signed(b: int) -> int:
+    return b - 256 if b > 127 else b
+
+
+class ReplyParser:
+    """Feed bytes, get events. ``flush()`` gives up on a half reply (call it
+    when the line has been quiet, e.g. one second)."""
+
+    def __init__(self) -> None:
+        self._buf = bytearray()
+        self._garbage = bytearray()
+        self._role: str | None = None
+        self._module: int | None = None
+
+    def feed(self, data: bytes | Iterable[int]) -> list[Event]:
+        self._buf.extend(data)
+        return list(self._drain(final=False))
+
+    def flush(self) -> list[Event]:
+        """Emit whatever is pending (a half reply becomes garbage)."""
+        events = list(self._drain(final=True))
+        if self._buf:
+            self._garbage.extend(self._buf)
+            self._buf.clear()
+        if self._garbage:
+            events.append(self._take_garbage())
+        return events
+
+    @property
+    def pending(self) -> bytes:
+        return bytes(self._buf)
+
+    def _take_garbage(self) -> Garbage:
+        g = Garbage(raw=bytes(self._garbage))
+        self._garbage.clear()
+        return g
+
+    def _drain(self, final: bool) -> Iterator[Event]:
+        while self._buf:
+            result = self._match(bytes(self._buf))
+            if result == PARTIAL:
+                if not final:
+                    return
+                result = None
+            if result is None:
+                self._garbage.append(self._buf.pop(0))
+                continue
+            length, event = result
+            del self._buf[:length]
+            if self._garbage:
+                yield self._take_garbage()
+            if event is not None:
+                yield event
+
+    def _match(self, buf: bytes):  # noqa: C901 - one branch per reply kind, kept flat
+        partial = False
+        for matcher in (
+            self._m_preamble,
+            self._m_prefix,
+            self._m_ack,
+            self._m_err,
+            self._m_status,
+            self._m_msg,
+            self._m_report,
+            self._m_text,
+            self._m_blank,
+        ):
+            r = matcher(buf)
+            if r == PARTIAL:
+                partial = True
+            elif r is not None:
+                return r
+        return PARTIAL if partial else None
+
+    # Each matcher below recognises one reply kind.
+
+    def _m_preamble(self, buf: bytes):
+        if buf.startswith(wire.PREAMBLE):
+            self._role = self._module = None
+            return len(wire.PREAMBLE), None
+        return PARTIAL if wire.PREAMBLE.startswith(buf) else None
+
+    def _m_blank(self, buf: bytes):
+        # Stray LF / CR between replies are line noise of the text protocol.
+        return (1, None) if buf[:1] in (b"\n", b"\r") and not wire.PREAMBLE.startswith(buf) else None
+
+    def _m_prefix(self, buf: bytes):
+        m = _PREFIX.match(buf)
+        if m:
+            self._role = m.group(1).decode()
+            self._module = int(m.group(2)) if m.group(2) else None
+            return m.end(), None
+        # Partial: "M", "M:", "M0", "M03", "M03:"
+        if re.fullmatch(rb"[MS](\d{0,2}|\d\d:|:)", buf):
+            return PARTIAL
+        return None
+
+    def _m_ack(self, buf: bytes):
+        body = _fixed(buf, b"ACK", 1)
+        if body is None or body == PARTIAL:
+            return body
+        return 6, Ack(raw=buf[:6], code=body[0], role=self._role, module=self._module)
+
+    def _m_err(self, buf: bytes):
+        body = _fixed(buf, b"ERR", 2)
+        if body is None or body == PARTIAL:
+            return body
+        ev = ErrorReply(raw=buf[:7], code=body[0], reason=body[1], role=self._role,
+                        module=self._module)
+        return 7, ev
+
+    def _m_status(self, buf: bytes):
+        body = _fixed(buf, b"STA", 7)
+        if body is None or body == PARTIAL:
+            return body
+        ident, role, loc, x, y, yref, err = body
+        if chr(role) not in "MS-" or loc > 1 or yref > 5 or ident > wire.MAX_MODULE_ID:
+            return None
+        ev = StatusReport(raw=buf[:12], module_id=ident, role=chr(role), localized=bool(loc),
+                          x=_signed(x), y=_signed(y), yref=yref, error=err,
+                          prefix_role=self._role)
+        return 12, ev
+
+    def _m_msg(self, buf: bytes):
+        body = _fixed(buf, b"MSG", 5)
+        if body is None or body == PARTIAL:
+            return body
+        return 10, ControlMessage(raw=buf[:10], code=body[0], args=tuple(body[1:]))
+
+    _REPORTS = (
+        (re.compile(rb"Side: ([1-6])\n\r"), b"Side: 6\n\r",
+         lambda m, raw: SideReport(raw=raw, side=int(m.group(1)))),
+        (re.compile(rb"Yref: ([0-5])\n\r"), b"Yref: 5\n\r",
+         lambda m, raw: YrefReport(raw=raw, yref=int(m.group(1)))),
+        (re.compile(rb"Pos: ([+-]\d\d)([+-]\d\d)\n\r"), b"Pos: +00+00\n\r",
+         lambda m, raw: PositionReport(raw=raw, x=int(m.group(1)), y=int(m.group(2)))),
+    )
+
+    def _m_report(self, buf: bytes):
+        partial = False
+        for pattern, template, build in self._REPORTS:
+            m = pattern.match(buf)
+            if m:
+                return m.end(), build(m, buf[: m.end()])
+            head = template.split(b" ")[0]
+            n = min(len(buf), len(head))
+            if buf[:n] == head[:n] and len(buf) < len(template) and pattern.match(
+                buf + template[len(buf) :]
+            ):
+                partial = True
+        return PARTIAL if partial else None
+
+    def _m_text(self, buf: bytes):
+        partial = False
+        for phrase in KNOWN_TEXTS:
+            p = phrase.encode()
+            if len(buf) < len(p):
+                if p.startswith(buf):
+                    partial = True
+                continue
+            if not buf.startswith(p):
+                continue
+            rest = buf[len(p) :]
+            tail = _TAIL_CHARS.match(rest[:_MAX_TAIL]).group(0)
+            after = rest[len(tail) :]
+            if after.startswith(EOL):
+                end = len(p) + len(tail) + len(EOL)
+                return end, Text(raw=buf[:end], phrase=phrase, tail=tail.decode().strip())
+            if (after == b"" or after == EOL[:1]) and len(tail) < _MAX_TAIL:
+                partial = True
+        return PARTIAL if partial else None
+
+
+def parse_all(data: bytes) -> list[Event]:
+    """Parse a complete capture (flushes at the end)."""
+    parser = ReplyParser()
+    return parser.feed(data) + parser.flush()
+
+
+# --- encoders of replies, used by tests and the docs ----------------------
+
+
+def reply_ack(code: int, role: str | None = None, module: int | None = None) -> bytes:
+    return wire.PREAMBLE + _prefix(role, module) + b"ACK" + bytes([code]) + EOL
+
+
+def reply_error(code: int, reason: int, role: str | None = None,
+                module: int | None = None) -> bytes:
+    return wire.PREAMBLE + _prefix(role, module) + b"ERR" + bytes([code, reason]) + EOL
+
+
+def reply_status(module_id: int, role: str, localized: bool, x: int, y: int, yref: int,
+                 error: int, prefix_role: str | None = None) -> bytes:
+    body = bytes([module_id, ord(role), int(localized), x & 0xFF, y & 0xFF, yref, error])
+    return wire.PREAMBLE + _prefix(prefix_role, module_id if prefix_role else None) + b"STA" + \
+        body + EOL
+
+
+def reply_msg(code: int, args: Iterable[int]) -> bytes:
+    args = list(args)
+    return b"MSG" + bytes([code, *args]) + EOL
+
+
+def _prefix(role: str | None, module: int | None) -> bytes:
+    if role is None:
+        return b""
+    ident = f"{module:02d}" if module is not None else ""
+    return f"{role}{ident}: ".encode()

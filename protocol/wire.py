@@ -1,0 +1,43 @@
+"""Byte-level constants of the HexBot links (Table 3-8, Appendix A/B).
+
+Timing: every delay argument is in ticks of 10 ms (Timer0, prescaler 64 at
+1 MHz). Baud rates: IR link (comm UART1) 300, board-to-board (UART0) 4800,
+control board debug port (UART1) 4800; all 8N1.
+"""
+
+START = ord("*")  # first byte of every message
+END = ord("#")  # last byte of PC and board-to-board messages
+UNUSED = ord("N")  # filler for unused argument bytes; also the "did nothing" ACK
+TIMEOUT = ord("~")  # ACK code when the control board did not echo in 2.5 s
+
+PC_FRAME_LEN = 11  # '*' B1..B9 '#'
+PC_ARGS = 8  # B2..B9
+BOARD_FRAME_LEN = 7  # '*' code a1..a4 '#'
+BOARD_ARGS = 4
+LOC_FRAME_LEN = 8  # '*' sX X X sY Y Y S
+
+PREAMBLE = b"\n\r\n\r"  # LF CR LF CR before every reply
+EOL = b"\n\r"  # the firmware ends lines LF CR, as the thesis does
+
+BAUD_IR = 300
+BAUD_BOARD = 4800
+BAUD_DEBUG = 4800
+TICK_S = 0.010
+
+CONTROL_ACK_TIMEOUT_TICKS = 250  # 2.5 s for the control board's echo
+SUBSTRATE_ACK_DELAY_TICKS = 100  # thesis: the substrate waits 1 s (legacy mode)
+ACK_SLOT_TICKS = 50  # addressed mode: module at rank r answers after r slots
+
+MAX_MODULE_ID = 63  # DIP switches PC0..PC5; PC6, PC7 must be off
+LOC_COORD_LIMIT = 99  # MSG1 carries two decimal digits per coordinate
+
+FUSE_LOW = 0x62  # Table 3-6: internal RC 8 MHz, CKDIV8 -> 1 MHz
+FUSE_HIGH = 0xD9  # JTAG off, SPIEN on, BOOTSZ=00
+FUSE_EXTENDED = 0xFF  # BOD off
+SIGNATURE = bytes((0x1E, 0x94, 0x04))  # ATmega162
+F_CPU = 1_000_000
+
+
+def byte_seconds(baud: int, bits: int = 10) -> float:
+    """Time on the wire of one 8N1 byte (start + 8 data + stop)."""
+    return bits / baud
