@@ -159,7 +159,12 @@ def _fixed(buf: bytes, head: bytes, nbody: int) -> bytes | str | None:
         return None
     if len(buf) < eol_at + len(EOL):
         return PARTIAL
-    return buf[len(head) : eol_at]
+    body = buf[len(head) : eol_at]
+    # No valid reply body holds a whole preamble: one inside means the "head"
+    # was noise and a real reply starts there, which must not be swallowed.
+    if wire.PREAMBLE in body:
+        return None
+    return body
 
 
 def _signed(b: int) -> int:
@@ -246,7 +251,9 @@ class ReplyParser:
 
     def _m_blank(self, buf: bytes):
         # Stray LF / CR between replies are line noise of the text protocol.
-        return (1, None) if buf[:1] in (b"\n", b"\r") and not wire.PREAMBLE.startswith(buf) else None
+        if buf[:1] in (b"\n", b"\r") and not wire.PREAMBLE.startswith(buf):
+            return 1, None
+        return None
 
     def _m_prefix(self, buf: bytes):
         m = _PREFIX.match(buf)
