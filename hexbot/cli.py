@@ -20,7 +20,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "codes": ("hexbot.protocol.cli_codes", "list the function codes of the HexBot protocol"),
     "gen-header": (
         "hexbot.protocol.cli_gen_header",
-        "generate firmware/include/hexbot_codes.h from the protocol table",
+        "regenerate the firmware header and the docs table from the protocol table",
     ),
 }
 

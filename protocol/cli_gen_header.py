@@ -1,9 +1,10 @@
-"""``hexbot gen-header``: write firmware/include/hexbot_codes.h."""
+"""``hexbot gen-header``: regenerate firmware/include/hexbot_codes.h and the
+function table of docs/protocol.md from protocol/codes.py."""
 
 import argparse
 from pathlib import Path
 
-from hexbot.protocol import header
+from hexbot.protocol import docs_table, header
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -15,10 +16,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     if args.check:
-        if header.is_stale(args.output):
-            print(f"{args.output} is stale: run `hexbot gen-header`")
-            return 1
-        print(f"{args.output} is up to date")
-        return 0
+        stale = [p for p, s in ((args.output, header.is_stale(args.output)),
+                                 (docs_table.DOC_PATH, docs_table.is_stale())) if s]
+        for path in stale:
+            print(f"{path} is stale: run `hexbot gen-header`")
+        return 1 if stale else 0
     print(f"wrote {header.write(args.output)}")
+    print(f"wrote {docs_table.write()}")
     return 0

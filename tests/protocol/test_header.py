@@ -42,3 +42,11 @@ def test_header_compiles_for_the_atmega162(tmp_path):
          "-c", str(src), "-o", str(tmp_path / "t.o")],
         check=True,
     )
+
+
+def test_docs_function_table_is_current():
+    from hexbot.protocol import docs_table
+
+    assert not docs_table.is_stale(), "run `hexbot gen-header` and commit docs/protocol.md"
+    table = docs_table.render_table()
+    assert "| 21 | `MCW(i, t1, t2, t3)` | control |" in table
