@@ -1,0 +1,145 @@
+"""Reading configurations from files.
+
+Two formats:
+
+* **grid text** (``*.txt`` and anything not ``*.toml``): rows of 0/1 exactly
+  as the thesis writes its matrices, row 1 on top; the cell in row ``r``,
+  column ``c`` of an ``R``-row grid is the axial cell ``(c - 1, R - r)``.
+  MATLAB decorations are tolerated (``I = [``, ``]``, ``;``, ``...``), and
+  ``#`` or ``%`` start a comment. Modules are numbered 1..n in reading order.
+* **TOML**: ``cells = [[x, y], ...]`` (numbered in reading order), or
+  ``[[module]]`` tables with ``id``, ``cell = [x, y]`` and optional
+  ``orientation`` (0..5, the module's Yref).
+
+Every error names the file, the line and the problem.
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from pathlib import Path
+
+from hexbot.errors import ScenarioError
+from hexbot.planning.configuration import Configuration, Module
+from hexbot.planning.hexlattice import Cell
+
+_ASSIGN = re.compile(r"^\s*[A-Za-z_]\w*\s*=")
+
+
+def parse_grid(text: str, source: str = "<grid>") -> Configuration:
+    """Parse 0/1 grid rows (see the module docstring)."""
+    rows: list[list[int]] = []
+    lines: list[int] = []
+    for lineno, raw in enumerate(text.splitlines(), start=1):
+        line = re.split(r"[#%]", raw, maxsplit=1)[0]
+        line = _ASSIGN.sub("", line)
+        line = line.replace("[", " ").replace("]", " ").replace("...", " ")
+        for chunk in line.split(";"):
+            tokens = chunk.replace(",", " ").split()
+            if not tokens:
+                continue
+            row = []
+            for token in tokens:
+                if token not in ("0", "1"):
+                    raise ScenarioError(
+                        f"{source}:{lineno}: expected 0 or 1, found {token!r}"
+                    )
+                row.append(int(token))
+            if rows and len(row) != len(rows[0]):
+                raise ScenarioError(
+                    f"{source}:{lineno}: row has {len(row)} columns, "
+                    f"row 1 (line {lines[0]}) has {len(rows[0])}"
+                )
+            rows.append(row)
+            lines.append(lineno)
+    if not rows:
+        raise ScenarioError(f"{source}: no grid rows found")
+    height = len(rows)
+    cells = {(c, height - 1 - r) for r, row in enumerate(rows) for c, v in enumerate(row) if v}
+    if not cells:
+        raise ScenarioError(f"{source}: the grid holds no module (all zeros)")
+    return Configuration.from_cells(cells)
+
+
+def _toml_line(text: str, needle: str) -> int:
+    for lineno, line in enumerate(text.splitlines(), start=1):
+        if needle in line:
+            return lineno
+    return 1
+
+
+def _as_cell(value: object, where: str) -> Cell:
+    if (
+        not isinstance(value, list)
+        or len(value) != 2
+        or not all(isinstance(v, int) and not isinstance(v, bool) for v in value)
+    ):
+        raise ScenarioError(f"{where}: a cell must be [x, y] with two integers, got {value!r}")
+    return (value[0], value[1])
+
+
+def parse_toml(text: str, source: str = "<toml>") -> Configuration:
+    """Parse a TOML cell list (see the module docstring)."""
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ScenarioError(f"{source}: {exc}") from exc
+    if "cells" in data and "module" in data:
+        raise ScenarioError(f"{source}: give either 'cells' or [[module]] tables, not both")
+    if "cells" in data:
+        cells = data["cells"]
+        where = f"{source}:{_toml_line(text, 'cells')}"
+        if not isinstance(cells, list) or not cells:
+            raise ScenarioError(f"{where}: 'cells' must be a non-empty list of [x, y]")
+        parsed = [_as_cell(c, where) for c in cells]
+        dup = {c for c in parsed if parsed.count(c) > 1}
+        if dup:
+            raise ScenarioError(f"{where}: cell {sorted(dup)[0]} listed twice")
+        return Configuration.from_cells(parsed)
+    modules = data.get("module")
+    if not isinstance(modules, list) or not modules:
+        raise ScenarioError(f"{source}: expected 'cells = [...]' or [[module]] tables")
+    out: dict[Cell, Module] = {}
+    ids: set[int] = set()
+    for k, entry in enumerate(modules, start=1):
+        where = f"{source}: [[module]] #{k}"
+        if not isinstance(entry, dict) or "id" not in entry or "cell" not in entry:
+            raise ScenarioError(f"{where}: needs 'id' and 'cell'")
+        mid, orientation = entry["id"], entry.get("orientation", 0)
+        if not isinstance(mid, int) or not 1 <= mid <= 63:
+            raise ScenarioError(f"{where}: id must be an integer 1..63 (DIP switches), got {mid!r}")
+        if not isinstance(orientation, int) or not 0 <= orientation <= 5:
+            raise ScenarioError(f"{where}: orientation must be 0..5, got {orientation!r}")
+        cell = _as_cell(entry["cell"], where)
+        if mid in ids:
+            raise ScenarioError(f"{where}: module id {mid} used twice")
+        if cell in out:
+            raise ScenarioError(f"{where}: cell {cell} holds two modules")
+        ids.add(mid)
+        out[cell] = Module(mid, orientation)
+    return Configuration(out)
+
+
+def load_configuration(path: str | Path) -> Configuration:
+    """Read a configuration file; the format follows the suffix (``.toml`` or grid text)."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise ScenarioError(f"{path}: cannot read: {exc.strerror or exc}") from exc
+    if path.suffix.lower() == ".toml":
+        return parse_toml(text, str(path))
+    return parse_grid(text, str(path))
+
+
+def format_grid(cells: set[Cell] | frozenset[Cell]) -> str:
+    """Cells as grid text with the smallest bounding box (origin lost, shape kept)."""
+    xs = [x for x, _ in cells]
+    ys = [y for _, y in cells]
+    x0, y0 = min(xs), min(ys)
+    height, width = max(ys) - y0 + 1, max(xs) - x0 + 1
+    rows = [["0"] * width for _ in range(height)]
+    for x, y in cells:
+        rows[height - 1 - (y - y0)][x - x0] = "1"
+    return "\n".join(" ".join(r) for r in rows) + "\n"

@@ -1,0 +1,242 @@
+"""Geometry of the hexagonal lattice in the thesis' axial coordinates.
+
+Table 4-1 of the thesis: a cell is ``(x, y)``; its six sides are numbered
+1..6 clockwise starting at the upper left, and side ``s`` touches the
+neighbour ``(x, y) + SIDE_OFFSETS[s]``. Joint ``j`` (a vertex) sits between
+sides ``j-1`` and ``j``. The hexagons are flat-topped: x grows to the right
+(and half a cell up), y grows straight up (see :func:`cartesian`).
+
+The rotation move set is Table 4-3, kept here literally (letters A..L of
+Fig. 4-30) and turned into :class:`RotationRule` objects; a test checks the
+literal table against its rotational symmetry.
+
+The MATLAB listings store a configuration as a 0/1 matrix, row 1 on top:
+the cell in row ``r``, column ``c`` of an ``R``-row matrix is the axial cell
+``(c - 1, R - r)`` (``HexActuate``'s "Conversion to Hex coordinates").
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+from typing import Literal
+
+Cell = tuple[int, int]
+Direction = Literal["CW", "CCW"]
+
+SIDES = (1, 2, 3, 4, 5, 6)
+JOINTS = SIDES
+
+#: Table 4-1: neighbour offset for each side.
+SIDE_OFFSETS: dict[int, Cell] = {
+    1: (-1, 1),
+    2: (0, 1),
+    3: (1, 0),
+    4: (1, -1),
+    5: (0, -1),
+    6: (-1, 0),
+}
+_OFFSET_TO_SIDE = {off: s for s, off in SIDE_OFFSETS.items()}
+
+
+def wrap(index: int) -> int:
+    """Side or joint number modulo 6, in 1..6."""
+    return (index - 1) % 6 + 1
+
+
+def facing_side(side: int) -> int:
+    """The side of the neighbour that touches ``side`` (Table 4-1: s + 3 mod 6)."""
+    return wrap(side + 3)
+
+
+def neighbor(cell: Cell, side: int) -> Cell:
+    dx, dy = SIDE_OFFSETS[wrap(side)]
+    return (cell[0] + dx, cell[1] + dy)
+
+
+def neighbors(cell: Cell) -> list[Cell]:
+    """The six neighbours in side order 1..6 (``HexNe``)."""
+    x, y = cell
+    return [(x + dx, y + dy) for dx, dy in SIDE_OFFSETS.values()]
+
+
+def side_towards(a: Cell, b: Cell) -> int | None:
+    """The side of ``a`` that touches ``b``, or None when they are not adjacent."""
+    return _OFFSET_TO_SIDE.get((b[0] - a[0], b[1] - a[1]))
+
+
+def ring_cell(cell: Cell, side: int) -> Cell:
+    """The second-ring cell between the neighbours on ``side`` and ``side + 1``.
+
+    These are G..L of Fig. 4-30: G between A and B, ..., L between F and A.
+    """
+    return neighbor(neighbor(cell, side), side + 1)
+
+
+def distance(a: Cell, b: Cell) -> int:
+    """Lattice distance: the fewest neighbour steps from ``a`` to ``b``."""
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    return (abs(dx) + abs(dy) + abs(dx + dy)) // 2
+
+
+def rotate_cell(cell: Cell, steps: int, center: Cell = (0, 0)) -> Cell:
+    """Rotate a cell about ``center`` by ``steps`` sixth-turns clockwise."""
+    dx, dy = cell[0] - center[0], cell[1] - center[1]
+    for _ in range(steps % 6):
+        # one sixth-turn clockwise maps side s to side s+1: (dx, dy) -> (dx + dy, -dx)
+        dx, dy = dx + dy, -dx
+    return (center[0] + dx, center[1] + dy)
+
+
+# --- Cartesian geometry (MATLAB ``Hex``) -------------------------------------
+
+_YSCALE = 1 / math.sin(math.pi / 3)
+_XSHEAR = math.tan(math.pi / 6)
+CIRCUMRADIUS = 2 / 3
+
+
+def cartesian(cell: Cell) -> tuple[float, float]:
+    """Centre of a cell in the plane, as ``Hex`` of Appendix C places it."""
+    x, y = cell
+    return (float(x), y * _YSCALE + x * _XSHEAR)
+
+
+def vertices(cell: Cell) -> list[tuple[float, float]]:
+    """The six corners, corner ``j`` being joint ``j`` (1 = left, then clockwise)."""
+    cx, cy = cartesian(cell)
+    a, b = 1 / 3, 1 / (3 * math.tan(math.pi / 6))
+    return [
+        (cx - 2 * a, cy),
+        (cx - a, cy + b),
+        (cx + a, cy + b),
+        (cx + 2 * a, cy),
+        (cx + a, cy - b),
+        (cx - a, cy - b),
+    ]
+
+
+# --- MATLAB matrix form ------------------------------------------------------
+
+
+def matrix_to_cells(rows: list[list[int]]) -> set[Cell]:
+    """Cells of a 0/1 matrix given as rows, row 1 on top."""
+    height = len(rows)
+    return {
+        (c, height - 1 - r) for r, row in enumerate(rows) for c, value in enumerate(row) if value
+    }
+
+
+def cells_to_matrix(
+    cells: Iterable[Cell], origin: Cell = (0, 0), shape: tuple[int, int] | None = None
+) -> list[list[int]]:
+    """0/1 rows (row 1 on top) whose bottom-left cell is ``origin``.
+
+    Without ``shape`` the matrix is the smallest that holds every cell.
+    """
+    cells = list(cells)
+    ox, oy = origin
+    if shape is None:
+        width = max((x - ox for x, _ in cells), default=-1) + 1
+        height = max((y - oy for _, y in cells), default=-1) + 1
+    else:
+        height, width = shape
+    rows = [[0] * width for _ in range(height)]
+    for x, y in cells:
+        r, c = height - 1 - (y - oy), x - ox
+        if not (0 <= r < height and 0 <= c < width):
+            raise ValueError(f"cell {(x, y)} is outside a {height}x{width} matrix at {origin}")
+        rows[r][c] = 1
+    return rows
+
+
+def column_major_key(cell: Cell) -> tuple[int, int]:
+    """Sort key giving MATLAB's ``find`` order: by column, then row from the top."""
+    return (cell[0], -cell[1])
+
+
+# --- Table 4-3: the rotation move set ----------------------------------------
+
+#: Fig. 4-30 letters as positions around the mobile module at (0, 0):
+#: A..F are the neighbours on sides 1..6, G..L the second-ring cells between
+#: consecutive neighbours (``HexActuate`` lists the same offsets in MATLAB form).
+LETTER_CELLS: dict[str, Cell] = {
+    **{letter: SIDE_OFFSETS[s] for letter, s in zip("ABCDEF", SIDES, strict=True)},
+    **{letter: ring_cell((0, 0), s) for letter, s in zip("GHIJKL", SIDES, strict=True)},
+}
+
+#: Table 4-3 verbatim: (joint, direction, substrate, swept (empty) cells, goal).
+TABLE_4_3: tuple[tuple[int, Direction, str, str, str], ...] = (
+    (1, "CW", "A", "DEK", "F"),
+    (2, "CW", "B", "EFL", "A"),
+    (3, "CW", "C", "FAG", "B"),
+    (4, "CW", "D", "ABH", "C"),
+    (5, "CW", "E", "BCI", "D"),
+    (6, "CW", "F", "CDJ", "E"),
+    (1, "CCW", "F", "CBG", "A"),
+    (2, "CCW", "A", "DCH", "B"),
+    (3, "CCW", "B", "EDI", "C"),
+    (4, "CCW", "C", "FEJ", "D"),
+    (5, "CCW", "D", "AFK", "E"),
+    (6, "CCW", "E", "BAL", "F"),
+)
+
+
+@dataclass(frozen=True)
+class RotationRule:
+    """One row of Table 4-3, relative to the mobile module at (0, 0)."""
+
+    joint: int
+    direction: Direction
+    substrate_side: int
+    goal_side: int
+    swept: tuple[Cell, Cell, Cell]
+
+    @property
+    def substrate(self) -> Cell:
+        return SIDE_OFFSETS[self.substrate_side]
+
+    @property
+    def goal(self) -> Cell:
+        return SIDE_OFFSETS[self.goal_side]
+
+    def at(self, cell: Cell) -> tuple[Cell, Cell, tuple[Cell, ...]]:
+        """(substrate cell, goal cell, swept cells) for a mobile module at ``cell``."""
+        x, y = cell
+        sx, sy = self.substrate
+        gx, gy = self.goal
+        return (
+            (x + sx, y + sy),
+            (x + gx, y + gy),
+            tuple((x + dx, y + dy) for dx, dy in self.swept),
+        )
+
+
+def _rules_from_table() -> tuple[RotationRule, ...]:
+    side_of = {letter: s for letter, s in zip("ABCDEF", SIDES, strict=True)}
+    rules = []
+    for joint, direction, sub, swept, goal in TABLE_4_3:
+        rules.append(
+            RotationRule(
+                joint=joint,
+                direction=direction,
+                substrate_side=side_of[sub],
+                goal_side=side_of[goal],
+                swept=tuple(LETTER_CELLS[letter] for letter in swept),  # type: ignore[arg-type]
+            )
+        )
+    return tuple(rules)
+
+
+#: The twelve rotations in the order of Table 4-3 (and of ``HexActuate``).
+ROTATIONS: tuple[RotationRule, ...] = _rules_from_table()
+RULE_BY_KEY: dict[tuple[int, str], RotationRule] = {(r.joint, r.direction): r for r in ROTATIONS}
+
+
+def rules_to(goal_side: int) -> list[RotationRule]:
+    """The two rotations that end on ``goal_side`` (CW about joint s+1, CCW about s)."""
+    return [r for r in ROTATIONS if r.goal_side == wrap(goal_side)]
+
+
+def iter_rules() -> Iterator[RotationRule]:
+    return iter(ROTATIONS)

@@ -1,0 +1,91 @@
+"""Single-module rotations on the lattice: which are legal, what they actuate.
+
+A rotation of the module at ``cell`` follows one row of Table 4-3: an
+occupied substrate cell, an empty goal cell and three empty swept cells.
+Layer 5 of the thesis adds the magnet polarities (``HexActuate``'s ``Fs``,
+Table 3-1): the mobile module drives both sides next to the pivot joint
+negative; the substrate drives the side facing the mobile negative and the
+next one (towards the goal) positive.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Container
+from dataclasses import dataclass
+
+from hexbot.planning.hexlattice import ROTATIONS, Cell, Direction, RotationRule, wrap
+
+
+@dataclass(frozen=True)
+class Move:
+    """One rotation of one module. ``joint`` is the pivot, numbered in the global
+    frame as a joint of the mobile module (Table 4-3)."""
+
+    module: int
+    src: Cell
+    dst: Cell
+    joint: int
+    direction: Direction
+    substrate: Cell
+    substrate_module: int
+
+    def swept(self) -> tuple[Cell, ...]:
+        rule = rule_of(self)
+        return rule.at(self.src)[2]
+
+    def footprint(self) -> set[Cell]:
+        """Cells the rotation needs: where it starts and ends and what it sweeps."""
+        return {self.src, self.dst, *self.swept()}
+
+
+def rule_of(move: Move) -> RotationRule:
+    for rule in ROTATIONS:
+        if rule.joint == move.joint and rule.direction == move.direction:
+            return rule
+    raise ValueError(f"no rotation about joint {move.joint} {move.direction}")
+
+
+def legal_rotations(
+    cell: Cell, occupied: Container[Cell], substrates: Container[Cell] | None = None
+) -> list[tuple[RotationRule, Cell, Cell]]:
+    """Rotations (rule, substrate, goal) open to a module at ``cell``.
+
+    ``occupied`` decides what is empty (goal and swept cells must not be in it);
+    ``substrates`` decides what can act as substrate (defaults to ``occupied``).
+    The module's own cell is never treated as an obstacle.
+    """
+    subs = occupied if substrates is None else substrates
+    out = []
+    for rule in ROTATIONS:
+        sub, goal, swept = rule.at(cell)
+        if sub not in subs or sub == cell:
+            continue
+        if goal in occupied and goal != cell:
+            continue
+        if any(s in occupied and s != cell for s in swept):
+            continue
+        out.append((rule, sub, goal))
+    return out
+
+
+@dataclass(frozen=True)
+class Magnets:
+    """Layer 5 polarities in the global frame: side numbers of each module."""
+
+    mobile_negative: tuple[int, int]
+    substrate_negative: int
+    substrate_positive: int
+
+
+def magnets(joint: int, direction: Direction) -> Magnets:
+    """``HexActuate``'s ``Fs`` for a rotation about ``joint`` (Table 3-1)."""
+    mobile = (wrap(joint), wrap(joint - 1))
+    if direction == "CW":
+        return Magnets(mobile, wrap(joint - 3), wrap(joint - 2))
+    return Magnets(mobile, wrap(joint + 2), wrap(joint + 1))
+
+
+def orientation_after(orientation: int, direction: Direction) -> int:
+    """A 120-degree rotation turns the mobile module's body by two sides
+    (clockwise adds two to Yref)."""
+    return (orientation + (2 if direction == "CW" else -2)) % 6

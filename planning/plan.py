@@ -1,0 +1,115 @@
+"""A plan: time steps of moves, and how to replay and check it.
+
+Planners return a :class:`Plan`; the CLI prints it, ``plan_to_commands``
+turns it into firmware frames, and the plot and JSON views read it.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from hexbot.planning.configuration import Configuration, is_connected
+from hexbot.planning.hexlattice import Cell, distance
+from hexbot.planning.moves import Move, orientation_after, rule_of
+
+
+@dataclass
+class Step:
+    moves: list[Move]
+
+
+@dataclass
+class Plan:
+    mode: str
+    initial: Configuration
+    goal: frozenset[Cell]
+    steps: list[Step] = field(default_factory=list)
+    reached: bool = False
+    reason: str = ""
+    warnings: list[str] = field(default_factory=list)
+    lower_bound: int | None = None
+
+    @property
+    def move_count(self) -> int:
+        return sum(len(s.moves) for s in self.steps)
+
+    @property
+    def time_steps(self) -> int:
+        return len(self.steps)
+
+    def configurations(self) -> list[Configuration]:
+        """The configuration before the first step and after each step."""
+        configs = [self.initial]
+        for step in self.steps:
+            configs.append(apply_step(configs[-1], step))
+        return configs
+
+    @property
+    def final(self) -> Configuration:
+        return self.configurations()[-1]
+
+
+def apply_move(config: Configuration, move: Move) -> Configuration:
+    """Move one module; its orientation turns with the rotation."""
+    module = config[move.src]
+    if module.id != move.module:
+        raise ValueError(f"module {move.module} is not at {move.src}")
+    return config.moved(move.src, move.dst, orientation_after(module.orientation, move.direction))
+
+
+def apply_step(config: Configuration, step: Step) -> Configuration:
+    """Apply the moves of one time step in order (they run at the same time on the robot)."""
+    for move in step.moves:
+        config = apply_move(config, move)
+    return config
+
+
+def check_step(config: Configuration, step: Step) -> list[str]:
+    """Problems of a time step under the robot's constraints (empty list = legal).
+
+    Checked: each move follows Table 4-3 with everything that does not move
+    in this step; no substrate moves in the step; no two moves share a
+    cell; the modules that stay put are connected and hold every mover's
+    substrate; the result is connected.
+    """
+    problems = []
+    movers = {m.src for m in step.moves}
+    staying = config.cells - movers
+    used: dict[Cell, int] = {}
+    for move in step.moves:
+        rule = rule_of(move)
+        sub, goal, swept = rule.at(move.src)
+        if move.src not in config or config[move.src].id != move.module:
+            problems.append(f"module {move.module} is not at {move.src}")
+            continue
+        if goal != move.dst or sub != move.substrate:
+            problems.append(f"module {move.module}: joint {move.joint} {move.direction} "
+                            f"does not take {move.src} to {move.dst} over {move.substrate}")
+        if sub not in staying:
+            problems.append(f"module {move.module}: substrate {sub} is empty or moving")
+        for cell in (goal, *swept):
+            if cell in config.cells and cell not in movers:
+                problems.append(f"module {move.module}: cell {cell} is occupied")
+        for cell in (move.src, goal, *swept):
+            if cell in used and used[cell] != move.module:
+                problems.append(f"modules {used[cell]} and {move.module} both need cell {cell}")
+            used[cell] = move.module
+    if step.moves and not is_connected(staying):
+        problems.append("the modules that stay put are not connected during the step")
+    after = set(staying) | {m.dst for m in step.moves}
+    if not is_connected(after):
+        problems.append("the configuration is disconnected after the step")
+    return problems
+
+
+def distance_lower_bound(current: frozenset[Cell], goal: frozenset[Cell]) -> int:
+    """Fewest moves any plan needs. Each rotation moves one module by one cell, so
+    every electron travels at least to its nearest void and every void is
+    filled from at least its nearest electron; the larger sum is a bound."""
+    electrons = list(current - goal)
+    voids = list(goal - current)
+    if not electrons or not voids:
+        return 0
+    by_electron = sum(min(distance(e, v) for v in voids) for e in electrons)
+    by_void = sum(min(distance(e, v) for e in electrons) for v in voids)
+    return max(by_electron, by_void)
