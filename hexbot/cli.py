@@ -22,6 +22,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "hexbot.protocol.cli_gen_header",
         "regenerate the firmware header and the docs table from the protocol table",
     ),
+    "locomotion": (
+        "hexbot.planning.locomotion.cli",
+        "square-lattice locomotion rule engine (Salvador, Otero rule sets)",
+    ),
 }
 
 

@@ -1,0 +1,78 @@
+"""``hexbot locomotion``: run a rule set on a scenario, list what ships.
+
+    hexbot locomotion run salvador-free flat --n 20 --until-advance 5 --json
+    hexbot locomotion run salvador histogram-1 --n 10 --render run.gif
+    hexbot locomotion list
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from hexbot.errors import ScenarioError
+from hexbot.planning.locomotion import render
+from hexbot.planning.locomotion.scenarios import (
+    load_ruleset,
+    load_scenario,
+    ruleset_names,
+    scenario_names,
+    simulate,
+)
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    sub = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
+    run = sub.add_parser("run", help="run RULESET on SCENARIO and report the outcome")
+    run.add_argument("ruleset", help="salvador-free, salvador-pyramids, salvador, otero, or a file")
+    run.add_argument("scenario", help="flat, a shipped map (see 'list'), or a .map file")
+    run.add_argument("--n", type=int, default=None, help="modules in the strip")
+    run.add_argument("--rounds", type=int, default=10_000, help="round limit (10000)")
+    run.add_argument(
+        "--until-advance", type=int, default=None, metavar="K",
+        help="stop when K modules have come to rest past the strip's initial cells",
+    )
+    run.add_argument("--json", action="store_true", help="print one JSON object")
+    run.add_argument("--render", metavar="OUT", help="draw the run: .png (final) or .gif")
+    run.add_argument(
+        "--no-connectivity-check", action="store_true",
+        help="skip the connectivity invariant (faster on huge runs)",
+    )
+    sub.add_parser("list", help="list the shipped rule sets and scenarios")
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.action == "list":
+        print("rule sets:", " ".join(ruleset_names()))
+        print("scenarios:", " ".join(scenario_names()))
+        return 0
+    if args.rounds < 0:
+        raise ScenarioError("--rounds must not be negative")
+    if args.until_advance is not None and args.until_advance < 1:
+        raise ScenarioError("--until-advance must be at least 1")
+    rs = load_ruleset(args.ruleset)
+    sc = load_scenario(args.scenario, args.n)
+    rec = render.Recorder() if args.render else None
+    result = simulate(
+        rs, sc, rounds=args.rounds, until_advance=args.until_advance, on_round=rec,
+        check_connectivity=not args.no_connectivity_check,
+    )
+    if rec is not None:
+        render.save(args.render, rec, sc.obstacles + result.obstacles)
+    if args.json:
+        out = {"ruleset": rs.name, "scenario": sc.name, "n": len(sc.modules)}
+        out.update(result.to_dict())
+        print(json.dumps(out))
+    else:
+        print(f"rule set {rs.name}, scenario {sc.name}, n = {len(sc.modules)}")
+        print(f"status: {result.status} after {result.rounds} rounds; advanced {result.advanced}")
+        if result.violation:
+            v = result.violation
+            print(f"violation ({v.kind}) in round {v.round}: {v.message}")
+            print(f"  cells: {v.cells}\n  rules: {'; '.join(v.rules)}")
+        if result.deadlock:
+            d = result.deadlock
+            print(f"deadlock: {d.message}; modules not at rest: {d.moving_states}")
+        print("moves per module:", " ".join(map(str, result.moves_per_module)))
+        print(render.ascii_map(result.positions, result.states, result.obstacles))
+    return 0 if result.status in ("advanced", "reached", "rounds-exhausted") else 3

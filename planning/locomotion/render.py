@@ -1,0 +1,105 @@
+"""Pictures of a run: the final state (PNG), every round (GIF), or ASCII text."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from hexbot.errors import ScenarioError
+from hexbot.planning.locomotion.engine import Engine
+
+Cell = tuple[int, int]
+
+# Colours by state name; unknown states get a grey.
+COLOURS = {
+    "static": (40, 70, 160),
+    "active": (220, 40, 40),
+    "cork": (240, 200, 30),
+    "opener": (20, 20, 20),
+}
+OBSTACLE_RGB = (150, 150, 150)
+EMPTY_RGB = (250, 250, 250)
+ASCII = {"static": "o", "active": "A", "cork": "C", "opener": "P"}
+
+
+@dataclass
+class Recorder:
+    """Keeps module positions and states each round (``on_round`` callback)."""
+
+    every: int = 1
+    frames: list[tuple[np.ndarray, np.ndarray]] = field(default_factory=list)
+    states: list[str] = field(default_factory=list)
+    obstacles: set[Cell] = field(default_factory=set)
+
+    def __call__(self, engine: Engine) -> None:
+        if engine.round % self.every:
+            return
+        w = engine.world
+        self.states = engine.rs.states
+        self.frames.append((w.xy().copy(), w.state.copy()))
+
+
+def _bounds(frames, pad: int = 2) -> tuple[int, int, int, int]:
+    allxy = np.concatenate([f[0] for f in frames])
+    return (
+        int(allxy[:, 0].min()) - pad,
+        int(allxy[:, 1].min()) - pad,
+        int(allxy[:, 0].max()) + pad,
+        int(allxy[:, 1].max()) + pad,
+    )
+
+
+def ascii_map(positions: list[Cell], states: list[str], obstacles: list[Cell]) -> str:
+    """The lattice around the robot as text: top row first."""
+    xs = [p[0] for p in positions]
+    ys = [p[1] for p in positions]
+    x0, x1, y0, y1 = min(xs) - 2, max(xs) + 2, min(ys) - 2, max(ys) + 2
+    cells = {c: "#" for c in obstacles if x0 <= c[0] <= x1 and y0 <= c[1] <= y1}
+    for p, s in zip(positions, states, strict=True):
+        cells[p] = ASCII.get(s, s[:1].upper())
+    return "\n".join(
+        "".join(cells.get((x, y), ".") for x in range(x0, x1 + 1)) for y in range(y1, y0 - 1, -1)
+    )
+
+
+def save(path: str, rec: Recorder, obstacles: list[Cell], cell_px: int = 0) -> None:
+    """PNG: the last frame. GIF: one frame per recorded round."""
+    try:
+        from PIL import Image
+    except ImportError as exc:  # pillow comes with matplotlib, a declared dependency
+        raise ScenarioError(f"rendering needs pillow: {exc}") from exc
+    suffix = Path(path).suffix.lower()
+    if suffix not in (".png", ".gif"):
+        raise ScenarioError(f"--render: {path!r} must end in .png or .gif")
+    if not rec.frames:
+        raise ScenarioError("nothing was recorded")
+    x0, y0, x1, y1 = _bounds(rec.frames)
+    w, h = x1 - x0 + 1, y1 - y0 + 1
+    px = cell_px or max(2, min(16, 1200 // max(w, h)))
+    base = np.zeros((h, w, 3), dtype=np.uint8)
+    base[:] = EMPTY_RGB
+    for x, y in obstacles:
+        if x0 <= x <= x1 and y0 <= y <= y1:
+            base[y1 - y, x - x0] = OBSTACLE_RGB
+    palette = np.array(
+        [COLOURS.get(s, (120, 120, 120)) for s in rec.states], dtype=np.uint8
+    )
+
+    def frame(xy: np.ndarray, st: np.ndarray) -> Image.Image:
+        img = base.copy()
+        img[y1 - xy[:, 1], xy[:, 0] - x0] = palette[st]
+        big = np.kron(img, np.ones((px, px, 1), dtype=np.uint8))
+        return Image.fromarray(big)
+
+    try:
+        if suffix == ".png":
+            frame(*rec.frames[-1]).save(path)
+        else:
+            images = [frame(*f) for f in rec.frames]
+            images[0].save(
+                path, save_all=True, append_images=images[1:], duration=80, loop=0
+            )
+    except OSError as exc:
+        raise ScenarioError(f"--render: cannot write {path}: {exc}") from exc

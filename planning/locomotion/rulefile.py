@@ -1,0 +1,323 @@
+"""Reader for ``.rules`` files: a line-based format a person can write.
+
+Layout (``#`` starts a comment; indentation is for the reader only)::
+
+    ruleset salvador-free
+    states static active        # the first state is every module's initial state
+    resting static              # states that count as "stopped"
+    support module              # what may carry a slide or pivot a convex move
+    symmetry rotations          # none | rotations | rotations+reflections
+
+    rule R1 "Activation"
+      priority 10
+      state static
+      require N is empty
+      require E is static and NE is empty
+      require W is empty|obstacle
+      become active
+
+A ``require`` line is a boolean expression over cells: ``POS is CLASS|CLASS``,
+``POS is not CLASS``, ``and``, ``or``, ``not`` and parentheses. POS is a name
+(N E S W NE NW SE SW) or an offset ``(dx,dy)``; CLASS is ``empty``,
+``obstacle``, ``module`` (any state) or a state name. All ``require`` lines
+must hold. Actions: ``become STATE`` and/or ``move POS`` (a neighbour cell).
+Every error names the file and line.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from pathlib import Path
+
+from hexbot.errors import ScenarioError
+from hexbot.planning.locomotion.rules import (
+    BUILTIN_CLASSES,
+    DIRECTIONS,
+    SYMMETRIES,
+    And,
+    Atom,
+    Expr,
+    Not,
+    Offset,
+    Or,
+    Rule,
+    RuleSet,
+    atoms_of,
+)
+
+_TOKEN = re.compile(
+    r"\s*(?:(?P<offset>\(\s*-?\d+\s*,\s*-?\d+\s*\))|(?P<punct>[()|!])|(?P<word>[A-Za-z_][\w-]*))"
+)
+
+
+class _Error(Exception):
+    pass
+
+
+def _tokenize(text: str) -> list[str]:
+    tokens: list[str] = []
+    pos = 0
+    text = text.rstrip()
+    while pos < len(text):
+        m = _TOKEN.match(text, pos)
+        if not m or m.end() == pos:
+            raise _Error(f"cannot read {text[pos:].strip()[:20]!r}")
+        tokens.append(m.group(m.lastgroup or "word").replace(" ", ""))
+        pos = m.end()
+    return tokens
+
+
+def parse_position(token: str) -> Offset:
+    if token.startswith("("):
+        dx, dy = token[1:-1].split(",")
+        return int(dx), int(dy)
+    if token.upper() in DIRECTIONS:
+        return DIRECTIONS[token.upper()]
+    raise _Error(f"{token!r} is not a position (use N E S W NE NW SE SW or (dx,dy))")
+
+
+class _ExprParser:
+    def __init__(self, tokens: list[str], classes: set[str]):
+        self.toks = tokens
+        self.i = 0
+        self.classes = classes
+
+    def peek(self) -> str | None:
+        return self.toks[self.i] if self.i < len(self.toks) else None
+
+    def take(self) -> str:
+        tok = self.peek()
+        if tok is None:
+            raise _Error("expression ends too early")
+        self.i += 1
+        return tok
+
+    def parse(self) -> Expr:
+        expr = self.disjunction()
+        if self.peek() is not None:
+            raise _Error(f"unexpected {self.peek()!r}")
+        return expr
+
+    def disjunction(self) -> Expr:
+        args = [self.conjunction()]
+        while self.peek() == "or":
+            self.take()
+            args.append(self.conjunction())
+        return args[0] if len(args) == 1 else Or(tuple(args))
+
+    def conjunction(self) -> Expr:
+        args = [self.unary()]
+        while self.peek() == "and":
+            self.take()
+            args.append(self.unary())
+        return args[0] if len(args) == 1 else And(tuple(args))
+
+    def unary(self) -> Expr:
+        tok = self.peek()
+        if tok in ("not", "!"):
+            self.take()
+            return Not(self.unary())
+        if tok == "(":
+            self.take()
+            inner = self.disjunction()
+            if self.take() != ")":
+                raise _Error("missing ')'")
+            return inner
+        return self.atom()
+
+    def atom(self) -> Atom:
+        offset = parse_position(self.take())
+        negated = False
+        if self.peek() == "is":
+            self.take()
+        if self.peek() in ("not", "!"):
+            self.take()
+            negated = True
+        names = [self.cls()]
+        while self.peek() == "|":
+            self.take()
+            names.append(self.cls())
+        return Atom(offset, frozenset(names), negated)
+
+    def cls(self) -> str:
+        tok = self.take()
+        if tok not in self.classes:
+            raise _Error(f"unknown cell class {tok!r} (known: {', '.join(sorted(self.classes))})")
+        return tok
+
+
+def parse_expression(text: str, states: list[str]) -> Expr:
+    """Parse one ``require`` expression (raises ValueError with the reason)."""
+    try:
+        return _ExprParser(_tokenize(text), set(BUILTIN_CLASSES) | set(states)).parse()
+    except _Error as exc:
+        raise ValueError(str(exc)) from None
+
+
+@dataclass
+class _Draft:
+    ident: str
+    title: str
+    line: int
+    priority: int | None = None
+    state: str | None = None
+    become: str | None = None
+    move: Offset | None = None
+    symmetry: str | None = None
+
+    def __post_init__(self) -> None:
+        self.conditions: list[Expr] = []
+
+
+def _split_title(rest: str) -> tuple[str, str]:
+    m = re.fullmatch(r'(\S+)\s*(?:"([^"]*)")?\s*', rest)
+    if not m:
+        raise _Error('expected: rule ID "title"')
+    return m.group(1), m.group(2) or ""
+
+
+def loads(text: str, source: str = "<string>") -> RuleSet:
+    """Parse a rule file's text; every error names ``source`` and the line."""
+    header: dict[str, str] = {}
+    header_line: dict[str, int] = {}
+    drafts: list[_Draft] = []
+    description: list[str] = []
+    states: list[str] = []
+    current: _Draft | None = None
+    lineno = 0
+    try:
+        for lineno, raw in enumerate(text.splitlines(), start=1):
+            if raw.startswith("##") and not drafts:
+                description.append(raw[2:].strip())
+            line = raw.split("#", 1)[0].strip()
+            if not line:
+                continue
+            key, _, rest = line.partition(" ")
+            rest = rest.strip()
+            if key in ("ruleset", "states", "resting", "support", "symmetry") and current is None:
+                if key in header:
+                    raise _Error(f"{key!r} given twice")
+                if not rest:
+                    raise _Error(f"{key!r} needs a value")
+                header[key], header_line[key] = rest, lineno
+                if key == "states":
+                    states = rest.split()
+                    _check_state_names(states)
+                continue
+            if key == "rule":
+                if "states" not in header:
+                    raise _Error("'states' must come before the first rule")
+                ident, title = _split_title(rest)
+                if any(d.ident == ident for d in drafts):
+                    raise _Error(f"rule {ident!r} defined twice")
+                current = _Draft(ident, title, lineno)
+                drafts.append(current)
+                continue
+            if current is None:
+                raise _Error(f"unknown header keyword {key!r}")
+            _rule_line(current, key, rest, states)
+        if "ruleset" not in header or "states" not in header:
+            lineno = 0
+            raise _Error("a rule file needs 'ruleset NAME' and 'states ...'")
+        default_sym = header.get("symmetry", "rotations")
+        if default_sym not in SYMMETRIES:
+            lineno = header_line["symmetry"]
+            raise _Error(f"symmetry must be one of {', '.join(SYMMETRIES)}")
+        resting = set(header.get("resting", states[0]).split())
+        support = set(header.get("support", "module").split())
+        for key, values in (("resting", resting), ("support", support)):
+            bad = values - set(states) - set(BUILTIN_CLASSES)
+            if bad:
+                lineno = header_line[key]
+                raise _Error(f"{key}: unknown class {sorted(bad)[0]!r}")
+        rules = []
+        for d in drafts:
+            lineno = d.line
+            rules.append(_finish(d, default_sym))
+        if not rules:
+            raise _Error("no rules")
+    except _Error as exc:
+        where = f"{source}:{lineno}" if lineno else source
+        raise ScenarioError(f"{where}: {exc}") from None
+    return RuleSet(
+        name=header["ruleset"],
+        states=states,
+        resting=resting,
+        support=support,
+        rules=rules,
+        source=source,
+        description=" ".join(description),
+    )
+
+
+def _check_state_names(states: list[str]) -> None:
+    for s in states:
+        if s in BUILTIN_CLASSES or s.upper() in DIRECTIONS or s in ("is", "not", "and", "or"):
+            raise _Error(f"{s!r} cannot be a state name")
+    if len(set(states)) != len(states):
+        raise _Error("a state is listed twice")
+
+
+def _rule_line(d: _Draft, key: str, rest: str, states: list[str]) -> None:
+    if key == "priority":
+        if not re.fullmatch(r"-?\d+", rest):
+            raise _Error(f"priority must be an integer, not {rest!r}")
+        d.priority = int(rest)
+    elif key == "state":
+        if rest not in states:
+            raise _Error(f"unknown state {rest!r} (states: {', '.join(states)})")
+        d.state = rest
+    elif key == "require":
+        try:
+            d.conditions.append(parse_expression(rest, states))
+        except ValueError as exc:
+            raise _Error(str(exc)) from None
+    elif key == "become":
+        if rest not in states:
+            raise _Error(f"unknown state {rest!r} (states: {', '.join(states)})")
+        d.become = rest
+    elif key == "move":
+        off = parse_position(rest)
+        if off == (0, 0) or max(abs(off[0]), abs(off[1])) != 1:
+            raise _Error(f"a move goes to one of the 8 neighbour cells, not {rest!r}")
+        d.move = off
+    elif key == "symmetry":
+        if rest not in SYMMETRIES:
+            raise _Error(f"symmetry must be one of {', '.join(SYMMETRIES)}")
+        d.symmetry = rest
+    else:
+        raise _Error(f"unknown keyword {key!r} in rule {d.ident}")
+
+
+def _finish(d: _Draft, default_sym: str) -> Rule:
+    if d.priority is None:
+        raise _Error(f"rule {d.ident} has no priority")
+    if d.state is None:
+        raise _Error(f"rule {d.ident} has no state")
+    if d.become is None and d.move is None:
+        raise _Error(f"rule {d.ident} has no action (become and/or move)")
+    for c in d.conditions:
+        for a in atoms_of(c):
+            if a.offset == (0, 0):
+                raise _Error(f"rule {d.ident}: use 'state' for the module itself, not C/(0,0)")
+    return Rule(
+        ident=d.ident,
+        title=d.title,
+        priority=d.priority,
+        state=d.state,
+        conditions=tuple(d.conditions),
+        become=d.become,
+        move=d.move,
+        symmetry=d.symmetry or default_sym,
+        line=d.line,
+    )
+
+
+def load(path: str | Path) -> RuleSet:
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise ScenarioError(f"{path}: cannot read rule file: {exc.strerror}") from None
+    return loads(text, str(path))
