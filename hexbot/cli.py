@@ -22,6 +22,11 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "hexbot.protocol.cli_gen_header",
         "regenerate the firmware header and the docs table from the protocol table",
     ),
+    "console": ("hexbot.host.cli_console", "the Textual console (default: on the simulator)"),
+    "send": ("hexbot.host.cli_send", "send one message and check its acknowledgement"),
+    "monitor": ("hexbot.host.cli_monitor", "print decoded events from the ports"),
+    "run": ("hexbot.host.cli_run", "run a HexBot script (.hbs) of commands and expectations"),
+    "replay": ("hexbot.host.cli_replay", "play a session capture back through the parser"),
     "locomotion": (
         "hexbot.planning.locomotion.cli",
         "square-lattice locomotion rule engine (Salvador, Otero rule sets)",
