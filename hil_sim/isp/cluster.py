@@ -1,0 +1,103 @@
+"""ISP access to the boards of a simulated cluster (``hexbot.hil_sim._avr``).
+
+:class:`ClusterBoardBackend` hands the chip model a copy of one MCU's
+memory when RESET goes low and, when RESET goes high again, writes back
+whatever was programmed and resets the MCU, which then runs the new image.
+Differences from the hardware, by necessity of the Cluster API: the MCU keeps
+running its old image while it is "held in reset", and the lock bits live
+here (the Cluster keeps no lock byte).
+
+:func:`open_cluster_isp` is the one call the simulator needs to give every
+module board its STK500v2 pty; :meth:`ClusterIsp.ports_json` is the
+``"isp"`` entry of the JSON line of ``hexbot sim --pty``.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Mapping
+from contextlib import nullcontext
+from dataclasses import dataclass
+from typing import Any
+
+from hexbot.hil_sim.isp.chip import Atmega162Isp
+from hexbot.hil_sim.isp.memory import EEPROM_SIZE, FLASH_SIZE, Atmega162Memory
+from hexbot.hil_sim.isp.pty_server import IspPtyServer
+from hexbot.hil_sim.isp.stk500v2 import Stk500v2Programmer
+
+CLUSTER_METHODS = ("read_flash", "write_flash", "read_eeprom", "write_eeprom",
+                   "fuses", "set_fuses", "signature", "reset")
+
+
+def missing_cluster_methods(cluster: Any) -> list[str]:
+    """The ISP methods of SIM_API.md this Cluster does not have (yet)."""
+    return [name for name in CLUSTER_METHODS if not callable(getattr(cluster, name, None))]
+
+
+def _fit(data: bytes, size: int) -> bytearray:
+    return bytearray(bytes(data[:size]).ljust(size, b"\xff"))
+
+
+class ClusterBoardBackend:
+    def __init__(self, cluster: Any, mcu: int, lock: threading.Lock | None = None) -> None:
+        missing = missing_cluster_methods(cluster)
+        if missing:
+            raise NotImplementedError(
+                f"the simulator's Cluster lacks ISP methods: {', '.join(missing)}")
+        self.cluster = cluster
+        self.mcu = mcu
+        self.lock_bits = 0xFF
+        self._guard = lock if lock is not None else nullcontext()
+        self.sessions = 0
+
+    def acquire(self) -> Atmega162Memory:
+        with self._guard:
+            low, high, ext = self.cluster.fuses(self.mcu)
+            return Atmega162Memory(
+                flash=_fit(self.cluster.read_flash(self.mcu), FLASH_SIZE),
+                eeprom=_fit(self.cluster.read_eeprom(self.mcu), EEPROM_SIZE),
+                lfuse=low, hfuse=high, efuse=ext, lock=self.lock_bits,
+                signature=bytes(self.cluster.signature(self.mcu)),
+            )
+
+    def release(self, memory: Atmega162Memory, changed: bool) -> None:
+        with self._guard:
+            if changed:
+                self.cluster.write_flash(self.mcu, bytes(memory.flash))
+                self.cluster.write_eeprom(self.mcu, 0, bytes(memory.eeprom))
+                self.cluster.set_fuses(self.mcu, memory.lfuse, memory.hfuse, memory.efuse)
+                self.lock_bits = memory.lock
+            self.cluster.reset(self.mcu)  # RESET released: the MCU starts over
+            self.sessions += 1
+
+
+@dataclass
+class ClusterIsp:
+    server: IspPtyServer
+    layout: dict[str, dict[str, str]]  # module id -> board -> pty path
+
+    def ports_json(self) -> dict[str, dict[str, str]]:
+        return {module: dict(boards) for module, boards in self.layout.items()}
+
+
+def open_cluster_isp(
+    cluster: Any,
+    boards: Mapping[Any, Mapping[str, int]],
+    lock: threading.Lock | None = None,
+) -> ClusterIsp:
+    """One STK500v2 pty per board: ``boards`` maps a module id to
+    ``{"comm": mcu index, "control": mcu index}``. Serve them with
+    ``result.server.poll(0)`` from the simulator loop (or ``.start()`` with a
+    ``lock`` the loop also holds around ``Cluster.run``)."""
+    server = IspPtyServer()
+    layout: dict[str, dict[str, str]] = {}
+    try:
+        for module, mcus in boards.items():
+            for board, mcu in mcus.items():
+                chip = Atmega162Isp(ClusterBoardBackend(cluster, mcu, lock))
+                path = server.add(f"{module}/{board}", Stk500v2Programmer(chip))
+                layout.setdefault(str(module), {})[board] = path
+    except BaseException:
+        server.close()
+        raise
+    return ClusterIsp(server, layout)
