@@ -72,8 +72,8 @@ def parse_position(token: str) -> Offset:
     if token.startswith("("):
         dx, dy = token[1:-1].split(",")
         return int(dx), int(dy)
-    if token.upper() in DIRECTIONS:
-        return DIRECTIONS[token.upper()]
+    if token in DIRECTIONS:
+        return DIRECTIONS[token]
     raise _Error(f"{token!r} is not a position (use N E S W NE NW SE SW or (dx,dy))")
 
 
@@ -121,8 +121,9 @@ class _ExprParser:
         if tok == "(":
             self.take()
             inner = self.disjunction()
-            if self.take() != ")":
+            if self.peek() != ")":
                 raise _Error("missing ')'")
+            self.take()
             return inner
         return self.atom()
 
@@ -253,7 +254,7 @@ def loads(text: str, source: str = "<string>") -> RuleSet:
 
 def _check_state_names(states: list[str]) -> None:
     for s in states:
-        if s in BUILTIN_CLASSES or s.upper() in DIRECTIONS or s in ("is", "not", "and", "or"):
+        if s in BUILTIN_CLASSES or s in DIRECTIONS or s in ("is", "not", "and", "or"):
             raise _Error(f"{s!r} cannot be a state name")
     if len(set(states)) != len(states):
         raise _Error("a state is listed twice")
@@ -300,7 +301,7 @@ def _finish(d: _Draft, default_sym: str) -> Rule:
     for c in d.conditions:
         for a in atoms_of(c):
             if a.offset == (0, 0):
-                raise _Error(f"rule {d.ident}: use 'state' for the module itself, not C/(0,0)")
+                raise _Error(f"rule {d.ident}: use 'state' for the module itself, not (0,0)")
     return Rule(
         ident=d.ident,
         title=d.title,

@@ -14,7 +14,6 @@ Offset = tuple[int, int]
 
 # Relative positions by name; y grows upwards (north), as in the theses.
 DIRECTIONS: dict[str, Offset] = {
-    "C": (0, 0),
     "N": (0, 1),
     "E": (1, 0),
     "S": (0, -1),

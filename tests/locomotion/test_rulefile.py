@@ -1,0 +1,81 @@
+"""The rule-file format: what it accepts, and errors that name the line."""
+
+import pytest
+
+from hexbot.errors import ScenarioError
+from hexbot.planning.locomotion import load_ruleset, loads, ruleset_names
+from hexbot.planning.locomotion.rules import variants
+
+HEADER = "ruleset t\nstates static active\n"
+
+
+def test_expression_grammar_and_actions():
+    rs = loads(
+        HEADER
+        + "rule X \"both\"\n priority 7\n state static\n"
+        + " require (2,0) is not active and (N is empty|obstacle or not SE is module)\n"
+        + " become active\n move E\n"
+    )
+    (rule,) = rs.rules
+    assert rule.priority == 7 and rule.become == "active" and rule.move == (1, 0)
+    assert rs.reach() == 2
+    assert "(2,0) is not active" in str(rule.conditions[0])
+
+
+def test_symmetry_gives_four_or_eight_orientations():
+    text = HEADER + "symmetry {}\nrule X\n priority 1\n state static\n"
+    text += " require NE is empty\n move E\n"
+    counts = [len(variants(loads(text.format(s)).rules[0])) for s in
+              ("none", "rotations", "rotations+reflections")]
+    assert counts == [1, 4, 8]
+
+
+def test_symmetric_rule_is_not_duplicated():
+    text = HEADER + "rule X\n priority 1\n state active\n become static\n"
+    assert len(variants(loads(text).rules[0])) == 1
+
+
+@pytest.mark.parametrize(
+    ("body", "line", "words"),
+    [
+        ("rule A\n priority 1\n state static\n require N is full\n become active\n", 6, "full"),
+        ("rule A\n priority x\n", 4, "integer"),
+        ("rule A\n state static\n become active\n", 3, "no priority"),
+        ("rule A\n priority 1\n state static\n require Q is empty\n become active\n", 6, "'Q'"),
+        ("rule A\n priority 1\n state static\n move (2,0)\n", 6, "neighbour"),
+        ("rule A\n priority 1\n state static\n", 3, "no action"),
+        ("rule A\n priority 1\n state sleepy\n", 5, "unknown state"),
+        ("rule A\n priority 1\n state static\n frobnicate\n", 6, "frobnicate"),
+        ("rule A\n priority 1\n state static\n require (N is empty\n become active\n", 6, ")"),
+        (
+            "rule A\n priority 1\n state static\n become active\n"
+            "rule A\n priority 1\n state static\n become active\n",
+            7,
+            "twice",
+        ),
+    ],
+)
+def test_errors_name_file_and_line(body, line, words):
+    with pytest.raises(ScenarioError) as err:
+        loads(HEADER + body, "my.rules")
+    assert f"my.rules:{line}:" in str(err.value)
+    assert words in str(err.value)
+
+
+def test_file_without_header_is_refused():
+    with pytest.raises(ScenarioError, match="x.rules:1: 'states' must come before"):
+        loads("rule A\n", "x.rules")
+    with pytest.raises(ScenarioError, match="needs 'ruleset NAME'"):
+        loads("states a b\n", "x.rules")
+
+
+def test_shipped_rule_sets_load():
+    names = ruleset_names()
+    assert {"salvador-free", "salvador-pyramids"} <= set(names)
+    for name in names:
+        assert load_ruleset(name).rules
+
+
+def test_unknown_rule_set_lists_the_shipped_ones():
+    with pytest.raises(ScenarioError, match="salvador-free"):
+        load_ruleset("no-such-rules")
