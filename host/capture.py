@@ -1,0 +1,131 @@
+"""Session capture: every byte in both directions, with millisecond times.
+
+Format (``*.hbcap``, UTF-8 text, one record per line, flushed per line so
+a killed console or a vanished port loses nothing already received)::
+
+    # hexbot-capture 1
+    # start 2026-11-22T00:45:01.123+00:00
+    # port ir socket://localhost:7000 300 8N1
+    0.000 ir state connected socket://localhost:7000 300 8N1
+    1.234 ir tx 2a45004e4e4e4e4e4e4e23
+    1.912 ir rx 0a0d0a0d4d30333a2041434b450a0d
+
+Record fields: seconds since ``start`` with three decimals, the port name
+(``ir`` or ``debug``), the kind (``tx`` PC to robot, ``rx`` robot to PC,
+``state`` link state change, ``note`` free text), then lowercase hex bytes
+or text. Each ``rx`` record is one read from the port, so the chunking of
+the original session is kept. Lines starting ``#`` are comments.
+"""
+
+from __future__ import annotations
+
+import datetime as dt
+import threading
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass
+from pathlib import Path
+from typing import TextIO
+
+from hexbot.errors import ScenarioError
+
+MAGIC = "# hexbot-capture 1"
+KINDS = ("tx", "rx", "state", "note")
+
+
+@dataclass(frozen=True)
+class Record:
+    t: float  # seconds since the capture started
+    port: str
+    kind: str  # one of KINDS
+    data: bytes = b""  # tx / rx
+    text: str = ""  # state / note
+    line: int = 0  # line number in the file it came from
+
+
+class CaptureWriter:
+    """Append-only writer; thread-safe; flushes every record."""
+
+    def __init__(self, path: Path, clock=time.monotonic) -> None:
+        self.path = Path(path)
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        self._clock = clock
+        self._t0 = clock()
+        self._lock = threading.Lock()
+        self._file: TextIO | None = self.path.open("w", encoding="utf-8", newline="\n")
+        started = dt.datetime.now(dt.UTC).isoformat(timespec="milliseconds")
+        self._write(f"{MAGIC}\n# start {started}\n")
+
+    def elapsed(self) -> float:
+        return self._clock() - self._t0
+
+    def port(self, name: str, description: str) -> None:
+        self._write(f"# port {name} {description}\n")
+
+    def record(self, port: str, kind: str, data: bytes = b"", text: str = "") -> float:
+        """Write one record; returns its time stamp (seconds since start)."""
+        if kind not in KINDS:
+            raise ValueError(f"capture kind must be one of {KINDS}, got {kind!r}")
+        t = self.elapsed()
+        body = data.hex() if kind in ("tx", "rx") else " ".join(text.split())
+        self._write(f"{t:.3f} {port} {kind} {body}".rstrip() + "\n")
+        return t
+
+    def _write(self, text: str) -> None:
+        with self._lock:
+            if self._file is None:
+                return
+            self._file.write(text)
+            self._file.flush()
+
+    def close(self) -> None:
+        with self._lock:
+            if self._file is not None:
+                self._file.close()
+                self._file = None
+
+
+def read_capture(path: Path) -> Iterator[Record]:
+    """Records of a capture file; ScenarioError naming file and line on a
+    malformed record. A truncated last line (the writer was killed
+    mid-write) is skipped, since everything before it is intact."""
+    path = Path(path)
+    try:
+        lines = path.read_text(encoding="utf-8").split("\n")
+    except OSError as exc:
+        raise ScenarioError(f"{path}: cannot read capture: {exc}") from exc
+    except UnicodeDecodeError as exc:
+        raise ScenarioError(f"{path}: not a hexbot capture (not UTF-8 text)") from exc
+    if not lines or lines[0].strip() != MAGIC:
+        raise ScenarioError(f"{path}:1: not a hexbot capture (first line must be {MAGIC!r})")
+    last = len(lines) - 1  # text after the final newline: possibly half-written
+    for number, raw in enumerate(lines, start=1):
+        line = raw.strip()
+        if not line or line.startswith("#"):
+            continue
+        try:
+            yield _parse(line, f"{path}:{number}", number)
+        except ScenarioError:
+            if number - 1 == last:
+                return
+            raise
+
+
+def _parse(line: str, where: str, number: int) -> Record:
+    parts = line.split(" ", 3)
+    if len(parts) < 3:
+        raise ScenarioError(f"{where}: expected 'TIME PORT KIND DATA', got {line!r}")
+    t_text, port, kind = parts[:3]
+    body = parts[3] if len(parts) > 3 else ""
+    try:
+        t = float(t_text)
+    except ValueError as exc:
+        raise ScenarioError(f"{where}: bad time stamp {t_text!r}") from exc
+    if kind not in KINDS:
+        raise ScenarioError(f"{where}: unknown record kind {kind!r} (expected {KINDS})")
+    if kind in ("tx", "rx"):
+        try:
+            return Record(t, port, kind, data=bytes.fromhex(body), line=number)
+        except ValueError as exc:
+            raise ScenarioError(f"{where}: bad hex data {body[:40]!r}") from exc
+    return Record(t, port, kind, text=body, line=number)

@@ -1,0 +1,40 @@
+"""Helpers shared by the host's CLI commands: open the session, print."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
+
+from hexbot.host import endpoints
+from hexbot.host.host import Host
+from hexbot.host.link import LinkState
+
+
+@contextmanager
+def session(args: argparse.Namespace, *, wait_s: float = 5.0,
+            verbose_states: bool = True) -> Iterator[Host]:
+    """Open the ports (or the simulator), yield the host, close everything."""
+    ends = endpoints.resolve(args)
+    host = None
+    try:
+        host = endpoints.open_host(args, ends)
+        if verbose_states:
+            host.add_listener(_print_state)
+        host.start(wait_s)
+        if host.log is not None:
+            print(f"session log: {host.log.folder}", file=sys.stderr)
+        yield host
+    finally:
+        if host is not None:
+            host.close()
+        ends.close()
+
+
+def _print_state(kind: str, port: str, payload: object) -> None:
+    if kind != "state":
+        return
+    state, detail = payload  # type: ignore[misc]
+    if state in (LinkState.LOST, LinkState.CONNECTED):
+        print(f"{port}: {state.value} {detail}".rstrip(), file=sys.stderr, flush=True)

@@ -1,0 +1,172 @@
+"""What the host knows about the cluster, built only from parsed replies.
+
+A module is known by its id once it speaks in addressed mode (``M03:``)
+or reports its status; before that (legacy mode, thesis prefix ``M:``) the
+only handle is its role letter, so legacy replies update a row keyed by the
+letter. Localization reports carry no prefix at all: each complete report
+(``LOCALIZED``, ``Side``, ``Yref``, ``Pos``) becomes a :class:`Placement`;
+a later status reply at the same position names its module.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from hexbot.host.describe import error_name
+from hexbot.protocol.parser import (
+    Ack,
+    ErrorReply,
+    Event,
+    PositionReport,
+    SideReport,
+    StatusReport,
+    Text,
+    YrefReport,
+)
+
+
+@dataclass
+class ModuleState:
+    key: str  # "03" for id 3, or "M"/"S" for a legacy-mode speaker
+    module_id: int | None = None
+    role: str = "-"
+    localized: bool = False
+    position: tuple[int, int] | None = None
+    orientation: int | None = None  # Yref 0..5
+    last_ack: int | None = None
+    last_error: str = ""
+    last_seen: float = 0.0
+    boot: str = ""  # tail of its last boot text (id, firmware version)
+
+    @property
+    def label(self) -> str:
+        return f"{self.module_id:02d}" if self.module_id is not None else self.key
+
+
+@dataclass
+class Placement:
+    """A localization report: where a module placed itself."""
+
+    x: int
+    y: int
+    yref: int
+    side: int | None
+    t: float
+    module_id: int | None = None
+
+
+@dataclass
+class _PendingReport:
+    side: int | None = None
+    yref: int | None = None
+
+
+@dataclass
+class ClusterModel:
+    modules: dict[str, ModuleState] = field(default_factory=dict)
+    placements: dict[tuple[int, int], Placement] = field(default_factory=dict)
+    acks: int = 0
+    errors: int = 0
+    _pending: dict[str, _PendingReport] = field(default_factory=dict)
+
+    def module(self, module_id: int) -> ModuleState | None:
+        return self.modules.get(f"{module_id:02d}")
+
+    def _row(self, role: str | None, module_id: int | None) -> ModuleState | None:
+        if module_id is not None:
+            key = f"{module_id:02d}"
+        elif role is not None:
+            key = role
+        else:
+            return None
+        row = self.modules.get(key)
+        if row is None:
+            row = self.modules[key] = ModuleState(key=key, module_id=module_id)
+        if role is not None:
+            row.role = role
+        return row
+
+    def apply(self, port: str, ev: Event, t: float = 0.0) -> bool:  # noqa: C901
+        """Update from one event; True if anything visible changed."""
+        if isinstance(ev, Ack):
+            self.acks += 1
+            row = self._row(ev.role, ev.module)
+            if row is None:
+                return True
+            row.last_ack, row.last_seen = ev.code, t
+            return True
+        if isinstance(ev, ErrorReply):
+            self.errors += 1
+            row = self._row(ev.role, ev.module)
+            if row is not None:
+                row.last_error, row.last_seen = f"{ev.code}:{error_name(ev.reason)}", t
+            return True
+        if isinstance(ev, StatusReport):
+            row = self._row(ev.role if ev.role != "-" else None, ev.module_id)
+            assert row is not None  # a status always names its module
+            row.role = ev.role
+            row.localized = ev.localized
+            row.last_seen = t
+            row.last_error = "" if ev.error == 0 else error_name(ev.error)
+            if ev.localized:
+                row.position, row.orientation = (ev.x, ev.y), ev.yref
+                self._name_placement(ev.x, ev.y, ev.yref, ev.module_id, t)
+            return True
+        return self._apply_report(port, ev, t)
+
+    def _apply_report(self, port: str, ev: Event, t: float) -> bool:
+        if isinstance(ev, Text):
+            if ev.phrase == "LOCALIZED":
+                self._pending[port] = _PendingReport()
+            elif ev.phrase in ("COMM. BOARD READY", "CTR. BOARD READY") and ev.tail:
+                ident = _id_from_tail(ev.tail)
+                if ident is not None:
+                    row = self._row(None, ident)
+                    assert row is not None
+                    row.boot, row.last_seen = ev.tail, t
+                    return True
+            return False
+        pending = self._pending.get(port)
+        if pending is None:
+            return False
+        if isinstance(ev, SideReport):
+            pending.side = ev.side
+        elif isinstance(ev, YrefReport):
+            pending.yref = ev.yref
+        elif isinstance(ev, PositionReport):
+            del self._pending[port]
+            old = self.placements.get((ev.x, ev.y))
+            self.placements[(ev.x, ev.y)] = Placement(
+                ev.x, ev.y, pending.yref if pending.yref is not None else 0, pending.side, t,
+                old.module_id if old else None)
+            return True
+        return False
+
+    def _name_placement(self, x: int, y: int, yref: int, module_id: int, t: float) -> None:
+        for p in self.placements.values():
+            if p.module_id == module_id and (p.x, p.y) != (x, y):
+                p.module_id = None  # it moved away from there
+        p = self.placements.get((x, y))
+        if p is None:
+            self.placements[(x, y)] = Placement(x, y, yref, None, t, module_id)
+        else:
+            p.module_id, p.yref = module_id, yref
+
+    def cells(self) -> list[Placement]:
+        """Every occupied lattice cell the host knows, sorted by position."""
+        return [self.placements[k] for k in sorted(self.placements)]
+
+    def clear(self) -> None:
+        self.modules.clear()
+        self.placements.clear()
+        self._pending.clear()
+        self.acks = self.errors = 0
+
+
+def _id_from_tail(tail: str) -> int | None:
+    for word in tail.split():
+        if word.upper().startswith("ID="):
+            digits = word[3:]
+            if digits.isdigit():
+                return int(digits)
+    return None

@@ -1,0 +1,201 @@
+"""The thesis' workflows as commands, and waiting for their replies.
+
+The user thinks in lattice (global) directions; the firmware wants joint
+indices in each module's body frame. A module with orientation Yref (the
+global side of its body side 1, minus one) has its body joint
+``((global - 1 - Yref) mod 6) + 1`` at global joint ``global``. The combined
+rotations 67/68 carry one index for the substrate and one for the mobile
+module (thesis listing: ``SCW(i)``/``MCW(i)`` take the *mobile's* rotation
+joint, each in its own frame), so both are the same global joint converted
+with each module's own orientation.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from dataclasses import dataclass, field
+
+from hexbot.errors import FrameError
+from hexbot.host.describe import describe_event
+from hexbot.host.host import IR, Host, Observed
+from hexbot.protocol import frames
+from hexbot.protocol.codes import lookup
+from hexbot.protocol.frames import Command
+from hexbot.protocol.parser import Ack, ErrorReply, StatusReport
+
+
+@dataclass(frozen=True)
+class Timing:
+    """Delays of one rotation half, in 10 ms ticks."""
+
+    t1: int
+    t2: int
+    t3: int
+
+
+# Table 3-1 in ticks. 45 ms and 95 ms are not whole ticks: rounded half up
+# (5 and 10), so each step lasts at least as long as the thesis measured.
+THESIS_TIMINGS: dict[str, tuple[Timing, Timing]] = {
+    # direction: (substrate, mobile)
+    "cw": (Timing(8, 4, 10), Timing(8, 5, 9)),
+    "ccw": (Timing(8, 5, 9), Timing(8, 4, 10)),
+}
+
+
+def body_joint(global_joint: int, orientation: int) -> int:
+    """Body-frame index of a global joint for a module with this Yref."""
+    if not 1 <= global_joint <= 6:
+        raise FrameError(f"joint must be 1..6, got {global_joint}")
+    if not 0 <= orientation <= 5:
+        raise FrameError(f"orientation (Yref) must be 0..5, got {orientation}")
+    return (global_joint - 1 - orientation) % 6 + 1
+
+
+def rotate(direction: str, global_joint: int, mobile_orientation: int,
+           substrate_orientation: int, timings: tuple[Timing, Timing] | None = None) -> Command:
+    """Code 67 (cw) or 68 (ccw) for a rotation of the mobile module about
+    ``global_joint`` (lattice frame)."""
+    direction = direction.lower()
+    if direction not in THESIS_TIMINGS:
+        raise FrameError(f"direction must be cw or ccw, got {direction!r}")
+    sub, mob = timings or THESIS_TIMINGS[direction]
+    si = body_joint(global_joint, substrate_orientation)
+    mi = body_joint(global_joint, mobile_orientation)
+    return frames.make("CW" if direction == "cw" else "CCW",
+                       si, sub.t1, sub.t2, sub.t3, mi, mob.t1, mob.t2, mob.t3)
+
+
+def select(*ids: int) -> Command:
+    return frames.select(list(ids))
+
+
+def ref() -> Command:
+    return frames.make("Ref")
+
+
+def localize() -> Command:
+    return frames.make("Localize")
+
+
+def status() -> Command:
+    return frames.make("Status")
+
+
+def all_off() -> Command:
+    return frames.make("TurnOffAll")
+
+
+def parse_command(words: list[str], *, strict: bool = True) -> Command:
+    """``["JxOpen", "3"]`` or ``["1", "3"]`` -> a validated command. With
+    ``strict=False`` any code and byte values pass (to test the firmware's
+    own checks); they still must be bytes."""
+    if not words:
+        raise FrameError("no function given")
+    try:
+        fn = lookup(words[0])
+    except KeyError:
+        if strict or not words[0].isdigit():
+            raise FrameError(f"unknown function {words[0]!r} (see `hexbot codes`)") from None
+        fn = None
+    args = []
+    for w in words[1:]:
+        try:
+            args.append(int(w, 0))
+        except ValueError:
+            raise FrameError(f"{words[0]}: argument {w!r} is not a number") from None
+    code = fn.code if fn is not None else int(words[0])
+    return frames.make(code, *args, strict=strict)
+
+
+# --- waiting for replies --------------------------------------------------
+
+
+@dataclass
+class Outcome:
+    command: Command
+    replies: list[Observed] = field(default_factory=list)
+    ok: bool = False
+    message: str = ""
+
+    def lines(self) -> list[str]:
+        return [describe_event(r.event) for r in self.replies]
+
+
+def _reply_to(obs: Observed, code: int, modules: set[int] | None) -> bool:
+    ev = obs.event
+    if not isinstance(ev, (Ack, ErrorReply, StatusReport)):
+        return False
+    if isinstance(ev, ErrorReply) and ev.code != code:
+        return False
+    if modules is not None:
+        ident = ev.module_id if isinstance(ev, StatusReport) else ev.module
+        return ident in modules
+    return True
+
+
+def exchange(host: Host, command: Command, *, modules: list[int] | None = None,
+             count: int = 1, timeout: float = 5.0, port: str = IR,
+             cancel: threading.Event | None = None, strict: bool = True) -> Outcome:
+    """Send ``command`` and wait for ``count`` replies (ACK, ERR, or STA for
+    Status), from ``modules`` if given (one reply each). ``ok`` when every
+    reply is the expected ACK/status and enough arrived."""
+    wanted = set(modules) if modules else None
+    need = len(wanted) if wanted else count
+    out = Outcome(command)
+    mark = host.send(command, port, strict=strict)
+    deadline = time.monotonic() + timeout
+    seen = mark
+    while len(out.replies) < need:
+        if cancel is not None and cancel.is_set():
+            out.message = "cancelled"
+            return out
+        left = deadline - time.monotonic()
+        if left <= 0:
+            break
+        obs = host.wait_for(lambda o: _reply_to(o, command.code, wanted), seen, min(left, 0.1))
+        if obs is None:
+            seen = max(seen, host.mark())
+            continue
+        seen = obs.seq + 1
+        if wanted is not None:
+            wanted.discard(obs.event.module_id if isinstance(obs.event, StatusReport)
+                           else obs.event.module)
+        out.replies.append(obs)
+    bad = [r for r in out.replies if not _is_success(r, command.code)]
+    if bad:
+        out.message = "; ".join(describe_event(r.event) for r in bad)
+    elif len(out.replies) < need:
+        missing = f" (no reply from {', '.join(str(m) for m in sorted(wanted))})" if wanted else ""
+        out.message = (f"{command}: {len(out.replies)} of {need} replies "
+                       f"within {timeout:g} s{missing}")
+    else:
+        out.ok = True
+        out.message = f"{command}: {len(out.replies)} reply(ies) OK"
+    return out
+
+
+def _is_success(obs: Observed, code: int) -> bool:
+    ev = obs.event
+    if isinstance(ev, StatusReport):
+        return code == lookup("Status").code
+    return isinstance(ev, Ack) and ev.code == code
+
+
+def collect_until_quiet(host: Host, since: int, quiet: float, timeout: float,
+                        cancel: threading.Event | None = None) -> list[Observed]:
+    """Events from ``since`` until none arrived for ``quiet`` seconds (or
+    ``timeout`` passed): for broadcasts whose number of answers is unknown."""
+    deadline = time.monotonic() + timeout
+    last_count, last_change = -1, time.monotonic()
+    while time.monotonic() < deadline:
+        if cancel is not None and cancel.is_set():
+            break
+        n = host.mark()
+        now = time.monotonic()
+        if n != last_count:
+            last_count, last_change = n, now
+        elif now - last_change >= quiet:
+            break
+        time.sleep(0.05)
+    return host.since(since)

@@ -1,0 +1,218 @@
+"""A serial link that survives its port: open, read in a thread, reconnect.
+
+Any pyserial URL or device works the same (``/dev/ttyUSB0``, a pty path,
+``socket://host:port``, ``rfc2217://``, ``loop://``): the link calls
+``serial.serial_for_url``. Like ``serial.threaded.ReaderThread`` the
+thread only moves bytes; what they mean is the business of the callback
+(see :mod:`hexbot.host.channel`). When the port fails the link reports
+``LOST``, keeps retrying every ``retry_s`` seconds and reports ``CONNECTED``
+again when the port is back; nothing else in the host has to care.
+"""
+
+from __future__ import annotations
+
+import enum
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+
+import serial
+
+from hexbot.errors import LinkUnavailableError
+
+_PARITY = {"N": serial.PARITY_NONE, "E": serial.PARITY_EVEN, "O": serial.PARITY_ODD,
+           "M": serial.PARITY_MARK, "S": serial.PARITY_SPACE}
+_STOP = {1: serial.STOPBITS_ONE, 1.5: serial.STOPBITS_ONE_POINT_FIVE, 2: serial.STOPBITS_TWO}
+
+
+@dataclass(frozen=True)
+class PortSettings:
+    """What the thesis' port configuration window asked for: port, baud,
+    parity, data bits, stop bits."""
+
+    url: str
+    baud: int = 300
+    parity: str = "N"
+    data_bits: int = 8
+    stop_bits: float = 1
+
+    def __post_init__(self) -> None:
+        if not self.url:
+            raise LinkUnavailableError("no port given")
+        if self.parity not in _PARITY:
+            raise LinkUnavailableError(f"parity must be one of {''.join(_PARITY)}, "
+                                       f"got {self.parity!r}")
+        if self.data_bits not in (5, 6, 7, 8):
+            raise LinkUnavailableError(f"data bits must be 5..8, got {self.data_bits}")
+        if self.stop_bits not in _STOP:
+            raise LinkUnavailableError(f"stop bits must be 1, 1.5 or 2, got {self.stop_bits}")
+        if self.baud <= 0:
+            raise LinkUnavailableError(f"baud must be positive, got {self.baud}")
+
+    @property
+    def frame(self) -> str:
+        """``8N1`` style summary."""
+        stop = int(self.stop_bits) if self.stop_bits != 1.5 else 1.5
+        return f"{self.data_bits}{self.parity}{stop}"
+
+    def describe(self) -> str:
+        return f"{self.url} {self.baud} {self.frame}"
+
+    def open(self, timeout: float) -> serial.SerialBase:
+        """Open the port; LinkUnavailableError (with the cause) if it cannot."""
+        try:
+            return serial.serial_for_url(
+                self.url, baudrate=self.baud, parity=_PARITY[self.parity],
+                bytesize=self.data_bits, stopbits=_STOP[self.stop_bits], timeout=timeout,
+                write_timeout=2.0,
+            )
+        except (serial.SerialException, OSError, ValueError) as exc:
+            raise LinkUnavailableError(f"cannot open {self.url}: {exc}") from exc
+
+
+class LinkState(enum.Enum):
+    CLOSED = "closed"  # not started, or stopped by the user
+    CONNECTING = "connecting"
+    CONNECTED = "connected"
+    LOST = "lost"  # failed; retrying
+
+
+DataCallback = Callable[[bytes], None]
+StateCallback = Callable[[LinkState, str], None]
+IdleCallback = Callable[[], None]
+
+
+class Link:
+    """One port, one reader thread. Callbacks run in that thread.
+
+    ``on_idle`` is called when a read returned nothing (every ``poll_s``);
+    the channel uses it to flush a half reply after a quiet period.
+    """
+
+    def __init__(self, settings: PortSettings, on_data: DataCallback,
+                 on_state: StateCallback | None = None, on_idle: IdleCallback | None = None,
+                 *, retry_s: float = 1.0, poll_s: float = 0.05) -> None:
+        self.settings = settings
+        self._on_data = on_data
+        self._on_state = on_state or (lambda state, detail: None)
+        self._on_idle = on_idle or (lambda: None)
+        self.retry_s = retry_s
+        self.poll_s = poll_s
+        self._port: serial.SerialBase | None = None
+        self._lock = threading.Lock()  # guards _port for writers
+        self._stop = threading.Event()
+        self._thread: threading.Thread | None = None
+        self.state = LinkState.CLOSED
+        self.detail = ""
+        self.bytes_in = 0
+        self.bytes_out = 0
+
+    # --- public API -------------------------------------------------------
+
+    def start(self, wait_s: float = 0.0) -> Link:
+        """Start the reader thread; optionally wait until connected (raises
+        LinkUnavailableError with the last failure if it does not happen)."""
+        if self._thread is None or not self._thread.is_alive():
+            self._stop.clear()
+            self._thread = threading.Thread(target=self._run, name=f"link {self.settings.url}",
+                                            daemon=True)
+            self._thread.start()
+        if wait_s > 0:
+            deadline = time.monotonic() + wait_s
+            while self.state is not LinkState.CONNECTED and time.monotonic() < deadline:
+                time.sleep(0.01)
+            if self.state is not LinkState.CONNECTED:
+                raise LinkUnavailableError(self.detail or f"cannot open {self.settings.url}")
+        return self
+
+    @property
+    def connected(self) -> bool:
+        return self.state is LinkState.CONNECTED
+
+    def write(self, data: bytes) -> None:
+        """Write all bytes now; LinkUnavailableError if the port is not open
+        or fails (the reader thread then reconnects)."""
+        with self._lock:
+            port = self._port
+            if port is None:
+                raise LinkUnavailableError(f"{self.settings.url} is not connected"
+                                           + (f" ({self.detail})" if self.detail else ""))
+            try:
+                port.write(data)
+                port.flush()
+            except (serial.SerialException, OSError) as exc:
+                self._drop_locked(f"write failed: {exc}")
+                raise LinkUnavailableError(f"{self.settings.url}: write failed: {exc}") from exc
+        self.bytes_out += len(data)
+
+    def close(self) -> None:
+        """Stop the thread and close the port. Idempotent."""
+        self._stop.set()
+        with self._lock:
+            self._drop_locked(None)
+        if self._thread is not None and self._thread is not threading.current_thread():
+            self._thread.join(timeout=2.0)
+        self._thread = None
+        self._set_state(LinkState.CLOSED, "")
+
+    def __enter__(self) -> Link:
+        return self.start()
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    # --- reader thread -----------------------------------------------------
+
+    def _set_state(self, state: LinkState, detail: str) -> None:
+        if state is self.state and detail == self.detail:
+            return
+        self.state, self.detail = state, detail
+        self._on_state(state, detail)
+
+    def _drop_locked(self, why: str | None) -> None:
+        port, self._port = self._port, None
+        if port is not None:
+            try:
+                port.close()
+            except (serial.SerialException, OSError):
+                pass  # closing a dead port may fail; it is gone either way
+        if why is not None and not self._stop.is_set():
+            self._set_state(LinkState.LOST, why)
+
+    def _run(self) -> None:
+        while not self._stop.is_set():
+            if self.state is not LinkState.LOST:
+                self._set_state(LinkState.CONNECTING, self.settings.describe())
+            try:
+                port = self.settings.open(self.poll_s)
+            except LinkUnavailableError as exc:
+                self._set_state(LinkState.LOST, str(exc))
+                self._stop.wait(self.retry_s)
+                continue
+            with self._lock:
+                self._port = port
+            self._set_state(LinkState.CONNECTED, self.settings.describe())
+            self._read_until_failure(port)
+            if not self._stop.is_set():
+                self._stop.wait(self.retry_s)
+
+    def _read_until_failure(self, port: serial.SerialBase) -> None:
+        while not self._stop.is_set():
+            try:
+                data = port.read(max(1, port.in_waiting))
+            except (serial.SerialException, OSError, TypeError, AttributeError) as exc:
+                # TypeError/AttributeError: pyserial raises them when the port
+                # is closed under a blocked read by close() from another thread.
+                with self._lock:
+                    if self._port is port:
+                        self._drop_locked(f"read failed: {exc}")
+                return
+            if data:
+                self.bytes_in += len(data)
+                self._on_data(data)
+            else:
+                self._on_idle()
+            with self._lock:
+                if self._port is not port:
+                    return

@@ -1,0 +1,476 @@
+"""HexBot scripts (``*.hbs``): a user's hardware-in-the-loop regression.
+
+One command per line, ``#`` starts a comment, words are separated by
+spaces. The whole file is checked before anything is sent, so a typo on
+line 40 does not leave the cluster half-configured. Execution stops at the
+first failed step. Grammar (``[...]`` optional, ``ID...`` one or more)::
+
+    timeout S                      default wait for the following steps (5 s)
+    select ID...                   Select(ids) (0 = all); expects their ACKs
+    FUNCTION [ARG...]              send a function by name or code and expect
+                                   its ACK from every selected module
+                                   (e.g. ``Ref``, ``JxOpen 3``, ``65``)
+    send FUNCTION [ARG...]         the same, spelled out
+    post FUNCTION [ARG...]         send without waiting for anything
+    status                         Status(); expects a STA from each selected module
+    rotate cw|ccw JOINT mobile ID substrate ID
+                                   67/68 about a lattice joint; body indices from
+                                   each module's last status, thesis timings
+    wait S                         let S seconds pass (replies keep arriving)
+    expect ack CODE [from ID...] [within S]
+    expect err CODE [REASON] [from ID...] [within S]
+    expect text PHRASE [count N] [within S]      e.g. ``expect text LOCALIZED count 7``
+    expect status ID [localized|unlocalized] [at X Y] [yref R] [role M|S|-]
+    expect placements N [within S] at least N modules reported a position
+    expect quiet S                 no ERR and no garbage for S seconds
+    echo TEXT                      print TEXT
+
+Expectations look at everything received since the last sent command, so
+a reply that arrived during a ``wait`` still counts.
+"""
+
+from __future__ import annotations
+
+import threading
+import time
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+from hexbot.errors import FrameError, HexBotError, ScenarioError
+from hexbot.host import commands
+from hexbot.host.describe import describe_event
+from hexbot.host.host import Host, Observed
+from hexbot.protocol.codes import ErrorCode, lookup
+from hexbot.protocol.frames import Command
+from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
+
+DEFAULT_TIMEOUT = 5.0
+ALL_QUIET_S = 1.5  # after a broadcast, answers end when the link is quiet this long
+
+
+class ScriptFailed(HexBotError):
+    """A step of a script did not get what it expected."""
+
+
+@dataclass(frozen=True)
+class Step:
+    line: int
+    text: str
+    verb: str
+    words: tuple[str, ...]
+    command: Command | None = None  # for steps that send
+
+
+def _int(word: str, what: str, where: str) -> int:
+    try:
+        return int(word, 0)
+    except ValueError:
+        raise ScenarioError(f"{where}: {what} must be a number, got {word!r}") from None
+
+
+def _float(word: str, what: str, where: str) -> float:
+    try:
+        value = float(word)
+    except ValueError:
+        raise ScenarioError(f"{where}: {what} must be a number, got {word!r}") from None
+    if value < 0:
+        raise ScenarioError(f"{where}: {what} must not be negative, got {word!r}")
+    return value
+
+
+def _options(words: list[str], where: str, known: dict[str, int]) -> dict[str, list[str]]:
+    """Split ``from 3 4 within 2`` style keyword options; known maps each
+    keyword to its number of values (-1 = all numbers that follow)."""
+    out: dict[str, list[str]] = {}
+    i = 0
+    while i < len(words):
+        key = words[i]
+        if key not in known:
+            raise ScenarioError(f"{where}: unexpected {key!r} (expected one of "
+                                f"{', '.join(known)})")
+        n = known[key]
+        if n == -1:
+            j = i + 1
+            while j < len(words) and words[j].lstrip("-").isdigit():
+                j += 1
+            vals = words[i + 1 : j]
+        else:
+            vals = words[i + 1 : i + 1 + n]
+            j = i + 1 + n
+        if (n == -1 and not vals) or len(vals) < max(n, 0):
+            raise ScenarioError(f"{where}: {key!r} needs a value")
+        out[key] = vals
+        i = j
+    return out
+
+
+def parse_script(text: str, name: str = "<script>") -> list[Step]:
+    steps = []
+    for number, raw in enumerate(text.splitlines(), start=1):
+        line = raw.split("#", 1)[0].strip()
+        if not line:
+            continue
+        steps.append(_parse_line(line, f"{name}:{number}", number))
+    return steps
+
+
+def load_script(path: Path) -> list[Step]:
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise ScenarioError(f"{path}: cannot read script: {exc}") from exc
+    return parse_script(text, str(path))
+
+
+def _parse_line(line: str, where: str, number: int) -> Step:  # noqa: C901 - one branch a verb
+    words = line.split()
+    verb, rest = words[0].lower(), words[1:]
+    cmd: Command | None = None
+    try:
+        if verb == "timeout" or verb == "wait":
+            if len(rest) != 1:
+                raise ScenarioError(f"{where}: {verb} takes one number of seconds")
+            _float(rest[0], "seconds", where)
+        elif verb == "select":
+            if not rest:
+                raise ScenarioError(f"{where}: select needs at least one module id (0 = all)")
+            cmd = commands.select(*[_int(w, "module id", where) for w in rest])
+        elif verb in ("send", "post"):
+            cmd = commands.parse_command(rest)
+        elif verb == "status":
+            if rest:
+                raise ScenarioError(f"{where}: status takes no arguments "
+                                    "(use 'expect status ID ...' to check one)")
+            cmd = commands.status()
+        elif verb == "rotate":
+            _parse_rotate(rest, where)
+        elif verb == "expect":
+            _parse_expect(rest, where)
+        elif verb == "echo":
+            pass
+        else:
+            cmd = commands.parse_command(words)
+            verb, rest = "send", words
+    except FrameError as exc:
+        raise ScenarioError(f"{where}: {exc}") from None
+    return Step(number, line, verb, tuple(rest), cmd)
+
+
+def _parse_rotate(rest: list[str], where: str) -> tuple[str, int, int, int]:
+    if len(rest) != 6 or rest[2] != "mobile" or rest[4] != "substrate":
+        raise ScenarioError(f"{where}: expected 'rotate cw|ccw JOINT mobile ID substrate ID'")
+    direction = rest[0].lower()
+    if direction not in ("cw", "ccw"):
+        raise ScenarioError(f"{where}: direction must be cw or ccw, got {rest[0]!r}")
+    joint = _int(rest[1], "joint", where)
+    if not 1 <= joint <= 6:
+        raise ScenarioError(f"{where}: joint must be 1..6, got {joint}")
+    return direction, joint, _int(rest[3], "mobile id", where), _int(rest[5], "substrate id",
+                                                                     where)
+
+
+_EXPECT_OPTIONS = {
+    "ack": {"from": -1, "within": 1},
+    "err": {"from": -1, "within": 1},
+    "placements": {"within": 1},
+}
+
+
+def _parse_expect(rest: list[str], where: str) -> None:  # noqa: C901
+    if not rest:
+        raise ScenarioError(f"{where}: expect what? (ack, err, text, status, placements, quiet)")
+    kind, args = rest[0].lower(), rest[1:]
+    if kind == "ack":
+        if not args:
+            raise ScenarioError(f"{where}: expect ack needs a function code or name")
+        _code(args[0], where)
+        _options(args[1:], where, _EXPECT_OPTIONS["ack"])
+    elif kind == "err":
+        if not args:
+            raise ScenarioError(f"{where}: expect err needs a function code or name")
+        _code(args[0], where)
+        tail = args[1:]
+        if tail and tail[0] not in ("from", "within"):
+            _reason(tail[0], where)
+            tail = tail[1:]
+        _options(tail, where, _EXPECT_OPTIONS["err"])
+    elif kind == "text":
+        _split_text(args, where)
+    elif kind == "status":
+        _parse_status_expect(args, where)
+    elif kind == "placements":
+        if not args:
+            raise ScenarioError(f"{where}: expect placements needs a count")
+        _int(args[0], "count", where)
+        _options(args[1:], where, _EXPECT_OPTIONS["placements"])
+    elif kind == "quiet":
+        if len(args) != 1:
+            raise ScenarioError(f"{where}: expect quiet takes one number of seconds")
+        _float(args[0], "seconds", where)
+    else:
+        raise ScenarioError(f"{where}: unknown expectation {kind!r} "
+                            "(ack, err, text, status, placements, quiet)")
+
+
+def _code(word: str, where: str) -> int:
+    try:
+        return lookup(word).code
+    except KeyError:
+        raise ScenarioError(f"{where}: unknown function {word!r}") from None
+
+
+def _reason(word: str, where: str) -> int:
+    if word.isdigit():
+        return int(word)
+    try:
+        return ErrorCode[word.upper()].value
+    except KeyError:
+        raise ScenarioError(f"{where}: unknown error reason {word!r} (one of "
+                            f"{', '.join(e.name for e in ErrorCode)})") from None
+
+
+def _split_text(args: list[str], where: str) -> tuple[str, int, float | None]:
+    count, within = 1, None
+    words = list(args)
+    while len(words) >= 2 and words[-2] in ("count", "within"):
+        if words[-2] == "count":
+            count = _int(words[-1], "count", where)
+        else:
+            within = _float(words[-1], "seconds", where)
+        words = words[:-2]
+    if not words:
+        raise ScenarioError(f"{where}: expect text needs a phrase")
+    return " ".join(words), count, within
+
+
+def _parse_status_expect(args: list[str], where: str) -> dict:
+    if not args:
+        raise ScenarioError(f"{where}: expect status needs a module id")
+    want: dict = {"id": _int(args[0], "module id", where)}
+    i = 1
+    while i < len(args):
+        w = args[i].lower()
+        if w in ("localized", "unlocalized"):
+            want["localized"] = w == "localized"
+            i += 1
+        elif w == "at" and len(args) >= i + 3:
+            want["at"] = (_int(args[i + 1], "x", where), _int(args[i + 2], "y", where))
+            i += 3
+        elif w == "yref" and len(args) >= i + 2:
+            want["yref"] = _int(args[i + 1], "yref", where)
+            i += 2
+        elif w == "role" and len(args) >= i + 2 and args[i + 1] in ("M", "S", "-"):
+            want["role"] = args[i + 1]
+            i += 2
+        else:
+            raise ScenarioError(f"{where}: in expect status, unexpected {args[i]!r} "
+                                "(localized, unlocalized, at X Y, yref R, role M|S|-)")
+    return want
+
+
+# --- execution --------------------------------------------------------------
+
+
+Printer = Callable[[str], None]
+
+
+class ScriptRunner:
+    def __init__(self, host: Host, name: str = "<script>", out: Printer = print,
+                 cancel: threading.Event | None = None) -> None:
+        self.host = host
+        self.name = name
+        self.out = out
+        self.cancel = cancel
+        self.timeout = DEFAULT_TIMEOUT
+        self.selection: list[int] | None = None  # None = legacy/all
+        self.mark = host.mark()
+        self.steps_done = 0
+
+    def run(self, steps: list[Step]) -> None:
+        """Run every step; ScriptFailed at the first failure."""
+        for step in steps:
+            if self.cancel is not None and self.cancel.is_set():
+                raise ScriptFailed(f"{self.name}:{step.line}: cancelled")
+            try:
+                result = self._step(step)
+            except ScriptFailed:
+                raise
+            except HexBotError as exc:
+                raise ScriptFailed(f"{self.name}:{step.line}: {step.text}: {exc}") from exc
+            self.steps_done += 1
+            self.out(f"{step.line:4d} ok    {step.text}" + (f"  -> {result}" if result else ""))
+
+    def _fail(self, step: Step, why: str) -> ScriptFailed:
+        return ScriptFailed(f"{self.name}:{step.line}: {step.text}: {why}")
+
+    def _step(self, step: Step) -> str:  # noqa: C901 - one branch a verb
+        w = list(step.words)
+        where = f"{self.name}:{step.line}"
+        if step.verb == "timeout":
+            self.timeout = float(w[0])
+            return ""
+        if step.verb == "wait":
+            self._sleep(float(w[0]))
+            return ""
+        if step.verb == "echo":
+            return " ".join(w)
+        if step.verb == "post":
+            assert step.command is not None
+            self.mark = self.host.send(step.command)
+            return f"sent {step.command}"
+        if step.verb == "select":
+            ids = [int(x, 0) for x in w]
+            self.selection = None if ids == [0] else ids
+            return self._exchange(step, step.command)
+        if step.verb in ("send", "status"):
+            return self._exchange(step, step.command)
+        if step.verb == "rotate":
+            direction, joint, mobile, substrate = _parse_rotate(w, where)
+            orient = {}
+            for ident in (mobile, substrate):
+                row = self.host.model.module(ident)
+                if row is None or row.orientation is None:
+                    raise self._fail(step, f"orientation of module {ident} unknown "
+                                           "(run 'status' after localizing)")
+                orient[ident] = row.orientation
+            cmd = commands.rotate(direction, joint, orient[mobile], orient[substrate])
+            self.selection = [substrate, mobile]
+            self._exchange(step, commands.select(substrate, mobile))
+            return self._exchange(step, cmd)
+        if step.verb == "expect":
+            return self._expect(step, w, where)
+        raise self._fail(step, f"unknown verb {step.verb}")  # parse_script prevents this
+
+    def _sleep(self, seconds: float) -> None:
+        end = time.monotonic() + seconds
+        while time.monotonic() < end:
+            if self.cancel is not None and self.cancel.is_set():
+                return
+            time.sleep(min(0.05, max(0.0, end - time.monotonic())))
+
+    def _exchange(self, step: Step, cmd: Command | None) -> str:
+        assert cmd is not None
+        before = self.host.mark()
+        outcome = commands.exchange(self.host, cmd, modules=self.selection, count=1,
+                                    timeout=self.timeout, cancel=self.cancel)
+        self.mark = before
+        if self.selection is None and outcome.ok:
+            # A broadcast: more modules may still answer; let them finish.
+            commands.collect_until_quiet(self.host, before, ALL_QUIET_S, self.timeout,
+                                         self.cancel)
+            extra = [o for o in self.host.since(before)
+                     if isinstance(o.event, ErrorReply) and o.event.code == cmd.code]
+            if extra:
+                raise self._fail(step, "; ".join(describe_event(o.event) for o in extra))
+        if not outcome.ok:
+            raise self._fail(step, outcome.message)
+        return ", ".join(outcome.lines())
+
+    def _wait(self, pred: Callable[[Observed], bool], within: float | None) -> Observed | None:
+        deadline = time.monotonic() + (self.timeout if within is None else within)
+        seen = self.mark
+        while True:
+            left = deadline - time.monotonic()
+            obs = self.host.wait_for(pred, seen, max(0.0, min(left, 0.1)))
+            if obs is not None or left <= 0 or (self.cancel and self.cancel.is_set()):
+                return obs
+
+    def _expect(self, step: Step, w: list[str], where: str) -> str:  # noqa: C901
+        kind, args = w[0].lower(), w[1:]
+        if kind in ("ack", "err"):
+            code = _code(args[0], where)
+            tail = args[1:]
+            reason = None
+            if kind == "err" and tail and tail[0] not in ("from", "within"):
+                reason, tail = _reason(tail[0], where), tail[1:]
+            opts = _options(tail, where, _EXPECT_OPTIONS[kind])
+            ids = {int(x, 0) for x in opts.get("from", [])}
+            within = float(opts["within"][0]) if "within" in opts else None
+            cls = Ack if kind == "ack" else ErrorReply
+            got: dict[int | None, Observed] = {}
+            need = ids or {None}
+
+            def match(o: Observed) -> bool:
+                ev = o.event
+                if not isinstance(ev, cls) or ev.code != code:
+                    return False
+                if reason is not None and ev.reason != reason:
+                    return False
+                key = ev.module if ids else None
+                if key in need and key not in got:
+                    got[key] = o
+                return set(got) >= need
+
+            if self._wait(match, within) is None:
+                missing = sorted(k for k in need - set(got) if k is not None)
+                who = f" from {', '.join(map(str, missing))}" if missing else ""
+                raise self._fail(step, f"no {kind.upper()} {code}{who} "
+                                       f"within {within or self.timeout:g} s"
+                                 + self._recent())
+            return ", ".join(describe_event(o.event) for o in got.values())
+        if kind == "text":
+            phrase, count, within = _split_text(args, where)
+            seen: list[Observed] = []
+
+            def text_match(o: Observed) -> bool:
+                ev = o.event
+                if isinstance(ev, Text) and (ev.phrase + (" " + ev.tail if ev.tail else "")
+                                             ).startswith(phrase):
+                    if o not in seen:
+                        seen.append(o)
+                return len(seen) >= count
+
+            if self._wait(text_match, within) is None:
+                raise self._fail(step, f"saw {len(seen)} of {count} {phrase!r}"
+                                 + self._recent())
+            return f"{len(seen)} x {phrase}"
+        if kind == "status":
+            want = _parse_status_expect(args, where)
+            obs = self._wait(lambda o: isinstance(o.event, StatusReport)
+                             and o.event.module_id == want["id"], None)
+            if obs is None:
+                raise self._fail(step, f"no status from module {want['id']}" + self._recent())
+            ev = obs.event
+            assert isinstance(ev, StatusReport)
+            problems = []
+            if "localized" in want and ev.localized != want["localized"]:
+                problems.append("localized" if ev.localized else "not localized")
+            if "at" in want and (ev.x, ev.y) != want["at"]:
+                problems.append(f"at ({ev.x},{ev.y})")
+            if "yref" in want and ev.yref != want["yref"]:
+                problems.append(f"yref {ev.yref}")
+            if "role" in want and ev.role != want["role"]:
+                problems.append(f"role {ev.role}")
+            if problems:
+                raise self._fail(step, "module is " + ", ".join(problems)
+                                 + f" ({describe_event(ev)})")
+            return describe_event(ev)
+        if kind == "placements":
+            n = int(args[0], 0)
+            opts = _options(args[1:], where, _EXPECT_OPTIONS["placements"])
+            within = float(opts["within"][0]) if "within" in opts else self.timeout
+            deadline = time.monotonic() + within
+            while len(self.host.model.placements) < n and time.monotonic() < deadline:
+                self._sleep(0.05)
+            have = len(self.host.model.placements)
+            if have < n:
+                raise self._fail(step, f"{have} of {n} modules reported a position "
+                                       f"within {within:g} s")
+            return f"{have} placed"
+        if kind == "quiet":
+            start = self.host.mark()
+            self._sleep(float(args[0]))
+            bad = [o for o in self.host.since(start)
+                   if isinstance(o.event, (ErrorReply, Garbage))]
+            if bad:
+                raise self._fail(step, "; ".join(describe_event(o.event) for o in bad))
+            return "quiet"
+        raise self._fail(step, f"unknown expectation {kind}")
+
+    def _recent(self) -> str:
+        evs = self.host.since(self.mark)[-4:]
+        if not evs:
+            return " (nothing received)"
+        return " (last received: " + "; ".join(describe_event(o.event) for o in evs) + ")"

@@ -1,0 +1,119 @@
+"""The embedded simulator, run as a child process with pty ports.
+
+``hexbot sim SCENARIO --pty`` prints one JSON line
+``{"ir": "/dev/pts/N", "uart1": {"3": "/dev/pts/M", ...}}`` and serves those
+ptys until it is stopped. Running it as a process (not a thread) keeps the
+console's event loop free of simulation work and lets the host open the
+simulator exactly like hardware, through pyserial.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import selectors
+import subprocess
+import sys
+import tempfile
+import threading
+import time
+from dataclasses import dataclass
+
+from hexbot.errors import LinkUnavailableError
+
+DEFAULT_SCENARIO = "flower7"
+
+
+@dataclass(frozen=True)
+class SimPorts:
+    ir: str
+    uart1: dict[int, str]
+
+
+class SimProcess:
+    def __init__(self, scenario: str = DEFAULT_SCENARIO, seed: int | None = None,
+                 start_timeout: float = 60.0) -> None:
+        self.scenario = scenario
+        cmd = [sys.executable, "-m", "hexbot.cli", "sim", scenario, "--pty"]
+        if seed is not None:
+            cmd += ["--seed", str(seed)]
+        self.command = cmd
+        # stderr to a file and stdout drained by a thread: a chatty child
+        # must never block on a full pipe.
+        self._stderr = tempfile.TemporaryFile()
+        self._proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                                      stderr=self._stderr)
+        try:
+            self.ports = self._read_ports(start_timeout)
+        except BaseException:
+            self.close()
+            raise
+        threading.Thread(target=self._drain, daemon=True, name="sim stdout").start()
+
+    def _drain(self) -> None:
+        stream = self._proc.stdout
+        try:
+            while stream is not None and stream.read(4096):
+                pass
+        except (OSError, ValueError):
+            pass  # closed by close()
+
+    def _read_ports(self, timeout: float) -> SimPorts:
+        assert self._proc.stdout is not None
+        sel = selectors.DefaultSelector()
+        sel.register(self._proc.stdout, selectors.EVENT_READ)
+        deadline = time.monotonic() + timeout
+        buf = b""
+        fd = self._proc.stdout.fileno()
+        while b"\n" not in buf:
+            left = deadline - time.monotonic()
+            if left <= 0 or not sel.select(left):
+                raise LinkUnavailableError(
+                    f"simulator ({' '.join(self.command[2:])}) printed no ports "
+                    f"within {timeout:g} s")
+            chunk = os.read(fd, 4096)
+            if not chunk:
+                err = self._stderr_tail()
+                raise LinkUnavailableError(
+                    f"simulator exited before printing its ports"
+                    f" (exit {self._proc.wait()}){': ' + err if err else ''}")
+            buf += chunk
+        line = buf.split(b"\n", 1)[0]
+        try:
+            info = json.loads(line)
+            return SimPorts(ir=info["ir"],
+                            uart1={int(k): v for k, v in info.get("uart1", {}).items()})
+        except (ValueError, KeyError, TypeError) as exc:
+            raise LinkUnavailableError(f"simulator printed {line[:200]!r}, "
+                                       f"expected a JSON line with 'ir' and 'uart1'") from exc
+
+    def _stderr_tail(self) -> str:
+        try:
+            self._proc.wait(timeout=2)
+        except subprocess.TimeoutExpired:
+            return ""
+        self._stderr.seek(0)
+        return self._stderr.read().decode(errors="replace").strip()[-400:]
+
+    @property
+    def running(self) -> bool:
+        return self._proc.poll() is None
+
+    def close(self) -> None:
+        """Stop the simulator. Idempotent."""
+        if self._proc.poll() is None:
+            self._proc.terminate()
+            try:
+                self._proc.wait(timeout=5)
+            except subprocess.TimeoutExpired:
+                self._proc.kill()
+                self._proc.wait()
+        if self._proc.stdout is not None:
+            self._proc.stdout.close()
+        self._stderr.close()
+
+    def __enter__(self) -> SimProcess:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()

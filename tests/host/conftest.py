@@ -1,0 +1,33 @@
+"""Fixtures for host tests: a pty test double, a log folder."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+sys.path.insert(0, str(Path(__file__).parent))
+
+from responder import PtyResponder  # noqa: E402
+
+
+@pytest.fixture
+def responder():
+    r = PtyResponder()
+    yield r
+    r.close()
+
+
+@pytest.fixture
+def silent_responder():
+    r = PtyResponder(silent=True)
+    yield r
+    r.close()
+
+
+@pytest.fixture
+def log_dir(tmp_path, monkeypatch):
+    path = tmp_path / "sessions"
+    monkeypatch.setenv("HEXBOT_LOG_DIR", str(path))
+    return path

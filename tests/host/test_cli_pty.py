@@ -1,0 +1,106 @@
+"""The scripting CLI (send, monitor, run, replay) through real ptys."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import threading
+import time
+
+from hexbot.cli import main
+from hexbot.protocol import wire
+
+
+def _session(log_dir):
+    (folder,) = sorted(log_dir.iterdir())[-1:]
+    return folder
+
+
+def test_send_selects_module_and_prints_its_ack(responder, log_dir, capsys):
+    rc = main(["send", "Ref", "--module", "1", "--port", responder.path])
+    out = capsys.readouterr()
+    assert rc == 0, out.err
+    assert "M01 ACK 69 Select" in out.out
+    assert "S01 ACK 65 Ref" in out.out
+    # Select(1) then Ref() went over the wire byte for byte.
+    assert responder.received == [b"*E\x01NNNNNNN#", b"*ANNNNNNNN#"]
+
+
+def test_send_reports_error_reply_with_nonzero_exit(responder, log_dir, capsys):
+    rc = main(["send", "JxOpen", "9", "--unchecked", "--port", responder.path])
+    err = capsys.readouterr().err
+    assert rc == 1
+    assert "ARG_RANGE" in err
+
+
+def test_send_rejects_out_of_range_argument_before_sending(responder, log_dir, capsys):
+    rc = main(["send", "JxOpen", "9", "--port", responder.path])
+    assert rc == 1
+    assert "must be 1..6, got 9" in capsys.readouterr().err
+    assert responder.received == []
+
+
+def test_send_times_out_clearly(silent_responder, log_dir, capsys):
+    rc = main(["send", "Status", "--timeout", "0.3", "--port", silent_responder.path])
+    err = capsys.readouterr().err
+    assert rc == 1
+    assert "0 of 1 replies within 0.3 s" in err
+
+
+def test_send_json_lines(responder, log_dir, capsys):
+    rc = main(["send", "Status", "--module", "4", "--json", "--port", responder.path])
+    assert rc == 0
+    rows = [json.loads(line) for line in capsys.readouterr().out.splitlines()]
+    assert rows[0]["kind"] == "ack" and rows[0]["module"] == 4 and rows[0]["code"] == 69
+    assert rows[1]["kind"] == "statusreport" and rows[1]["module_id"] == 4
+
+
+def test_send_as_a_subprocess(responder, log_dir):
+    proc = subprocess.run([sys.executable, "-m", "hexbot.cli", "send", "70", "--module", "2",
+                           "--port", responder.path], capture_output=True, text=True,
+                          timeout=30)
+    assert proc.returncode == 0, proc.stderr
+    assert "STA id 2" in proc.stdout
+
+
+def test_monitor_prints_decoded_json_lines(responder, log_dir, capsys):
+    def boot():
+        time.sleep(0.3)
+        responder.write(wire.PREAMBLE + b"COMM. BOARD READY ID=05 FW=0.1.0" + wire.EOL)
+        responder.write(wire.PREAMBLE + b"M05: ACK\x14" + wire.EOL)
+
+    threading.Thread(target=boot, daemon=True).start()
+    rc = main(["monitor", "--json", "--duration", "1.0", "--port", responder.path])
+    assert rc == 0
+    rows = [json.loads(line) for line in capsys.readouterr().out.splitlines()]
+    assert [r["kind"] for r in rows] == ["text", "ack"]
+    assert rows[0]["tail"] == "ID=05 FW=0.1.0"
+    assert rows[1]["function"] == "TurnOffAll" and rows[1]["module"] == 5
+
+
+def test_session_capture_replays_to_the_same_events(responder, log_dir, capsys):
+    assert main(["send", "Localize", "--module", "3", "--linger", "0.5",
+                 "--port", responder.path]) == 0
+    capsys.readouterr()
+    folder = _session(log_dir)
+    assert main(["replay", str(folder), "--no-tx"]) == 0
+    replayed = [line.split(None, 3)[3] for line in capsys.readouterr().out.splitlines()
+                if " < " in line]
+    decoded = [line.split(None, 3)[3] for line in
+               (folder / "decoded.log").read_text().splitlines() if " < " in line]
+    assert replayed == decoded
+    assert "LOC position (+00,+01)" in replayed
+
+
+def test_capture_is_byte_exact(responder, log_dir, capsys):
+    assert main(["send", "Status", "--module", "2", "--port", responder.path]) == 0
+    from hexbot.host.capture import read_capture
+
+    records = list(read_capture(_session(log_dir) / "capture.hbcap"))
+    tx = b"".join(r.data for r in records if r.kind == "tx")
+    rx = b"".join(r.data for r in records if r.kind == "rx")
+    assert tx == responder.received[0] + responder.received[1]
+    assert rx.count(b"STA\x02") == 1 and rx.startswith(wire.PREAMBLE)
+    stamps = [r.t for r in records]
+    assert stamps == sorted(stamps)
