@@ -4,9 +4,11 @@ The folders (protocol/, host/, hil_sim/, planning/) show the architecture;
 they import as ``hexbot.<folder>``. Package metadata lives in pyproject.toml.
 """
 
+import shlex
+import subprocess
 from pathlib import Path
 
-from setuptools import setup
+from setuptools import Extension, setup
 
 ROOTS = {
     "hexbot": "hexbot",
@@ -33,6 +35,48 @@ def find_packages_mapped() -> tuple[list[str], dict[str, str]]:
     return packages, package_dir
 
 
+AVR_LIBC_IOM162 = Path("/usr/lib/avr/include/avr/iom162.h")
+
+
+def pkg_config(*args: str) -> list[str]:
+    """Flags from pkg-config, or [] when it or the package is missing."""
+    try:
+        out = subprocess.run(
+            ["pkg-config", *args], check=True, capture_output=True, text=True
+        ).stdout
+    except (OSError, subprocess.CalledProcessError):
+        return []
+    return shlex.split(out)
+
+
+def simavr_extension() -> Extension:
+    """hexbot.hil_sim._avr: our ATmega162 core + lock-step scheduler on libsimavr."""
+    if not AVR_LIBC_IOM162.exists():
+        raise SystemExit(
+            f"{AVR_LIBC_IOM162} is missing: install the Debian package avr-libc "
+            "(the ATmega162 core takes its register map from it)"
+        )
+    cflags = pkg_config("--cflags", "simavr") or ["-I/usr/include/simavr"]
+    libs = pkg_config("--libs", "simavr") or ["-lsimavr"]
+    include_dirs = [f[2:] for f in cflags if f.startswith("-I")]
+    library_dirs = [f[2:] for f in libs if f.startswith("-L")]
+    libraries = [f[2:] for f in libs if f.startswith("-l")]
+    for lib in ("simavr", "elf"):
+        if lib not in libraries:
+            libraries.append(lib)
+    sources = sorted(p.as_posix() for p in Path("hil_sim/core").glob("*.c"))
+    return Extension(
+        "hexbot.hil_sim._avr",
+        sources=sources,
+        include_dirs=include_dirs or ["/usr/include/simavr"],
+        library_dirs=library_dirs,
+        libraries=libraries,
+        extra_compile_args=["-std=gnu99", "-O2", "-Wall", "-Wno-unused-function",
+                            "-Werror=implicit-function-declaration"],
+        depends=sorted(p.as_posix() for p in Path("hil_sim/core").glob("*.h")),
+    )
+
+
 packages, package_dir = find_packages_mapped()
 
 setup(
@@ -40,4 +84,5 @@ setup(
     package_dir=package_dir,
     include_package_data=True,
     package_data={"": ["*.toml", "*.tcss", "*.txt", "*.rules", "*.map", "*.json"]},
+    ext_modules=[simavr_extension()],
 )

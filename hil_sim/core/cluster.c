@@ -1,0 +1,185 @@
+/*
+ * cluster.c -- lock-step scheduler for several simulated MCUs.
+ * See cluster.h for the timing rules.
+ */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "cluster.h"
+
+static int logger_installed;
+
+static void ensure_logger(void)
+{
+	if (!logger_installed) {
+		m162_install_logger();
+		logger_installed = 1;
+	}
+}
+
+cluster_t *cluster_new(uint64_t quantum)
+{
+	ensure_logger();
+	cluster_t *c = calloc(1, sizeof *c);
+	if (!c)
+		return NULL;
+	c->quantum = quantum ? quantum : 1000;
+	return c;
+}
+
+void cluster_free(cluster_t *c)
+{
+	if (!c)
+		return;
+	for (int i = 0; i < c->n; i++)
+		m162_free(c->mcu[i]);
+	free(c->mcu);
+	free(c);
+}
+
+int cluster_add(cluster_t *c, const char *elf_path, const char *name, const char *core,
+		char *err, size_t errlen)
+{
+	FILE *f = fopen(elf_path, "rb");
+	if (!f) {
+		snprintf(err, errlen, "%s: cannot open", elf_path);
+		return -1;
+	}
+	fclose(f);
+	m162_t *m = (!core || !strcmp(core, "atmega162")) ? m162_make() : m162_make_stock(core);
+	if (!m) {
+		snprintf(err, errlen, "unknown MCU core '%s'", core ? core : "");
+		return -1;
+	}
+	if (m162_load_elf(m, elf_path, err, errlen) != 0) {
+		m162_free(m);
+		return -1;
+	}
+	if (c->n && m->avr->frequency != c->frequency) {
+		snprintf(err, errlen, "%s: runs at %u Hz but this cluster runs at %u Hz",
+				elf_path, m->avr->frequency, c->frequency);
+		m162_free(m);
+		return -1;
+	}
+	if (c->n == c->cap) {
+		int cap = c->cap ? c->cap * 2 : 16;
+		m162_t **n = realloc(c->mcu, cap * sizeof *n);
+		if (!n) {
+			m162_free(m);
+			snprintf(err, errlen, "out of memory");
+			return -1;
+		}
+		c->mcu = n;
+		c->cap = cap;
+	}
+	c->frequency = m->avr->frequency;
+	snprintf(m->name, sizeof m->name, "%s", name ? name : "");
+	/* a late-added MCU starts at the cluster's present time */
+	m->avr->cycle = c->cycle;
+	c->mcu[c->n] = m;
+	return c->n++;
+}
+
+static void update_keep(m162_usart_t *s)
+{
+	m162_usart_set_keep_log(s, s->watched || s->peer != NULL);
+}
+
+void cluster_connect(cluster_t *c, int a, int ua, int b, int ub)
+{
+	m162_usart_t *sa = &c->mcu[a]->usart[ua];
+	m162_usart_t *sb = &c->mcu[b]->usart[ub];
+	sa->peer = sb;
+	sb->peer = sa;
+	sa->wire_pos = sa->log_len;
+	sb->wire_pos = sb->log_len;
+	update_keep(sa);
+	update_keep(sb);
+}
+
+void cluster_watch(cluster_t *c, int mcu, int uart)
+{
+	m162_usart_t *s = &c->mcu[mcu]->usart[uart];
+	if (!s->watched) {
+		s->watched = 1;
+		s->take_pos = s->notified_pos = s->log_len;
+	}
+	update_keep(s);
+}
+
+/* Work done between quanta.  Returns 1 if a watched USART finished a byte
+ * nobody has been told about. */
+static int boundary(cluster_t *c)
+{
+	int news = 0;
+	for (int i = 0; i < c->n; i++) {
+		m162_t *m = c->mcu[i];
+		for (int k = 0; k < M162_NUARTS; k++) {
+			m162_usart_t *s = &m->usart[k];
+			if (!s->keep_log)
+				continue;
+			if (s->peer) {
+				for (; s->wire_pos < s->log_len; s->wire_pos++) {
+					m162_txrec_t *r = &s->log[s->wire_pos];
+					if (s->peer->mcu->is_m162)
+						m162_usart_queue_rx(s->peer, r->end, r->byte);
+				}
+			}
+			if (s->watched) {
+				while (s->notified_pos < s->log_len &&
+						s->log[s->notified_pos].end <= c->cycle) {
+					s->notified_pos++;
+					news = 1;
+				}
+			}
+			if (s->log_len > 256)
+				m162_usart_compact_log(s);
+		}
+	}
+	return news;
+}
+
+uint64_t cluster_run(cluster_t *c, uint64_t until)
+{
+	while (c->cycle < until) {
+		uint64_t end = c->cycle + c->quantum;
+		if (end > until)
+			end = until;
+		for (int i = 0; i < c->n; i++)
+			m162_run_until(c->mcu[i], end);
+		c->cycle = end;
+		if (boundary(c))
+			break;
+	}
+	return c->cycle;
+}
+
+int raw_simavr_run(const char *elf_path, const char *core, uint64_t cycles,
+		uint64_t *cycles_done, double *seconds, char *err, size_t errlen)
+{
+	ensure_logger();
+	m162_t *m = m162_make_stock(core);
+	if (!m) {
+		snprintf(err, errlen, "unknown MCU core '%s'", core);
+		return -1;
+	}
+	if (m162_load_elf(m, elf_path, err, errlen) != 0) {
+		m162_free(m);
+		return -1;
+	}
+	avr_t *avr = m->avr;
+	/* simavr's own loop, exactly as run_avr does it (minus wall-clock sleep) */
+	avr->run = avr_callback_run_raw;
+	struct timespec t0, t1;
+	clock_gettime(CLOCK_MONOTONIC, &t0);
+	int state = cpu_Running;
+	while (avr->cycle < cycles && (state == cpu_Running || state == cpu_Sleeping))
+		state = avr_run(avr);
+	clock_gettime(CLOCK_MONOTONIC, &t1);
+	*cycles_done = avr->cycle;
+	*seconds = (t1.tv_sec - t0.tv_sec) + (t1.tv_nsec - t0.tv_nsec) * 1e-9;
+	m162_free(m);
+	return 0;
+}

@@ -1,0 +1,142 @@
+/*
+ * m162.h -- ATmega162 core for libsimavr 1.6, plus the per-MCU state our
+ * lock-step scheduler needs (USART transmit log, receive queue, pin log).
+ *
+ * simavr ships no ATmega162.  m162_core.c declares one the way simavr's own
+ * cores do (one struct of peripheral descriptors); m162_usart.c replaces the
+ * parts of simavr's USART that are wrong for us (URSEL register sharing,
+ * byte pacing, receive timing, stdout echo, real-time polling sleeps).
+ */
+#ifndef HEXBOT_M162_H
+#define HEXBOT_M162_H
+
+#include <stdint.h>
+
+#include "sim_avr.h"
+#include "avr_eeprom.h"
+#include "avr_extint.h"
+#include "avr_flash.h"
+#include "avr_ioport.h"
+#include "avr_spi.h"
+#include "avr_timer.h"
+#include "avr_uart.h"
+#include "avr_watchdog.h"
+
+#define M162_NPORTS 5  /* A..E */
+#define M162_NUARTS 2
+
+/* One byte as it went over a wire: first edge of the start bit, end of the
+ * last stop bit, in the transmitting MCU's cycles. */
+typedef struct m162_txrec_t {
+	uint64_t start, end;
+	uint8_t byte;
+} m162_txrec_t;
+
+/* A byte waiting to reach a receiver at a given cycle (wire delivery). */
+typedef struct m162_rxpend_t {
+	uint64_t due;
+	uint16_t value; /* byte | UART_INPUT_FE */
+} m162_rxpend_t;
+
+#define M162_RXQ_SIZE 64
+
+typedef struct m162_usart_t {
+	struct m162_t *mcu;
+	avr_uart_t *u;
+	int index;
+	/* UBRRnH and UCSRnC share one I/O address; URSEL picks the target.  The
+	 * two registers live at reserved data addresses (see m162_core.c) so that
+	 * simavr's regbits keep working on them. */
+	uint16_t shared_addr, ubrrh_addr, ucsrc_addr;
+	uint64_t last_shared_read; /* cycle+1 of the last read, for the 2-read rule */
+	uint32_t frame_cycles;     /* 1 start + data + parity + stop bits */
+	/* transmitter: UDR buffer + shift register */
+	int shifting;
+	uint64_t shift_start, shift_end;
+	uint8_t shift_byte;
+	int udr_full;
+	uint8_t udr_byte;
+	/* log of transmitted bytes (kept only if watched or wired) */
+	int keep_log;
+	m162_txrec_t *log;
+	size_t log_len, log_cap;
+	size_t wire_pos;     /* next record to hand to the wire peer */
+	size_t take_pos;     /* next record for uart_take() */
+	size_t notified_pos; /* records up to here already ended a run() early */
+	int watched;
+	struct m162_usart_t *peer; /* connect_uart() wire, or NULL */
+	/* receiver side: bytes in flight on a wire, delivered at their due cycle */
+	m162_rxpend_t rxq[M162_RXQ_SIZE];
+	unsigned rxq_head, rxq_len;
+	uint64_t rx_dropped;
+	avr_io_read_t orig_ucsra_read;
+	void *orig_ucsra_read_param;
+	avr_io_write_t orig_ucsrb_write;
+	void *orig_ucsrb_write_param;
+	avr_io_write_t orig_ubrrl_write;
+	void *orig_ubrrl_write_param;
+} m162_usart_t;
+
+typedef struct m162_pinrec_t {
+	uint64_t cycle;
+	char port;
+	uint8_t value;
+} m162_pinrec_t;
+
+#define M162_PINLOG_MAX 65536
+
+/* The peripherals of an ATmega162, as simavr descriptors. */
+struct mcu_t {
+	avr_t core;
+	avr_eeprom_t eeprom;
+	avr_flash_t selfprog;
+	avr_watchdog_t watchdog;
+	avr_extint_t extint;
+	avr_ioport_t porta, portb, portc, portd, porte;
+	avr_uart_t uart0, uart1;
+	avr_timer_t timer0, timer1, timer2, timer3;
+	avr_spi_t spi;
+};
+
+typedef struct m162_t {
+	struct mcu_t mcu; /* our core (unused when running a stock simavr core) */
+	avr_io_t fixup_io;  /* reset hook that runs after every simavr module */
+	int is_m162;        /* 0 for a stock simavr core (comparison runs) */
+	avr_t *avr;
+	char name[64];
+	uint64_t quantum_end; /* a sleeping core never skips past this cycle */
+	m162_usart_t usart[M162_NUARTS];
+	/* pin log: PORTx output values, one record per change */
+	uint8_t last_port[M162_NPORTS];
+	m162_pinrec_t *pinlog;
+	size_t pinlog_len, pinlog_cap;
+	uint64_t pinlog_dropped;
+	struct m162_porthook_t { struct m162_t *m; int idx; } porthook[M162_NPORTS];
+	char last_error[256];
+	uint64_t crash_cycle;
+} m162_t;
+
+/* Core */
+m162_t *m162_make(void);                 /* allocates and avr_init()s an ATmega162 */
+m162_t *m162_make_stock(const char *mmcu); /* simavr's own core, for comparisons */
+void m162_free(m162_t *m);
+int m162_load_elf(m162_t *m, const char *path, char *err, size_t errlen);
+void m162_install_logger(void);
+void m162_run_until(m162_t *m, uint64_t end);
+void m162_reset(m162_t *m);
+static inline m162_t *m162_of(avr_t *avr) { return (m162_t *)avr->custom.data; }
+
+/* USART (m162_usart.c) */
+void m162_usart_init(m162_t *m);
+void m162_usart_reset(m162_t *m);
+int m162_usart_put(m162_usart_t *s, uint16_t value); /* 1 = accepted, 0 = dropped */
+void m162_usart_queue_rx(m162_usart_t *s, uint64_t due, uint16_t value);
+void m162_usart_config(m162_usart_t *s, double *baud, int *data_bits, char *parity,
+		int *stop_bits, int *rxen, int *txen);
+void m162_usart_set_keep_log(m162_usart_t *s, int keep);
+void m162_usart_compact_log(m162_usart_t *s);
+
+/* Register addresses (data space) used outside the descriptor table. */
+extern const uint16_t m162_port_regs[M162_NPORTS][3]; /* PIN, DDR, PORT */
+
+#endif

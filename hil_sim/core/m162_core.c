@@ -1,0 +1,662 @@
+/*
+ * m162_core.c -- the ATmega162 as a simavr core.
+ *
+ * Like simavr's cores/sim_mega128.c this file is mostly data: one struct of
+ * peripheral descriptors filled from avr-libc's register map (avr/iom162.h).
+ * Debian's libsimavr-dev does not install simavr's sim_core_declare.h, so the
+ * few macros it provides are defined here.
+ *
+ * Departures from a stock simavr core, each explained where it is done:
+ *  - UBRRnH/UCSRnC share one I/O address (URSEL selects); both live at
+ *    reserved data addresses 0xF8..0xFB and m162_usart.c routes accesses.
+ *  - A "fixup" I/O module registered first, so its reset runs after every
+ *    simavr module's reset, undoes simavr's debug defaults (TXEN on at reset).
+ *  - PINx writes do nothing (the ATmega162 predates the PIN-toggle feature).
+ *  - Our own run function: SLEEP honours MCUCR.SE, sleeping advances cycles
+ *    only (no wall-clock wait) and never past the current lock-step quantum.
+ */
+#include <stdlib.h>
+#include <string.h>
+#include <stdio.h>
+#include <stdarg.h>
+#include <stddef.h>
+
+#include "m162.h"
+#include "sim_elf.h"
+#include "sim_core.h"
+#include "sim_vcd_file.h"
+
+/* The macros sim_core_declare.h would give us: register names from avr-libc
+ * evaluate to data-space addresses, vectors and bits to plain numbers. */
+#define _AVR_IO_H_
+#define __ASSEMBLER__
+#define __AVR_LIBC_DEPRECATED_ENABLE__
+#define _SFR_IO8(v) ((v) + 32)
+#define _SFR_IO16(v) ((v) + 32)
+#define _SFR_MEM8(v) (v)
+#define _SFR_MEM16(v) (v)
+#define _BV(v) (v)
+#define _VECTOR(v) (v)
+#include "/usr/lib/avr/include/avr/iom162.h"
+
+/* Reserved extended-I/O addresses holding the two halves of each shared
+ * UBRRnH/UCSRnC location (unused on the real part). */
+#define M162_UBRR0H_SHADOW 0xF8
+#define M162_UCSR0C_SHADOW 0xF9
+#define M162_UBRR1H_SHADOW 0xFA
+#define M162_UCSR1C_SHADOW 0xFB
+
+/* HexBot boards: internal RC / 8 = 1 MHz, JTAG off so PC4..PC7 are I/O
+ * (thesis Table 3-6).  avr-libc's factory default high fuse is 0x99. */
+#define M162_LFUSE 0x62
+#define M162_HFUSE 0xD9
+#define M162_EFUSE 0xFF
+
+const uint16_t m162_port_regs[M162_NPORTS][3] = {
+	{ PINA, DDRA, PORTA }, { PINB, DDRB, PORTB }, { PINC, DDRC, PORTC },
+	{ PIND, DDRD, PORTD }, { PINE, DDRE, PORTE },
+};
+
+static void m162_init(avr_t *avr);
+static void m162_core_reset(avr_t *avr);
+
+#define M162_USART(_n, _ubrrh, _ucsrc) \
+	.uart ## _n = { \
+		.name = '0' + _n, \
+		.r_udr = UDR ## _n, \
+		.fe = AVR_IO_REGBIT(UCSR ## _n ## A, FE ## _n), \
+		.dor = AVR_IO_REGBIT(UCSR ## _n ## A, DOR ## _n), \
+		.upe = AVR_IO_REGBIT(UCSR ## _n ## A, UPE ## _n), \
+		.u2x = AVR_IO_REGBIT(UCSR ## _n ## A, U2X ## _n), \
+		.txen = AVR_IO_REGBIT(UCSR ## _n ## B, TXEN ## _n), \
+		.rxen = AVR_IO_REGBIT(UCSR ## _n ## B, RXEN ## _n), \
+		.rxb8 = AVR_IO_REGBIT(UCSR ## _n ## B, RXB8 ## _n), \
+		.usbs = AVR_IO_REGBIT(_ucsrc, USBS ## _n), \
+		.ucsz = AVR_IO_REGBITS(_ucsrc, UCSZ ## _n ## 0, 0x3), \
+		.ucsz2 = AVR_IO_REGBIT(UCSR ## _n ## B, UCSZ ## _n ## 2), \
+		.ubrrl = AVR_IO_REGBITS(UBRR ## _n ## L, 0, 0xFF), \
+		.ubrrh = AVR_IO_REGBITS(_ubrrh, 0, 0xF), \
+		.r_ucsra = UCSR ## _n ## A, \
+		.r_ucsrb = UCSR ## _n ## B, \
+		.r_ucsrc = _ucsrc, \
+		.rxc = { \
+			.enable = AVR_IO_REGBIT(UCSR ## _n ## B, RXCIE ## _n), \
+			.raised = AVR_IO_REGBIT(UCSR ## _n ## A, RXC ## _n), \
+			.vector = USART ## _n ## _RXC_vect, \
+			.raise_sticky = 1, \
+		}, \
+		.txc = { \
+			.enable = AVR_IO_REGBIT(UCSR ## _n ## B, TXCIE ## _n), \
+			.raised = AVR_IO_REGBIT(UCSR ## _n ## A, TXC ## _n), \
+			.vector = USART ## _n ## _TXC_vect, \
+		}, \
+		.udrc = { \
+			.enable = AVR_IO_REGBIT(UCSR ## _n ## B, UDRIE ## _n), \
+			.raised = AVR_IO_REGBIT(UCSR ## _n ## A, UDRE ## _n), \
+			.vector = USART ## _n ## _UDRE_vect, \
+			.raise_sticky = 1, \
+		}, \
+	}
+
+#define M162_PORT(_l, _c, _u) \
+	.port ## _l = { .name = _c, .r_port = PORT ## _u, .r_ddr = DDR ## _u, .r_pin = PIN ## _u }
+
+/* 16-bit timer wave modes shared by timers 1 and 3 (same table as simavr's
+ * megax4 timer1). */
+#define M162_WGM16 { \
+	[0] = AVR_TIMER_WGM_NORMAL16(), \
+	[1] = AVR_TIMER_WGM_FCPWM8(), [2] = AVR_TIMER_WGM_FCPWM9(), \
+	[3] = AVR_TIMER_WGM_FCPWM10(), [4] = AVR_TIMER_WGM_CTC(), \
+	[5] = AVR_TIMER_WGM_FASTPWM8(), [6] = AVR_TIMER_WGM_FASTPWM9(), \
+	[7] = AVR_TIMER_WGM_FASTPWM10(), [12] = AVR_TIMER_WGM_ICCTC(), \
+	[14] = AVR_TIMER_WGM_ICPWM(), [15] = AVR_TIMER_WGM_OCPWM(), }
+
+static const struct mcu_t mcu_mega162 = {
+	.core = {
+		.mmcu = "atmega162",
+		.ioend = RAMSTART - 1,
+		.ramend = RAMEND,
+		.flashend = FLASHEND,
+		.e2end = E2END,
+		.vector_size = 4,
+		.fuse = { M162_LFUSE, M162_HFUSE, M162_EFUSE },
+		.signature = { SIGNATURE_0, SIGNATURE_1, SIGNATURE_2 },
+		.lockbits = 0xFF,
+		.reset_flags = {
+			.porf = AVR_IO_REGBIT(MCUCSR, PORF),
+			.extrf = AVR_IO_REGBIT(MCUCSR, EXTRF),
+			.borf = AVR_IO_REGBIT(MCUCSR, BORF),
+			.wdrf = AVR_IO_REGBIT(MCUCSR, WDRF),
+		},
+		.init = m162_init,
+		.reset = m162_core_reset,
+	},
+	AVR_EEPROM_DECLARE_NOEEPM(EE_RDY_vect),
+	AVR_SELFPROG_DECLARE(SPMCR, SPMEN, SPM_RDY_vect),
+	/* No watchdog interrupt on this part: bits 6/7 of WDTCR are reserved and
+	 * read 0, so the "interrupt mode" of simavr's model never engages. */
+	.watchdog = {
+		.wdrf = AVR_IO_REGBIT(MCUCSR, WDRF),
+		.wdce = AVR_IO_REGBIT(WDTCR, WDCE),
+		.wde = AVR_IO_REGBIT(WDTCR, WDE),
+		.wdp = { AVR_IO_REGBIT(WDTCR, WDP0), AVR_IO_REGBIT(WDTCR, WDP1),
+				AVR_IO_REGBIT(WDTCR, WDP2) },
+		.watchdog = {
+			.enable = AVR_IO_REGBIT(WDTCR, 6),
+			.raised = AVR_IO_REGBIT(WDTCR, 7),
+			.vector = 0,
+		},
+	},
+	.extint = {
+		.eint[0] = {
+			.port_ioctl = AVR_IOCTL_IOPORT_GETIRQ('D'), .port_pin = PD2,
+			.isc = { AVR_IO_REGBIT(MCUCR, ISC00), AVR_IO_REGBIT(MCUCR, ISC01) },
+			.vector = { .enable = AVR_IO_REGBIT(GICR, INT0),
+				.raised = AVR_IO_REGBIT(GIFR, INTF0), .vector = INT0_vect },
+		},
+		.eint[1] = {
+			.port_ioctl = AVR_IOCTL_IOPORT_GETIRQ('D'), .port_pin = PD3,
+			.isc = { AVR_IO_REGBIT(MCUCR, ISC10), AVR_IO_REGBIT(MCUCR, ISC11) },
+			.vector = { .enable = AVR_IO_REGBIT(GICR, INT1),
+				.raised = AVR_IO_REGBIT(GIFR, INTF1), .vector = INT1_vect },
+		},
+		/* INT2 is asynchronous, edge only, one sense bit in EMCUCR */
+		.eint[2] = {
+			.port_ioctl = AVR_IOCTL_IOPORT_GETIRQ('E'), .port_pin = PE0,
+			.isc = { AVR_IO_REGBIT(EMCUCR, ISC2) },
+			.vector = { .enable = AVR_IO_REGBIT(GICR, INT2),
+				.raised = AVR_IO_REGBIT(GIFR, INTF2), .vector = INT2_vect },
+		},
+	},
+	.porta = {
+		.name = 'A', .r_port = PORTA, .r_ddr = DDRA, .r_pin = PINA,
+		.pcint = { .enable = AVR_IO_REGBIT(GICR, PCIE0),
+			.raised = AVR_IO_REGBIT(GIFR, PCIF0), .vector = PCINT0_vect },
+		.r_pcint = PCMSK0,
+	},
+	M162_PORT(b, 'B', B),
+	.portc = {
+		.name = 'C', .r_port = PORTC, .r_ddr = DDRC, .r_pin = PINC,
+		.pcint = { .enable = AVR_IO_REGBIT(GICR, PCIE1),
+			.raised = AVR_IO_REGBIT(GIFR, PCIF1), .vector = PCINT1_vect },
+		.r_pcint = PCMSK1,
+	},
+	M162_PORT(d, 'D', D),
+	M162_PORT(e, 'E', E),
+	M162_USART(0, M162_UBRR0H_SHADOW, M162_UCSR0C_SHADOW),
+	M162_USART(1, M162_UBRR1H_SHADOW, M162_UCSR1C_SHADOW),
+	.timer0 = {
+		.name = '0',
+		.wgm = { AVR_IO_REGBIT(TCCR0, WGM00), AVR_IO_REGBIT(TCCR0, WGM01) },
+		.wgm_op = {
+			[0] = AVR_TIMER_WGM_NORMAL8(), [1] = AVR_TIMER_WGM_FCPWM8(),
+			[2] = AVR_TIMER_WGM_CTC(), [3] = AVR_TIMER_WGM_FASTPWM8(),
+		},
+		.cs = { AVR_IO_REGBIT(TCCR0, CS00), AVR_IO_REGBIT(TCCR0, CS01),
+				AVR_IO_REGBIT(TCCR0, CS02) },
+		.cs_div = { 0, 0, 3 /* 8 */, 6 /* 64 */, 8 /* 256 */, 10 /* 1024 */,
+				AVR_TIMER_EXTCLK_CHOOSE, AVR_TIMER_EXTCLK_CHOOSE },
+		.ext_clock_pin = AVR_IO_REGBIT(PORTB, PB0), /* T0 */
+		.r_tcnt = TCNT0,
+		.overflow = { .enable = AVR_IO_REGBIT(TIMSK, TOIE0),
+			.raised = AVR_IO_REGBIT(TIFR, TOV0), .vector = TIMER0_OVF_vect },
+		.comp = {
+			[AVR_TIMER_COMPA] = {
+				.r_ocr = OCR0,
+				.com = AVR_IO_REGBITS(TCCR0, COM00, 0x3),
+				.com_pin = AVR_IO_REGBIT(PORTB, PB0), /* OC0 */
+				.interrupt = { .enable = AVR_IO_REGBIT(TIMSK, OCIE0),
+					.raised = AVR_IO_REGBIT(TIFR, OCF0), .vector = TIMER0_COMP_vect },
+			},
+		},
+	},
+	.timer1 = {
+		.name = '1',
+		.wgm = { AVR_IO_REGBIT(TCCR1A, WGM10), AVR_IO_REGBIT(TCCR1A, WGM11),
+				AVR_IO_REGBIT(TCCR1B, WGM12), AVR_IO_REGBIT(TCCR1B, WGM13) },
+		.wgm_op = M162_WGM16,
+		.cs = { AVR_IO_REGBIT(TCCR1B, CS10), AVR_IO_REGBIT(TCCR1B, CS11),
+				AVR_IO_REGBIT(TCCR1B, CS12) },
+		.cs_div = { 0, 0, 3, 6, 8, 10, AVR_TIMER_EXTCLK_CHOOSE, AVR_TIMER_EXTCLK_CHOOSE },
+		.ext_clock_pin = AVR_IO_REGBIT(PORTB, PB1), /* T1 */
+		.r_tcnt = TCNT1L, .r_tcnth = TCNT1H,
+		.r_icr = ICR1L, .r_icrh = ICR1H,
+		.ices = AVR_IO_REGBIT(TCCR1B, ICES1),
+		.icp = AVR_IO_REGBIT(PORTE, PE0), /* ICP1 */
+		.overflow = { .enable = AVR_IO_REGBIT(TIMSK, TOIE1),
+			.raised = AVR_IO_REGBIT(TIFR, TOV1), .vector = TIMER1_OVF_vect },
+		.icr = { .enable = AVR_IO_REGBIT(TIMSK, TICIE1),
+			.raised = AVR_IO_REGBIT(TIFR, ICF1), .vector = TIMER1_CAPT_vect },
+		.comp = {
+			[AVR_TIMER_COMPA] = {
+				.r_ocr = OCR1AL, .r_ocrh = OCR1AH,
+				.com = AVR_IO_REGBITS(TCCR1A, COM1A0, 0x3),
+				.com_pin = AVR_IO_REGBIT(PORTD, PD5), /* OC1A */
+				.interrupt = { .enable = AVR_IO_REGBIT(TIMSK, OCIE1A),
+					.raised = AVR_IO_REGBIT(TIFR, OCF1A), .vector = TIMER1_COMPA_vect },
+			},
+			[AVR_TIMER_COMPB] = {
+				.r_ocr = OCR1BL, .r_ocrh = OCR1BH,
+				.com = AVR_IO_REGBITS(TCCR1A, COM1B0, 0x3),
+				.com_pin = AVR_IO_REGBIT(PORTE, PE2), /* OC1B */
+				.interrupt = { .enable = AVR_IO_REGBIT(TIMSK, OCIE1B),
+					.raised = AVR_IO_REGBIT(TIFR, OCF1B), .vector = TIMER1_COMPB_vect },
+			},
+		},
+	},
+	.timer2 = {
+		.name = '2',
+		.wgm = { AVR_IO_REGBIT(TCCR2, WGM20), AVR_IO_REGBIT(TCCR2, WGM21) },
+		.wgm_op = {
+			[0] = AVR_TIMER_WGM_NORMAL8(), [1] = AVR_TIMER_WGM_FCPWM8(),
+			[2] = AVR_TIMER_WGM_CTC(), [3] = AVR_TIMER_WGM_FASTPWM8(),
+		},
+		.cs = { AVR_IO_REGBIT(TCCR2, CS20), AVR_IO_REGBIT(TCCR2, CS21),
+				AVR_IO_REGBIT(TCCR2, CS22) },
+		/* timer2's prescaler has /32 and /128 steps */
+		.cs_div = { 0, 0, 3 /* 8 */, 5 /* 32 */, 6 /* 64 */, 7 /* 128 */,
+				8 /* 256 */, 10 /* 1024 */ },
+		.as2 = AVR_IO_REGBIT(ASSR, AS2), /* 32 kHz crystal on TOSC1/2 */
+		.r_tcnt = TCNT2,
+		.overflow = { .enable = AVR_IO_REGBIT(TIMSK, TOIE2),
+			.raised = AVR_IO_REGBIT(TIFR, TOV2), .vector = TIMER2_OVF_vect },
+		.comp = {
+			[AVR_TIMER_COMPA] = {
+				.r_ocr = OCR2,
+				.com = AVR_IO_REGBITS(TCCR2, COM20, 0x3),
+				.com_pin = AVR_IO_REGBIT(PORTB, PB1), /* OC2 */
+				.interrupt = { .enable = AVR_IO_REGBIT(TIMSK, OCIE2),
+					.raised = AVR_IO_REGBIT(TIFR, OCF2), .vector = TIMER2_COMP_vect },
+			},
+		},
+	},
+	.timer3 = {
+		.name = '3',
+		.wgm = { AVR_IO_REGBIT(TCCR3A, WGM30), AVR_IO_REGBIT(TCCR3A, WGM31),
+				AVR_IO_REGBIT(TCCR3B, WGM32), AVR_IO_REGBIT(TCCR3B, WGM33) },
+		.wgm_op = M162_WGM16,
+		.cs = { AVR_IO_REGBIT(TCCR3B, CS30), AVR_IO_REGBIT(TCCR3B, CS31),
+				AVR_IO_REGBIT(TCCR3B, CS32) },
+		/* no T3 pin: the last two steps are /16 and /32 */
+		.cs_div = { 0, 0, 3 /* 8 */, 6 /* 64 */, 8 /* 256 */, 10 /* 1024 */,
+				4 /* 16 */, 5 /* 32 */ },
+		.r_tcnt = TCNT3L, .r_tcnth = TCNT3H,
+		.r_icr = ICR3L, .r_icrh = ICR3H,
+		.ices = AVR_IO_REGBIT(TCCR3B, ICES3),
+		.icp = AVR_IO_REGBIT(PORTD, PD3), /* ICP3 */
+		.overflow = { .enable = AVR_IO_REGBIT(ETIMSK, TOIE3),
+			.raised = AVR_IO_REGBIT(ETIFR, TOV3), .vector = TIMER3_OVF_vect },
+		.icr = { .enable = AVR_IO_REGBIT(ETIMSK, TICIE3),
+			.raised = AVR_IO_REGBIT(ETIFR, ICF3), .vector = TIMER3_CAPT_vect },
+		.comp = {
+			[AVR_TIMER_COMPA] = {
+				.r_ocr = OCR3AL, .r_ocrh = OCR3AH,
+				.com = AVR_IO_REGBITS(TCCR3A, COM3A0, 0x3),
+				.com_pin = AVR_IO_REGBIT(PORTD, PD4), /* OC3A */
+				.interrupt = { .enable = AVR_IO_REGBIT(ETIMSK, OCIE3A),
+					.raised = AVR_IO_REGBIT(ETIFR, OCF3A), .vector = TIMER3_COMPA_vect },
+			},
+			[AVR_TIMER_COMPB] = {
+				.r_ocr = OCR3BL, .r_ocrh = OCR3BH,
+				.com = AVR_IO_REGBITS(TCCR3A, COM3B0, 0x3),
+				.com_pin = AVR_IO_REGBIT(PORTB, PB4), /* OC3B */
+				.interrupt = { .enable = AVR_IO_REGBIT(ETIMSK, OCIE3B),
+					.raised = AVR_IO_REGBIT(ETIFR, OCF3B), .vector = TIMER3_COMPB_vect },
+			},
+		},
+	},
+	AVR_SPI_DECLARE(0, 0),
+};
+
+/* ------------------------------------------------------------------ */
+/* logging: simavr reports crashes and bad opcodes only through its logger */
+
+static void m162_logger(avr_t *avr, const int level, const char *fmt, va_list ap)
+{
+	if (!avr || level > LOG_ERROR || !avr->custom.data)
+		return;
+	m162_t *m = m162_of(avr);
+	char buf[256];
+	vsnprintf(buf, sizeof buf, fmt, ap);
+	/* strip simavr's colour codes and newlines */
+	char clean[256];
+	size_t j = 0;
+	for (size_t i = 0; buf[i] && j + 1 < sizeof clean; i++) {
+		if (buf[i] == '\x1b') {
+			while (buf[i] && buf[i] != 'm')
+				i++;
+			if (!buf[i])
+				break;
+			continue;
+		}
+		if (buf[i] != '\n')
+			clean[j++] = buf[i];
+	}
+	clean[j] = 0;
+	if (level == LOG_ERROR) {
+		snprintf(m->last_error, sizeof m->last_error, "%s", clean);
+		/* simavr 1.6 logs an invalid opcode and carries on as if it were a
+		 * NOP; a real part would run into garbage, so call it a crash. */
+		if (strstr(clean, "Invalid Opcode") || strstr(clean, "CRASH")) {
+			avr->state = cpu_Crashed;
+			m->crash_cycle = avr->cycle;
+		}
+	}
+}
+
+void m162_install_logger(void)
+{
+	avr_global_logger_set(m162_logger);
+}
+
+/* ------------------------------------------------------------------ */
+/* run loop */
+
+#define M162_MCUCR MCUCR
+#define M162_SE SE
+
+/* One instruction (or one sleep step), like simavr's avr_callback_run_raw
+ * but in virtual time only. */
+static void m162_run_step(avr_t *avr)
+{
+	m162_t *m = m162_of(avr);
+	avr_flashaddr_t new_pc = avr->pc;
+
+	if (avr->state == cpu_Running) {
+		new_pc = avr_run_one(avr);
+		/* the stack ran out of SRAM into the I/O registers */
+		uint16_t sp = avr->data[R_SPL] | (avr->data[R_SPH] << 8);
+		if (sp < RAMSTART - 1 && avr->state != cpu_Crashed) {
+			snprintf(m->last_error, sizeof m->last_error,
+					"stack overflow: SP=%04x below SRAM at PC=%04x", sp, avr->pc);
+			avr->state = cpu_Crashed;
+			m->crash_cycle = avr->cycle;
+		}
+	}
+	avr_cycle_count_t sleep = avr_cycle_timer_process(avr);
+	avr->pc = new_pc;
+
+	if (avr->state == cpu_Sleeping) {
+		if (m->is_m162 && !(avr->data[M162_MCUCR] & (1 << M162_SE))) {
+			avr->state = cpu_Running; /* SLEEP with SE clear is a no-op */
+		} else if (!avr->sreg[S_I]) {
+			avr->state = cpu_Done; /* nothing can ever wake it */
+			return;
+		} else {
+			avr_cycle_count_t target = avr->cycle + 1 + sleep;
+			if (target > m->quantum_end && m->quantum_end > avr->cycle)
+				target = m->quantum_end;
+			avr->cycle = target;
+		}
+	}
+	if ((avr->state == cpu_Running || avr->state == cpu_Sleeping) && avr->interrupt_state)
+		avr_service_interrupts(avr);
+}
+
+static void m162_sleep_virtual(avr_t *avr, avr_cycle_count_t how_long)
+{
+	(void)avr;
+	(void)how_long; /* virtual time: the caller advances avr->cycle */
+}
+
+void m162_run_until(m162_t *m, uint64_t end)
+{
+	avr_t *avr = m->avr;
+	m->quantum_end = end;
+	while (avr->cycle < end) {
+		int st = avr->state;
+		if (st != cpu_Running && st != cpu_Sleeping)
+			break;
+		/* avr->run is normally m162_run_step; the watchdog swaps in its own
+		 * reset callback for one call, so go through the pointer. */
+		avr->run(avr);
+	}
+}
+
+/* ------------------------------------------------------------------ */
+/* init / reset */
+
+static void m162_ignore_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
+{
+	(void)avr; (void)addr; (void)v; (void)param;
+}
+
+static void m162_port_change(struct avr_irq_t *irq, uint32_t value, void *param)
+{
+	struct m162_porthook_t *h = (struct m162_porthook_t *)param;
+	m162_t *m = h->m;
+	int idx = h->idx;
+	(void)irq;
+	if ((uint8_t)value == m->last_port[idx])
+		return;
+	m->last_port[idx] = (uint8_t)value;
+	if (m->pinlog_len >= M162_PINLOG_MAX) {
+		m->pinlog_dropped++;
+		return;
+	}
+	if (m->pinlog_len == m->pinlog_cap) {
+		size_t cap = m->pinlog_cap ? m->pinlog_cap * 2 : 256;
+		m162_pinrec_t *n = realloc(m->pinlog, cap * sizeof *n);
+		if (!n) {
+			m->pinlog_dropped++;
+			return;
+		}
+		m->pinlog = n;
+		m->pinlog_cap = cap;
+	}
+	m->pinlog[m->pinlog_len++] = (m162_pinrec_t){ m->avr->cycle, (char)('A' + idx),
+		(uint8_t)value };
+}
+
+static void m162_fixup_reset(avr_io_t *io)
+{
+	m162_t *m = (m162_t *)((char *)io - offsetof(m162_t, fixup_io));
+	for (int i = 0; i < M162_NPORTS; i++)
+		m->last_port[i] = 0;
+	m162_usart_reset(m);
+}
+
+static const avr_io_t m162_fixup_io_template = {
+	.kind = "m162-fixup",
+	.reset = m162_fixup_reset,
+};
+
+static void m162_init(avr_t *avr)
+{
+	struct mcu_t *mcu = (struct mcu_t *)avr;
+	m162_t *m = m162_of(avr);
+
+	/* registered first => reset last (simavr resets in reverse order) */
+	m->fixup_io = m162_fixup_io_template;
+	avr_register_io(avr, &m->fixup_io);
+
+	avr_eeprom_init(avr, &mcu->eeprom);
+	avr_flash_init(avr, &mcu->selfprog);
+	avr_watchdog_init(avr, &mcu->watchdog);
+	avr_ioport_init(avr, &mcu->porta);
+	avr_ioport_init(avr, &mcu->portb);
+	avr_ioport_init(avr, &mcu->portc);
+	avr_ioport_init(avr, &mcu->portd);
+	avr_ioport_init(avr, &mcu->porte);
+	avr_extint_init(avr, &mcu->extint);
+	avr_uart_init(avr, &mcu->uart0);
+	avr_uart_init(avr, &mcu->uart1);
+	avr_timer_init(avr, &mcu->timer0);
+	avr_timer_init(avr, &mcu->timer1);
+	avr_timer_init(avr, &mcu->timer2);
+	avr_timer_init(avr, &mcu->timer3);
+	avr_spi_init(avr, &mcu->spi);
+
+	/* PINx is read-only on this part */
+	for (int i = 0; i < M162_NPORTS; i++) {
+		avr_io_addr_t a = AVR_DATA_TO_IO(m162_port_regs[i][0]);
+		avr->io[a].w.c = m162_ignore_write;
+		avr->io[a].w.param = NULL;
+	}
+
+	m->usart[0].u = &mcu->uart0;
+	m->usart[0].shared_addr = UCSR0C;
+	m->usart[0].ubrrh_addr = M162_UBRR0H_SHADOW;
+	m->usart[0].ucsrc_addr = M162_UCSR0C_SHADOW;
+	m->usart[1].u = &mcu->uart1;
+	m->usart[1].shared_addr = UCSR1C;
+	m->usart[1].ubrrh_addr = M162_UBRR1H_SHADOW;
+	m->usart[1].ucsrc_addr = M162_UCSR1C_SHADOW;
+	m162_usart_init(m);
+}
+
+static void m162_core_reset(avr_t *avr)
+{
+	(void)avr; /* peripheral fix-ups run in m162_fixup_reset, after the modules */
+}
+
+static void m162_hook_ports(m162_t *m)
+{
+	for (int i = 0; i < M162_NPORTS; i++) {
+		avr_irq_t *irq = avr_io_getirq(m->avr, AVR_IOCTL_IOPORT_GETIRQ('A' + i),
+				IOPORT_IRQ_REG_PORT);
+		m->porthook[i].m = m;
+		m->porthook[i].idx = i;
+		if (irq)
+			avr_irq_register_notify(irq, m162_port_change, &m->porthook[i]);
+	}
+}
+
+static void m162_setup_run(m162_t *m)
+{
+	m->avr->run = m162_run_step;
+	m->avr->sleep = m162_sleep_virtual;
+	m->avr->log = LOG_NONE;
+	m->avr->gdb_port = 0;
+}
+
+m162_t *m162_make(void)
+{
+	m162_t *m = calloc(1, sizeof *m);
+	if (!m)
+		return NULL;
+	memcpy(&m->mcu, &mcu_mega162, sizeof mcu_mega162);
+	m->is_m162 = 1;
+	m->avr = &m->mcu.core;
+	m->avr->custom.data = m;
+	for (int i = 0; i < M162_NUARTS; i++) {
+		m->usart[i].mcu = m;
+		m->usart[i].index = i;
+	}
+	avr_init(m->avr); /* calls m162_init, then resets */
+	m162_setup_run(m);
+	m162_hook_ports(m);
+	return m;
+}
+
+/* A stock simavr core in the same wrapper, for comparison runs.  Only the
+ * run loop, logger and pin log apply; the USART log uses the output IRQ. */
+static void m162_stock_uart_out(struct avr_irq_t *irq, uint32_t value, void *param)
+{
+	m162_usart_t *s = (m162_usart_t *)param;
+	(void)irq;
+	if (!s->keep_log)
+		return;
+	if (s->log_len == s->log_cap) {
+		size_t cap = s->log_cap ? s->log_cap * 2 : 64;
+		m162_txrec_t *n = realloc(s->log, cap * sizeof *n);
+		if (!n)
+			return;
+		s->log = n;
+		s->log_cap = cap;
+	}
+	uint64_t now = s->mcu->avr->cycle;
+	s->log[s->log_len++] = (m162_txrec_t){ now, now, (uint8_t)value };
+}
+
+m162_t *m162_make_stock(const char *mmcu)
+{
+	avr_t *stock = avr_make_mcu_by_name(mmcu);
+	if (!stock)
+		return NULL;
+	m162_t *m = calloc(1, sizeof *m);
+	if (!m) {
+		free(stock);
+		return NULL;
+	}
+	m->avr = stock;
+	m->is_m162 = 0;
+	stock->custom.data = m;
+	for (int i = 0; i < M162_NUARTS; i++) {
+		m->usart[i].mcu = m;
+		m->usart[i].index = i;
+	}
+	avr_init(stock);
+	m162_setup_run(m);
+	m162_hook_ports(m);
+	for (int i = 0; i < M162_NUARTS; i++) {
+		uint32_t flags = 0;
+		avr_ioctl(stock, AVR_IOCTL_UART_SET_FLAGS('0' + i), &flags);
+		avr_irq_t *irq = avr_io_getirq(stock, AVR_IOCTL_UART_GETIRQ('0' + i), UART_IRQ_OUTPUT);
+		if (irq)
+			avr_irq_register_notify(irq, m162_stock_uart_out, &m->usart[i]);
+	}
+	return m;
+}
+
+void m162_free(m162_t *m)
+{
+	if (!m)
+		return;
+	avr_t *avr = m->avr;
+	avr_terminate(avr);
+	for (int i = 0; i < M162_NUARTS; i++)
+		free(m->usart[i].log);
+	free(m->pinlog);
+	if (!m->is_m162)
+		free(avr);
+	free(m);
+}
+
+int m162_load_elf(m162_t *m, const char *path, char *err, size_t errlen)
+{
+	/* elf_firmware_t is big and its layout depends on simavr's build flags:
+	 * give the library generous room. */
+	union {
+		elf_firmware_t f;
+		char pad[sizeof(elf_firmware_t) + 4096];
+	} *fw = calloc(1, sizeof *fw);
+	if (!fw) {
+		snprintf(err, errlen, "out of memory");
+		return -1;
+	}
+	if (elf_read_firmware(path, &fw->f) != 0) {
+		snprintf(err, errlen, "%s: cannot read as an AVR ELF file", path);
+		free(fw);
+		return -1;
+	}
+	if (fw->f.flashsize + fw->f.flashbase > m->avr->flashend + 1) {
+		snprintf(err, errlen, "%s: program is %u bytes, flash holds %u", path,
+				fw->f.flashsize + fw->f.flashbase, m->avr->flashend + 1);
+		free(fw->f.flash);
+		free(fw);
+		return -1;
+	}
+	avr_load_firmware(m->avr, &fw->f);
+	/* the ELF's fuse section may be shorter than 3 bytes; nothing else to do */
+	free(fw->f.flash);
+	free(fw->f.eeprom);
+	free(fw->f.fuse);
+	free(fw->f.lockbits);
+	free(fw);
+	/* avr_load_firmware may install a VCD trace if the ELF asks; we never
+	 * want files written behind the caller's back. */
+	if (m->avr->vcd) {
+		avr_vcd_close(m->avr->vcd);
+		free(m->avr->vcd);
+		m->avr->vcd = NULL;
+	}
+	return 0;
+}
+
+void m162_reset(m162_t *m)
+{
+	avr_reset(m->avr);
+	if (m->is_m162)
+		avr_regbit_set(m->avr, m->avr->reset_flags.extrf);
+}

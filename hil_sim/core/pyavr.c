@@ -1,0 +1,656 @@
+/*
+ * pyavr.c -- Python binding: hexbot.hil_sim._avr.Cluster.
+ *
+ * A thin layer over cluster.c: argument checks, conversions, errors.  The
+ * GIL is held while the simulation runs (run() returns at least at every
+ * watched byte), so other Python threads cannot race the C state.
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+
+#include "cluster.h"
+#include "sim_core_config.h"
+
+typedef struct {
+	PyObject_HEAD
+	cluster_t *c;
+} ClusterObject;
+
+static const char *state_name(int st)
+{
+	switch (st) {
+	case cpu_Running: return "running";
+	case cpu_Sleeping: return "sleeping";
+	case cpu_Crashed: return "crashed";
+	case cpu_Done: return "done";
+	default: return "stopped";
+	}
+}
+
+static m162_t *get_mcu(ClusterObject *self, long i)
+{
+	if (i < 0 || i >= self->c->n) {
+		PyErr_Format(PyExc_IndexError, "no MCU %ld (cluster has %d)", i, self->c->n);
+		return NULL;
+	}
+	return self->c->mcu[i];
+}
+
+static m162_usart_t *get_usart(ClusterObject *self, long i, long u)
+{
+	m162_t *m = get_mcu(self, i);
+	if (!m)
+		return NULL;
+	if (u < 0 || u >= M162_NUARTS) {
+		PyErr_Format(PyExc_ValueError, "USART %ld does not exist (0 or 1)", u);
+		return NULL;
+	}
+	return &m->usart[u];
+}
+
+static int port_index(const char *name)
+{
+	if (name && name[0] >= 'A' && name[0] <= 'E' && name[1] == 0)
+		return name[0] - 'A';
+	PyErr_Format(PyExc_ValueError, "port '%s' does not exist (A..E)", name ? name : "");
+	return -1;
+}
+
+static m162_t *get_m162(ClusterObject *self, long i)
+{
+	m162_t *m = get_mcu(self, i);
+	if (m && !m->is_m162) {
+		PyErr_Format(PyExc_ValueError, "MCU %ld runs a stock simavr core (%s): no such access",
+				i, m->avr->mmcu);
+		return NULL;
+	}
+	return m;
+}
+
+/* ---------------------------------------------------------------- */
+
+static int Cluster_init(ClusterObject *self, PyObject *args, PyObject *kw)
+{
+	static char *kwlist[] = { "quantum_cycles", NULL };
+	long long q = 1000;
+	if (!PyArg_ParseTupleAndKeywords(args, kw, "|L", kwlist, &q))
+		return -1;
+	if (q < 1) {
+		PyErr_SetString(PyExc_ValueError, "quantum_cycles must be >= 1");
+		return -1;
+	}
+	if (self->c)
+		cluster_free(self->c);
+	self->c = cluster_new((uint64_t)q);
+	if (!self->c) {
+		PyErr_NoMemory();
+		return -1;
+	}
+	return 0;
+}
+
+static void Cluster_dealloc(ClusterObject *self)
+{
+	cluster_free(self->c);
+	Py_TYPE(self)->tp_free((PyObject *)self);
+}
+
+static PyObject *Cluster_add_mcu(ClusterObject *self, PyObject *args, PyObject *kw)
+{
+	static char *kwlist[] = { "elf_path", "name", "core", NULL };
+	PyObject *path_obj;
+	const char *name, *core = "atmega162";
+	if (!PyArg_ParseTupleAndKeywords(args, kw, "O&s|s", kwlist, PyUnicode_FSConverter,
+			&path_obj, &name, &core))
+		return NULL;
+	const char *path = PyBytes_AS_STRING(path_obj);
+	char err[512] = "";
+	FILE *f = fopen(path, "rb");
+	if (!f) {
+		PyErr_Format(PyExc_FileNotFoundError, "%s: no such firmware file", path);
+		Py_DECREF(path_obj);
+		return NULL;
+	}
+	fclose(f);
+	int idx = cluster_add(self->c, path, name, core, err, sizeof err);
+	Py_DECREF(path_obj);
+	if (idx < 0) {
+		PyErr_SetString(PyExc_ValueError, err);
+		return NULL;
+	}
+	return PyLong_FromLong(idx);
+}
+
+static PyObject *Cluster_get_cycle(ClusterObject *self, void *closure)
+{
+	(void)closure;
+	return PyLong_FromUnsignedLongLong(self->c->cycle);
+}
+
+static PyObject *Cluster_get_quantum(ClusterObject *self, void *closure)
+{
+	(void)closure;
+	return PyLong_FromUnsignedLongLong(self->c->quantum);
+}
+
+static PyObject *Cluster_get_frequency(ClusterObject *self, void *closure)
+{
+	(void)closure;
+	return PyLong_FromUnsignedLong(self->c->frequency ? self->c->frequency : 1000000);
+}
+
+static PyObject *Cluster_get_count(ClusterObject *self, void *closure)
+{
+	(void)closure;
+	return PyLong_FromLong(self->c->n);
+}
+
+static PyObject *Cluster_connect_uart(ClusterObject *self, PyObject *args)
+{
+	long a, ua, b, ub;
+	if (!PyArg_ParseTuple(args, "llll", &a, &ua, &b, &ub))
+		return NULL;
+	m162_usart_t *sa = get_usart(self, a, ua), *sb = sa ? get_usart(self, b, ub) : NULL;
+	if (!sa || !sb)
+		return NULL;
+	if (sa == sb) {
+		PyErr_SetString(PyExc_ValueError, "cannot wire a USART to itself");
+		return NULL;
+	}
+	if ((sa->peer && sa->peer != sb) || (sb->peer && sb->peer != sa)) {
+		PyErr_SetString(PyExc_ValueError, "USART already wired to another one");
+		return NULL;
+	}
+	cluster_connect(self->c, (int)a, (int)ua, (int)b, (int)ub);
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_watch_uart(ClusterObject *self, PyObject *args)
+{
+	long m, u;
+	if (!PyArg_ParseTuple(args, "ll", &m, &u))
+		return NULL;
+	if (!get_usart(self, m, u))
+		return NULL;
+	cluster_watch(self->c, (int)m, (int)u);
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_run(ClusterObject *self, PyObject *args)
+{
+	unsigned long long until;
+	if (!PyArg_ParseTuple(args, "K", &until))
+		return NULL;
+	return PyLong_FromUnsignedLongLong(cluster_run(self->c, until));
+}
+
+static PyObject *Cluster_uart_take(ClusterObject *self, PyObject *args)
+{
+	long m, u;
+	if (!PyArg_ParseTuple(args, "ll", &m, &u))
+		return NULL;
+	m162_usart_t *s = get_usart(self, m, u);
+	if (!s)
+		return NULL;
+	if (!s->watched) {
+		PyErr_Format(PyExc_ValueError, "USART %ld of MCU %ld is not watched: call watch_uart",
+				u, m);
+		return NULL;
+	}
+	PyObject *list = PyList_New(0);
+	if (!list)
+		return NULL;
+	uint64_t now = s->mcu->avr->cycle;
+	while (s->take_pos < s->log_len && s->log[s->take_pos].end <= now) {
+		m162_txrec_t *r = &s->log[s->take_pos];
+		PyObject *t = Py_BuildValue("(KKi)", (unsigned long long)r->start,
+				(unsigned long long)r->end, (int)r->byte);
+		if (!t || PyList_Append(list, t) < 0) {
+			Py_XDECREF(t);
+			Py_DECREF(list);
+			return NULL;
+		}
+		Py_DECREF(t);
+		s->take_pos++;
+	}
+	if (s->notified_pos < s->take_pos)
+		s->notified_pos = s->take_pos;
+	return list;
+}
+
+static PyObject *Cluster_uart_put(ClusterObject *self, PyObject *args, PyObject *kw)
+{
+	static char *kwlist[] = { "mcu", "uart", "byte", "framing_error", NULL };
+	long m, u, byte;
+	int fe = 0;
+	if (!PyArg_ParseTupleAndKeywords(args, kw, "lll|p", kwlist, &m, &u, &byte, &fe))
+		return NULL;
+	m162_usart_t *s = get_usart(self, m, u);
+	if (!s)
+		return NULL;
+	if (!s->mcu->is_m162) {
+		PyErr_SetString(PyExc_ValueError, "uart_put needs an atmega162 core");
+		return NULL;
+	}
+	if (byte < 0 || byte > 255) {
+		PyErr_Format(PyExc_ValueError, "byte %ld out of range 0..255", byte);
+		return NULL;
+	}
+	uint16_t v = (uint16_t)byte | (fe ? UART_INPUT_FE : 0);
+	return PyBool_FromLong(m162_usart_put(s, v));
+}
+
+static PyObject *Cluster_uart_config(ClusterObject *self, PyObject *args)
+{
+	long m, u;
+	if (!PyArg_ParseTuple(args, "ll", &m, &u))
+		return NULL;
+	m162_usart_t *s = get_usart(self, m, u);
+	if (!s)
+		return NULL;
+	if (!s->mcu->is_m162) {
+		PyErr_SetString(PyExc_ValueError, "uart_config needs an atmega162 core");
+		return NULL;
+	}
+	double baud;
+	int db, sb, rxen, txen;
+	char parity;
+	m162_usart_config(s, &baud, &db, &parity, &sb, &rxen, &txen);
+	char par[2] = { parity, 0 };
+	return Py_BuildValue("{s:d,s:i,s:s,s:i,s:O,s:O,s:k,s:K}", "baud", baud, "data_bits", db,
+			"parity", par, "stop_bits", sb, "rxen", rxen ? Py_True : Py_False, "txen",
+			txen ? Py_True : Py_False, "frame_cycles", (unsigned long)s->frame_cycles,
+			"rx_dropped", (unsigned long long)s->rx_dropped);
+}
+
+static PyObject *Cluster_port(ClusterObject *self, PyObject *args)
+{
+	long m;
+	const char *name;
+	if (!PyArg_ParseTuple(args, "ls", &m, &name))
+		return NULL;
+	m162_t *mc = get_m162(self, m);
+	int p = mc ? port_index(name) : -1;
+	if (p < 0)
+		return NULL;
+	uint8_t *d = mc->avr->data;
+	uint8_t ddr = d[m162_port_regs[p][1]], port = d[m162_port_regs[p][2]];
+	uint8_t pin = (d[m162_port_regs[p][0]] & ~ddr) | (port & ddr);
+	return Py_BuildValue("(iii)", ddr, port, pin);
+}
+
+static PyObject *Cluster_set_input(ClusterObject *self, PyObject *args)
+{
+	long m, mask, value;
+	const char *name;
+	if (!PyArg_ParseTuple(args, "lsll", &m, &name, &mask, &value))
+		return NULL;
+	m162_t *mc = get_m162(self, m);
+	int p = mc ? port_index(name) : -1;
+	if (p < 0)
+		return NULL;
+	if (mask < 0 || mask > 255 || value < 0 || value > 255) {
+		PyErr_SetString(PyExc_ValueError, "mask and value must be 0..255");
+		return NULL;
+	}
+	avr_ioport_t *ports[M162_NPORTS] = { &mc->mcu.porta, &mc->mcu.portb, &mc->mcu.portc,
+		&mc->mcu.portd, &mc->mcu.porte };
+	avr_ioport_t *io = ports[p];
+	/* An external driver wins over the internal pull-up: simavr's "external"
+	 * state is re-applied whenever PORTx/DDRx change. */
+	io->external.pull_mask |= (uint8_t)mask;
+	io->external.pull_value = (io->external.pull_value & ~mask) | (value & mask);
+	for (int b = 0; b < 8; b++)
+		if (mask & (1 << b))
+			avr_raise_irq(io->io.irq + b, (value >> b) & 1);
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_pin_log(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	PyObject *list = PyList_New((Py_ssize_t)mc->pinlog_len);
+	if (!list)
+		return NULL;
+	for (size_t i = 0; i < mc->pinlog_len; i++) {
+		char nm[2] = { mc->pinlog[i].port, 0 };
+		PyObject *t = Py_BuildValue("(Ksi)", (unsigned long long)mc->pinlog[i].cycle, nm,
+				(int)mc->pinlog[i].value);
+		if (!t) {
+			Py_DECREF(list);
+			return NULL;
+		}
+		PyList_SET_ITEM(list, (Py_ssize_t)i, t);
+	}
+	mc->pinlog_len = 0;
+	return list;
+}
+
+static PyObject *Cluster_state(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	return PyUnicode_FromString(state_name(mc->avr->state));
+}
+
+static PyObject *Cluster_last_error(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	return PyUnicode_FromString(mc->last_error);
+}
+
+static PyObject *Cluster_name(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	return PyUnicode_FromString(mc->name);
+}
+
+static PyObject *Cluster_mcu_cycle(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	return PyLong_FromUnsignedLongLong(mc->avr->cycle);
+}
+
+static PyObject *Cluster_reset(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	m162_reset(mc);
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_read_data(ClusterObject *self, PyObject *args)
+{
+	long m, addr, len;
+	if (!PyArg_ParseTuple(args, "lll", &m, &addr, &len))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	if (addr < 0 || len < 0 || addr + len > (long)mc->avr->ramend + 1) {
+		PyErr_Format(PyExc_ValueError, "data range 0x%lx+%ld outside 0..0x%x", addr, len,
+				mc->avr->ramend);
+		return NULL;
+	}
+	return PyBytes_FromStringAndSize((const char *)mc->avr->data + addr, len);
+}
+
+static PyObject *Cluster_read_flash(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	return PyBytes_FromStringAndSize((const char *)mc->avr->flash, mc->avr->flashend + 1);
+}
+
+static PyObject *Cluster_write_flash(ClusterObject *self, PyObject *args)
+{
+	long m;
+	Py_buffer buf;
+	if (!PyArg_ParseTuple(args, "ly*", &m, &buf))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc) {
+		PyBuffer_Release(&buf);
+		return NULL;
+	}
+	uint32_t size = mc->avr->flashend + 1;
+	if ((size_t)buf.len > size) {
+		PyErr_Format(PyExc_ValueError, "image is %zd bytes, flash holds %u", buf.len, size);
+		PyBuffer_Release(&buf);
+		return NULL;
+	}
+	/* the whole flash is replaced: what the image does not cover is erased */
+	memset(mc->avr->flash, 0xFF, size);
+	memcpy(mc->avr->flash, buf.buf, buf.len);
+	mc->avr->codeend = size;
+	PyBuffer_Release(&buf);
+	Py_RETURN_NONE;
+}
+
+static uint8_t *eeprom_bytes(m162_t *mc, uint32_t *size)
+{
+	*size = mc->mcu.eeprom.size;
+	return mc->mcu.eeprom.eeprom;
+}
+
+static PyObject *Cluster_read_eeprom(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	m162_t *mc = get_m162(self, m);
+	if (!mc)
+		return NULL;
+	uint32_t size;
+	uint8_t *ee = eeprom_bytes(mc, &size);
+	return PyBytes_FromStringAndSize((const char *)ee, size);
+}
+
+static PyObject *Cluster_write_eeprom(ClusterObject *self, PyObject *args)
+{
+	long m, addr;
+	Py_buffer buf;
+	if (!PyArg_ParseTuple(args, "lly*", &m, &addr, &buf))
+		return NULL;
+	m162_t *mc = get_m162(self, m);
+	if (!mc) {
+		PyBuffer_Release(&buf);
+		return NULL;
+	}
+	uint32_t size;
+	uint8_t *ee = eeprom_bytes(mc, &size);
+	if (addr < 0 || addr + buf.len > (Py_ssize_t)size) {
+		PyErr_Format(PyExc_ValueError, "EEPROM range %ld+%zd outside 0..%u", addr, buf.len,
+				size - 1);
+		PyBuffer_Release(&buf);
+		return NULL;
+	}
+	memcpy(ee + addr, buf.buf, buf.len);
+	PyBuffer_Release(&buf);
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_fuses(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	return Py_BuildValue("(iii)", mc->avr->fuse[0], mc->avr->fuse[1], mc->avr->fuse[2]);
+}
+
+static PyObject *Cluster_set_fuses(ClusterObject *self, PyObject *args)
+{
+	long m, lo, hi, ext;
+	if (!PyArg_ParseTuple(args, "llll", &m, &lo, &hi, &ext))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	if (lo < 0 || lo > 255 || hi < 0 || hi > 255 || ext < 0 || ext > 255) {
+		PyErr_SetString(PyExc_ValueError, "fuse bytes must be 0..255");
+		return NULL;
+	}
+	mc->avr->fuse[0] = (uint8_t)lo;
+	mc->avr->fuse[1] = (uint8_t)hi;
+	mc->avr->fuse[2] = (uint8_t)ext;
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_signature(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	return PyBytes_FromStringAndSize((const char *)mc->avr->signature, 3);
+}
+
+static PyObject *Cluster_set_signature(ClusterObject *self, PyObject *args)
+{
+	long m;
+	Py_buffer buf;
+	if (!PyArg_ParseTuple(args, "ly*", &m, &buf))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc || buf.len != 3) {
+		if (mc)
+			PyErr_Format(PyExc_ValueError, "signature is 3 bytes, got %zd", buf.len);
+		PyBuffer_Release(&buf);
+		return NULL;
+	}
+	memcpy(mc->avr->signature, buf.buf, 3);
+	PyBuffer_Release(&buf);
+	Py_RETURN_NONE;
+}
+
+static PyMethodDef Cluster_methods[] = {
+	{ "add_mcu", (PyCFunction)(void (*)(void))Cluster_add_mcu, METH_VARARGS | METH_KEYWORDS,
+		"add_mcu(elf_path, name, core='atmega162') -> index: load an ELF on a new MCU" },
+	{ "connect_uart", (PyCFunction)Cluster_connect_uart, METH_VARARGS,
+		"connect_uart(a, uart_a, b, uart_b): full-duplex wire between two USARTs" },
+	{ "watch_uart", (PyCFunction)Cluster_watch_uart, METH_VARARGS,
+		"watch_uart(mcu, uart): queue this USART's transmitted bytes for uart_take" },
+	{ "run", (PyCFunction)Cluster_run, METH_VARARGS,
+		"run(until_cycle) -> cycle reached; returns early after a watched byte" },
+	{ "uart_take", (PyCFunction)Cluster_uart_take, METH_VARARGS,
+		"uart_take(mcu, uart) -> [(start_cycle, end_cycle, byte)]" },
+	{ "uart_put", (PyCFunction)(void (*)(void))Cluster_uart_put, METH_VARARGS | METH_KEYWORDS,
+		"uart_put(mcu, uart, byte, framing_error=False) -> False if dropped" },
+	{ "uart_config", (PyCFunction)Cluster_uart_config, METH_VARARGS,
+		"uart_config(mcu, uart) -> dict of the USART's present configuration" },
+	{ "port", (PyCFunction)Cluster_port, METH_VARARGS, "port(mcu, 'A'..'E') -> (DDR, PORT, PIN)" },
+	{ "set_input", (PyCFunction)Cluster_set_input, METH_VARARGS,
+		"set_input(mcu, port, mask, value): drive external levels on pins" },
+	{ "pin_log", (PyCFunction)Cluster_pin_log, METH_VARARGS,
+		"pin_log(mcu) -> [(cycle, port, PORT value)] since the last call" },
+	{ "state", (PyCFunction)Cluster_state, METH_VARARGS,
+		"state(mcu) -> running|sleeping|crashed|done|stopped" },
+	{ "last_error", (PyCFunction)Cluster_last_error, METH_VARARGS,
+		"last_error(mcu) -> simavr's last error message for this MCU ('' if none)" },
+	{ "name", (PyCFunction)Cluster_name, METH_VARARGS, "name(mcu) -> the name given to add_mcu" },
+	{ "mcu_cycle", (PyCFunction)Cluster_mcu_cycle, METH_VARARGS,
+		"mcu_cycle(mcu) -> this MCU's own cycle counter" },
+	{ "reset", (PyCFunction)Cluster_reset, METH_VARARGS, "reset(mcu): external reset" },
+	{ "read_data", (PyCFunction)Cluster_read_data, METH_VARARGS,
+		"read_data(mcu, addr, length) -> bytes of the data space (registers, I/O, SRAM)" },
+	{ "read_flash", (PyCFunction)Cluster_read_flash, METH_VARARGS, "read_flash(mcu) -> bytes" },
+	{ "write_flash", (PyCFunction)Cluster_write_flash, METH_VARARGS,
+		"write_flash(mcu, data): replace the flash (rest erased to 0xFF)" },
+	{ "read_eeprom", (PyCFunction)Cluster_read_eeprom, METH_VARARGS, "read_eeprom(mcu) -> bytes" },
+	{ "write_eeprom", (PyCFunction)Cluster_write_eeprom, METH_VARARGS,
+		"write_eeprom(mcu, addr, data)" },
+	{ "fuses", (PyCFunction)Cluster_fuses, METH_VARARGS, "fuses(mcu) -> (low, high, ext)" },
+	{ "set_fuses", (PyCFunction)Cluster_set_fuses, METH_VARARGS, "set_fuses(mcu, low, high, ext)" },
+	{ "signature", (PyCFunction)Cluster_signature, METH_VARARGS, "signature(mcu) -> 3 bytes" },
+	{ "set_signature", (PyCFunction)Cluster_set_signature, METH_VARARGS,
+		"set_signature(mcu, sig)" },
+	{ NULL, NULL, 0, NULL },
+};
+
+static PyGetSetDef Cluster_getset[] = {
+	{ "cycle", (getter)Cluster_get_cycle, NULL, "common simulated cycle", NULL },
+	{ "quantum_cycles", (getter)Cluster_get_quantum, NULL, "lock-step quantum", NULL },
+	{ "frequency", (getter)Cluster_get_frequency, NULL, "clock of every MCU, Hz", NULL },
+	{ "mcu_count", (getter)Cluster_get_count, NULL, "number of MCUs", NULL },
+	{ NULL, NULL, NULL, NULL, NULL },
+};
+
+static PyTypeObject ClusterType = {
+	PyVarObject_HEAD_INIT(NULL, 0)
+	.tp_name = "hexbot.hil_sim._avr.Cluster",
+	.tp_basicsize = sizeof(ClusterObject),
+	.tp_flags = Py_TPFLAGS_DEFAULT,
+	.tp_doc = "Several simulated ATmega162s advanced in lock-step quanta.",
+	.tp_new = PyType_GenericNew,
+	.tp_init = (initproc)Cluster_init,
+	.tp_dealloc = (destructor)Cluster_dealloc,
+	.tp_methods = Cluster_methods,
+	.tp_getset = Cluster_getset,
+};
+
+static PyObject *mod_raw_simavr_run(PyObject *mod, PyObject *args)
+{
+	(void)mod;
+	PyObject *path_obj;
+	const char *core;
+	unsigned long long cycles;
+	if (!PyArg_ParseTuple(args, "O&sK", PyUnicode_FSConverter, &path_obj, &core, &cycles))
+		return NULL;
+	char err[512] = "";
+	uint64_t done = 0;
+	double secs = 0;
+	int rc = raw_simavr_run(PyBytes_AS_STRING(path_obj), core, cycles, &done, &secs, err,
+			sizeof err);
+	Py_DECREF(path_obj);
+	if (rc != 0) {
+		PyErr_SetString(PyExc_ValueError, err);
+		return NULL;
+	}
+	return Py_BuildValue("(Kd)", (unsigned long long)done, secs);
+}
+
+static PyMethodDef module_methods[] = {
+	{ "raw_simavr_run", mod_raw_simavr_run, METH_VARARGS,
+		"raw_simavr_run(elf, core, cycles) -> (cycles_done, seconds): simavr's stock run "
+		"loop on one stock core, as a speed reference" },
+	{ NULL, NULL, 0, NULL },
+};
+
+static struct PyModuleDef avr_module = {
+	PyModuleDef_HEAD_INIT, "_avr",
+	"ATmega162 simulation on libsimavr, several MCUs in lock-step.", -1, module_methods,
+};
+
+PyMODINIT_FUNC PyInit__avr(void)
+{
+	if (PyType_Ready(&ClusterType) < 0)
+		return NULL;
+	PyObject *m = PyModule_Create(&avr_module);
+	if (!m)
+		return NULL;
+	Py_INCREF(&ClusterType);
+	if (PyModule_AddObject(m, "Cluster", (PyObject *)&ClusterType) < 0) {
+		Py_DECREF(&ClusterType);
+		Py_DECREF(m);
+		return NULL;
+	}
+	PyModule_AddStringConstant(m, "SIMAVR_VERSION", CONFIG_SIMAVR_VERSION);
+	return m;
+}
