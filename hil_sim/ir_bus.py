@@ -1,0 +1,202 @@
+"""The IR medium: routes bytes between communication boards and the PC.
+
+Each communication board's UART1 drives one of seven IR transceivers, chosen
+by its channel selector (Table 3-5). The medium decides, byte by byte:
+
+* A byte sent on side ``s`` (selector at the byte's *start*) reaches the module
+  in the neighbouring cell only if that module's selector is on the facing
+  side ``s + 3`` when the byte *ends* (its stop bit). Nobody there, or a
+  neighbour looking elsewhere: the byte is lost in the air.
+* A byte sent on the centre channel reaches the PC. The PC's bytes reach every
+  module whose selector is on the centre when the byte ends.
+* Two bytes from different senders that overlap in time at one receiver
+  collide. The receiver gets the bitwise AND of the two (the IR line idles
+  high and a lit LED pulls it low, so the low bits dominate) with the framing
+  error flag set. A module receiver learns of the collision when the second
+  byte ends, so only that byte is marked; the PC's receiver waits until no
+  overlapping byte can still come (one frame time) and marks both.
+* A receiver whose baud rate differs by more than 4 % from the sender's, or
+  whose frame format differs, gets a garbage byte from the seeded generator
+  with the framing error flag.
+* Fault injection per directed link: each data bit flips with probability
+  ``bit_error_rate``; the whole byte vanishes with probability ``byte_loss``.
+  One ``random.Random(seed)`` serves the medium, drawn in a fixed order, so a
+  run is reproducible.
+
+The medium knows nothing of simavr: it talks to the world through the small
+``Air`` protocol below, which the simulator implements.
+"""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Protocol
+
+from .geometry import CENTRE, Cell, facing, neighbor
+from .scenario import PC, Faults
+
+Endpoint = int | str  # module id or "pc"
+BAUD_TOLERANCE = 0.04
+
+
+@dataclass(frozen=True)
+class Frame:
+    """The line settings of one USART, as far as the medium cares."""
+
+    baud: float
+    data_bits: int = 8
+    parity: str = "N"
+    stop_bits: int = 1
+
+    def matches(self, other: Frame) -> bool:
+        if abs(self.baud - other.baud) > BAUD_TOLERANCE * other.baud:
+            return False
+        # A receiver checks only the first stop bit: 8N2 into 8N1 is fine.
+        return (self.data_bits, self.parity) == (other.data_bits, other.parity)
+
+
+PC_FRAME = Frame(300.0)
+
+
+@dataclass(frozen=True)
+class AirByte:
+    sender: Endpoint
+    start: int  # cycle of the start bit
+    end: int  # cycle the stop bit ends
+    value: int
+    frame: Frame
+
+
+class Air(Protocol):
+    """What the medium needs from the simulator."""
+
+    def channel_at(self, module: int, cycle: int) -> int | None:
+        """Side 1..6, CENTRE (0), or None (Y7) the selector chose at ``cycle``."""
+
+    def position(self, module: int) -> Cell: ...
+
+    def module_at(self, cell: Cell) -> int | None: ...
+
+    def listeners(self) -> list[int]:
+        """Ids of every module, in a fixed order."""
+
+    def rx_frame(self, module: int) -> Frame:
+        """The current settings of the module's comm UART1 receiver."""
+
+    def deliver(self, module: int, value: int, framing_error: bool) -> bool:
+        """Hand a byte to the module's comm UART1; False if the USART dropped it."""
+
+
+@dataclass
+class _Arrival:
+    byte: AirByte
+    value: int
+    framing_error: bool
+
+
+@dataclass
+class IrMedium:
+    air: Air
+    seed: int = 0
+    faults_for: Callable[[Endpoint, Endpoint], Faults] = lambda s, r: Faults()
+    emit: Callable[[int, dict], None] = lambda cycle, event: None
+    rng: random.Random = field(init=False)
+    _last: dict[Endpoint, AirByte] = field(default_factory=dict)
+    _pc_pending: list[_Arrival] = field(default_factory=list)
+    _pc_ready: bytearray = field(default_factory=bytearray)
+    _longest_frame: int = 0
+
+    def __post_init__(self) -> None:
+        self.rng = random.Random(self.seed)
+
+    def transmit(self, byte: AirByte) -> None:
+        """A byte finished on the air (simulation time >= byte.end); route it now."""
+        self._longest_frame = max(self._longest_frame, byte.end - byte.start)
+        for receiver in self._receivers(byte):
+            self._arrive(byte, receiver)
+
+    def _receivers(self, byte: AirByte) -> list[Endpoint]:
+        if byte.sender == PC:
+            return [
+                m for m in self.air.listeners() if self.air.channel_at(m, byte.end) == CENTRE
+            ]
+        assert isinstance(byte.sender, int)
+        channel = self.air.channel_at(byte.sender, byte.start)
+        if channel is None:
+            return []
+        if channel == CENTRE:
+            return [PC]
+        other = self.air.module_at(neighbor(self.air.position(byte.sender), channel))
+        if other is None or self.air.channel_at(other, byte.end) != facing(channel):
+            return []
+        return [other]
+
+    def _arrive(self, byte: AirByte, receiver: Endpoint) -> None:
+        faults = self.faults_for(byte.sender, receiver)
+        value = byte.value
+        if faults.active:
+            # Always draw the same number of values per byte and link: the
+            # sequence stays aligned whatever the outcome.
+            lost = self.rng.random() < faults.byte_loss
+            flips = [self.rng.random() < faults.bit_error_rate for _ in range(8)]
+            if lost:
+                self._event(byte, receiver, "ir-lost", reason="fault: byte loss")
+                return
+            mask = sum(1 << bit for bit, flip in enumerate(flips) if flip)
+            if mask:
+                value ^= mask
+                self._event(byte, receiver, "ir-bit-error", mask=mask)
+        rx = PC_FRAME if receiver == PC else self.air.rx_frame(receiver)  # type: ignore[arg-type]
+        framing_error = False
+        if not byte.frame.matches(rx):
+            value = self.rng.randrange(256)
+            framing_error = True
+            self._event(
+                byte, receiver, "ir-garbled", reason=f"sender {byte.frame}, receiver {rx}"
+            )
+        arrival = _Arrival(byte, value, framing_error)
+        previous = self._last.get(receiver)
+        self._last[receiver] = byte
+        collided = (
+            previous is not None
+            and previous.sender != byte.sender
+            and previous.start < byte.end
+            and byte.start < previous.end
+        )
+        if collided:
+            assert previous is not None
+            arrival.value &= previous.value
+            arrival.framing_error = True
+            self._event(byte, receiver, "ir-collision", other=previous.sender)
+        if receiver == PC:
+            if collided:
+                for pending in self._pc_pending:
+                    if pending.byte is previous:
+                        pending.value &= byte.value
+                        pending.framing_error = True
+            self._pc_pending.append(arrival)
+            return
+        assert isinstance(receiver, int)
+        if not self.air.deliver(receiver, arrival.value, arrival.framing_error):
+            self._event(byte, receiver, "ir-dropped", reason="receiver off (RXEN) or overrun")
+
+    def settle(self, now: int) -> None:
+        """Move PC bytes that nothing can collide with any more to the PC's buffer."""
+        horizon = now - self._longest_frame
+        while self._pc_pending and self._pc_pending[0].byte.end <= horizon:
+            arrival = self._pc_pending.pop(0)
+            # A real RS232 converter passes a garbled byte on; so do we.
+            self._pc_ready.append(arrival.value)
+
+    def pc_take(self) -> bytes:
+        data = bytes(self._pc_ready)
+        self._pc_ready.clear()
+        return data
+
+    def _event(self, byte: AirByte, receiver: Endpoint, name: str, **extra: object) -> None:
+        self.emit(
+            byte.end,
+            {"event": name, "from": byte.sender, "to": receiver, "byte": byte.value, **extra},
+        )

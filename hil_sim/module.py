@@ -1,0 +1,120 @@
+"""One HexBot module: its two MCUs and the board pin maps the simulator reads.
+
+A module is a communication MCU and a control MCU joined UART0 to UART0, with
+its id on the control board's DIP switches (port C). The pin maps below are
+the only place that knows which pin is which (Tables 3-3, 3-4, 3-5).
+"""
+
+from __future__ import annotations
+
+import bisect
+from dataclasses import dataclass, field
+from typing import Any
+
+from .geometry import CHANNEL_SIDE, Cell
+from .plant import NEG, OFF, POS, SHORT, Body, Joints, Magnets
+
+Pin = tuple[str, int]  # (port letter, bit)
+
+# Control board (Table 3-4).
+JOINT_PINS: tuple[Pin, ...] = (("A", 2), ("A", 3), ("A", 5), ("A", 4), ("A", 0), ("A", 1))
+MAGNET_POS_PINS: tuple[Pin, ...] = (("B", 0), ("D", 3), ("B", 6), ("D", 4), ("B", 1), ("B", 7))
+MAGNET_NEG_PINS: tuple[Pin, ...] = (("D", 6), ("D", 5), ("D", 7), ("B", 4), ("B", 5), ("D", 2))
+CONTROL_PORTS = ("A", "B", "D")
+
+# Communication board (Tables 3-3 and 3-5): selector A, B, C on PA0, PA1, PA2.
+SELECTOR_PINS: tuple[Pin, ...] = (("A", 0), ("A", 1), ("A", 2))
+#: Status LEDs (active low): name -> pin.
+LED_PINS: dict[str, Pin] = {
+    "led_j1": ("D", 7), "led_j2": ("A", 7), "led_j3": ("E", 2),
+    "led_j4": ("C", 5), "led_j5": ("C", 2), "led_j6": ("D", 4),
+    "led_s1a": ("A", 6), "led_s1b": ("A", 5), "led_s2a": ("E", 1), "led_s2b": ("E", 0),
+    "led_s3a": ("C", 6), "led_s3b": ("C", 7), "led_s4a": ("C", 3), "led_s4b": ("C", 4),
+    "led_s5a": ("C", 1), "led_s5b": ("C", 0), "led_s6a": ("D", 6), "led_s6b": ("D", 5),
+}
+COMM_PORTS = ("A", "C", "D", "E")
+
+
+def _bit(ports: dict[str, int], pin: Pin) -> bool:
+    return bool(ports.get(pin[0], 0) >> pin[1] & 1)
+
+
+def decode_actuators(ports: dict[str, int]) -> tuple[Joints, Magnets]:
+    """Control PORTA/B/D output values -> (joints open?, magnet polarity) per index 1..6."""
+    joints = tuple(_bit(ports, pin) for pin in JOINT_PINS)
+    magnets = []
+    for pos_pin, neg_pin in zip(MAGNET_POS_PINS, MAGNET_NEG_PINS, strict=True):
+        pos, neg = _bit(ports, pos_pin), _bit(ports, neg_pin)
+        magnets.append(SHORT if pos and neg else POS if pos else NEG if neg else OFF)
+    return joints, tuple(magnets)  # type: ignore[return-value]
+
+
+def selector_index(porta: int) -> int:
+    """Y = 4C + 2B + A from the comm board's PORTA."""
+    a, b, c = (porta >> bit & 1 for _, bit in SELECTOR_PINS)
+    return 4 * c + 2 * b + a
+
+
+@dataclass
+class Mcu:
+    """A handle on one simulated MCU of the cluster."""
+
+    cluster: Any
+    index: int
+    name: str
+
+    def port(self, name: str) -> tuple[int, int, int]:
+        """(DDRx, PORTx, PINx)."""
+        return self.cluster.port(self.index, name)
+
+    @property
+    def state(self) -> str:
+        return self.cluster.state(self.index)
+
+    def uart_config(self, uart: int) -> dict:
+        return self.cluster.uart_config(self.index, uart)
+
+
+@dataclass
+class Module:
+    id: int
+    comm: Mcu
+    control: Mcu
+    body: Body
+    control_ports: dict[str, int] = field(default_factory=lambda: dict.fromkeys(CONTROL_PORTS, 0))
+    comm_ports: dict[str, int] = field(default_factory=lambda: dict.fromkeys(COMM_PORTS, 0))
+    # Selector history: parallel lists of change cycles and channel (side/0/None).
+    _sel_cycles: list[int] = field(default_factory=lambda: [0])
+    _sel_channels: list[int | None] = field(default_factory=lambda: [CHANNEL_SIDE[0]])
+
+    @property
+    def position(self) -> Cell:
+        return self.body.cell
+
+    @property
+    def orientation(self) -> int:
+        return self.body.orientation
+
+    @property
+    def fixed(self) -> bool:
+        return self.body.fixed
+
+    @property
+    def channel(self) -> int | None:
+        """Side 1..6 the IR selector listens on now, 0 for centre, None for Y7."""
+        return self._sel_channels[-1]
+
+    def record_selector(self, cycle: int, porta: int, keep_from: int) -> None:
+        channel = CHANNEL_SIDE[selector_index(porta)]
+        if channel != self._sel_channels[-1]:
+            self._sel_cycles.append(cycle)
+            self._sel_channels.append(channel)
+        # Forget history nobody can ask about any more (bytes older than keep_from).
+        drop = bisect.bisect_right(self._sel_cycles, keep_from) - 1
+        if drop > 0:
+            del self._sel_cycles[:drop]
+            del self._sel_channels[:drop]
+
+    def channel_at(self, cycle: int) -> int | None:
+        at = bisect.bisect_right(self._sel_cycles, cycle) - 1
+        return self._sel_channels[max(at, 0)]

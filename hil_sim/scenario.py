@@ -1,0 +1,307 @@
+"""Scenario files: which modules sit where, which firmware they run, which faults.
+
+A scenario is a TOML file (built-ins in ``hil_sim/scenarios/``)::
+
+    name = "pair"
+    seed = 1                      # fault injection and garbage bytes
+    base = 1                      # id of the module fixed to the base (never moves)
+
+    [firmware]                    # optional; default: firmware/build/*.elf
+    comm = "firmware/build/comm.elf"       # relative to the scenario file
+    control = "firmware/build/control.elf"
+
+    [faults]                      # optional; applies to every IR link
+    bit_error_rate = 0.0          # probability that each data bit flips
+    byte_loss = 0.0               # probability that a byte vanishes
+
+    [[faults.link]]               # optional; overrides for one directed link
+    from = 1                      # module id or "pc"
+    to = 2
+    byte_loss = 0.5
+
+    [[module]]
+    id = 1                        # 1..63, also its DIP switches
+    position = [0, 0]             # Table 4-1 axial coordinates
+    orientation = 0               # 0..5, see geometry.py
+
+Every error names the file, the line and the problem.
+"""
+
+from __future__ import annotations
+
+import re
+import tomllib
+from dataclasses import dataclass, field
+from importlib import resources
+from pathlib import Path
+from typing import Any
+
+from hexbot.errors import ScenarioError
+
+from .geometry import Cell
+
+MAX_ID = 63
+COORD_LIMIT = 99  # MSG1 carries two decimal digits per coordinate
+PC = "pc"
+
+_TOP_KEYS = {"name", "description", "seed", "base", "firmware", "faults", "module"}
+_MODULE_KEYS = {"id", "position", "orientation", "firmware"}
+_FIRMWARE_KEYS = {"comm", "control"}
+_FAULT_KEYS = {"bit_error_rate", "byte_loss"}
+_LINK_KEYS = _FAULT_KEYS | {"from", "to"}
+
+
+@dataclass(frozen=True)
+class Faults:
+    """Fault injection on one IR link (or the default for all)."""
+
+    bit_error_rate: float = 0.0
+    byte_loss: float = 0.0
+
+    @property
+    def active(self) -> bool:
+        return self.bit_error_rate > 0 or self.byte_loss > 0
+
+
+@dataclass(frozen=True)
+class Firmware:
+    comm: Path
+    control: Path
+
+
+@dataclass(frozen=True)
+class ModuleSpec:
+    id: int
+    position: Cell
+    orientation: int
+    firmware: Firmware
+    line: int  # where the module's table starts, for later error messages
+
+
+@dataclass
+class Scenario:
+    name: str
+    modules: list[ModuleSpec]
+    base: int | None = None
+    seed: int = 0
+    faults: Faults = field(default_factory=Faults)
+    link_faults: dict[tuple[int | str, int | str], Faults] = field(default_factory=dict)
+    path: Path | None = None
+    description: str = ""
+
+    def faults_for(self, sender: int | str, receiver: int | str) -> Faults:
+        return self.link_faults.get((sender, receiver), self.faults)
+
+    def where(self, line: int) -> str:
+        return f"{self.path or self.name}:{line}"
+
+
+def default_firmware_dir() -> Path:
+    """firmware/build of the source tree this package runs from."""
+    return Path(__file__).resolve().parent.parent / "firmware" / "build"
+
+
+def builtin_names() -> list[str]:
+    folder = resources.files("hexbot.hil_sim") / "scenarios"
+    return sorted(p.name[: -len(".toml")] for p in folder.iterdir() if p.name.endswith(".toml"))
+
+
+def load_scenario(source: str | Path) -> Scenario:
+    """A scenario by built-in name (``"pair"``) or by path to a TOML file."""
+    text_source = str(source)
+    path = Path(text_source)
+    if text_source.endswith(".toml") or path.is_file():
+        if not path.is_file():
+            raise ScenarioError(f"{path}: no such scenario file")
+        return parse_scenario(path.read_text(encoding="utf-8"), path)
+    folder = resources.files("hexbot.hil_sim") / "scenarios"
+    candidate = folder / f"{text_source}.toml"
+    if not candidate.is_file():
+        names = ", ".join(builtin_names())
+        raise ScenarioError(f"unknown scenario {text_source!r}: built-in ones are {names}")
+    return parse_scenario(candidate.read_text(encoding="utf-8"), Path(str(candidate)))
+
+
+class _Lines:
+    """Finds the line of a key inside a table of the TOML text (tomllib has no positions)."""
+
+    _header = re.compile(r"^\s*(\[\[?)\s*([A-Za-z0-9_.\"-]+)\s*\]\]?")
+    _key = re.compile(r"^\s*([A-Za-z0-9_-]+)\s*=")
+
+    def __init__(self, text: str) -> None:
+        # (table name, array index or -1) -> {key: line}, plus the header line under key ""
+        self.tables: dict[tuple[str, int], dict[str, int]] = {("", -1): {"": 1}}
+        counts: dict[str, int] = {}
+        current = ("", -1)
+        for number, raw in enumerate(text.splitlines(), start=1):
+            line = raw.split("#", 1)[0] if '"' not in raw else raw
+            header = self._header.match(line)
+            if header:
+                name = header.group(2)
+                if header.group(1) == "[[":
+                    counts[name] = counts.get(name, -1) + 1
+                    current = (name, counts[name])
+                else:
+                    current = (name, -1)
+                self.tables.setdefault(current, {})[""] = number
+                continue
+            key = self._key.match(line)
+            if key:
+                self.tables.setdefault(current, {}).setdefault(key.group(1), number)
+
+    def find(self, table: str = "", index: int = -1, key: str = "") -> int:
+        entries = self.tables.get((table, index)) or self.tables[("", -1)]
+        return entries.get(key, entries.get("", 1))
+
+
+def parse_scenario(text: str, path: Path) -> Scenario:
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ScenarioError(f"{path}: {exc}") from exc
+    lines = _Lines(text)
+
+    def fail(line: int, problem: str) -> ScenarioError:
+        return ScenarioError(f"{path}:{line}: {problem}")
+
+    def unknown(keys: set[str], allowed: set[str], table: str, index: int = -1) -> None:
+        for key in sorted(keys - allowed):
+            raise fail(lines.find(table, index, key), f"unknown key {key!r} in [{table or 'top'}]")
+
+    unknown(set(data), _TOP_KEYS, "")
+    name = data.get("name", path.stem)
+    if not isinstance(name, str):
+        raise fail(lines.find("", -1, "name"), "name must be a string")
+    seed = data.get("seed", 0)
+    if not isinstance(seed, int) or isinstance(seed, bool):
+        raise fail(lines.find("", -1, "seed"), f"seed must be an integer, not {seed!r}")
+
+    default_fw = _firmware(data.get("firmware", {}), None, path, lines, "firmware", -1, fail)
+
+    faults = _faults(data.get("faults", {}), lines, "faults", -1, fail, set(_FAULT_KEYS | {"link"}))
+    link_faults: dict[tuple[int | str, int | str], Faults] = {}
+    raw_links = data.get("faults", {}).get("link", [])
+    if not isinstance(raw_links, list):
+        raise fail(lines.find("faults", -1, "link"), "faults.link must be an array of tables")
+
+    modules_raw = data.get("module")
+    if not isinstance(modules_raw, list) or not modules_raw:
+        raise fail(1, "a scenario needs at least one [[module]] table")
+    modules: list[ModuleSpec] = []
+    ids: dict[int, int] = {}
+    cells: dict[Cell, int] = {}
+    for index, raw in enumerate(modules_raw):
+        at = lines.find("module", index)
+        unknown(set(raw), _MODULE_KEYS, "module", index)
+        module_id = raw.get("id")
+        if not isinstance(module_id, int) or isinstance(module_id, bool):
+            raise fail(lines.find("module", index, "id"), "module id must be an integer")
+        if not 1 <= module_id <= MAX_ID:
+            raise fail(
+                lines.find("module", index, "id"),
+                f"module id {module_id} outside 1..{MAX_ID} (DIP switches PC0..PC5)",
+            )
+        if module_id in ids:
+            raise fail(
+                lines.find("module", index, "id"),
+                f"module id {module_id} used twice (first at line {ids[module_id]})",
+            )
+        ids[module_id] = at
+        pos = raw.get("position")
+        pos_line = lines.find("module", index, "position")
+        if (
+            not isinstance(pos, list)
+            or len(pos) != 2
+            or not all(isinstance(v, int) and not isinstance(v, bool) for v in pos)
+        ):
+            raise fail(pos_line, f"position must be [x, y] with two integers, not {pos!r}")
+        cell = (pos[0], pos[1])
+        if max(abs(cell[0]), abs(cell[1])) > COORD_LIMIT:
+            raise fail(pos_line, f"position {list(cell)} outside +-{COORD_LIMIT}")
+        if cell in cells:
+            raise fail(pos_line, f"cell {list(cell)} already holds module {cells[cell]}")
+        cells[cell] = module_id
+        orientation = raw.get("orientation", 0)
+        if not isinstance(orientation, int) or not 0 <= orientation <= 5:
+            raise fail(
+                lines.find("module", index, "orientation"),
+                f"orientation must be an integer 0..5, not {orientation!r}",
+            )
+        fw = _firmware(raw.get("firmware", {}), default_fw, path, lines, "module", index, fail)
+        modules.append(ModuleSpec(module_id, cell, orientation, fw, at))
+
+    for index, raw in enumerate(raw_links):
+        if not isinstance(raw, dict):
+            raise fail(lines.find("faults.link", index), "each faults.link must be a table")
+        unknown(set(raw), _LINK_KEYS, "faults.link", index)
+        ends: list[int | str] = []
+        for key in ("from", "to"):
+            value = raw.get(key)
+            if value != PC and value not in ids:
+                raise fail(
+                    lines.find("faults.link", index, key),
+                    f"{key} = {value!r} is neither \"pc\" nor the id of a module",
+                )
+            ends.append(value)
+        link_faults[(ends[0], ends[1])] = _faults(raw, lines, "faults.link", index, fail, _LINK_KEYS)
+
+    base = data.get("base")
+    if base is not None and base not in ids:
+        raise fail(lines.find("", -1, "base"), f"base = {base!r} is not the id of a module")
+
+    return Scenario(
+        name=name,
+        modules=modules,
+        base=base,
+        seed=seed,
+        faults=faults,
+        link_faults=link_faults,
+        path=path,
+        description=str(data.get("description", "")),
+    )
+
+
+def _faults(raw: Any, lines: _Lines, table: str, index: int, fail: Any, allowed: set[str]) -> Faults:
+    if not isinstance(raw, dict):
+        raise fail(lines.find(table, index), f"[{table}] must be a table")
+    for key in sorted(set(raw) - allowed):
+        raise fail(lines.find(table, index, key), f"unknown key {key!r} in [{table}]")
+    values = {}
+    for key in _FAULT_KEYS:
+        value = raw.get(key, 0.0)
+        if isinstance(value, bool) or not isinstance(value, int | float) or not 0 <= value <= 1:
+            raise fail(
+                lines.find(table, index, key), f"{key} must be a probability 0..1, not {value!r}"
+            )
+        values[key] = float(value)
+    return Faults(**values)
+
+
+def _firmware(
+    raw: Any,
+    default: Firmware | None,
+    path: Path,
+    lines: _Lines,
+    table: str,
+    index: int,
+    fail: Any,
+) -> Firmware:
+    if not isinstance(raw, dict):
+        raise fail(lines.find(table, index, "firmware"), "firmware must be a table")
+    fw_table = "firmware" if table == "firmware" else table
+    for key in sorted(set(raw) - _FIRMWARE_KEYS):
+        raise fail(lines.find(fw_table, index, key), f"unknown firmware image {key!r}")
+    if default is None:
+        base_dir = default_firmware_dir()
+        default = Firmware(base_dir / "comm.elf", base_dir / "control.elf")
+    images = {}
+    for key in _FIRMWARE_KEYS:
+        value = raw.get(key)
+        if value is None:
+            images[key] = getattr(default, key)
+        elif not isinstance(value, str):
+            raise fail(lines.find(fw_table, index, key), f"firmware {key} must be a path string")
+        else:
+            image = Path(value)
+            images[key] = image if image.is_absolute() else (path.parent / image).resolve()
+    return Firmware(**images)

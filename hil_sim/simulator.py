@@ -1,0 +1,329 @@
+"""The simulator: a cluster of modules, the IR medium, the plant and the PC.
+
+It owns the time loop. The C core runs every MCU in lock-step and returns at
+the first quantum boundary after a watched UART byte completes; in between,
+this loop moves bytes (IR, debug ports, PC), reads the pin logs (selectors,
+actuators, LEDs) and lets the plant resolve rotations. Everything is in
+virtual time: a run is as fast as the host allows and the same scenario and
+seed give the same trace.
+"""
+
+from __future__ import annotations
+
+import random
+from collections import deque
+from collections.abc import Callable
+from typing import Any
+
+from hexbot.errors import HexBotError, HexBotTimeoutError, ScenarioError
+
+from .geometry import Cell
+from .ir_bus import AirByte, Frame, IrMedium
+from .module import Mcu, Module, decode_actuators
+from .plant import Plant, Timing
+from .scenario import PC, Scenario, load_scenario
+
+F_CPU = 1_000_000
+BAUD_IR = 300
+BAUD_DEBUG = 4800
+DEBUG_FRAME = Frame(float(BAUD_DEBUG))
+HISTORY_S = 2.0  # selector history kept, far more than one 300-baud byte
+
+
+def _load_core() -> Any:
+    try:
+        from hexbot.hil_sim import _avr  # type: ignore[attr-defined]
+    except ImportError as exc:
+        raise HexBotError(
+            "the simulator's C extension hexbot.hil_sim._avr is not built "
+            f"({exc}); build it with `pip install -e .` in the repository"
+        ) from exc
+    return _avr
+
+
+def frame_of(config: dict) -> Frame:
+    return Frame(
+        float(config["baud"]),
+        int(config["data_bits"]),
+        str(config["parity"]),
+        int(config["stop_bits"]),
+    )
+
+
+class Simulator:
+    """A scenario running on simulated MCUs; see SIM_API.md for the contract."""
+
+    def __init__(
+        self,
+        scenario: Scenario,
+        seed: int | None = None,
+        *,
+        quantum_cycles: int = 1000,
+        hz: int = F_CPU,
+        timing: Timing | None = None,
+        cluster: Any = None,
+    ) -> None:
+        self.scenario = scenario
+        self.seed = scenario.seed if seed is None else seed
+        self.hz = hz
+        self.cluster = cluster if cluster is not None else _load_core().Cluster(quantum_cycles)
+        self.events: list[dict] = []
+        self.event_sinks: list[Callable[[dict], None]] = []
+        # (cycle, module id, "comm"|"control", port, value) for VCD writers and the like
+        self.pin_sinks: list[Callable[[list[tuple[int, int, str, str, int]]], None]] = []
+        self.plant = Plant(float(hz), timing or Timing(), emit=self._emit)
+        self.modules: dict[int, Module] = {}
+        self._by_comm: dict[int, Module] = {}
+        self._garbage = random.Random(self.seed ^ 0x5EED)
+        for spec in sorted(scenario.modules, key=lambda m: m.id):
+            for board in ("comm", "control"):
+                image = getattr(spec.firmware, board)
+                if not image.is_file():
+                    raise ScenarioError(
+                        f"{scenario.where(spec.line)}: module {spec.id}: {board} image "
+                        f"{image} does not exist (build it with `make -C firmware`)"
+                    )
+            comm = self.cluster.add_mcu(str(spec.firmware.comm), f"comm{spec.id}")
+            control = self.cluster.add_mcu(str(spec.firmware.control), f"control{spec.id}")
+            self.cluster.connect_uart(comm, 0, control, 0)
+            self.cluster.watch_uart(comm, 1)
+            self.cluster.watch_uart(control, 1)
+            self.cluster.set_input(control, "C", 0xFF, spec.id)  # DIP switches
+            self.plant.add(spec.id, spec.position, spec.orientation, spec.id == scenario.base)
+            module = Module(
+                spec.id,
+                Mcu(self.cluster, comm, f"comm{spec.id}"),
+                Mcu(self.cluster, control, f"control{spec.id}"),
+                self.plant.bodies[spec.id],
+            )
+            self.modules[spec.id] = module
+            self._by_comm[comm] = module
+        self.medium = IrMedium(
+            self, self.seed, faults_for=scenario.faults_for, emit=self._emit
+        )
+        self._ir_frame_cycles = round(10 * hz / BAUD_IR)
+        self._debug_frame_cycles = round(10 * hz / BAUD_DEBUG)
+        self._pc_tx: deque[tuple[int, int, int]] = deque()  # (start, end, byte)
+        self._pc_tx_free = 0  # cycle the PC's transmitter is free again
+        self._debug_tx: dict[int, deque[tuple[int, int]]] = {m: deque() for m in self.modules}
+        self._debug_tx_free: dict[int, int] = dict.fromkeys(self.modules, 0)
+        self._debug_rx: dict[int, bytearray] = {m: bytearray() for m in self.modules}
+        self._pc_rx = bytearray()
+        self._cycle = 0
+
+    @classmethod
+    def from_name(cls, name: str, seed: int | None = None, **kwargs: Any) -> Simulator:
+        return cls(load_scenario(name), seed, **kwargs)
+
+    # --- time ------------------------------------------------------------------
+
+    @property
+    def cycle(self) -> int:
+        return self._cycle
+
+    @property
+    def time(self) -> float:
+        return self._cycle / self.hz
+
+    def run(self, seconds: float) -> None:
+        """Advance virtual time by ``seconds``."""
+        self.run_to_cycle(self._cycle + round(seconds * self.hz))
+
+    def run_to_cycle(self, target: int) -> None:
+        while self._cycle < target:
+            stop = target
+            if self._pc_tx:
+                stop = min(stop, self._pc_tx[0][1])
+            for queue in self._debug_tx.values():
+                if queue:
+                    stop = min(stop, queue[0][0])
+            reached = self.cluster.run(max(stop, self._cycle + 1))
+            self._cycle = max(reached, self._cycle)
+            self._collect()
+
+    def run_until(
+        self, predicate: Callable[[Simulator], bool], timeout: float, step: float = 0.01
+    ) -> None:
+        """Advance until ``predicate(sim)`` holds; HexBotTimeoutError after ``timeout`` s."""
+        deadline = self._cycle + round(timeout * self.hz)
+        while not predicate(self):
+            if self._cycle >= deadline:
+                raise HexBotTimeoutError(
+                    f"condition not met after {timeout} s of simulated time (t={self.time:.3f})"
+                )
+            self.run_to_cycle(min(deadline, self._cycle + round(step * self.hz)))
+
+    def wait_event(self, name: str, timeout: float, **match: Any) -> dict:
+        """Run until an event called ``name`` (with the given fields) appears; return it."""
+        seen = len(self.events)
+
+        def found(sim: Simulator) -> bool:
+            return any(_matches(e, name, match) for e in sim.events[seen:])
+
+        self.run_until(found, timeout)
+        return next(e for e in self.events[seen:] if _matches(e, name, match))
+
+    # --- the PC's IR transceiver and the debug ports ---------------------------
+
+    def pc_write(self, data: bytes) -> None:
+        """Queue bytes on the PC's IR transceiver, sent back to back at 300 baud 8N1."""
+        start = max(self._pc_tx_free, self._cycle)
+        for value in data:
+            end = start + self._ir_frame_cycles
+            self._pc_tx.append((start, end, value))
+            start = end
+        self._pc_tx_free = start
+
+    def pc_read(self) -> bytes:
+        """Every byte the PC's IR transceiver received and nothing could still corrupt."""
+        data = bytes(self._pc_rx) + self.medium.pc_take()
+        self._pc_rx.clear()
+        return data
+
+    def expect(self, pattern: bytes, timeout: float) -> bytes:
+        """Run until ``pattern`` arrives at the PC; return and consume the bytes up to it."""
+        buffered = self._pc_rx
+
+        def seen(sim: Simulator) -> bool:
+            buffered.extend(sim.medium.pc_take())
+            return pattern in buffered
+
+        try:
+            self.run_until(seen, timeout)
+        except HexBotTimeoutError as exc:
+            raise HexBotTimeoutError(
+                f"{pattern!r} not received by the PC in {timeout} s; got {bytes(buffered)!r}"
+            ) from exc
+        cut = buffered.index(pattern) + len(pattern)
+        head = bytes(buffered[:cut])
+        del buffered[:cut]
+        return head
+
+    def debug_write(self, module_id: int, data: bytes) -> None:
+        """Bytes into the control board's UART1 debug port (4800 baud 8N1)."""
+        start = max(self._debug_tx_free[module_id], self._cycle)
+        for value in data:
+            start += self._debug_frame_cycles
+            self._debug_tx[module_id].append((start, value))
+        self._debug_tx_free[module_id] = start
+
+    def debug_read(self, module_id: int) -> bytes:
+        data = bytes(self._debug_rx[module_id])
+        self._debug_rx[module_id].clear()
+        return data
+
+    # --- state -----------------------------------------------------------------
+
+    def positions(self) -> dict[int, Cell]:
+        return {m: mod.position for m, mod in self.modules.items()}
+
+    def module_at(self, cell: Cell) -> int | None:
+        return self.plant.module_at(cell)
+
+    # --- the Air protocol of the IR medium ---------------------------------------
+
+    def channel_at(self, module: int, cycle: int) -> int | None:
+        return self.modules[module].channel_at(cycle)
+
+    def position(self, module: int) -> Cell:
+        return self.modules[module].position
+
+    def listeners(self) -> list[int]:
+        return list(self.modules)
+
+    def rx_frame(self, module: int) -> Frame:
+        return frame_of(self.modules[module].comm.uart_config(1))
+
+    def deliver(self, module: int, value: int, framing_error: bool) -> bool:
+        return bool(self.cluster.uart_put(self.modules[module].comm.index, 1, value, framing_error))
+
+    # --- the loop body -------------------------------------------------------------
+
+    def _emit(self, cycle: int, event: dict) -> None:
+        record = {"t": round(cycle / self.hz, 6), **event}
+        self.events.append(record)
+        for sink in self.event_sinks:
+            sink(record)
+
+    def _collect(self) -> None:
+        now = self._cycle
+        keep_from = now - round(HISTORY_S * self.hz)
+        changes: list[tuple[int, int, str, str, int]] = []
+        for module in self.modules.values():
+            for cycle, port, value in self.cluster.pin_log(module.comm.index):
+                module.comm_ports[port] = value
+                changes.append((cycle, module.id, "comm", port, value))
+                if port == "A":
+                    module.record_selector(cycle, value, keep_from)
+            for cycle, port, value in self.cluster.pin_log(module.control.index):
+                changes.append((cycle, module.id, "control", port, value))
+        changes.sort(key=lambda c: (c[0], c[1], c[2]))
+        control_ports = {m: dict(mod.control_ports) for m, mod in self.modules.items()}
+        for cycle, module_id, board, port, value in changes:
+            if board != "control":
+                continue
+            ports = control_ports[module_id]
+            if ports.get(port) == value:
+                continue
+            ports[port] = value
+            joints, magnets = decode_actuators(ports)
+            self.plant.set_outputs(module_id, cycle, joints, magnets)
+        for module_id, ports in control_ports.items():
+            self.modules[module_id].control_ports = ports
+        self.plant.step(now)
+        for sink in self.pin_sinks:
+            sink(changes)
+
+        air: list[AirByte] = []
+        for module in self.modules.values():
+            taken = self.cluster.uart_take(module.comm.index, 1)
+            if taken:
+                frame = frame_of(module.comm.uart_config(1))
+                air.extend(AirByte(module.id, s, e, b, frame) for s, e, b in taken)
+            debug = self.cluster.uart_take(module.control.index, 1)
+            if debug:
+                self._debug_received(module, debug)
+        while self._pc_tx and self._pc_tx[0][1] <= now:
+            start, end, value = self._pc_tx.popleft()
+            air.append(AirByte(PC, start, end, value, Frame(float(BAUD_IR))))
+        air.sort(key=lambda b: (b.end, b.start, str(b.sender)))
+        for byte in air:
+            self.medium.transmit(byte)
+        self.medium.settle(now)
+
+        for module_id, queue in self._debug_tx.items():
+            while queue and queue[0][0] <= now:
+                _, value = queue.popleft()
+                self._debug_send(self.modules[module_id], value)
+
+    def _debug_received(self, module: Module, taken: list[tuple[int, int, int]]) -> None:
+        frame = frame_of(module.control.uart_config(1))
+        for _start, end, value in taken:
+            if frame.matches(DEBUG_FRAME):
+                self._debug_rx[module.id].append(value)
+            else:
+                self._debug_rx[module.id].append(self._garbage.randrange(256))
+                self._emit(end, {"event": "debug-garbled", "module": module.id,
+                                 "reason": f"control UART1 at {frame}, port at {DEBUG_FRAME}"})
+
+    def _debug_send(self, module: Module, value: int) -> None:
+        frame = frame_of(module.control.uart_config(1))
+        framing_error = not frame.matches(DEBUG_FRAME)
+        if framing_error:
+            value = self._garbage.randrange(256)
+        if not self.cluster.uart_put(module.control.index, 1, value, framing_error):
+            self._emit(self._cycle, {"event": "debug-dropped", "module": module.id,
+                                     "byte": value, "reason": "receiver off (RXEN) or overrun"})
+
+    def trace(self) -> dict:
+        """Everything observable, for comparing runs."""
+        return {
+            "cycle": self._cycle,
+            "events": list(self.events),
+            "positions": {str(k): list(v) for k, v in self.positions().items()},
+            "orientations": {str(k): m.orientation for k, m in self.modules.items()},
+        }
+
+
+def _matches(event: dict, name: str, match: dict) -> bool:
+    return event.get("event") == name and all(event.get(k) == v for k, v in match.items())
