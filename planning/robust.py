@@ -1,0 +1,378 @@
+"""The ``robust`` planner: the thesis' idea (fill voids with electrons) made safe.
+
+Serial core. While electrons remain: pick an electron that is not a cut
+vertex, search (breadth-first over Table 4-3 rotations, with every other
+module fixed) a path to a void, and move it there. The module travels over
+the configuration minus itself, which is connected, so every intermediate
+configuration is connected; every rotation has its substrate and its three
+swept cells and goal empty. Voids are only filled when no neighbouring void
+is left without three consecutive free sides (it could never be entered).
+
+Parallel schedule. The serial moves are list-scheduled into time steps: a
+move runs as soon as no earlier pending move touches its cells (start,
+goal, swept cells, substrate) or its module, and the modules that stay put
+in the step remain connected. A moving module is never a substrate and no
+two moves of a step share a cell. If that schedule gets stuck, the serial
+order is packed greedily instead (always possible).
+
+Failures are reported, never hidden: disconnected inputs, different module
+counts, immobile configurations (Fig. 4-6: no module can rotate without
+breaking connectivity), and goals no electron can reach.
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from dataclasses import dataclass
+
+from hexbot.planning.configuration import Configuration, is_connected
+from hexbot.planning.hexlattice import ROTATIONS, Cell, distance, neighbors
+from hexbot.planning.moves import Move
+from hexbot.planning.plan import Plan, Step, apply_move, distance_lower_bound
+
+# Precomputed Table 4-3 offsets: (rule, substrate, goal, swept) relative to (0, 0).
+_RULES = [(rule, *rule.at((0, 0))) for rule in ROTATIONS]
+
+
+class PlanningFailure(Exception):
+    """The robust planner cannot continue; the message says why."""
+
+
+def _single_arc(occupied: set[Cell], cell: Cell) -> bool:
+    """True when the occupied neighbours of ``cell`` form one contiguous arc:
+    then removing ``cell`` cannot disconnect anything."""
+    ring = [n in occupied for n in neighbors(cell)]
+    if all(ring):
+        return True
+    changes = sum(1 for i in range(6) if ring[i] and not ring[i - 1])
+    return changes <= 1
+
+
+def is_cut(occupied: set[Cell], cell: Cell) -> bool:
+    """Would removing ``cell`` disconnect ``occupied``? (local test, BFS if unsure)"""
+    if _single_arc(occupied, cell):
+        return False
+    return not is_connected(occupied - {cell})
+
+
+def _moves_from(cell: Cell, occupied: set[Cell], mover: Cell):
+    """Rotations open to the module travelling from ``mover`` when it stands at ``cell``."""
+    x, y = cell
+    for rule, (sx, sy), (gx, gy), swept in _RULES:
+        sub = (x + sx, y + sy)
+        if sub not in occupied or sub == mover:
+            continue
+        goal = (x + gx, y + gy)
+        if goal in occupied and goal != mover:
+            continue
+        blocked = False
+        for dx, dy in swept:
+            c = (x + dx, y + dy)
+            if c in occupied and c != mover:
+                blocked = True
+                break
+        if not blocked:
+            yield rule, sub, goal
+
+
+def _free_run(blocked: set[Cell], cell: Cell) -> bool:
+    """Does ``cell`` keep three consecutive sides free of ``blocked``?"""
+    ring = [n not in blocked for n in neighbors(cell)]
+    return any(ring[i] and ring[(i + 1) % 6] and ring[(i + 2) % 6] for i in range(6))
+
+
+@dataclass
+class _State:
+    occupied: set[Cell]
+    ids: dict[Cell, int]
+    goal: frozenset[Cell]
+
+    def electrons(self) -> list[Cell]:
+        return sorted(self.occupied - self.goal)
+
+    def voids(self) -> set[Cell]:
+        return set(self.goal - self.occupied)
+
+
+def _void_distances(state: _State, voids: set[Cell]) -> dict[Cell, int]:
+    """Rotations needed to reach the nearest void from each empty cell, with every
+    module fixed (rotations are reversible with the same swept cells, so a
+    search outward from the voids gives the distance towards them)."""
+    dist = dict.fromkeys(voids, 0)
+    queue = deque(sorted(voids))
+    while queue:
+        cell = queue.popleft()
+        for _, _, goal in _moves_from(cell, state.occupied, cell):
+            if goal not in dist:
+                dist[goal] = dist[cell] + 1
+                queue.append(goal)
+    return dist
+
+
+def fillable(goal: frozenset[Cell], voids: set[Cell]) -> set[Cell]:
+    """Voids that can never be entered, whatever the order (empty set = all fine).
+
+    Peels the voids from the outside in: a void can be filled last among the
+    remaining ones when three consecutive sides of it are outside the goal
+    or voids filled after it. Peeling only frees cells, so the greedy peel
+    finds an order whenever one exists; what is left cannot be entered.
+    """
+    remaining = set(voids)
+    queue = deque(sorted(remaining))
+    queued = set(remaining)
+    while queue:
+        v = queue.popleft()
+        queued.discard(v)
+        if v not in remaining:
+            continue
+        blocked = {n for n in neighbors(v) if n in goal and (n not in voids or n in remaining)}
+        if _free_run(blocked, v):
+            remaining.discard(v)
+            for n in neighbors(v):
+                if n in remaining and n not in queued:
+                    queue.append(n)
+                    queued.add(n)
+    return remaining
+
+
+def _allowed(state: _State, void: Cell, voids: set[Cell]) -> bool:
+    """Filling ``void`` now must leave an order in which the other voids can be entered."""
+    return not fillable(state.goal, voids - {void})
+
+
+def _journey(state: _State, electron: Cell, voids: set[Cell], strict: bool) -> list | None:
+    """Shortest rotation path of ``electron`` to a void (allowed ones when strict)."""
+    parent: dict[Cell, tuple[Cell, object, Cell] | None] = {electron: None}
+    queue = deque([electron])
+    while queue:
+        cell = queue.popleft()
+        for rule, sub, goal in _moves_from(cell, state.occupied, electron):
+            if goal in parent:
+                continue
+            parent[goal] = (cell, rule, sub)
+            if goal in voids and (not strict or _allowed(state, goal, voids)):
+                path = []
+                node = goal
+                while parent[node] is not None:
+                    prev, r, s = parent[node]  # type: ignore[misc]
+                    path.append((prev, node, r, s))
+                    node = prev
+                return path[::-1]
+            queue.append(goal)
+    return None
+
+
+def serial_moves(
+    initial: Configuration, goal: frozenset[Cell], max_moves: int, fixed: Cell | None = None
+) -> list[Move]:
+    """The serial core; raises :class:`PlanningFailure` when stuck. The module
+    on ``fixed`` (fixed to the base) never moves."""
+    state = _State(set(initial.cells), {c: m.id for c, m in initial.items()}, goal)
+    moves: list[Move] = []
+    while True:
+        electrons = state.electrons()
+        if not electrons:
+            return moves
+        voids = state.voids()
+        dist = _void_distances(state, voids)
+        ranked = []
+        for e in electrons:
+            if e == fixed or is_cut(state.occupied, e):
+                continue
+            first = [dist[g] for _, _, g in _moves_from(e, state.occupied, e) if g in dist]
+            if first:
+                ranked.append((1 + min(first), e))
+            elif any(True for _ in _moves_from(e, state.occupied, e)):
+                ranked.append((10**9, e))
+        ranked.sort()
+        path = None
+        for strict in (True, False):
+            for _, e in ranked:
+                path = _journey(state, e, voids, strict)
+                if path:
+                    break
+            if path:
+                break
+        if not path:
+            free = [e for _, e in ranked]
+            raise PlanningFailure(
+                f"stuck after {len(moves)} moves with {len(electrons)} electrons left: "
+                + (
+                    "no electron can move without disconnecting the configuration"
+                    if not free
+                    else f"none of the {len(free)} movable electrons can reach a void"
+                )
+                + " (the goal is unreachable from here by Table 4-3 rotations)"
+            )
+        if len(moves) + len(path) > max_moves:
+            raise PlanningFailure(f"more than {max_moves} moves needed")
+        module = state.ids.pop(path[0][0])
+        state.occupied.discard(path[0][0])
+        for src, dst, rule, sub in path:
+            moves.append(Move(module, src, dst, rule.joint, rule.direction, sub, state.ids[sub]))
+        state.occupied.add(path[-1][1])
+        state.ids[path[-1][1]] = module
+
+
+def _footprint(move: Move) -> set[Cell]:
+    return move.footprint()
+
+
+def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] | None:
+    """List-schedule the serial moves into time steps (None if it gets stuck)."""
+    pending = list(serial)
+    prints = [_footprint(m) for m in serial]
+    occupied = set(initial.cells)
+    steps: list[Step] = []
+    order = list(range(len(serial)))
+    while order:
+        blocked: set[Cell] = set()  # cells of earlier pending moves and of chosen ones
+        blocked_subs: set[Cell] = set()
+        busy: set[int] = set()
+        static = set(occupied)
+        chosen: list[int] = []
+        rest: list[int] = []
+        for k in order:
+            move, fp = pending[k], prints[k]
+            ready = (
+                move.module not in busy
+                and not (fp & blocked)
+                and move.substrate not in blocked
+                and not (fp & blocked_subs)
+            )
+            if ready and not is_cut(static, move.src):
+                static.discard(move.src)
+                chosen.append(k)
+            else:
+                rest.append(k)
+            busy.add(move.module)
+            blocked |= fp
+            blocked_subs.add(move.substrate)
+        if not chosen:
+            return None
+        step_moves = [pending[k] for k in chosen]
+        for move in step_moves:
+            occupied.discard(move.src)
+        for move in step_moves:
+            occupied.add(move.dst)
+        steps.append(Step(step_moves))
+        order = rest
+    return steps
+
+
+def pack_consecutive(initial: Configuration, serial: list[Move]) -> list[Step]:
+    """Greedy packing of consecutive independent serial moves (never stuck)."""
+    steps: list[Step] = []
+    occupied = set(initial.cells)
+    i = 0
+    while i < len(serial):
+        static = set(occupied)
+        used: set[Cell] = set()
+        subs: set[Cell] = set()
+        modules: set[int] = set()
+        chosen: list[Move] = []
+        while i < len(serial):
+            move = serial[i]
+            fp = _footprint(move)
+            if chosen and (
+                move.module in modules
+                or fp & used
+                or move.substrate in used
+                or fp & subs
+                or is_cut(static, move.src)
+            ):
+                break
+            static.discard(move.src)
+            used |= fp
+            subs.add(move.substrate)
+            modules.add(move.module)
+            chosen.append(move)
+            i += 1
+        for move in chosen:
+            occupied.discard(move.src)
+        for move in chosen:
+            occupied.add(move.dst)
+        steps.append(Step(chosen))
+    return steps
+
+
+def is_immobile(config: frozenset[Cell] | set[Cell], fixed: Cell | None = None) -> bool:
+    """Fig. 4-6: no module can rotate without colliding or disconnecting the rest
+    (the module on ``fixed`` is bolted to the base)."""
+    occupied = set(config)
+    if len(occupied) < 2:
+        return True
+    for cell in sorted(occupied):
+        if cell == fixed:
+            continue
+        if any(True for _ in _moves_from(cell, occupied, cell)) and not is_cut(occupied, cell):
+            return False
+    return True
+
+
+def check_inputs(initial: Configuration, goal: frozenset[Cell], fixed: Cell | None = None) -> str:
+    """Why a reconfiguration is impossible from the start ("" if it may be possible)."""
+    if fixed is not None and (fixed not in initial.cells or fixed not in goal):
+        return f"the fixed module's cell {fixed} must be occupied in both configurations"
+    if len(initial) != len(goal):
+        return f"the initial configuration has {len(initial)} modules, the goal {len(goal)} cells"
+    if not is_connected(initial.cells):
+        return "the initial configuration is not connected"
+    if not is_connected(goal):
+        return "the goal configuration is not connected (no plan keeps modules together)"
+    if initial.cells == goal:
+        return ""
+    if is_immobile(initial.cells, fixed):
+        return ("the initial configuration is immobile (Fig. 4-6): no module can rotate "
+                "without colliding or disconnecting the others")
+    if is_immobile(goal, fixed):
+        return ("the goal configuration is immobile (Fig. 4-6): rotations are reversible, "
+                "so no rotation can end in it")
+    stuck = fillable(goal, set(goal - initial.cells))
+    if stuck:
+        return (f"goal cell {min(stuck)} can never be entered: whatever the order, it ends "
+                "with fewer than three consecutive free sides (Table 4-3 sweeps three cells)")
+    return ""
+
+
+def plan_robust(
+    initial: Configuration,
+    goal: frozenset[Cell],
+    parallel: bool = True,
+    max_moves: int = 1_000_000,
+    fixed: Cell | None = None,
+) -> Plan:
+    """Plan a connected, collision-free reconfiguration (see the module docstring)."""
+    goal = frozenset(goal)
+    plan = Plan(mode="robust", initial=initial, goal=goal)
+    plan.lower_bound = distance_lower_bound(initial.cells, goal)
+    reason = check_inputs(initial, goal, fixed)
+    if reason:
+        plan.reason = reason
+        return plan
+    try:
+        serial = serial_moves(initial, goal, max_moves, fixed)
+    except PlanningFailure as exc:
+        plan.reason = str(exc)
+        return plan
+    if not parallel:
+        plan.steps = [Step([m]) for m in serial]
+    else:
+        plan.steps = schedule_parallel(initial, serial) or pack_consecutive(initial, serial)
+    config = initial
+    for step in plan.steps:
+        for move in step.moves:
+            config = apply_move(config, move)
+    plan.reached = config.cells == goal
+    if not plan.reached:  # a bug, not a user error: say so loudly
+        plan.reason = "internal error: the schedule does not end in the goal"
+    return plan
+
+
+def step_lower_bound(current: frozenset[Cell], goal: frozenset[Cell]) -> int:
+    """Fewest time steps: some void is this far from every electron."""
+    electrons = list(current - goal)
+    voids = list(goal - current)
+    if not electrons or not voids:
+        return 0
+    return max(min(distance(e, v) for e in electrons) for v in voids)
