@@ -1,0 +1,58 @@
+"""Benchmark of the locomotion engine; prints one JSON object.
+
+    python bench/locomotion_bench.py            # the 10,000 x 10,000 case and smaller ones
+    python bench/locomotion_bench.py --quick    # small cases only
+
+Each case runs Salvador's no-obstacle rules on a flat strip of n modules for
+R rounds (connectivity check on, as in every normal run) and reports the wall
+time, rounds per second and module-rounds per second.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import platform
+import sys
+import time
+
+from hexbot.planning.locomotion import flat_scenario, load_ruleset, simulate
+
+
+def case(ruleset: str, n: int, rounds: int) -> dict:
+    rs = load_ruleset(ruleset)
+    sc = flat_scenario(n)
+    start = time.perf_counter()
+    result = simulate(rs, sc, rounds=rounds)
+    seconds = time.perf_counter() - start
+    return {
+        "ruleset": ruleset,
+        "n": n,
+        "rounds": result.rounds,
+        "status": result.status,
+        "advanced": result.advanced,
+        "total_moves": int(sum(result.moves_per_module)),
+        "seconds": round(seconds, 3),
+        "rounds_per_s": round(result.rounds / seconds, 1),
+        "module_rounds_per_s": round(n * result.rounds / seconds),
+    }
+
+
+def main() -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="skip the 10,000 x 10,000 case")
+    args = ap.parse_args()
+    cases = [("salvador-free", 100, 2000), ("salvador-pyramids", 1000, 2000)]
+    if not args.quick:
+        cases += [("salvador-free", 10_000, 10_000), ("salvador-pyramids", 10_000, 10_000)]
+    out = {
+        "python": sys.version.split()[0],
+        "machine": platform.machine(),
+        "cases": [case(*c) for c in cases],
+    }
+    print(json.dumps(out, indent=2))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
