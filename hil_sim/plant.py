@@ -241,8 +241,10 @@ class Plant:
         if not partners:
             return ("no substrate", f"{name}: substrate {sub.id} did not actuate", {})
         matching = [
-            p for p in partners
-            if p.magnets[face_m - 1] == NEG and p.magnets[face_g - 1] == POS and p.kind == "substrate"
+            p
+            for p in partners
+            if p.kind == "substrate" and p.magnets[face_m - 1] == NEG
+            and p.magnets[face_g - 1] == POS
         ]
         info = {"substrate": sub.id, "direction": name}
         if not matching:

@@ -243,7 +243,8 @@ def parse_scenario(text: str, path: Path) -> Scenario:
                     f"{key} = {value!r} is neither \"pc\" nor the id of a module",
                 )
             ends.append(value)
-        link_faults[(ends[0], ends[1])] = _faults(raw, lines, "faults.link", index, fail, _LINK_KEYS)
+        link = _faults(raw, lines, "faults.link", index, fail, _LINK_KEYS)
+        link_faults[(ends[0], ends[1])] = link
 
     base = data.get("base")
     if base is not None and base not in ids:
@@ -261,7 +262,9 @@ def parse_scenario(text: str, path: Path) -> Scenario:
     )
 
 
-def _faults(raw: Any, lines: _Lines, table: str, index: int, fail: Any, allowed: set[str]) -> Faults:
+def _faults(
+    raw: Any, lines: _Lines, table: str, index: int, fail: Any, allowed: set[str]
+) -> Faults:
     if not isinstance(raw, dict):
         raise fail(lines.find(table, index), f"[{table}] must be a table")
     for key in sorted(set(raw) - allowed):

@@ -1,0 +1,138 @@
+"""The IR medium: selector routing, the PC, collisions, baud mismatch, faults, drops."""
+
+from dataclasses import dataclass, field
+
+from hexbot.hil_sim.geometry import CENTRE
+from hexbot.hil_sim.ir_bus import AirByte, Frame, IrMedium
+from hexbot.hil_sim.scenario import Faults
+
+IR = Frame(300.0)
+BYTE = 33_333  # cycles of one 300-baud 8N1 byte at 1 MHz
+
+
+@dataclass
+class Air:
+    """Modules at fixed cells with scripted selector channels."""
+
+    cells: dict[int, tuple[int, int]]
+    channels: dict[int, list[tuple[int, int | None]]]  # module -> [(from cycle, channel)]
+    rx: dict[int, Frame] = field(default_factory=dict)
+    rxen: dict[int, bool] = field(default_factory=dict)
+    got: list[tuple[int, int, bool]] = field(default_factory=list)
+
+    def channel_at(self, module, cycle):
+        current = None
+        for since, channel in self.channels[module]:
+            if since <= cycle:
+                current = channel
+        return current
+
+    def position(self, module):
+        return self.cells[module]
+
+    def module_at(self, cell):
+        return next((m for m, c in self.cells.items() if c == cell), None)
+
+    def listeners(self):
+        return sorted(self.cells)
+
+    def rx_frame(self, module):
+        return self.rx.get(module, IR)
+
+    def deliver(self, module, value, framing_error):
+        if not self.rxen.get(module, True):
+            return False
+        self.got.append((module, value, framing_error))
+        return True
+
+
+def medium(air, **kw):
+    events = []
+    m = IrMedium(air, emit=lambda cycle, e: events.append({"cycle": cycle, **e}), **kw)
+    return m, events
+
+
+def pair_air(**channels):
+    # module 1 at the origin, module 2 on its side 3 (so 1 hears 2 on side 3, 2 hears 1 on 6)
+    return Air({1: (0, 0), 2: (1, 0)}, {1: [(0, channels.get("a", 3))],
+                                        2: [(0, channels.get("b", 6))]})
+
+
+def test_side_byte_reaches_the_neighbour_listening_on_the_facing_side():
+    air = pair_air()
+    m, _ = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, 0x2A, IR))
+    assert air.got == [(2, 0x2A, False)]
+
+
+def test_neighbour_listening_elsewhere_hears_nothing():
+    air = pair_air(b=CENTRE)
+    m, _ = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, 0x2A, IR))
+    assert air.got == []
+
+
+def test_sender_channel_taken_at_start_receiver_channel_at_end():
+    air = pair_air()
+    air.channels[1] = [(0, 3), (10, 5)]  # sender switches away mid-byte: too late, byte goes out
+    air.channels[2] = [(0, 1), (BYTE - 5, 6)]  # receiver switches in before the stop bit ends
+    m, _ = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, 0x55, IR))
+    assert air.got == [(2, 0x55, False)]
+
+
+def test_centre_goes_to_pc_and_pc_goes_to_every_centre_listener():
+    air = Air({1: (0, 0), 2: (1, 0), 3: (5, 5)}, {1: [(0, CENTRE)], 2: [(0, CENTRE)], 3: [(0, 2)]})
+    m, _ = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, ord("M"), IR))
+    m.settle(10 * BYTE)
+    assert m.pc_take() == b"M"
+    m.transmit(AirByte("pc", 10 * BYTE, 11 * BYTE, ord("*"), IR))
+    assert air.got == [(1, ord("*"), False), (2, ord("*"), False)]
+
+
+def test_overlapping_bytes_at_the_pc_are_both_corrupted():
+    air = Air({1: (0, 0), 2: (9, 9)}, {1: [(0, CENTRE)], 2: [(0, CENTRE)]})
+    m, events = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, 0xF0, IR))
+    m.transmit(AirByte(2, BYTE // 2, BYTE + BYTE // 2, 0x3C, IR))
+    m.settle(BYTE + BYTE // 2)
+    assert m.pc_take() == b""  # not settled: a third byte could still overlap
+    m.settle(4 * BYTE)
+    assert m.pc_take() == bytes([0x30, 0x30])
+    assert [e["event"] for e in events] == ["ir-collision"]
+
+
+def test_baud_mismatch_gives_garbage_with_framing_error():
+    air = pair_air()
+    air.rx[2] = Frame(4800.0)
+    m, events = medium(air, seed=3)
+    m.transmit(AirByte(1, 0, BYTE, 0x41, IR))
+    assert len(air.got) == 1 and air.got[0][2] is True
+    assert events[0]["event"] == "ir-garbled"
+
+
+def test_receiver_with_rxen_off_drops_and_the_bus_says_so():
+    air = pair_air()
+    air.rxen[2] = False
+    m, events = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, 0x41, IR))
+    assert air.got == []
+    assert events[0]["event"] == "ir-dropped" and events[0]["to"] == 2
+
+
+def _lossy_run(seed):
+    air = pair_air()
+    m, events = medium(air, seed=seed, faults_for=lambda s, r: Faults(0.05, 0.3))
+    for i in range(200):
+        m.transmit(AirByte(1, i * BYTE, (i + 1) * BYTE, i % 256, IR))
+    return air.got, events
+
+
+def test_fault_injection_is_seeded_and_deterministic():
+    got, events = _lossy_run(5)
+    assert (got, events) == _lossy_run(5)
+    assert got != _lossy_run(6)[0]
+    lost = sum(e["event"] == "ir-lost" for e in events)
+    assert 30 < lost < 90  # 30 % of 200
+    assert any(value != sent for (_, value, _), sent in zip(got, range(200), strict=False))
