@@ -334,6 +334,16 @@ static void m162_logger(avr_t *avr, const int level, const char *fmt, va_list ap
 	}
 	clean[j] = 0;
 	if (level == LOG_ERROR) {
+		if (!strcmp(clean, "avr_sadly_crashed")) {
+			/* the specific reason, if any, was logged just before */
+			if (avr->pc >= avr->flashend)
+				snprintf(m->last_error, sizeof m->last_error,
+						"program counter ran past the end of flash (PC=%04x)", avr->pc);
+			else if (!m->last_error[0])
+				snprintf(m->last_error, sizeof m->last_error, "crashed at PC=%04x", avr->pc);
+			m->crash_cycle = avr->cycle;
+			return;
+		}
 		snprintf(m->last_error, sizeof m->last_error, "%s", clean);
 		/* simavr 1.6 logs an invalid opcode and carries on as if it were a
 		 * NOP; a real part would run into garbage, so call it a crash. */
@@ -421,6 +431,23 @@ static void m162_ignore_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *p
 	(void)avr; (void)addr; (void)v; (void)param;
 }
 
+/* simavr 1.6 finishes every SPI transfer 100 us after SPDR is written,
+ * whatever the clock; on the part it takes 8 SCK periods. */
+static void m162_spdr_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
+{
+	m162_t *m = m162_of(avr);
+	avr_spi_t *spi = &m->mcu.spi;
+	m->spdr_write_orig(avr, addr, v, param);
+	static const uint8_t div[8] = { 4, 16, 64, 128, 2, 8, 32, 64 };
+	int idx = (avr->data[SPCR] & 3) | ((avr->data[SPSR] & 1) << 2);
+	for (avr_cycle_timer_slot_p t = avr->cycle_timers.timer; t; t = t->next) {
+		if (t->param == spi) {
+			avr_cycle_timer_register(avr, 8u * div[idx], t->timer, spi);
+			break;
+		}
+	}
+}
+
 static void m162_port_change(struct avr_irq_t *irq, uint32_t value, void *param)
 {
 	struct m162_porthook_t *h = (struct m162_porthook_t *)param;
@@ -486,6 +513,9 @@ static void m162_init(avr_t *avr)
 	avr_timer_init(avr, &mcu->timer2);
 	avr_timer_init(avr, &mcu->timer3);
 	avr_spi_init(avr, &mcu->spi);
+
+	m->spdr_write_orig = avr->io[AVR_DATA_TO_IO(SPDR)].w.c;
+	avr->io[AVR_DATA_TO_IO(SPDR)].w.c = m162_spdr_write;
 
 	/* PINx is read-only on this part */
 	for (int i = 0; i < M162_NPORTS; i++) {
@@ -656,6 +686,7 @@ int m162_load_elf(m162_t *m, const char *path, char *err, size_t errlen)
 
 void m162_reset(m162_t *m)
 {
+	m->last_error[0] = 0;
 	avr_reset(m->avr);
 	if (m->is_m162)
 		avr_regbit_set(m->avr, m->avr->reset_flags.extrf);

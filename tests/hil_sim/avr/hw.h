@@ -14,6 +14,10 @@
 #define HW_RX0_vect USART0_RXC_vect
 #define HW_UDRE0_vect USART0_UDRE_vect
 #define HW_TX1_vect USART1_TXC_vect
+#define HW_INT0_PIN PD2
+#define HW_INT0_FALLING() (MCUCR = (MCUCR & ~3) | (1 << ISC01))
+#define HW_INT0_ENABLE() (GICR |= (1 << INT0))
+#define HW_MCUSR MCUCSR
 #elif defined(__AVR_ATmega128__)
 #define HW_UCSR0C_WRITE(v) (UCSR0C = (v))
 #define HW_UCSR1C_WRITE(v) (UCSR1C = (v))
@@ -22,6 +26,10 @@
 #define HW_RX0_vect USART0_RX_vect
 #define HW_UDRE0_vect USART0_UDRE_vect
 #define HW_TX1_vect USART1_TX_vect
+#define HW_INT0_PIN PD0
+#define HW_INT0_FALLING() (EICRA = (EICRA & ~3) | (1 << ISC01))
+#define HW_INT0_ENABLE() (EIMSK |= (1 << INT0))
+#define HW_MCUSR MCUCSR
 #elif defined(__AVR_ATmega644__)
 #define HW_UCSR0C_WRITE(v) (UCSR0C = (v))
 #define HW_UBRR0H_WRITE(v) (UBRR0H = (v))
