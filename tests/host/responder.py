@@ -50,7 +50,10 @@ class PtyResponder:
         self._thread.start()
 
     def close(self) -> None:
+        # Join before closing: a recycled fd number must not be read by
+        # this thread on behalf of the next test's pty.
         self._stop.set()
+        self._thread.join(timeout=2)
         for fd in (self.master, self.slave):
             try:
                 os.close(fd)

@@ -1,0 +1,72 @@
+"""Cluster model, joint conversion, capture reading: no I/O."""
+
+from __future__ import annotations
+
+import pytest
+
+from hexbot.errors import FrameError, ScenarioError
+from hexbot.host import commands
+from hexbot.host.capture import CaptureWriter, read_capture
+from hexbot.host.cluster import ClusterModel
+from hexbot.protocol import parser, wire
+
+
+def _feed(model: ClusterModel, data: bytes) -> None:
+    for ev in parser.parse_all(data):
+        model.apply("ir", ev, 1.0)
+
+
+def test_body_joint_follows_orientation():
+    assert [commands.body_joint(1, o) for o in range(6)] == [1, 6, 5, 4, 3, 2]
+    assert commands.body_joint(4, 3) == 1
+    with pytest.raises(FrameError):
+        commands.body_joint(0, 0)
+
+
+def test_rotate_builds_combined_frame_with_thesis_timings():
+    cmd = commands.rotate("ccw", 5, mobile_orientation=1, substrate_orientation=4)
+    assert cmd.code == 68
+    assert cmd.args == (1, 8, 5, 9, 4, 8, 4, 10)
+
+
+def test_model_tracks_acks_errors_status_and_localization():
+    model = ClusterModel()
+    _feed(model, parser.reply_ack(69, "M", 3) + parser.reply_error(1, 1, "M", 3))
+    row = model.module(3)
+    assert row.last_ack == 69 and row.last_error == "1:ARG_RANGE"
+    report = (wire.PREAMBLE + b"LOCALIZED\n\rSide: 4\n\rYref: 2\n\rPos: +01-01\n\r")
+    _feed(model, report)
+    assert [(c.x, c.y, c.yref, c.module_id) for c in model.cells()] == [(1, -1, 2, None)]
+    _feed(model, parser.reply_status(3, "M", True, 1, -1, 2, 0, prefix_role="M"))
+    assert model.cells()[0].module_id == 3
+    assert model.module(3).position == (1, -1) and model.module(3).orientation == 2
+    assert model.module(3).last_error == ""
+
+
+def test_legacy_reply_keyed_by_role_and_boot_tail_by_id():
+    model = ClusterModel()
+    _feed(model, parser.reply_ack(20, "S") + wire.PREAMBLE + b"COMM. BOARD READY ID=07\n\r")
+    assert model.modules["S"].last_ack == 20
+    assert model.module(7).boot == "ID=07"
+
+
+def test_capture_round_trip_and_errors(tmp_path):
+    w = CaptureWriter(tmp_path / "c.hbcap")
+    w.record("ir", "tx", b"*F")
+    w.record("ir", "rx", b"\n\r")
+    w.record("ir", "state", text="lost read failed")
+    w.close()
+    recs = list(read_capture(tmp_path / "c.hbcap"))
+    assert [(r.kind, r.data, r.text) for r in recs] == [
+        ("tx", b"*F", ""), ("rx", b"\n\r", ""), ("state", b"", "lost read failed")]
+    # a half-written last line (killed writer) is skipped, not an error
+    with (tmp_path / "c.hbcap").open("a") as f:
+        f.write("9.000 ir rx 0a0")
+    assert len(list(read_capture(tmp_path / "c.hbcap"))) == 3
+    bad = tmp_path / "bad.hbcap"
+    bad.write_text("# hexbot-capture 1\n1.0 ir rx zz\n2.0 ir rx 00\n")
+    with pytest.raises(ScenarioError, match=r"bad.hbcap:2: bad hex data"):
+        list(read_capture(bad))
+    (tmp_path / "x.hbcap").write_text("hello\n")
+    with pytest.raises(ScenarioError, match="not a hexbot capture"):
+        list(read_capture(tmp_path / "x.hbcap"))

@@ -1,0 +1,101 @@
+"""HexBot scripts: checked whole before sending, run step by step, stop at
+the first failed expectation with file and line."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from hexbot.cli import main
+from hexbot.errors import ScenarioError
+from hexbot.host.script import parse_script
+
+EXAMPLES = Path(__file__).parents[2] / "docs" / "examples"
+
+GOOD = """\
+# localize the flower and check two modules
+timeout 3
+select 1
+Ref
+select 0
+localize
+expect text LOCALIZED count 7
+expect placements 7
+status
+expect status 1 localized at 0 0 yref 0 role S
+expect status 3 localized at 0 1
+"""
+
+
+def _write(tmp_path, text):
+    path = tmp_path / "t.hbs"
+    path.write_text(text)
+    return path
+
+
+def test_good_script_passes(responder, log_dir, tmp_path, capsys):
+    rc = main(["run", str(_write(tmp_path, GOOD)), "--port", responder.path])
+    captured = capsys.readouterr()
+    assert rc == 0, captured.err
+    assert "all 10 steps passed" in captured.err
+    assert " 10 ok    expect status 1 localized" in captured.out
+
+
+def test_script_stops_at_first_failed_expectation(responder, log_dir, tmp_path, capsys):
+    text = "select 2\nexpect ack 65 within 0.3\nJxOpenAll\n"
+    rc = main(["run", str(_write(tmp_path, text)), "--port", responder.path])
+    err = capsys.readouterr().err
+    assert rc == 1
+    assert "t.hbs:2: expect ack 65 within 0.3: no ACK 65 within 0.3 s" in err
+    assert "1 of 3 steps passed" in err
+    assert len(responder.received) == 1  # JxOpenAll was never sent
+
+
+def test_status_mismatch_names_the_difference(responder, log_dir, tmp_path, capsys):
+    text = "select 3\nstatus\nexpect status 3 localized\n"
+    assert main(["run", str(_write(tmp_path, text)), "--port", responder.path]) == 1
+    assert "module is not localized" in capsys.readouterr().err
+
+
+def test_syntax_error_sends_nothing(responder, log_dir, tmp_path, capsys):
+    text = "select 1\nRef\nrotate cw 9 mobile 2 substrate 1\n"
+    rc = main(["run", str(_write(tmp_path, text)), "--port", responder.path])
+    assert rc == 1
+    assert "t.hbs:3: joint must be 1..6, got 9" in capsys.readouterr().err
+    assert responder.received == []
+
+
+@pytest.mark.parametrize("line, problem", [
+    ("JxOpen 7", "must be 1..6, got 7"),
+    ("Frobnicate 1", "unknown function 'Frobnicate'"),
+    ("expect ack 65 from", "'from' needs a value"),
+    ("expect status", "needs a module id"),
+    ("expect colour red", "unknown expectation 'colour'"),
+    ("wait soon", "seconds must be a number"),
+    ("select", "needs at least one module id"),
+    ("select 0 3", "cannot be combined"),
+])
+def test_parse_errors_name_line_and_problem(line, problem):
+    with pytest.raises(ScenarioError) as info:
+        parse_script(f"echo hi\n{line}\n", "x.hbs")
+    assert str(info.value).startswith("x.hbs:2: ")
+    assert problem in str(info.value)
+
+
+def test_rotation_uses_orientations_from_status(responder, log_dir, tmp_path, capsys):
+    text = ("select 0\nlocalize\nstatus\nwait 0.2\n"
+            "rotate cw 2 mobile 3 substrate 1\nexpect ack CW from 1 3\n")
+    rc = main(["run", str(_write(tmp_path, text)), "--port", responder.path])
+    assert rc == 0, capsys.readouterr().err
+    # responder: module 3 has Yref 2, module 1 Yref 0; global joint 2
+    rotation = responder.received[-1]
+    assert rotation[1] == 67
+    assert rotation[2] == 2  # substrate si: ((2-1-0) mod 6)+1
+    assert rotation[6] == 6  # mobile mi: ((2-1-2) mod 6)+1
+    assert list(rotation[3:6]) == [8, 4, 10] and list(rotation[7:10]) == [8, 5, 9]
+
+
+@pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.hbs")), ids=lambda p: p.name)
+def test_shipped_examples_parse(path, capsys):
+    assert main(["run", str(path), "--check"]) == 0
