@@ -27,6 +27,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "monitor": ("hexbot.host.cli_monitor", "print decoded events from the ports"),
     "run": ("hexbot.host.cli_run", "run a HexBot script (.hbs) of commands and expectations"),
     "replay": ("hexbot.host.cli_replay", "play a session capture back through the parser"),
+    "flash": ("hexbot.host.flash.cli", "program a board's ATmega162 through avrdude (ISP)"),
     "locomotion": (
         "hexbot.planning.locomotion.cli",
         "square-lattice locomotion rule engine (Salvador, Otero rule sets)",

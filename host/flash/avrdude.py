@@ -80,7 +80,7 @@ class Avrdude:
         exe = shutil.which(self.executable)
         if exe is None:
             raise FlashingError(
-                f"avrdude not found ({self.executable!r}); install it: sudo apt-get install avrdude")
+                f"avrdude not found ({self.executable!r}): sudo apt-get install avrdude")
         cmd = [exe, "-c", self.programmer, "-P", self.port, "-p", PART]
         if self.baud:
             cmd += ["-b", str(self.baud)]

@@ -1,0 +1,1 @@
+"""Programming the modules' ATmega162s: avrdude runner, fuse safety, CLI."""

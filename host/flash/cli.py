@@ -1,0 +1,146 @@
+"""``hexbot flash``: program a module board's ATmega162 through avrdude.
+
+One board:  hexbot flash --board control --port /dev/ttyUSB0 [--fuses]
+Simulator:  hexbot flash --all --scenario pair
+
+Steps, each reported in plain words: check the image, read the device
+(signature, fuses, lock), refuse anything that is not an ATmega162 or fuse
+values that would lock the board out (unless --force), then erase, write and
+verify flash, and the fuses when asked.
+"""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+from hexbot.errors import FlashingError
+from hexbot.host.flash.avrdude import Avrdude
+from hexbot.host.flash.fuses import TABLE_3_6, FuseSet, check_fuses, fuse_notes
+from hexbot.host.flash.ihex import read_hex
+from hexbot.protocol import wire
+
+FLASH_BYTES = 16 * 1024
+BOARDS = ("comm", "control")
+REPO_ROOT = Path(__file__).resolve().parents[2]
+DEFAULT_BUILD = REPO_ROOT / "firmware" / "build"
+
+
+def _byte(text: str) -> int:
+    try:
+        value = int(text, 0)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r} is not a number (use 0x62 or 98)") from None
+    if not 0 <= value <= 0xFF:
+        raise argparse.ArgumentTypeError(f"{text} does not fit in one byte")
+    return value
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--board", choices=BOARDS, help="which board of the module")
+    parser.add_argument("--image", type=Path,
+                        help="Intel HEX image (default: firmware/build/<board>.hex)")
+    parser.add_argument("--port", help="programmer port, e.g. /dev/ttyUSB0 or /dev/pts/7")
+    parser.add_argument("--programmer", default="stk500v2", help="avrdude -c (default stk500v2)")
+    parser.add_argument("--baud", type=int, help="avrdude -b, serial speed to the programmer")
+    parser.add_argument("--bitclock", help="avrdude -B, ISP clock period/frequency")
+    parser.add_argument("--avrdude", default="avrdude", help="avrdude executable")
+    parser.add_argument("--fuses", action="store_true",
+                        help="also write the fuses (Table 3-6: low 0x62, high 0xD9, ext 0xFF)")
+    for name in ("lfuse", "hfuse", "efuse", "lock"):
+        parser.add_argument(f"--{name}", type=_byte, metavar="BYTE",
+                            help=f"{name} value to write instead of Table 3-6's (implies --fuses)")
+    parser.add_argument("--verify", action=argparse.BooleanOptionalAction, default=True,
+                        help="read back and compare everything written (default on)")
+    parser.add_argument("--force", action="store_true",
+                        help="write fuse/lock values even if they would lock the board out")
+    parser.add_argument("--all", action="store_true",
+                        help="rebuild the firmware and reflash every board of a simulated cluster")
+    parser.add_argument("--scenario", help="simulator scenario for --all")
+    parser.add_argument("--firmware-version", help="with --all: make -C firmware VERSION=...")
+    parser.add_argument("--dry-run", action="store_true",
+                        help="print the avrdude commands instead of running them")
+
+
+def requested_fuses(args: argparse.Namespace) -> FuseSet | None:
+    overrides = {n: getattr(args, n) for n in ("lfuse", "hfuse", "efuse", "lock")
+                 if getattr(args, n) is not None}
+    if not args.fuses and not overrides:
+        return None
+    return FuseSet(**{**TABLE_3_6.__dict__, **overrides})
+
+
+def guard_fuses(fuses: FuseSet, force: bool, say=print) -> None:
+    """Refuse dangerous values unless forced; say harmless oddities."""
+    problems = check_fuses(fuses)
+    for note in fuse_notes(fuses):
+        say(f"note: {note}")
+    if not problems:
+        return
+    lines = "\n".join(f"  - {p.text}" for p in problems)
+    if not force:
+        raise FlashingError(
+            f"refusing to write fuses {fuses}:\n{lines}\n"
+            "nothing was written; give --force if you really mean it")
+    say(f"WARNING: writing dangerous fuses because of --force:\n{lines}")
+
+
+def check_device(signature: bytes, part_guess: str | None, port: str) -> None:
+    if signature == wire.SIGNATURE:
+        return
+    sig = signature.hex(" ").upper()
+    if signature in (b"\x00\x00\x00", b"\xff\xff\xff"):
+        raise FlashingError(
+            f"no device answered on {port} (signature {sig}): check the ISP cable, "
+            "the programming jumper and the module's power")
+    what = f" ({part_guess})" if part_guess else ""
+    raise FlashingError(
+        f"the device on {port} has signature {sig}{what}, not an ATmega162 (1E 94 04); "
+        "refusing to flash it, nothing was written")
+
+
+def flash_board(args: argparse.Namespace, say=print) -> int:
+    if not args.board and not args.image:
+        raise FlashingError("give --board comm|control (or --image FILE), or --all --scenario")
+    if not args.port:
+        raise FlashingError("give --port: the programmer's serial port")
+    image = args.image or DEFAULT_BUILD / f"{args.board}.hex"
+    if not image.exists():
+        raise FlashingError(f"{image}: no such image (build it: make -C firmware)")
+    hexfile = read_hex(image, limit=FLASH_BYTES)
+    label = f"{args.board} board" if args.board else "board"
+    say(f"image {image}: {hexfile.used} bytes "
+        f"({100 * hexfile.size / FLASH_BYTES:.0f} % of the 16 KiB flash)")
+    fuses = requested_fuses(args)
+    if fuses is not None:
+        guard_fuses(fuses, args.force, say)  # before touching the device at all
+    avrdude = Avrdude(args.port, args.programmer, args.avrdude, args.baud, args.bitclock)
+    if args.dry_run:
+        say(" ".join(avrdude.base_command()) + " -F -U signature:r:...")
+        say(" ".join(avrdude.base_command()) + f" -U flash:w:{image}:i ...")
+        return 0
+    say(f"reading the device on {args.port} through {args.programmer} ...")
+    device = avrdude.read_device()
+    check_device(device.signature, device.part_guess, args.port)
+    say(f"found an ATmega162 (signature {device.signature_text}); fuses {device.fuses}")
+    if fuses is None and device.fuses != TABLE_3_6:
+        say("note: the device's fuses differ from Table 3-6; add --fuses to set them")
+    say(f"erasing and writing {hexfile.used} bytes of flash"
+        + (f", then fuses {fuses}" if fuses else "") + " ...")
+    report = avrdude.write(image, fuses, args.verify)
+    done = f"{report.written.get('flash', 0)} bytes of flash written"
+    if args.verify:
+        done += f", {report.verified.get('flash', 0)} verified"
+    say(done)
+    say(f"done: {label} on {args.port} programmed with {image.name}")
+    return 0
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.all:
+        from hexbot.host.flash.cluster import flash_all
+
+        if not args.scenario:
+            raise FlashingError("--all needs --scenario NAME (a simulated cluster)")
+        return flash_all(args)
+    return flash_board(args)
