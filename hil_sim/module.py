@@ -22,8 +22,11 @@ MAGNET_POS_PINS: tuple[Pin, ...] = (("B", 0), ("D", 3), ("B", 6), ("D", 4), ("B"
 MAGNET_NEG_PINS: tuple[Pin, ...] = (("D", 6), ("D", 5), ("D", 7), ("B", 4), ("B", 5), ("D", 2))
 CONTROL_PORTS = ("A", "B", "D")
 
-# Communication board (Tables 3-3 and 3-5): selector A, B, C on PA0, PA1, PA2.
-SELECTOR_PINS: tuple[Pin, ...] = (("A", 0), ("A", 1), ("A", 2))
+# Communication board (Tables 3-3 and 3-5): selector lines A, B, C. The listing's
+# IrSel() writes Y1 (side 6) as PA2 alone and Y4 (side 5) as PA0 alone, so A = PA2,
+# B = PA1, C = PA0 (SIM_API.md said PA0 = A; the listing, the notes and the firmware
+# agree on this order, and the firmware is what drives the pins).
+SELECTOR_PINS: tuple[Pin, ...] = (("A", 2), ("A", 1), ("A", 0))
 #: Status LEDs (active low): name -> pin.
 LED_PINS: dict[str, Pin] = {
     "led_j1": ("D", 7), "led_j2": ("A", 7), "led_j3": ("E", 2),

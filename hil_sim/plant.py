@@ -14,10 +14,10 @@ its tolerances are documented in docs/plant-model.md; in short:
   global sides), and that neighbour's overlapping pulse repels M (negative on
   the side facing M) and attracts it into the goal (positive on the side
   facing the goal cell); onsets within ONSET_TOLERANCE, both held together
-  for MIN_HOLD; M's joint at the far end of the contact edge open from
-  JOINT_LEAD before onset until MIN_HOLD after it; a closed joint at the pivot
-  (M's or the substrate's) to turn about; the goal and the three swept cells
-  empty; M not fixed to the base.
+  for MIN_HOLD; at the far end of the contact edge, M's or the substrate's
+  joint open from JOINT_LEAD before onset until JOINT_HOLD after it; a closed
+  joint at the pivot (M's or the substrate's) to turn about; the goal and the
+  three swept cells empty; M not fixed to the base.
 * M then lands in the goal cell, its orientation turned by 120 degrees
   (+2 for CW, -2 for CCW). Anything missing gives a "refused" event.
 """
@@ -53,6 +53,7 @@ class Timing:
     onset_tolerance: float = 0.030
     min_hold: float = 0.100
     joint_lead: float = 0.040
+    joint_hold: float = 0.030
     resolve_wait: float = 0.500  # how long a finished mobile pulse waits for its substrate's
 
 
@@ -264,15 +265,21 @@ class Plant:
                     f"(at least {self.timing.min_hold * 1000:.0f} ms needed)", info)
         if body.fixed:
             return ("fixed to base", f"module {body.id} is fixed to the base", info)
-        # The far joint of the contact edge must let go; the pivot must hold.
+        # The far vertex of the contact edge must let go (one of its two pins
+        # out); the pivot vertex must hold (one of its two pins in).
         contact = to_body(pivot.substrate_side, body.orientation)
-        far_joint = wrap(contact + 1) if name == "CW" else contact
+        far_m = wrap(contact + 1) if name == "CW" else contact
+        far_s = wrap(face_m) if face_g == wrap(face_m + 1) else wrap(face_m + 1)
         lead = self._cycles(self.timing.joint_lead)
-        if not body.joint_open_during(far_joint, pulse.start, pulse.start + hold):
-            return ("latched joint", f"{name}: joint J{far_joint} of module {body.id} is "
-                    "closed while the magnets act", info)
-        if not body.joint_open_during(far_joint, pulse.start - lead, pulse.start):
-            return ("timing", f"{name}: joint J{far_joint} opened less than "
+        keep = self._cycles(self.timing.joint_hold)
+        if not (body.joint_open_during(far_m, pulse.start, pulse.start + keep)
+                or sub.joint_open_during(far_s, pulse.start, pulse.start + keep)):
+            return ("latched joint", f"{name}: joint J{far_m} of module {body.id} and joint "
+                    f"J{far_s} of module {sub.id} hold the far end of the contact edge "
+                    "while the magnets act", info)
+        if not (body.joint_open_during(far_m, pulse.start - lead, pulse.start + keep)
+                or sub.joint_open_during(far_s, pulse.start - lead, pulse.start + keep)):
+            return ("timing", f"{name}: the far joint opened less than "
                     f"{self.timing.joint_lead * 1000:.0f} ms before the magnets", info)
         sub_pivot = joint_between(face_m, face_g)
         if not (body.joint_closed_at(body_joint, pulse.start)

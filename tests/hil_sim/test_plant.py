@@ -161,9 +161,55 @@ def test_magnets_released_too_early_are_a_timing_refusal():
 def test_far_joint_left_closed_latches_the_mobile():
     rig = Rig()
     thesis_cw(rig)
-    rig.plant.bodies[2].joint_log.clear()  # the mobile never opened J5
+    rig.plant.bodies[2].joint_log.clear()  # the mobile never opened J5 ...
+    rig.plant.bodies[1].joint_log.clear()  # ... nor the substrate its J1 at the same vertex
     event = single_event(rig.finish())
     assert event["reason"] == "latched joint" and "J5" in event["detail"]
+
+
+def test_no_pin_left_at_the_pivot_is_refused():
+    rig = Rig()
+    rig.at(0, 2, j=joints(5, 4))  # the mobile opens its pivot J4 as well ...
+    rig.at(0, 1, j=joints(1, 2))  # ... and the substrate its J2 at the same vertex
+    rig.at(80, 2, m=magnets(s3="-", s4="-"))
+    rig.at(80, 1, m=magnets(s1="-", s2="+"))
+    rig.at(215, 2, j=joints(), m=magnets())
+    rig.at(215, 1, j=joints(), m=magnets())
+    assert single_event(rig.finish())["reason"] == "no axle"
+
+
+def listing_sequence(rig, mobile, substrate, i, t=(8, 4, 9)):
+    """The Appendix A listing's MCW/MCCW and SCW/SCCW, as the firmware runs them."""
+    w = lambda k: (k - 1) % 6 + 1  # noqa: E731
+    t1, t2, t3 = (10 * x for x in t)
+    if mobile == "CW":
+        rig.at(0, 2, j=joints(i, w(i + 1)))
+        rig.at(t1, 2, m=magnets(**{f"s{i}": "-", f"s{w(i - 1)}": "-"}))
+        rig.at(t1 + t2, 2, j=joints())
+        rig.at(t1 + t2 + t3, 2, m=magnets())
+        rig.at(0, 1, j=joints(w(i - 1)))
+        rig.at(t1, 1, m=magnets(**{f"s{w(i - 3)}": "-", f"s{w(i - 2)}": "+"}))
+        rig.at(t1 + t2, 1, j=joints(w(i - 1), w(i - 2)))
+        rig.at(t1 + t2 + t3, 1, j=joints(), m=magnets())
+    else:
+        rig.at(0, 2, j=joints(w(i + 1)))
+        rig.at(t1, 2, m=magnets(**{f"s{i}": "-", f"s{w(i - 1)}": "-"}))
+        rig.at(t1 + t2, 2, j=joints(w(i + 1), i))
+        rig.at(t1 + t2 + t3, 2, j=joints(), m=magnets())
+        rig.at(0, 1, j=joints(w(i - 3), w(i - 4)))
+        rig.at(t1, 1, m=magnets(**{f"s{w(i - 4)}": "-", f"s{w(i - 5)}": "+"}))
+        rig.at(t1 + t2, 1, j=joints())
+        rig.at(t1 + t2 + t3, 1, m=magnets())
+
+
+@pytest.mark.parametrize("direction,joint,goal,orientation", [("CW", 4, [0, 1], 2),
+                                                               ("CCW", 5, [-1, 0], 4)])
+def test_listing_sequences_rotate_too(direction, joint, goal, orientation):
+    rig = Rig()
+    listing_sequence(rig, direction, direction, joint)
+    event = single_event(rig.finish())
+    assert event["event"] == "moved", event
+    assert (event["to"], event["orientation"]) == (goal, orientation)
 
 
 def test_module_fixed_to_the_base_never_moves():
