@@ -385,6 +385,10 @@ static void m162_run_step(avr_t *avr)
 	}
 	avr_cycle_count_t sleep = avr_cycle_timer_process(avr);
 	avr->pc = new_pc;
+	/* a timer (the watchdog) swapped in a reset callback: let it run next,
+	 * rather than sleeping on past the moment of the reset */
+	if (avr->run != m162_run_step)
+		return;
 
 	if (avr->state == cpu_Sleeping) {
 		if (m->is_m162 && !(avr->data[M162_MCUCR] & (1 << M162_SE))) {
