@@ -81,6 +81,17 @@ def render() -> str:
     for fn in CODES.values():
         if fn.executable:
             lines.append(f"    X({fn.c_name}, {boards[fn.board.value]}, {len(fn.args)}) \\")
+    lines += [
+        "",
+        "/* X-macro over argument ranges narrower than a byte: X(code, arg, lo, hi),",
+        " * arg counted from 1; the firmware's range checks expand it. */",
+        "#define HB_ARG_RANGES(X) \\",
+    ]
+    for fn in CODES.values():
+        if fn.executable:
+            for i, a in enumerate(fn.args):
+                if (a.lo, a.hi) != (0, 255):
+                    lines.append(f"    X({fn.c_name}, {i + 1}, {a.lo}, {a.hi}) \\")
     lines += ["", "/* Argument ranges */"]
     seen: set[str] = set()
     for fn in CODES.values():

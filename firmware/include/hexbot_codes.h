@@ -143,6 +143,54 @@
     X(HB_FN_SET_ROLE, HB_BOARD_COMM, 1) \
     X(HB_FN_CLEAR_ERROR, HB_BOARD_COMM, 0) \
 
+/* X-macro over argument ranges narrower than a byte: X(code, arg, lo, hi),
+ * arg counted from 1; the firmware's range checks expand it. */
+#define HB_ARG_RANGES(X) \
+    X(HB_FN_JX_OPEN, 1, 1, 6) \
+    X(HB_FN_JX_CLOSE, 1, 1, 6) \
+    X(HB_FN_JTEST, 1, 1, 255) \
+    X(HB_FN_SX_P, 1, 1, 6) \
+    X(HB_FN_SX_N, 1, 1, 6) \
+    X(HB_FN_SX_OFF, 1, 1, 6) \
+    X(HB_FN_SPTEST, 1, 1, 255) \
+    X(HB_FN_SNTEST, 1, 1, 255) \
+    X(HB_FN_MCW, 1, 1, 6) \
+    X(HB_FN_MCCW, 1, 1, 6) \
+    X(HB_FN_SCW, 1, 1, 6) \
+    X(HB_FN_SCCW, 1, 1, 6) \
+    X(HB_FN_IR_SEL, 1, 0, 6) \
+    X(HB_FN_SIDE_ON_P, 1, 1, 6) \
+    X(HB_FN_SIDE_OFF_P, 1, 1, 6) \
+    X(HB_FN_SIDE_ON_N, 1, 1, 6) \
+    X(HB_FN_SIDE_OFF_N, 1, 1, 6) \
+    X(HB_FN_SIDE_PTEST, 1, 1, 255) \
+    X(HB_FN_SIDE_NTEST, 1, 1, 255) \
+    X(HB_FN_JOINT_ON, 1, 1, 6) \
+    X(HB_FN_JOINT_OFF, 1, 1, 6) \
+    X(HB_FN_JOINT_TEST, 1, 1, 255) \
+    X(HB_FN_LCIRCLE, 1, 1, 255) \
+    X(HB_FN_LCOLOR, 1, 1, 255) \
+    X(HB_FN_LFLASH1, 1, 1, 255) \
+    X(HB_FN_LFLASH2, 1, 1, 255) \
+    X(HB_FN_LYREF, 1, 0, 2) \
+    X(HB_FN_LMCW, 1, 1, 6) \
+    X(HB_FN_LMCCW, 1, 1, 6) \
+    X(HB_FN_LSCW, 1, 1, 6) \
+    X(HB_FN_LSCCW, 1, 1, 6) \
+    X(HB_FN_CW, 1, 1, 6) \
+    X(HB_FN_CW, 5, 1, 6) \
+    X(HB_FN_CCW, 1, 1, 6) \
+    X(HB_FN_CCW, 5, 1, 6) \
+    X(HB_FN_SELECT, 1, 0, 63) \
+    X(HB_FN_SELECT, 2, 1, 63) \
+    X(HB_FN_SELECT, 3, 1, 63) \
+    X(HB_FN_SELECT, 4, 1, 63) \
+    X(HB_FN_SELECT, 5, 1, 63) \
+    X(HB_FN_SELECT, 6, 1, 63) \
+    X(HB_FN_SELECT, 7, 1, 63) \
+    X(HB_FN_SELECT, 8, 1, 63) \
+    X(HB_FN_SET_ROLE, 1, 1, 2) \
+
 /* Argument ranges */
 #define HB_FN_JX_OPEN_ARG1_MIN 1
 #define HB_FN_JX_OPEN_ARG1_MAX 6

@@ -1,0 +1,88 @@
+/* comm_board.c - pin map of the communication board.
+ *
+ * Table 3-3 (LEDs) and Table 3-5 (IR channel selector); the listing's
+ * IrSel() agrees with the table: selector A = PA2, B = PA1, C = PA0, and
+ * channel Yk is selected by k = 4C + 2B + A.
+ */
+#include "comm_board.h"
+
+#include <avr/io.h>
+#include <avr/pgmspace.h>
+
+#include "pins.h"
+#include "uart.h"
+
+/* Side LEDs "(1)" = positive, "(2)" = negative; index = side - 1. */
+static const uint8_t led_side_p[6] PROGMEM = {
+    PIN(PORT_A, 6), PIN(PORT_E, 1), PIN(PORT_C, 6),
+    PIN(PORT_C, 3), PIN(PORT_C, 1), PIN(PORT_D, 6),
+};
+static const uint8_t led_side_n[6] PROGMEM = {
+    PIN(PORT_A, 5), PIN(PORT_E, 0), PIN(PORT_C, 7),
+    PIN(PORT_C, 4), PIN(PORT_C, 0), PIN(PORT_D, 5),
+};
+static const uint8_t led_joint[6] PROGMEM = {
+    PIN(PORT_D, 7), PIN(PORT_A, 7), PIN(PORT_E, 2),
+    PIN(PORT_C, 5), PIN(PORT_C, 2), PIN(PORT_D, 4),
+};
+
+/* Selector lines on PORTA. */
+#define SEL_A PA2
+#define SEL_B PA1
+#define SEL_C PA0
+#define SEL_MASK ((1 << SEL_A) | (1 << SEL_B) | (1 << SEL_C))
+
+/* Table 3-5: channel (0 centre, side 1..6) -> multiplexer input Yk. */
+static const uint8_t channel_y[7] PROGMEM = {2, 0, 3, 5, 6, 4, 1};
+
+static uint8_t ir_channel;
+
+void comm_board_init(void)
+{
+    /* LEDs off = outputs high; selector on the centre; unused pins low. */
+    PORTA = 0xE0;
+    PORTC = 0xFF;
+    PORTD = 0xF0 | (1 << PD0);          /* pull-up on RX0 */
+    PORTE = 0x07;
+    PORTB = (1 << PB2);                 /* pull-up on RX1 */
+    DDRA = 0xFF;
+    DDRB = (uint8_t)~(1 << PB2);        /* PB2 = RX1 (IR receive) */
+    DDRC = 0xFF;
+    DDRD = (uint8_t)~(1 << PD0);        /* PD0 = RX0 (control board) */
+    DDRE = 0x07;
+    ir_channel = 0xFF;
+    comm_ir_select(IR_CENTRE);
+}
+
+void comm_led_side(uint8_t side, uint8_t pole, uint8_t on)
+{
+    const uint8_t *table = pole == POLE_P ? led_side_p : led_side_n;
+    pin_write(pgm_read_byte(&table[side - 1u]), !on);
+}
+
+void comm_led_joint(uint8_t joint, uint8_t on)
+{
+    pin_write(pgm_read_byte(&led_joint[joint - 1u]), !on);
+}
+
+void comm_ir_select(uint8_t ch)
+{
+    if (ch > 6u)
+        ch = IR_CENTRE;
+    if (ch == ir_channel)
+        return;
+    /* Bytes still in the shift register would go out on the new channel. */
+    uart_flush(UART1);
+    uint8_t y = pgm_read_byte(&channel_y[ch]);
+    uint8_t bits = (uint8_t)(((y & 1u) ? (1 << SEL_A) : 0) | ((y & 2u) ? (1 << SEL_B) : 0) |
+                             ((y & 4u) ? (1 << SEL_C) : 0));
+    PORTA = (uint8_t)((PORTA & (uint8_t)~SEL_MASK) | bits);
+    ir_channel = ch;
+    /* Whatever the receiver collected belongs to the old channel. */
+    uart_rx_clear(UART1);
+}
+
+uint8_t comm_ir_channel(void)
+{
+    return ir_channel;
+}

@@ -1,0 +1,34 @@
+/* pins.h - a pin as one byte (port index << 3 | bit) and its accessors.
+ * Only the board files use it; nothing else in the firmware names a pin. */
+#ifndef PINS_H
+#define PINS_H
+
+#include <avr/io.h>
+#include <stdint.h>
+
+enum { PORT_A = 0, PORT_B, PORT_C, PORT_D, PORT_E };
+
+#define PIN(port, bit) ((uint8_t)(((port) << 3) | (bit)))
+
+static inline volatile uint8_t *pin_port_reg(uint8_t pin)
+{
+    switch (pin >> 3) {
+    case PORT_A: return &PORTA;
+    case PORT_B: return &PORTB;
+    case PORT_C: return &PORTC;
+    case PORT_D: return &PORTD;
+    default: return &PORTE;
+    }
+}
+
+static inline void pin_write(uint8_t pin, uint8_t high)
+{
+    volatile uint8_t *reg = pin_port_reg(pin);
+    uint8_t mask = (uint8_t)(1u << (pin & 7u));
+    if (high)
+        *reg |= mask;
+    else
+        *reg &= (uint8_t)~mask;
+}
+
+#endif /* PINS_H */

@@ -1,0 +1,353 @@
+/* main.c - communication board: the module's link to the PC (IR, UART1 at
+ * 300 baud) and to its control board (UART0 at 4800 baud).
+ *
+ * States: BOOT ("COMM. BOARD READY") -> HANDSHAKE (control 'R' id -> answer
+ * 'R' until 'L' id; bounded, a missing control board only makes control
+ * functions answer '~') -> LISTENING: PC frames are dispatched by the
+ * function table of hexbot_codes.h; control-board functions are forwarded
+ * and acknowledged with the control board's echo. The board sleeps between
+ * interrupts; every wait is bounded.
+ */
+#include <avr/pgmspace.h>
+#include <string.h>
+
+#include "comm_board.h"
+#include "frame.h"
+#include "hexbot_codes.h"
+#include "leds.h"
+#include "localize.h"
+#include "reply.h"
+#include "state.h"
+#include "system.h"
+#include "table.h"
+#include "uart.h"
+
+#define IR UART1
+#define CTRL UART0
+
+#define LINK_READY 'R'
+#define LINK_LISTENING 'L'
+#define HANDSHAKE_TICKS 300u       /* wait this long for the control board at boot */
+#define HANDSHAKE_RETRY_TICKS 10u  /* resend 'R' every 100 ms (thesis) */
+#define LINK_ID_TICKS 3u           /* the id byte follows 'R'/'L' at once */
+#define PC_BYTE_TIMEOUT_TICKS 34u  /* 10 byte times at 300 baud */
+#define IRSEL_HOLD_TICKS 1000u     /* a side channel falls back to the centre after 10 s of silence */
+
+module_state_t g_state;
+
+static frame_rx_t pc_rx;
+static uint8_t pending[HB_PC_FRAME_LEN];
+static uint8_t have_pending;
+static tick_t last_ir_byte;
+static uint8_t control_ready; /* 'R' seen from the control board */
+
+/* --- links ---------------------------------------------------------------- */
+
+/* 'R' id or 'L' id from the control board, outside command exchanges. */
+static void link_byte(uint8_t b)
+{
+    if (b != LINK_READY && b != LINK_LISTENING)
+        return;
+    int16_t id = uart_getc_wait(CTRL, LINK_ID_TICKS);
+    if (id >= 0 && id <= HB_MAX_MODULE_ID)
+        g_state.id = (uint8_t)id;
+    if (b == LINK_READY) {
+        control_ready = 1;
+        g_state.control_up = 0;
+        uart_putc(CTRL, LINK_READY);
+    } else {
+        g_state.control_up = 1;
+    }
+}
+
+/* Keep both links moving; 1 when a complete PC frame is pending. */
+static uint8_t poll_inputs(void)
+{
+    int16_t b;
+    if (frame_expire(&pc_rx) == FRAME_DROPPED)
+        g_state.last_error = HB_ERR_BAD_FRAME;
+    while ((b = uart_getc(IR)) >= 0) {
+        last_ir_byte = tick_now();
+        frame_result_t r = frame_push(&pc_rx, (uint8_t)b);
+        if (r == FRAME_DONE) {
+            memcpy(pending, pc_rx.buf, sizeof pending);
+            have_pending = 1;
+        } else if (r == FRAME_DROPPED) {
+            g_state.last_error = HB_ERR_BAD_FRAME;
+        }
+    }
+    while ((b = uart_getc(CTRL)) >= 0)
+        link_byte((uint8_t)b);
+    return have_pending;
+}
+
+/* Sequence delay that gives way to a new PC command. */
+static uint8_t wait_or_abort(tick_t n)
+{
+    tick_t start = tick_now();
+    while (tick_since(start) < n) {
+        if (poll_inputs())
+            return 1;
+        sys_idle();
+    }
+    return poll_inputs();
+}
+
+/* Forward a control-board function; returns the echo, HB_TIMEOUT, or the
+ * wrong byte the control board answered. */
+static uint8_t forward(uint8_t code, const uint8_t *a)
+{
+    uart_putc(CTRL, HB_START);
+    uart_putc(CTRL, code);
+    uart_write(CTRL, a, HB_BOARD_ARGS);
+    uart_putc(CTRL, HB_END);
+    tick_t start = tick_now();
+    while (tick_since(start) < HB_CONTROL_ACK_TIMEOUT_TICKS) {
+        int16_t b = uart_getc(CTRL);
+        if (b < 0) {
+            sys_idle();
+            continue;
+        }
+        if (b == code)
+            return code;
+        if (b == LINK_READY || b == LINK_LISTENING) {
+            link_byte((uint8_t)b); /* the control board restarted meanwhile */
+            continue;
+        }
+        return (uint8_t)b;
+    }
+    return HB_TIMEOUT;
+}
+
+/* --- functions ------------------------------------------------------------ */
+
+static void control_function(uint8_t code, const uint8_t *a)
+{
+    uint8_t echo = forward(code, a);
+    if (echo == HB_TIMEOUT) {
+        g_state.last_error = HB_ERR_CONTROL_TIMEOUT;
+        reply_ack(HB_TIMEOUT); /* the thesis' '~' */
+        return;
+    }
+    if (echo != code) {
+        reply_err(code, HB_ERR_CONTROL_MISMATCH);
+        return;
+    }
+    if (code >= HB_FN_MCW && code <= HB_FN_MCCW)
+        g_state.localized = g_state.reference ? g_state.localized : 0; /* it moved */
+    leds_mirror(code, a);
+    reply_ack(code);
+}
+
+/* 67/68: the substrate runs SCW/SCCW(si..), the mobile MCW/MCCW(mi..). */
+static void combined_rotation(uint8_t code, const uint8_t *a)
+{
+    uint8_t cw = code == HB_FN_CW;
+    uint8_t sub = g_state.role == HB_ROLE_SUBSTRATE;
+    uint8_t run = sub ? (cw ? HB_FN_SCW : HB_FN_SCCW) : (cw ? HB_FN_MCW : HB_FN_MCCW);
+    const uint8_t *args = sub ? a : a + 4;
+    if (g_state.role == HB_ROLE_NONE) {
+        reply_err(code, HB_ERR_NO_ROLE);
+        return;
+    }
+    uint8_t echo = forward(run, args);
+    if (echo == HB_TIMEOUT) {
+        g_state.last_error = HB_ERR_CONTROL_TIMEOUT;
+        reply_ack(HB_TIMEOUT);
+        return;
+    }
+    if (echo != run) {
+        reply_err(code, HB_ERR_CONTROL_MISMATCH);
+        return;
+    }
+    if (!sub && !g_state.reference)
+        g_state.localized = 0; /* the mobile module moved */
+    leds_mirror(run, args);
+    reply_ack(code);
+}
+
+static void localize(uint8_t code, tick_t started)
+{
+    loc_result_t r = localize_run(started);
+    reply_wait_turn(SLOTS_LOCALIZE);
+    if (r == LOC_NOT_HEARD) {
+        reply_err_now(code, HB_ERR_NOT_HEARD);
+        return;
+    }
+    if (r == LOC_LEARNED) {
+        reply_preamble();
+        reply_line_P(PSTR("LOCALIZED"));
+        uart_puts_P(IR, PSTR("Side: "));
+        uart_putc(IR, (uint8_t)('0' + g_state.heard_side));
+        uart_puts_P(IR, PSTR("\n\rYref: "));
+        uart_putc(IR, (uint8_t)('0' + g_state.yref));
+        uart_puts_P(IR, PSTR("\n\rPos: "));
+        int8_t c[2] = {g_state.x, g_state.y};
+        for (uint8_t i = 0; i < 2; i++) {
+            uart_putc(IR, c[i] < 0 ? '-' : '+');
+            reply_dec2((uint8_t)(c[i] < 0 ? -c[i] : c[i]));
+        }
+        uart_puts_P(IR, PSTR("\n\r"));
+    }
+    reply_ack_now(code);
+}
+
+static void select_modules(const uint8_t *a)
+{
+    if (a[0] > HB_MAX_MODULE_ID) {
+        g_state.last_error = HB_ERR_ARG_RANGE;
+        return; /* nobody can tell whether it was meant: stay as we are */
+    }
+    for (uint8_t k = 1; k < HB_PC_ARGS; k++) {
+        if (a[k] != HB_UNUSED && (a[k] == 0 || a[k] > HB_MAX_MODULE_ID)) {
+            g_state.last_error = HB_ERR_ARG_RANGE;
+            return;
+        }
+    }
+    g_state.addressed = 1;
+    g_state.selected = 0;
+    if (a[0] == 0) {
+        g_state.selected = 1;
+        g_state.rank = g_state.id ? (uint8_t)(g_state.id - 1u) : 0;
+    } else {
+        for (uint8_t k = 0; k < HB_PC_ARGS; k++) {
+            if (a[k] == g_state.id) {
+                g_state.selected = 1;
+                g_state.rank = k;
+                break;
+            }
+        }
+    }
+    if (g_state.selected)
+        reply_ack(HB_FN_SELECT);
+}
+
+static void comm_function(uint8_t code, const uint8_t *a, tick_t received)
+{
+    switch (code) {
+    case HB_FN_IR_SEL:
+        reply_ack(code); /* on the centre, where the PC hears it */
+        comm_ir_select(a[0]);
+        last_ir_byte = tick_now();
+        return;
+    case HB_FN_REF:
+        g_state.reference = 1;
+        g_state.localized = 1;
+        g_state.role = HB_ROLE_SUBSTRATE;
+        g_state.x = g_state.y = 0;
+        g_state.yref = 0;
+        for (uint8_t k = 0; k < 3; k++)
+            leds_run(HB_FN_LYREF, (const uint8_t *)"\0");
+        break;
+    case HB_FN_LOCALIZE:
+        localize(code, received);
+        return;
+    case HB_FN_CW:
+    case HB_FN_CCW:
+        combined_rotation(code, a);
+        return;
+    case HB_FN_STATUS:
+        reply_status();
+        return;
+    case HB_FN_SET_ROLE:
+        g_state.role = a[0];
+        break;
+    case HB_FN_CLEAR_ERROR:
+        g_state.last_error = HB_ERR_NONE;
+        break;
+    default:
+        leds_run(code, a);
+        break;
+    }
+    reply_ack(code);
+}
+
+static void handle_frame(const uint8_t *f, tick_t received)
+{
+    uint8_t code = f[1];
+    const uint8_t *a = &f[2];
+    if (code == HB_FN_SELECT) {
+        select_modules(a);
+        return;
+    }
+    if (g_state.addressed && !g_state.selected)
+        return;
+    uint8_t board = table_board(code);
+    if (board == HB_BOARD_NONE)
+        reply_ack(HB_UNUSED);
+    else if (!table_args_ok(code, a))
+        reply_err(code, HB_ERR_ARG_RANGE);
+    else if (board == HB_BOARD_CONTROL)
+        control_function(code, a);
+    else
+        comm_function(code, a, received);
+}
+
+/* --- boot ----------------------------------------------------------------- */
+
+static const uint8_t flash_args[2] = {3, 10};
+
+static void handshake(void)
+{
+    tick_t start = tick_now();
+    while (!control_ready && tick_since(start) < HANDSHAKE_TICKS) {
+        poll_inputs();
+        sys_idle();
+    }
+    if (control_ready) {
+        leds_run(HB_FN_LFLASH1, flash_args);
+        uart_puts_P(IR, PSTR("CTR. BOARD READY"));
+        reply_tail(1, 0);
+        uart_puts_P(IR, PSTR("\n\r"));
+        start = tick_now();
+        tick_t last = start;
+        while (!g_state.control_up && tick_since(start) < HANDSHAKE_TICKS) {
+            if (tick_since(last) >= HANDSHAKE_RETRY_TICKS) {
+                uart_putc(CTRL, LINK_READY);
+                last = tick_now();
+            }
+            poll_inputs();
+            sys_idle();
+        }
+    }
+    if (g_state.control_up) {
+        leds_run(HB_FN_LFLASH2, flash_args);
+        reply_line_P(PSTR("CTR. LISTENING"));
+    }
+}
+
+int main(void)
+{
+    comm_board_init(); /* LEDs off, selector on the centre */
+    sys_init();
+    uart_init(CTRL, HB_BAUD_BOARD);
+    uart_init(IR, HB_BAUD_IR);
+    frame_init(&pc_rx, HB_PC_FRAME_LEN, PC_BYTE_TIMEOUT_TICKS);
+    g_state.role = HB_ROLE_MOBILE;
+    leds_init(wait_or_abort);
+    reply_init(poll_inputs);
+
+    reply_preamble();
+    uart_puts_P(IR, PSTR("COMM. BOARD READY"));
+    reply_tail(0, 1);
+    uart_puts_P(IR, PSTR("\n\r"));
+    handshake();
+    leds_run(HB_FN_LCOLOR, flash_args);
+    uart_puts_P(IR, PSTR("COMM. LISTENING"));
+    reply_tail(1, 1);
+    uart_puts_P(IR, PSTR("\n\r"));
+    have_pending = 0; /* nothing sent during boot is for us */
+
+    for (;;) {
+        if (poll_inputs()) {
+            have_pending = 0;
+            uint8_t frame[HB_PC_FRAME_LEN];
+            memcpy(frame, pending, sizeof frame);
+            handle_frame(frame, tick_now());
+        } else {
+            if (comm_ir_channel() != IR_CENTRE && tick_since(last_ir_byte) > IRSEL_HOLD_TICKS)
+                comm_ir_select(IR_CENTRE);
+            sys_idle();
+        }
+    }
+}

@@ -1,0 +1,67 @@
+/* reply.h - what the communication board sends the PC on the IR centre
+ * channel, and when.
+ *
+ * Schedule: legacy mode (no Select since boot) answers at once as mobile
+ * and after 1 s as substrate (thesis). Addressed mode answers after
+ * rank x slots x HB_ACK_SLOT_TICKS, where "slots" is how many slots the
+ * reply kind needs on the 300-baud link (1 for ACK/ERR, more for status
+ * and the localization report), so that replies of modules answering the
+ * same broadcast never overlap.
+ */
+#ifndef REPLY_H
+#define REPLY_H
+
+#include <stdint.h>
+
+#include "hexbot_codes.h"
+
+/* Ticks one byte occupies at 300 baud, rounded up with margin (3.33 ms x 10). */
+#define IR_BYTE_TICKS_X10 34u
+#define REPLY_SLOTS(bytes) \
+    ((((bytes) * IR_BYTE_TICKS_X10 + 9u) / 10u + HB_ACK_SLOT_TICKS - 1u) / HB_ACK_SLOT_TICKS)
+
+/* Longest replies in addressed mode: preamble 4 + "M03: " 5 + body. */
+#define REPLY_BYTES_ACK (4u + 5u + 6u)
+#define REPLY_BYTES_ERR (4u + 5u + 7u)
+#define REPLY_BYTES_STATUS (4u + 5u + 12u)
+/* Localization: report (4 + 11 + 9 + 9 + 13) then the ACK. */
+#define REPLY_BYTES_LOCALIZE (46u + REPLY_BYTES_ACK)
+
+#define SLOTS_ACK REPLY_SLOTS(REPLY_BYTES_ERR)
+#define SLOTS_STATUS REPLY_SLOTS(REPLY_BYTES_STATUS)
+#define SLOTS_LOCALIZE REPLY_SLOTS(REPLY_BYTES_LOCALIZE)
+
+typedef uint8_t (*poll_fn)(void);
+
+/** @p poll keeps input moving while a reply waits for its slot. */
+void reply_init(poll_fn poll);
+
+/** Wait for this module's turn for a reply needing @p slots slots. */
+void reply_wait_turn(uint8_t slots);
+
+/** Preamble on the centre channel (no prefix). */
+void reply_preamble(void);
+
+/** ACK + code, in the ACK slot. */
+void reply_ack(uint8_t code);
+
+/** ERR + code + reason, in the ACK slot; records the error. */
+void reply_err(uint8_t code, uint8_t reason);
+
+/** STA reply, in the status slot. */
+void reply_status(void);
+
+/** A text line from flash (no preamble), LF CR appended. */
+void reply_line_P(const char *text);
+
+/** " ID=nn" and/or " FW=x.y.z" tail of a boot text. */
+void reply_tail(uint8_t with_id, uint8_t with_fw);
+
+/** Ack/err/status body helpers for callers that waited already. */
+void reply_ack_now(uint8_t code);
+void reply_err_now(uint8_t code, uint8_t reason);
+
+/** Two decimal digits. */
+void reply_dec2(uint8_t v);
+
+#endif /* REPLY_H */

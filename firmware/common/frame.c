@@ -1,0 +1,56 @@
+/* frame.c - fixed-length frame receiver with resynchronisation. */
+#include "frame.h"
+
+#include <string.h>
+
+#include "hexbot_codes.h"
+
+void frame_init(frame_rx_t *f, uint8_t size, tick_t timeout)
+{
+    memset(f, 0, sizeof(*f));
+    f->size = size;
+    f->timeout = timeout;
+}
+
+/* Keep the bytes from the first '*' after the frame start, if any. */
+static void resync(frame_rx_t *f)
+{
+    uint8_t i;
+    for (i = 1; i < f->len; i++) {
+        if (f->buf[i] == HB_START)
+            break;
+    }
+    f->len = (uint8_t)(f->len - i);
+    memmove(f->buf, f->buf + i, f->len);
+}
+
+frame_result_t frame_push(frame_rx_t *f, uint8_t b)
+{
+    frame_result_t r = frame_expire(f);
+    f->last = tick_now();
+    if (f->len == 0) {
+        if (b == HB_START)
+            f->buf[f->len++] = b;
+        return r;
+    }
+    f->buf[f->len++] = b;
+    if (f->len < f->size)
+        return r;
+    if (b == HB_END) {
+        f->len = 0;
+        return FRAME_DONE;
+    }
+    f->dropped++;
+    resync(f);
+    return FRAME_DROPPED;
+}
+
+frame_result_t frame_expire(frame_rx_t *f)
+{
+    if (f->len && tick_since(f->last) > f->timeout) {
+        f->len = 0;
+        f->dropped++;
+        return FRAME_DROPPED;
+    }
+    return FRAME_NONE;
+}

@@ -1,0 +1,40 @@
+/* frame.h - receiver for the fixed-length '*' ... '#' frames.
+ *
+ * PC frames are '*' B1..B9 '#' (11 bytes), board frames '*' code a1..a4 '#'
+ * (7 bytes). Argument bytes may be any value, '*' and '#' included, so the
+ * receiver counts bytes instead of searching for '#'. When the last byte is
+ * not '#' the frame is dropped and the receiver resynchronises on the next
+ * '*' already received (so a truncated frame directly followed by a good
+ * one still yields the good one); a frame that stops half-way is abandoned
+ * after an inter-byte time-out.
+ */
+#ifndef FRAME_H
+#define FRAME_H
+
+#include <stdint.h>
+
+#include "system.h"
+
+#define FRAME_MAX 11u
+
+typedef struct {
+    uint8_t buf[FRAME_MAX];
+    uint8_t len;      /* bytes collected, 0 = waiting for '*' */
+    uint8_t size;     /* full frame length */
+    tick_t last;      /* tick of the last byte, for the time-out */
+    tick_t timeout;   /* inter-byte time-out in ticks */
+    uint8_t dropped;  /* frames abandoned (bad end byte or time-out) */
+} frame_rx_t;
+
+typedef enum { FRAME_NONE = 0, FRAME_DONE, FRAME_DROPPED } frame_result_t;
+
+void frame_init(frame_rx_t *f, uint8_t size, tick_t timeout);
+
+/** Feed one byte. FRAME_DONE: buf holds a complete frame (read it before
+ *  the next call). FRAME_DROPPED: a frame was just abandoned. */
+frame_result_t frame_push(frame_rx_t *f, uint8_t b);
+
+/** Abandon a half frame whose next byte is overdue; FRAME_DROPPED if so. */
+frame_result_t frame_expire(frame_rx_t *f);
+
+#endif /* FRAME_H */

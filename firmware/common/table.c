@@ -1,0 +1,29 @@
+/* table.c - dispatch facts expanded from the X-macros of hexbot_codes.h,
+ * so the firmware never repeats the protocol table. */
+#include "table.h"
+
+#include "hexbot_codes.h"
+
+uint8_t table_board(uint8_t code)
+{
+    switch (code) {
+#define X(c, board, nargs) \
+    case c:                \
+        return board;
+        HB_FUNCTIONS(X)
+#undef X
+    default:
+        return HB_BOARD_NONE;
+    }
+}
+
+uint8_t table_args_ok(uint8_t code, const uint8_t *args)
+{
+#define X(c, n, lo, hi)                                                             \
+    if (code == (c) && ((c) != HB_FN_SELECT || (n) == 1) &&                         \
+        (uint8_t)(args[(n) - 1] - (uint8_t)(lo)) > (uint8_t)((hi) - (lo)))         \
+        return 0;
+    HB_ARG_RANGES(X)
+#undef X
+    return 1;
+}

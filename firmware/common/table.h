@@ -1,0 +1,14 @@
+/* table.h - the function table of hexbot_codes.h, as the firmware uses it. */
+#ifndef TABLE_H
+#define TABLE_H
+
+#include <stdint.h>
+
+/** HB_BOARD_CONTROL / HB_BOARD_COMM, or HB_BOARD_NONE for unused codes. */
+uint8_t table_board(uint8_t code);
+
+/** 1 when every argument of @p code is within its documented range.
+ *  Select's optional ids (args 2..8) are the caller's business. */
+uint8_t table_args_ok(uint8_t code, const uint8_t *args);
+
+#endif /* TABLE_H */

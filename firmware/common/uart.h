@@ -1,0 +1,49 @@
+/* uart.h - both USARTs of the ATmega162, interrupt driven.
+ *
+ * Receive and transmit each go through a 32-byte ring: the RXC interrupt
+ * only stores bytes (dropping those with a framing or overrun error, which
+ * are what collisions and noise produce), the UDRE interrupt only sends
+ * them. Every wait is bounded: uart_getc_wait() has a time-out, uart_putc()
+ * gives up (and drops the byte) when the transmitter makes no progress.
+ */
+#ifndef UART_H
+#define UART_H
+
+#include <stdint.h>
+
+#include "system.h"
+
+#define UART0 0u
+#define UART1 1u
+
+/** 8N1 at @p baud (F_CPU / 16 / baud rounded), receiver and transmitter on. */
+void uart_init(uint8_t u, uint32_t baud);
+
+/** Next received byte, or -1 if none is waiting. */
+int16_t uart_getc(uint8_t u);
+
+/** Next received byte within @p ticks, or -1 on time-out. */
+int16_t uart_getc_wait(uint8_t u, tick_t ticks);
+
+/** Discard every received byte not yet read. */
+void uart_rx_clear(uint8_t u);
+
+/** Queue one byte for transmission. */
+void uart_putc(uint8_t u, uint8_t b);
+
+/** Queue @p n bytes. */
+void uart_write(uint8_t u, const uint8_t *p, uint8_t n);
+
+/** Queue a string from flash. */
+void uart_puts_P(uint8_t u, const char *p);
+
+/** Queue a string from RAM. */
+void uart_puts(uint8_t u, const char *s);
+
+/** Wait (bounded) until every queued byte has left the shift register. */
+void uart_flush(uint8_t u);
+
+/** Bytes dropped on receive (framing error, overrun, full ring). */
+uint8_t uart_rx_errors(uint8_t u);
+
+#endif /* UART_H */

@@ -1,0 +1,168 @@
+/* main.c - control board: handshake with the communication board, then
+ * execute the board frames it forwards (UART0) or that arrive on the debug
+ * port (UART1), echoing each code and logging it on the debug port.
+ *
+ * States: BOOT (self-test, "CTR. BOARD READY") -> HANDSHAKE ('R' id every
+ * 100 ms until the comm board answers 'R', at most 5 s) -> LISTENING
+ * (answer a late 'R' with 'L' id; run frames). A frame that arrives while
+ * a sequence runs stops it, switches every actuator off and runs next.
+ */
+#include <avr/pgmspace.h>
+#include <string.h>
+
+#include "actuators.h"
+#include "control_board.h"
+#include "frame.h"
+#include "hexbot_codes.h"
+#include "system.h"
+#include "table.h"
+#include "uart.h"
+#include "version.h"
+
+#define LINK_READY 'R'     /* handshake: "ready", followed by the module id */
+#define LINK_LISTENING 'L' /* handshake: "listening", followed by the module id */
+#define HANDSHAKE_RETRY_TICKS 10u
+#define HANDSHAKE_MAX_TRIES 50u
+#define BOARD_BYTE_TIMEOUT_TICKS 3u /* 6 byte times at 4800 baud */
+
+#define SRC_COMM UART0
+#define SRC_DEBUG UART1
+
+static frame_rx_t rx[2];
+static uint8_t pending[HB_BOARD_FRAME_LEN];
+static uint8_t pending_src;
+static uint8_t have_pending;
+static uint8_t module_id;
+
+static void debug_line_P(const char *text)
+{
+    uart_puts_P(SRC_DEBUG, text);
+    uart_putc(SRC_DEBUG, '\n');
+    uart_putc(SRC_DEBUG, '\r');
+}
+
+static void debug_preamble(void)
+{
+    uart_puts_P(SRC_DEBUG, PSTR("\n\r\n\r"));
+}
+
+static void send_link(uint8_t what)
+{
+    uart_putc(SRC_COMM, what);
+    uart_putc(SRC_COMM, module_id);
+}
+
+/* Move received bytes into the frame receivers; 1 when a frame is pending. */
+static uint8_t poll_links(void)
+{
+    for (uint8_t src = 0; src < 2; src++) {
+        int16_t b;
+        frame_expire(&rx[src]);
+        while ((b = uart_getc(src)) >= 0) {
+            if (src == SRC_COMM && rx[src].len == 0 && b == LINK_READY) {
+                send_link(LINK_LISTENING); /* comm board (re)started */
+                continue;
+            }
+            if (frame_push(&rx[src], (uint8_t)b) == FRAME_DONE) {
+                memcpy(pending, rx[src].buf, sizeof pending);
+                pending_src = src;
+                have_pending = 1;
+            }
+        }
+    }
+    return have_pending;
+}
+
+/* Sequence delay that gives way to a newly arrived command. */
+static uint8_t wait_or_abort(tick_t n)
+{
+    tick_t start = tick_now();
+    while (tick_since(start) < n) {
+        if (poll_links())
+            return 1;
+        sys_idle();
+    }
+    return poll_links();
+}
+
+static void run_pending(void)
+{
+    uint8_t code = pending[1];
+    const uint8_t *args = &pending[2];
+    uint8_t ok = table_board(code) == HB_BOARD_CONTROL && table_args_ok(code, args);
+    uint8_t echo = ok ? code : HB_UNUSED;
+    have_pending = 0;
+
+    if (pending_src == SRC_COMM)
+        uart_putc(SRC_COMM, echo); /* the acknowledgement the comm board waits for */
+    debug_preamble();
+    uart_puts_P(SRC_DEBUG, PSTR("ACK"));
+    uart_putc(SRC_DEBUG, echo);
+    uart_puts_P(SRC_DEBUG, PSTR("\n\rMSG"));
+    uart_write(SRC_DEBUG, &pending[1], 1 + HB_BOARD_ARGS);
+    uart_puts_P(SRC_DEBUG, PSTR("\n\r"));
+    actuators_off(); /* whatever a stopped sequence left on */
+    if (ok)
+        actuators_run(code, args);
+}
+
+static uint8_t handshake(void)
+{
+    for (uint8_t tries = 0; tries < HANDSHAKE_MAX_TRIES; tries++) {
+        send_link(LINK_READY);
+        tick_t start = tick_now();
+        while (tick_since(start) < HANDSHAKE_RETRY_TICKS) {
+            int16_t b = uart_getc(SRC_COMM);
+            if (b == LINK_READY)
+                return 1;
+            if (b < 0)
+                sys_idle();
+        }
+    }
+    return 0;
+}
+
+static void put_id_tail(void)
+{
+    uart_puts_P(SRC_DEBUG, PSTR(" ID="));
+    uart_putc(SRC_DEBUG, (uint8_t)('0' + module_id / 10u));
+    uart_putc(SRC_DEBUG, (uint8_t)('0' + module_id % 10u));
+    uart_puts_P(SRC_DEBUG, PSTR(" FW=" HB_FW_VERSION));
+}
+
+int main(void)
+{
+    control_board_init(); /* every actuator off before anything else */
+    sys_init();
+    uart_init(UART0, HB_BAUD_BOARD);
+    uart_init(UART1, HB_BAUD_DEBUG);
+    frame_init(&rx[0], HB_BOARD_FRAME_LEN, BOARD_BYTE_TIMEOUT_TICKS);
+    frame_init(&rx[1], HB_BOARD_FRAME_LEN, BOARD_BYTE_TIMEOUT_TICKS);
+    actuators_init(wait_or_abort);
+
+    sys_delay(10); /* supplies settle */
+    module_id = control_module_id();
+    /* Self-test: each joint opens for 50 ms in turn (the thesis' JTest(1,5)). */
+    for (uint8_t j = 1; j <= 6; j++) {
+        control_joint(j, 1);
+        sys_delay(5);
+        control_joint(j, 0);
+        sys_delay(5);
+    }
+
+    debug_preamble();
+    uart_puts_P(SRC_DEBUG, PSTR("CTR. BOARD READY"));
+    put_id_tail();
+    uart_puts_P(SRC_DEBUG, PSTR("\n\r"));
+    if (handshake())
+        debug_line_P(PSTR("COMM. BOARD READY"));
+    send_link(LINK_LISTENING);
+    debug_line_P(PSTR("CTR. LISTENING"));
+
+    for (;;) {
+        if (poll_links())
+            run_pending();
+        else
+            sys_idle();
+    }
+}

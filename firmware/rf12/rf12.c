@@ -1,0 +1,105 @@
+/* rf12.c - RF12 driver: the command words and packet format of the thesis'
+ * wireless listing, with every wait on nIRQ bounded. */
+#include "rf12.h"
+
+#include "rf12_board.h"
+#include "system.h"
+
+#define IRQ_TIMEOUT_TICKS 10u    /* a byte at 4.8 kbps takes 1.7 ms */
+#define PACKET_TIMEOUT_TICKS 200u /* wait this long for a packet to start */
+
+static const uint16_t init_words[] = {
+    0x80D7, /* EL, EF, 433 MHz band, 12.0 pF */
+    0x8239, /* !er, !ebb, ET, ES, EX, !eb, !ew, DC */
+    0xA640, /* 434 MHz */
+    0xC647, /* 4.8 kbps */
+    0x94A0, /* VDI, fast, 134 kHz, 0 dBm, -103 dBm */
+    0xC2AC, /* AL, !ml, DIG, DQD4 */
+    0xCA81, /* FIFO8, sync, !ff, DR */
+    0xCED4, /* sync word 2D D4 */
+    0xC483, /* @PWR, no restriction, !st, !fi, OE, EN */
+    0x9850, /* !mp, 90 kHz, max output */
+    0xCC67, /* PLL settings */
+    0xE000, /* wake-up timer off */
+    0xC800, /* low duty cycle off */
+    0xC400, /* 1.66 MHz, 2.2 V */
+};
+
+void rf12_init(void)
+{
+    for (uint8_t i = 0; i < sizeof init_words / sizeof init_words[0]; i++)
+        rf12_board_xfer(init_words[i]);
+}
+
+static uint8_t wait_irq(tick_t ticks)
+{
+    tick_t start = tick_now();
+    while (!rf12_board_irq()) {
+        if (tick_since(start) >= ticks)
+            return 0;
+        sys_idle();
+    }
+    return 1;
+}
+
+static uint8_t send_byte(uint8_t b)
+{
+    if (!wait_irq(IRQ_TIMEOUT_TICKS))
+        return 0;
+    rf12_board_xfer(0xB800u | b);
+    return 1;
+}
+
+uint8_t rf12_send_packet(const uint8_t *data)
+{
+    uint8_t ok = 1;
+    uint8_t sum = 0;
+    rf12_board_xfer(0x0000);  /* read status: clears a pending interrupt */
+    rf12_board_xfer(0x8239);  /* transmitter on */
+    static const uint8_t head[] = {0xAA, 0xAA, 0xAA, 0x2D, 0xD4};
+    for (uint8_t i = 0; i < sizeof head; i++)
+        ok &= send_byte(head[i]);
+    for (uint8_t i = 0; i < RF12_PAYLOAD; i++) {
+        ok &= send_byte(data[i]);
+        sum = (uint8_t)(sum + data[i]);
+    }
+    ok &= send_byte(sum);
+    for (uint8_t i = 0; i < 3; i++)
+        ok &= send_byte(0xAA); /* dummy bytes flush the shift register */
+    rf12_board_xfer(0x8201);  /* transmitter off */
+    return ok;
+}
+
+static int16_t recv_byte(tick_t ticks)
+{
+    if (!wait_irq(ticks))
+        return -1;
+    rf12_board_xfer(0x0000);
+    return (int16_t)(rf12_board_xfer(0xB000) & 0xFFu); /* the listing wrote 0xB0000 */
+}
+
+int8_t rf12_receive_packet(uint8_t *data)
+{
+    uint8_t sum = 0;
+    int16_t b;
+    rf12_board_xfer(0x82D9);  /* receiver on */
+    rf12_board_xfer(0xCA81);  /* FIFO reset: wait for the sync word again */
+    rf12_board_xfer(0xCA83);  /* FIFO fill on sync */
+    for (uint8_t i = 0; i < RF12_PAYLOAD; i++) {
+        b = recv_byte(i == 0 ? PACKET_TIMEOUT_TICKS : IRQ_TIMEOUT_TICKS);
+        if (b < 0 && i == 0)
+            goto fail;
+        if (b < 0) {
+            rf12_board_xfer(0xCA81);
+            return RF12_RX_BAD_SUM; /* the packet stopped half-way */
+        }
+        data[i] = (uint8_t)b;
+        sum = (uint8_t)(sum + (uint8_t)b);
+    }
+    b = recv_byte(IRQ_TIMEOUT_TICKS);
+    rf12_board_xfer(0xCA81);
+    return (b >= 0 && (uint8_t)b == sum) ? RF12_RX_OK : RF12_RX_BAD_SUM;
+fail:
+    rf12_board_xfer(0xCA81);
+    return RF12_RX_NONE;
+}
