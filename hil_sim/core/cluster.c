@@ -160,7 +160,8 @@ int raw_simavr_run(const char *elf_path, const char *core, uint64_t cycles,
 		uint64_t *cycles_done, double *seconds, char *err, size_t errlen)
 {
 	ensure_logger();
-	m162_t *m = m162_make_stock(core);
+	/* "atmega162": our core under simavr's stock loop (no scheduler) */
+	m162_t *m = strcmp(core, "atmega162") ? m162_make_stock(core) : m162_make();
 	if (!m) {
 		snprintf(err, errlen, "unknown MCU core '%s'", core);
 		return -1;

@@ -647,8 +647,32 @@ void m162_free(m162_t *m)
 	free(m);
 }
 
+/* libelf accepts some files that are not ELF at all: check the header. */
+static int check_avr_elf(const char *path, char *err, size_t errlen)
+{
+	unsigned char h[20];
+	FILE *f = fopen(path, "rb");
+	if (!f) {
+		snprintf(err, errlen, "%s: cannot open", path);
+		return -1;
+	}
+	size_t n = fread(h, 1, sizeof h, f);
+	fclose(f);
+	if (n < sizeof h || memcmp(h, "\x7f" "ELF", 4) != 0) {
+		snprintf(err, errlen, "%s: not an ELF file", path);
+		return -1;
+	}
+	if (h[4] != 1 || h[5] != 1 || (h[18] | (h[19] << 8)) != 83 /* EM_AVR */) {
+		snprintf(err, errlen, "%s: ELF file, but not for the AVR", path);
+		return -1;
+	}
+	return 0;
+}
+
 int m162_load_elf(m162_t *m, const char *path, char *err, size_t errlen)
 {
+	if (check_avr_elf(path, err, errlen) != 0)
+		return -1;
 	/* elf_firmware_t is big and its layout depends on simavr's build flags:
 	 * give the library generous room. */
 	union {

@@ -103,8 +103,10 @@ def test_bad_arguments_are_clear_errors(tmp_path):
         c.add_mcu(str(tmp_path / "nope.elf"), "x")
     junk = tmp_path / "junk.elf"
     junk.write_bytes(b"not an elf")
-    with pytest.raises(ValueError, match="junk.elf"):
+    with pytest.raises(ValueError, match="junk.elf: not an ELF file"):
         c.add_mcu(str(junk), "x")
+    with pytest.raises(ValueError, match="not for the AVR"):
+        c.add_mcu("/bin/sh", "x")
     with pytest.raises(ValueError, match="unknown MCU core"):
         c.add_mcu(build("echo"), "x", core="atmega999")
     m = c.add_mcu(build("echo"), "echo")

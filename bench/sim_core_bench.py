@@ -1,0 +1,118 @@
+"""Speed of the simulator core (hexbot.hil_sim._avr), printed as JSON.
+
+    .venv/bin/python bench/sim_core_bench.py [--busy-cycles N] [--idle-seconds S] [--repeat N]
+
+Measures, in one run on this machine:
+  raw_simavr      simavr's own run loop (avr_callback_run_raw) on its stock
+                  atmega128 core, one MCU in a CPU-bound loop: the reference.
+  raw_loop_m162   the same stock loop on our ATmega162 core (no scheduler).
+  busy_1, busy_14 our Cluster, 1 and 14 ATmega162s in the same CPU-bound loop.
+  idle_7_modules  14 MCUs (7 modules) of idle firmware: a 10 ms timer tick,
+                  idle sleep in between.
+  idle_50_modules 100 MCUs (50 modules) of the same.
+Throughput is simulated cycles per wall-clock second over all MCUs; the idle
+runs report the real-time factor (simulated seconds per wall second).  Each
+number is the best of --repeat runs (the machine is shared).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from hexbot.hil_sim._avr import SIMAVR_VERSION, Cluster, raw_simavr_run
+
+ROOT = Path(__file__).resolve().parent.parent
+AVR_DIR = ROOT / "tests" / "hil_sim" / "avr"
+F_CPU = 1_000_000
+
+
+def build(name: str, mcu: str) -> str:
+    target = f"build/{name}.{mcu}.elf"
+    subprocess.run(["make", "-s", "-C", str(AVR_DIR), target], check=True)
+    return str(AVR_DIR / target)
+
+
+def best_of(repeat: int, runs: dict) -> dict:
+    """Interleave the measurements so machine load hits all of them alike."""
+    times = {name: float("inf") for name in runs}
+    for _ in range(repeat):
+        for name, fn in runs.items():
+            times[name] = min(times[name], fn())
+    return times
+
+
+def time_cluster(elf: str, count: int, cycles: int, quantum: int = 1000) -> float:
+    c = Cluster(quantum)
+    for i in range(count):
+        c.add_mcu(elf, f"mcu{i}")
+    t0 = time.perf_counter()
+    reached = c.run(cycles)
+    elapsed = time.perf_counter() - t0
+    assert reached == cycles
+    return elapsed
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--busy-cycles", type=int, default=20_000_000,
+                    help="cycles per MCU for the CPU-bound runs (busy_14: a quarter)")
+    ap.add_argument("--idle-seconds", type=float, default=10.0,
+                    help="simulated seconds for the idle clusters")
+    ap.add_argument("--repeat", type=int, default=3)
+    args = ap.parse_args(argv)
+    cycles = args.busy_cycles
+
+    busy162 = build("cpuloop", "atmega162")
+    busy128 = build("cpuloop", "atmega128")
+    idle = build("idle", "atmega162")
+
+    def raw(elf: str, core: str) -> float:
+        done, secs = raw_simavr_run(elf, core, cycles)
+        assert done >= cycles
+        return secs
+
+    idle_seconds = args.idle_seconds
+    idle_cycles = int(idle_seconds * F_CPU)
+    t = best_of(args.repeat, {
+        "raw": lambda: raw(busy128, "atmega128"),
+        "raw162": lambda: raw(busy162, "atmega162"),
+        "busy1": lambda: time_cluster(busy162, 1, cycles),
+        "busy14": lambda: time_cluster(busy162, 14, cycles // 4),
+        "idle7": lambda: time_cluster(idle, 14, idle_cycles),
+        "idle50": lambda: time_cluster(idle, 100, idle_cycles),
+    })
+    raw_s, busy1_s, busy14_s, idle7_s, idle50_s = (
+        t["raw"], t["busy1"], t["busy14"], t["idle7"], t["idle50"])
+
+    raw_rate = cycles / raw_s
+    result = {
+        "command": " ".join(["python", "bench/sim_core_bench.py", *(argv or sys.argv[1:])]),
+        "machine": {"python": platform.python_version(), "cpus": os.cpu_count(),
+                    "simavr": SIMAVR_VERSION},
+        "raw_simavr": {"mcus": 1, "cycles_per_s": round(raw_rate)},
+        "raw_loop_m162": {"mcus": 1, "cycles_per_s": round(cycles / t["raw162"]),
+                          "vs_raw": round(cycles / t["raw162"] / raw_rate, 3)},
+        "busy_1": {"mcus": 1, "cycles_per_s": round(cycles / busy1_s),
+                   "vs_raw": round(cycles / busy1_s / raw_rate, 3)},
+        "busy_14": {"mcus": 14, "cycles_per_s": round(14 * (cycles // 4) / busy14_s),
+                    "vs_raw": round(14 * (cycles // 4) / busy14_s / raw_rate, 3)},
+        "idle_7_modules": {"mcus": 14, "simulated_s": idle_seconds,
+                           "realtime_factor": round(idle_seconds / idle7_s, 1)},
+        "idle_50_modules": {"mcus": 100, "simulated_s": idle_seconds,
+                            "realtime_factor": round(idle_seconds / idle50_s, 1)},
+        "targets": {"idle_7_modules_realtime_factor": 20, "idle_50_modules_realtime_factor": 2,
+                    "busy_vs_raw_min": 0.7},
+    }
+    print(json.dumps(result, indent=2))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
