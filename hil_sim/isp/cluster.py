@@ -101,3 +101,15 @@ def open_cluster_isp(
         server.close()
         raise
     return ClusterIsp(server, layout)
+
+
+def open_simulator_isp(sim: Any, lock: threading.Lock | None = None) -> ClusterIsp:
+    """ISP ports for every module of a ``hexbot.hil_sim.Simulator``.
+
+    Integration with ``hexbot sim --pty`` is one line plus polling:
+    ``isp = open_simulator_isp(sim)``, add ``"isp": isp.ports_json()`` to the
+    JSON line, and call ``isp.server.poll(0)`` in the serving loop.
+    """
+    boards = {mid: {"comm": module.comm.index, "control": module.control.index}
+              for mid, module in sorted(sim.modules.items())}
+    return open_cluster_isp(sim.cluster, boards, lock)
