@@ -1,0 +1,1 @@
+"""The Textual console: the thesis' VB GUI, in the terminal."""

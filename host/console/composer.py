@@ -1,0 +1,194 @@
+"""The message composer: a searchable function table generated from
+``protocol/``, one validated input per argument with its range and meaning,
+the exact frame previewed in hex, and a history to re-send from."""
+
+from __future__ import annotations
+
+from textual import on
+from textual.app import ComposeResult
+from textual.containers import Horizontal, Vertical, VerticalScroll
+from textual.message import Message
+from textual.widgets import Button, DataTable, Input, Label, Static
+
+from hexbot.errors import FrameError
+from hexbot.protocol import frames
+from hexbot.protocol.codes import CODES, FunctionCode, executable_codes
+from hexbot.protocol.frames import Command
+
+
+def function_rows(query: str) -> list[FunctionCode]:
+    """Executable functions whose code, name, board or comment contain
+    every word of the query."""
+    words = query.lower().split()
+    out = []
+    for fn in executable_codes():
+        hay = f"{fn.code} {fn.name} {fn.board.value} {fn.comment} {fn.signature()}".lower()
+        if all(w in hay for w in words):
+            out.append(fn)
+    return out
+
+
+class Composer(Vertical):
+    class Send(Message):
+        """The user asked to send this command."""
+
+        def __init__(self, command: Command) -> None:
+            super().__init__()
+            self.command = command
+
+    def __init__(self, *, id: str | None = None) -> None:
+        super().__init__(id=id)
+        self.function: FunctionCode | None = None
+        self.command: Command | None = None
+        self.history: list[Command] = []
+
+    def compose(self) -> ComposeResult:
+        with Vertical(id="fn-pick"):
+            yield Input(placeholder="filter: name, code or words (e.g. 'magnet')",
+                        id="fn-filter")
+            yield DataTable(id="fn-table", cursor_type="row", zebra_stripes=True)
+        with VerticalScroll(id="fn-form"):
+            yield Label("pick a function", id="fn-title")
+            yield Vertical(id="fn-args")
+            yield Static("", id="fn-preview")
+            with Horizontal(id="fn-buttons"):
+                yield Button("Send", id="fn-send", variant="primary", disabled=True)
+            yield Label("history (enter re-sends)", classes="section")
+            yield DataTable(id="fn-history", cursor_type="row")
+
+    def on_mount(self) -> None:
+        table = self.query_one("#fn-table", DataTable)
+        table.add_columns("code", "function", "board", "comment")
+        history = self.query_one("#fn-history", DataTable)
+        history.add_columns("#", "command", "frame")
+        self._fill("")
+
+    def _fill(self, query: str) -> None:
+        table = self.query_one("#fn-table", DataTable)
+        table.clear()
+        for fn in function_rows(query):
+            table.add_row(str(fn.code), fn.signature(), fn.board.value, fn.comment,
+                          key=str(fn.code))
+
+    @on(Input.Changed, "#fn-filter")
+    def _filter(self, event: Input.Changed) -> None:
+        event.stop()
+        self._fill(event.value)
+
+    @on(Input.Submitted, "#fn-filter")
+    def _filter_enter(self, event: Input.Submitted) -> None:
+        event.stop()
+        table = self.query_one("#fn-table", DataTable)
+        if table.row_count:
+            self.choose(int(table.coordinate_to_cell_key((table.cursor_row, 0)).row_key.value))
+
+    @on(DataTable.RowHighlighted, "#fn-table")
+    @on(DataTable.RowSelected, "#fn-table")
+    def _row(self, event: DataTable.RowHighlighted | DataTable.RowSelected) -> None:
+        event.stop()
+        if event.row_key is not None and event.row_key.value is not None:
+            self.choose(int(event.row_key.value), focus=isinstance(event, DataTable.RowSelected))
+
+    def choose(self, code: int, *, focus: bool = False) -> None:
+        """Show the form of one function (also used by the command palette)."""
+        fn = CODES[code]
+        if self.function is fn:
+            if focus:
+                self._focus_first()
+            return
+        self.function = fn
+        self.query_one("#fn-title", Label).update(
+            f"{fn.code} {fn.signature()} - {fn.comment} [{fn.board.value} board]")
+        box = self.query_one("#fn-args", Vertical)
+        box.remove_children()
+        rows = []
+        for i, arg in enumerate(fn.args):
+            unit = " x 10 ms" if arg.unit == "tick" else ""
+            rows.append(Horizontal(
+                Label(f"{arg.name:>4}", classes="arg-name"),
+                Input(placeholder=f"{arg.lo}..{arg.hi}", id=f"arg-{i}", classes="arg-input",
+                      type="integer"),
+                Label(f"{arg.meaning} ({arg.lo}..{arg.hi}{unit})", classes="arg-meaning"),
+                classes="arg-row"))
+        box.mount_all(rows)
+        self._validate()
+        if focus:
+            self.call_after_refresh(self._focus_first)
+
+    def _focus_first(self) -> None:
+        inputs = self.query(".arg-input")
+        (inputs.first() if inputs else self.query_one("#fn-send")).focus()
+
+    def arg_values(self) -> list[str]:
+        return [inp.value.strip() for inp in self.query(".arg-input").results(Input)]
+
+    def set_args(self, values: list[int]) -> None:
+        for inp, value in zip(self.query(".arg-input").results(Input), values, strict=False):
+            inp.value = str(value)
+        self._validate()
+
+    @on(Input.Changed, ".arg-input")
+    def _arg_changed(self, event: Input.Changed) -> None:
+        event.stop()
+        self._validate()
+
+    @on(Input.Submitted, ".arg-input")
+    def _arg_submitted(self, event: Input.Submitted) -> None:
+        event.stop()
+        inputs = list(self.query(".arg-input").results(Input))
+        idx = inputs.index(event.input)
+        if idx + 1 < len(inputs):
+            inputs[idx + 1].focus()
+        else:
+            self.send()
+
+    def _validate(self) -> None:
+        preview = self.query_one("#fn-preview", Static)
+        button = self.query_one("#fn-send", Button)
+        self.command = None
+        if self.function is None:
+            return
+        values = self.arg_values()
+        # Optional trailing arguments (Select's further ids) may stay empty.
+        while values and not values[-1]:
+            values.pop()
+        try:
+            if any(not v for v in values):
+                raise FrameError("fill in every argument up to the last one used")
+            args = [int(v) for v in values]
+            cmd = frames.make(self.function.code, *args)
+            data = frames.encode_pc(cmd)
+        except (FrameError, ValueError) as exc:
+            preview.update(f"[red]{exc}[/]")
+            button.disabled = True
+            return
+        self.command = cmd
+        preview.update(f"frame  [b]{data.hex(' ')}[/b]   ({cmd})")
+        button.disabled = False
+
+    @on(Button.Pressed, "#fn-send")
+    def _pressed(self, event: Button.Pressed) -> None:
+        event.stop()
+        self.send()
+
+    def send(self) -> bool:
+        if self.command is None:
+            self.app.bell()
+            return False
+        self.post_message(self.Send(self.command))
+        return True
+
+    def remember(self, command: Command) -> None:
+        """Add a sent command to the history (newest first)."""
+        self.history.insert(0, command)
+        table = self.query_one("#fn-history", DataTable)
+        table.clear()
+        for n, cmd in enumerate(self.history[:50]):
+            table.add_row(str(len(self.history) - n), str(cmd),
+                          frames.encode_pc(cmd, strict=False).hex(" "), key=str(n))
+
+    @on(DataTable.RowSelected, "#fn-history")
+    def _resend(self, event: DataTable.RowSelected) -> None:
+        event.stop()
+        if event.row_key.value is not None:
+            self.post_message(self.Send(self.history[int(event.row_key.value)]))

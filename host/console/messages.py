@@ -1,0 +1,30 @@
+"""Messages the host's reader threads post to the console (thread-safe)."""
+
+from __future__ import annotations
+
+from textual.message import Message
+
+from hexbot.host.host import Observed
+from hexbot.host.link import LinkState
+
+
+class Traffic(Message):
+    """Bytes sent (``tx``) or received (``rx``) on a port."""
+
+    def __init__(self, port: str, direction: str, t: float, data: bytes) -> None:
+        super().__init__()
+        self.port, self.direction, self.t, self.data = port, direction, t, data
+
+
+class Parsed(Message):
+    """One event from the reply parser."""
+
+    def __init__(self, port: str, observed: Observed) -> None:
+        super().__init__()
+        self.port, self.observed = port, observed
+
+
+class PortState(Message):
+    def __init__(self, port: str, state: LinkState, detail: str) -> None:
+        super().__init__()
+        self.port, self.state, self.detail = port, state, detail
