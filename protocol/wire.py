@@ -26,7 +26,7 @@ TICK_S = 0.010
 
 CONTROL_ACK_TIMEOUT_TICKS = 250  # 2.5 s for the control board's echo
 SUBSTRATE_ACK_DELAY_TICKS = 100  # thesis: the substrate waits 1 s (legacy mode)
-ACK_SLOT_TICKS = 50  # addressed mode: module at rank r answers after r slots
+ACK_SLOT_TICKS = 60  # addressed mode: rank r answers after r slots (ERR 'M03: ' = 16 B = 0.53 s)
 
 MAX_MODULE_ID = 63  # DIP switches PC0..PC5; PC6, PC7 must be off
 LOC_COORD_LIMIT = 99  # MSG1 carries two decimal digits per coordinate
