@@ -22,6 +22,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "hexbot.protocol.cli_gen_header",
         "regenerate the firmware header and the docs table from the protocol table",
     ),
+    "sim": ("hexbot.hil_sim.cli_sim", "run simulated modules behind pseudo-terminals (--pty)"),
+    "bench": ("hexbot.hil_sim.bench_sim", "measure simulator throughput (`bench sim --json`)"),
     "console": ("hexbot.host.cli_console", "the Textual console (default: on the simulator)"),
     "send": ("hexbot.host.cli_send", "send one message and check its acknowledgement"),
     "monitor": ("hexbot.host.cli_monitor", "print decoded events from the ports"),

@@ -106,6 +106,9 @@ def test_missing_image_names_scenario_line_and_fix(tmp_path):
 
 
 def test_missing_extension_says_how_to_build_it(monkeypatch):
+    import hexbot.hil_sim
+
     monkeypatch.setitem(sys.modules, "hexbot.hil_sim._avr", None)
+    monkeypatch.delattr(hexbot.hil_sim, "_avr", raising=False)
     with pytest.raises(HexBotError, match=r"pip install -e \."):
         Simulator(load_scenario("single"))

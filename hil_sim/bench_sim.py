@@ -1,0 +1,139 @@
+"""``hexbot bench sim``: simulator throughput, measured now on this machine.
+
+    hexbot bench sim --json [--seconds S]
+
+Cases (the real firmware images, the whole Python loop: IR medium, plant,
+pin logs):
+  idle-1   the ``single`` scenario, after boot;
+  idle-7   ``flower7``, after boot;
+  idle-50  50 modules in a hexagonal patch, after boot;
+  busy-7   ``flower7`` while the PC runs a localization and rotation script.
+Reference: raw simavr (its own run loop, stock atmega128 core) on one MCU in
+a CPU-bound loop, measured in the same run through the same extension.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import subprocess
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from hexbot.errors import HexBotError
+
+from .geometry import Cell, neighbor
+from .scenario import ModuleSpec, Scenario, load_scenario
+from .simulator import Simulator, _load_core
+
+BOOT_S = 1.0  # simulated seconds of boot excluded from the idle measurements
+AVR_TESTS = Path(__file__).resolve().parent.parent / "tests" / "hil_sim" / "avr"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("target", choices=["sim"], help="what to measure")
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument(
+        "--seconds", type=float, default=5.0, help="simulated seconds per case (default 5)"
+    )
+
+
+def patch_scenario(count: int) -> Scenario:
+    """``count`` modules filling hexagonal rings around the origin, module 1 at the centre."""
+    template = load_scenario("single").modules[0]
+    cells: list[Cell] = [(0, 0)]
+    ring = 1
+    while len(cells) < count:
+        cell = (ring, 0)  # walk ring r: start r steps along side 3, then turn
+        for side in (5, 6, 1, 2, 3, 4):
+            for _ in range(ring):
+                cell = neighbor(cell, side)
+                cells.append(cell)
+        ring += 1
+    modules = [
+        ModuleSpec(i, cell, 0, template.firmware, 0) for i, cell in enumerate(cells[:count], 1)
+    ]
+    return Scenario(f"patch{count}", modules, base=1, seed=1)
+
+
+def _measure(sim: Simulator, seconds: float, script: Callable[[Simulator], None] | None) -> dict:
+    mcus = 2 * len(sim.modules)
+    start_cycle = sim.cycle
+    t0 = time.perf_counter()
+    if script is None:
+        sim.run(seconds)
+    else:
+        script(sim)
+        remaining = seconds - (sim.cycle - start_cycle) / sim.hz
+        if remaining > 0:
+            sim.run(remaining)
+    wall = time.perf_counter() - t0
+    simulated = (sim.cycle - start_cycle) / sim.hz
+    return {
+        "sim_seconds_per_wall_second": round(simulated / wall, 2),
+        "cycles_per_wall_second": round(simulated * sim.hz * mcus / wall),
+    }
+
+
+def localize_and_rotate(sim: Simulator) -> None:
+    """Ref on module 1, Localize everyone, then a CW rotation of module 2 about module 1."""
+    from hexbot.protocol.frames import encode_pc, make, select
+
+    script = [
+        encode_pc(select([1])),
+        encode_pc(make("Ref")),
+        encode_pc(select([0])),
+        encode_pc(make("Localize")),
+        encode_pc(select([1, 2])),
+        encode_pc(make("CW", 4, 8, 4, 9, 4, 8, 4, 9)),
+    ]
+    for frame in script:
+        sim.pc_write(frame)
+        sim.run(3.0)  # frame on the air, ACK slots, localization spreading
+
+
+def raw_reference(seconds: float) -> int:
+    core = _load_core()
+    if not hasattr(core, "raw_simavr_run"):
+        raise HexBotError("this build of hexbot.hil_sim._avr has no raw_simavr_run reference")
+    target = "build/cpuloop.atmega128.elf"
+    try:
+        subprocess.run(["make", "-s", "-C", str(AVR_TESTS), target], check=True)
+    except (OSError, subprocess.CalledProcessError) as exc:
+        raise HexBotError(
+            f"cannot build the busy-loop reference {AVR_TESTS / target}: {exc}"
+        ) from exc
+    cycles = round(seconds * 1_000_000)
+    best = min(core.raw_simavr_run(str(AVR_TESTS / target), "atmega128", cycles)[1]
+               for _ in range(3))
+    return round(cycles / best)
+
+
+def measure(seconds: float) -> dict:
+    cases = []
+    for name, scenario, script in (
+        ("idle-1", load_scenario("single"), None),
+        ("idle-7", load_scenario("flower7"), None),
+        ("idle-50", patch_scenario(50), None),
+        ("busy-7", load_scenario("flower7"), localize_and_rotate),
+    ):
+        sim = Simulator(scenario)
+        sim.run(BOOT_S)
+        duration = seconds if script is None else max(seconds, 18.0)
+        cases.append({"name": name, **_measure(sim, duration, script)})
+    return {"raw_simavr_cycles_per_wall_second": raw_reference(2.0), "cases": cases}
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.seconds <= 0:
+        raise HexBotError(f"--seconds must be positive, not {args.seconds}")
+    result = measure(args.seconds)
+    if args.json:
+        print(json.dumps(result))
+        return 0
+    print(f"raw simavr: {result['raw_simavr_cycles_per_wall_second']:,} cycles/s (1 MCU)")
+    for case in result["cases"]:
+        print(f"{case['name']:8} {case['sim_seconds_per_wall_second']:8.2f} x real time  "
+              f"{case['cycles_per_wall_second']:>14,} cycles/s")
+    return 0

@@ -1,0 +1,133 @@
+"""``hexbot sim``: run a scenario behind pseudo-terminals until told to stop.
+
+    hexbot sim pair --pty --speed 1 --events events.jsonl --vcd pins.vcd
+
+The first stdout line is one JSON object naming the ports:
+``{"ir": "/dev/pts/N", "uart1": {"<module id>": "/dev/pts/M", ...}}``.
+SIGINT or SIGTERM end the run cleanly (files flushed, ptys closed, exit 0).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import select
+import signal
+import sys
+import time
+from contextlib import ExitStack
+from pathlib import Path
+from types import FrameType
+from typing import TextIO
+
+from hexbot.errors import HexBotError
+
+from .pty_bridge import PtyBridge
+from .scenario import builtin_names, load_scenario
+from .simulator import Simulator
+from .vcd import VcdWriter
+
+SLICE_S = 0.01  # simulated time between two looks at the ports
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "scenario",
+        nargs="?",
+        default="single",
+        help=f"built-in name ({', '.join(builtin_names())}) or path to a TOML file",
+    )
+    parser.add_argument(
+        "--pty", action="store_true", help="serve the IR and debug ports on pseudo-terminals"
+    )
+    parser.add_argument(
+        "--speed", type=float, default=1.0,
+        help="times real time (default 1; 0 = as fast as possible)",
+    )
+    parser.add_argument("--seed", type=int, help="override the scenario's seed")
+    parser.add_argument("--events", type=Path, help="write plant and bus events as JSON lines")
+    parser.add_argument("--vcd", type=Path, help="write actuator, selector and LED pins as VCD")
+    parser.add_argument(
+        "--duration", type=float,
+        help="stop after this many simulated seconds (default: run until SIGINT/SIGTERM)",
+    )
+
+
+class _Stop:
+    def __init__(self) -> None:
+        self.requested = False
+
+    def __call__(self, signum: int, frame: FrameType | None) -> None:
+        self.requested = True
+
+
+def _open(path: Path, stack: ExitStack) -> TextIO:
+    try:
+        return stack.enter_context(path.open("w", encoding="utf-8"))
+    except OSError as exc:
+        raise HexBotError(f"cannot write {path}: {exc.strerror}") from exc
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.speed < 0:
+        raise HexBotError(f"--speed must be 0 or more, not {args.speed}")
+    if not args.pty and args.duration is None:
+        raise HexBotError("nothing to do: give --pty to serve ports, or --duration to run")
+    sim = Simulator(load_scenario(args.scenario), seed=args.seed)
+    stop = _Stop()
+    previous = {s: signal.signal(s, stop) for s in (signal.SIGINT, signal.SIGTERM)}
+    with ExitStack() as stack:
+        stack.callback(lambda: [signal.signal(s, h) for s, h in previous.items()])
+        if args.events:
+            events = _open(args.events, stack)
+
+            def write_event(event: dict) -> None:
+                events.write(json.dumps(event) + "\n")
+                events.flush()
+
+            sim.event_sinks.append(write_event)
+        if args.vcd:
+            vcd = VcdWriter(sim, _open(args.vcd, stack))
+            stack.callback(vcd.close)
+        bridge = None
+        if args.pty:
+            bridge = stack.enter_context(PtyBridge(sim))
+            print(json.dumps(bridge.names()), flush=True)
+        else:
+            print(json.dumps({"scenario": sim.scenario.name}), flush=True)
+        _loop(sim, bridge, args.speed, args.duration, stop)
+    return 0
+
+
+def _loop(
+    sim: Simulator, bridge: PtyBridge | None, speed: float, duration: float | None, stop: _Stop
+) -> None:
+    wall0, sim0 = time.monotonic(), sim.time
+    while not stop.requested:
+        if duration is not None and sim.time - sim0 >= duration - 1e-9:
+            break
+        if bridge:
+            bridge.pump_in()
+        step = SLICE_S if duration is None else min(SLICE_S, duration - (sim.time - sim0))
+        sim.run(step)
+        if bridge:
+            bridge.pump_out()
+        if speed > 0:
+            ahead = (sim.time - sim0) / speed - (time.monotonic() - wall0)
+            if ahead > 0:
+                # Sleep, but wake as soon as a client writes something.
+                fds = bridge.fds() if bridge else []
+                try:
+                    select.select(fds, [], [], ahead)
+                except InterruptedError:
+                    pass
+
+
+def main() -> None:  # pragma: no cover - for `python -m hexbot.hil_sim.cli_sim`
+    parser = argparse.ArgumentParser(prog="hexbot sim")
+    add_arguments(parser)
+    sys.exit(run(parser.parse_args()))
+
+
+if __name__ == "__main__":  # pragma: no cover
+    main()

@@ -1,0 +1,126 @@
+"""Pseudo-terminals in front of the simulator: the PC's IR port and the debug ports.
+
+Each port is a pty pair. A serial client opens the slave (``/dev/pts/N``)
+exactly as it would open the RS232 converter; the bridge reads and writes
+the master side. The bridge keeps its own handle on every slave open, so a
+client may come and go without the port hanging up, and bytes that arrived
+while no client was attached wait in the pty like in a UART's FIFO (up to
+the kernel's buffer; beyond that they are dropped and counted).
+Bytes from the IR port enter the simulator through ``pc_write``, which paces
+them at 300 baud of simulated time; the line settings a client asks for are
+ignored, as a pty has no baud rate.
+"""
+
+from __future__ import annotations
+
+import errno
+import os
+import tty
+from dataclasses import dataclass, field
+
+from hexbot.errors import LinkUnavailableError
+
+from .simulator import Simulator
+
+
+@dataclass
+class _Port:
+    master: int
+    slave: int
+    name: str
+    dropped: int = 0
+
+    @classmethod
+    def open(cls) -> _Port:
+        try:
+            master, slave = os.openpty()
+        except OSError as exc:
+            raise LinkUnavailableError(f"cannot create a pseudo-terminal: {exc}") from exc
+        tty.setraw(slave)  # no echo, no line editing, no CR/LF translation
+        os.set_blocking(master, False)
+        return cls(master, slave, os.ttyname(slave))
+
+    def read(self) -> bytes:
+        chunks = []
+        while True:
+            try:
+                chunk = os.read(self.master, 4096)
+            except BlockingIOError:
+                break
+            except OSError as exc:
+                if exc.errno == errno.EIO:  # no client right now
+                    break
+                raise
+            if not chunk:
+                break
+            chunks.append(chunk)
+        return b"".join(chunks)
+
+    def write(self, data: bytes) -> None:
+        while data:
+            try:
+                n = os.write(self.master, data)
+            except BlockingIOError:
+                self.dropped += len(data)
+                return
+            data = data[n:]
+
+    def close(self) -> None:
+        for fd in (self.master, self.slave):
+            try:
+                os.close(fd)
+            except OSError:
+                pass
+
+
+@dataclass
+class PtyBridge:
+    sim: Simulator
+    ir: _Port = field(init=False)
+    debug: dict[int, _Port] = field(init=False)
+    closed: bool = False
+
+    def __post_init__(self) -> None:
+        self.ir = _Port.open()
+        self.debug = {m: _Port.open() for m in sorted(self.sim.modules)}
+
+    def names(self) -> dict:
+        """The first line ``hexbot sim --pty`` prints (other tools may add keys)."""
+        return {"ir": self.ir.name, "uart1": {str(m): p.name for m, p in self.debug.items()}}
+
+    def fds(self) -> list[int]:
+        return [self.ir.master, *(p.master for p in self.debug.values())]
+
+    def pump_in(self) -> None:
+        """Client -> simulator."""
+        data = self.ir.read()
+        if data:
+            self.sim.pc_write(data)
+        for module_id, port in self.debug.items():
+            data = port.read()
+            if data:
+                self.sim.debug_write(module_id, data)
+
+    def pump_out(self) -> None:
+        """Simulator -> client."""
+        data = self.sim.pc_read()
+        if data:
+            self.ir.write(data)
+        for module_id, port in self.debug.items():
+            data = self.sim.debug_read(module_id)
+            if data:
+                port.write(data)
+
+    def close(self) -> None:
+        if self.closed:
+            return
+        self.closed = True
+        self.ir.close()
+        for port in self.debug.values():
+            port.close()
+
+    def __enter__(self) -> PtyBridge:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
