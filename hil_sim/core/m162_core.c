@@ -59,6 +59,7 @@ const uint16_t m162_port_regs[M162_NPORTS][3] = {
 
 static void m162_init(avr_t *avr);
 static void m162_core_reset(avr_t *avr);
+static void m162_extint_level(m162_t *m);
 
 #define M162_USART(_n, _ubrrh, _ucsrc) \
 	.uart ## _n = { \
@@ -417,6 +418,8 @@ void m162_run_until(m162_t *m, uint64_t end)
 {
 	avr_t *avr = m->avr;
 	m->quantum_end = end;
+	if (m->is_m162)
+		m162_extint_level(m);
 	while (avr->cycle < end) {
 		int st = avr->state;
 		if (st != cpu_Running && st != cpu_Sleeping)
@@ -479,9 +482,49 @@ static void m162_port_change(struct avr_irq_t *irq, uint32_t value, void *param)
 		(uint8_t)value };
 }
 
+/* Level-triggered INT0/INT1 (ISC = 00, the reset default).  simavr polls a
+ * low pin every single cycle (with a malloc per poll), whether or not the
+ * interrupt is enabled, which stops a sleeping MCU from skipping ahead: a
+ * magnet line driven low on PD2/PD3 made idle firmware ~100x slower.  We turn
+ * that off and re-request the interrupt while the pin stays low at the
+ * moments it can matter: when its handler returns, when GICR is written, and
+ * at every quantum boundary. */
+static void m162_extint_level(m162_t *m)
+{
+	avr_t *avr = m->avr;
+	for (int i = 0; i < 2; i++) {
+		avr_int_vector_t *v = &m->mcu.extint.eint[i].vector;
+		if (v->pending || !avr_regbit_get(avr, v->enable))
+			continue;
+		if (avr_regbit_get_array(avr, m->mcu.extint.eint[i].isc, 2) != 0)
+			continue;
+		if (!(avr->data[PIND] & (1 << m->mcu.extint.eint[i].port_pin)))
+			avr_raise_interrupt(avr, v);
+	}
+}
+
+static void m162_extint_returned(struct avr_irq_t *irq, uint32_t value, void *param)
+{
+	(void)irq;
+	if (!value)
+		m162_extint_level((m162_t *)param);
+}
+
+static void m162_gicr_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
+{
+	(void)param;
+	avr_core_watch_write(avr, addr, v);
+	m162_extint_level(m162_of(avr));
+}
+
 static void m162_fixup_reset(avr_io_t *io)
 {
 	m162_t *m = (m162_t *)((char *)io - offsetof(m162_t, fixup_io));
+	for (int i = 0; i < 2; i++) {
+		avr_extint_set_strict_lvl_trig(m->avr, i, 0);
+		avr_irq_register_notify(m->mcu.extint.eint[i].vector.irq + AVR_INT_IRQ_RUNNING,
+				m162_extint_returned, m);
+	}
 	for (int i = 0; i < M162_NPORTS; i++)
 		m->last_port[i] = 0;
 	m162_usart_reset(m);
@@ -517,6 +560,8 @@ static void m162_init(avr_t *avr)
 	avr_timer_init(avr, &mcu->timer2);
 	avr_timer_init(avr, &mcu->timer3);
 	avr_spi_init(avr, &mcu->spi);
+
+	avr_register_io_write(avr, GICR, m162_gicr_write, NULL);
 
 	m->spdr_write_orig = avr->io[AVR_DATA_TO_IO(SPDR)].w.c;
 	avr->io[AVR_DATA_TO_IO(SPDR)].w.c = m162_spdr_write;

@@ -122,3 +122,19 @@ def test_bad_arguments_are_clear_errors(tmp_path):
         c.uart_take(m, 0)
     with pytest.raises(ValueError, match="quantum"):
         Cluster(0)
+
+
+def test_low_level_int0_repeats_while_the_pin_stays_low():
+    c = Cluster()
+    m = c.add_mcu(build("level"), "level")
+    c.run(1_000)
+    assert c.port(m, "A")[1] == 0 and c.state(m) == "sleeping"
+    c.set_input(m, "D", 0x04, 0x00)
+    c.run(2_000)
+    assert c.port(m, "A")[1] == 5  # then the handler disabled INT0
+    c.set_input(m, "D", 0x04, 0x04)
+    c.set_input(m, "D", 0x04, 0x00)
+    c.run(50_000)
+    assert c.port(m, "A")[1] == 5
+    # a low pin with its interrupt off does not keep the sleeping CPU awake
+    assert c.state(m) == "sleeping" and c.mcu_cycle(m) == 50_000
