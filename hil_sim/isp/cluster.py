@@ -15,9 +15,10 @@ module board its STK500v2 pty; :meth:`ClusterIsp.ports_json` is the
 from __future__ import annotations
 
 import threading
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from contextlib import nullcontext
 from dataclasses import dataclass
+from functools import partial
 from typing import Any
 
 from hexbot.hil_sim.isp.chip import Atmega162Isp
@@ -39,7 +40,8 @@ def _fit(data: bytes, size: int) -> bytearray:
 
 
 class ClusterBoardBackend:
-    def __init__(self, cluster: Any, mcu: int, lock: threading.Lock | None = None) -> None:
+    def __init__(self, cluster: Any, mcu: int, lock: threading.Lock | None = None,
+                 on_reset: Callable[[], None] | None = None) -> None:
         missing = missing_cluster_methods(cluster)
         if missing:
             raise NotImplementedError(
@@ -48,6 +50,7 @@ class ClusterBoardBackend:
         self.mcu = mcu
         self.lock_bits = 0xFF
         self._guard = lock if lock is not None else nullcontext()
+        self.on_reset = on_reset
         self.sessions = 0
 
     def acquire(self) -> Atmega162Memory:
@@ -68,6 +71,8 @@ class ClusterBoardBackend:
                 self.cluster.set_fuses(self.mcu, memory.lfuse, memory.hfuse, memory.efuse)
                 self.lock_bits = memory.lock
             self.cluster.reset(self.mcu)  # RESET released: the MCU starts over
+            if self.on_reset is not None:
+                self.on_reset()
             self.sessions += 1
 
 
@@ -84,17 +89,20 @@ def open_cluster_isp(
     cluster: Any,
     boards: Mapping[Any, Mapping[str, int]],
     lock: threading.Lock | None = None,
+    on_reset: Callable[[Any, str, int], None] | None = None,
 ) -> ClusterIsp:
     """One STK500v2 pty per board: ``boards`` maps a module id to
     ``{"comm": mcu index, "control": mcu index}``. Serve them with
     ``result.server.poll(0)`` from the simulator loop (or ``.start()`` with a
-    ``lock`` the loop also holds around ``Cluster.run``)."""
+    ``lock`` the loop also holds around ``Cluster.run``). ``on_reset(module,
+    board, mcu)`` runs after each programmed MCU is reset."""
     server = IspPtyServer()
     layout: dict[str, dict[str, str]] = {}
     try:
         for module, mcus in boards.items():
             for board, mcu in mcus.items():
-                chip = Atmega162Isp(ClusterBoardBackend(cluster, mcu, lock))
+                hook = partial(on_reset, module, board, mcu) if on_reset else None
+                chip = Atmega162Isp(ClusterBoardBackend(cluster, mcu, lock, hook))
                 path = server.add(f"{module}/{board}", Stk500v2Programmer(chip))
                 layout.setdefault(str(module), {})[board] = path
     except BaseException:
@@ -112,4 +120,14 @@ def open_simulator_isp(sim: Any, lock: threading.Lock | None = None) -> ClusterI
     """
     boards = {mid: {"comm": module.comm.index, "control": module.control.index}
               for mid, module in sorted(sim.modules.items())}
-    return open_cluster_isp(sim.cluster, boards, lock)
+
+    def redrive_dip_switches(module: int, board: str, mcu: int) -> None:
+        # Cluster.reset() clears PINC but keeps simavr's cached pin levels, so
+        # set_input with the same id would be filtered out as "no change"
+        # (seen 2026-11-22). The DIP switches do not move when RESET is pulsed:
+        # toggle every pin once so that the id lands on PINC again.
+        if board == "control":
+            sim.cluster.set_input(mcu, "C", 0xFF, ~module & 0xFF)
+            sim.cluster.set_input(mcu, "C", 0xFF, module)
+
+    return open_cluster_isp(sim.cluster, boards, lock, redrive_dip_switches)

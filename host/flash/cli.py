@@ -58,6 +58,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="rebuild the firmware and reflash every board of a simulated cluster")
     parser.add_argument("--scenario", help="simulator scenario for --all")
     parser.add_argument("--firmware-version", help="with --all: make -C firmware VERSION=...")
+    parser.add_argument("--build-dir", type=Path, default=DEFAULT_BUILD,
+                        help="where the images are (and, with --all, are built); "
+                        "default firmware/build")
     parser.add_argument("--dry-run", action="store_true",
                         help="print the avrdude commands instead of running them")
 
@@ -104,7 +107,7 @@ def flash_board(args: argparse.Namespace, say=print) -> int:
         raise FlashingError("give --board comm|control (or --image FILE), or --all --scenario")
     if not args.port:
         raise FlashingError("give --port: the programmer's serial port")
-    image = args.image or DEFAULT_BUILD / f"{args.board}.hex"
+    image = args.image or Path(getattr(args, "build_dir", DEFAULT_BUILD)) / f"{args.board}.hex"
     if not image.exists():
         raise FlashingError(f"{image}: no such image (build it: make -C firmware)")
     hexfile = read_hex(image, limit=FLASH_BYTES)

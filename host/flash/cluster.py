@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import argparse
 import subprocess
+from pathlib import Path
 
 from hexbot.errors import FlashingError
 from hexbot.host.flash.cli import DEFAULT_BUILD, REPO_ROOT, flash_board
@@ -15,11 +16,15 @@ from hexbot.host.flash.cli import DEFAULT_BUILD, REPO_ROOT, flash_board
 BOOT_SECONDS = 2.0  # simulated time to let each module print its boot text
 
 
-def build_firmware(version: str | None, say=print) -> None:
+def build_firmware(version: str | None, build_dir: Path, say=print) -> None:
     makefile = REPO_ROOT / "firmware" / "Makefile"
     if not makefile.exists():
         raise FlashingError(f"{makefile}: missing, cannot rebuild the firmware")
-    cmd = ["make", "-C", str(makefile.parent)] + ([f"VERSION={version}"] if version else [])
+    cmd = ["make", "-C", str(makefile.parent)]
+    if build_dir.resolve() != DEFAULT_BUILD.resolve():
+        cmd.append(f"BUILD={build_dir.resolve()}")
+    if version:
+        cmd.append(f"VERSION={version}")
     say("building: " + " ".join(cmd))
     proc = subprocess.run(cmd, capture_output=True, text=True)
     if proc.returncode != 0:
@@ -32,7 +37,7 @@ def flash_all(args: argparse.Namespace, say=print) -> int:
     from hexbot.hil_sim.isp.cluster import open_simulator_isp
 
     if not args.dry_run:
-        build_firmware(args.firmware_version, say)
+        build_firmware(args.firmware_version, args.build_dir, say)
     sim = Simulator.from_name(args.scenario)
     isp = open_simulator_isp(sim)
     try:
@@ -41,7 +46,7 @@ def flash_all(args: argparse.Namespace, say=print) -> int:
             for board, port in boards.items():
                 say(f"--- module {module}, {board} board ({port})")
                 one = argparse.Namespace(**{**vars(args), "board": board, "port": port,
-                                            "image": DEFAULT_BUILD / f"{board}.hex",
+                                            "image": args.build_dir / f"{board}.hex",
                                             "programmer": "stk500v2", "baud": None,
                                             "bitclock": None})
                 flash_board(one, say)
@@ -55,5 +60,5 @@ def flash_all(args: argparse.Namespace, say=print) -> int:
         text = sim.debug_read(module).decode("ascii", "replace").strip()
         say(f"module {module} control debug port: {text or '(silent)'}")
     pc = sim.pc_read().decode("ascii", "replace").strip()
-    say(f"PC transceiver heard: {pc or '(nothing)'}")
+    say(f"PC transceiver heard (one IR medium shared by all modules): {pc or '(nothing)'}")
     return 0

@@ -1,0 +1,35 @@
+"""``hexbot flash --all``: rebuild the firmware with a new version string,
+reflash every board of a simulated cluster, and see the modules boot it."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from conftest import needs_avr_gcc, needs_avrdude
+
+pytest.importorskip("hexbot.hil_sim._avr", reason="simulator extension not built")
+
+FIRMWARE = Path(__file__).resolve().parents[2] / "firmware"
+pytestmark = [
+    needs_avrdude,
+    needs_avr_gcc,
+    pytest.mark.skipif(
+        not (FIRMWARE / "build" / "comm.elf").exists()
+        or not (FIRMWARE / "build" / "control.elf").exists(),
+        reason="the scenario's images firmware/build/*.elf are not built (make -C firmware)",
+    ),
+]
+
+
+def test_flash_all_rebuilds_and_every_module_boots_the_new_version(tmp_path, hexbot_flash):
+    result = hexbot_flash("--all", "--scenario", "pair", "--build-dir", str(tmp_path / "build"),
+                          "--firmware-version", "isp-test-7")
+    assert result.code == 0, result.err
+    assert result.out.count("programmed with comm.hex") == 2
+    assert result.out.count("programmed with control.hex") == 2
+    boot_lines = [ln for ln in result.out.splitlines() if "control debug port" in ln]
+    assert len(boot_lines) == 2
+    # each module boots the new image and still reads its own DIP switches
+    assert "CTR. BOARD READY ID=01 FW=isp-test-7" in boot_lines[0]
+    assert "CTR. BOARD READY ID=02 FW=isp-test-7" in boot_lines[1]
