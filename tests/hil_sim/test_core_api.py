@@ -138,3 +138,18 @@ def test_low_level_int0_repeats_while_the_pin_stays_low():
     assert c.port(m, "A")[1] == 5
     # a low pin with its interrupt off does not keep the sleeping CPU awake
     assert c.state(m) == "sleeping" and c.mcu_cycle(m) == 50_000
+
+
+def test_int2_and_pin_change_interrupts():
+    c = Cluster()
+    m = c.add_mcu(build("dip"), "dip")
+    c.run(1_000)
+    c.set_input(m, "C", 0xFF, 0x2A)  # several PORTC pins change at once
+    c.run(2_000)
+    assert c.port(m, "E")[1] & 0x06 == 0x02  # one PCINT1 request
+    c.set_input(m, "C", 0xFF, 0x2A)  # no change, no interrupt
+    c.run(3_000)
+    assert c.port(m, "E")[1] & 0x06 == 0x02
+    c.set_input(m, "E", 0x01, 0x00)  # INT2 falling edge
+    c.run(4_000)
+    assert c.port(m, "A")[1] == 0x10
