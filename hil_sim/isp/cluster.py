@@ -84,6 +84,22 @@ class ClusterIsp:
     def ports_json(self) -> dict[str, dict[str, str]]:
         return {module: dict(boards) for module, boards in self.layout.items()}
 
+    def fds(self) -> list[int]:
+        """File descriptors to include in a select() that should wake on ISP input."""
+        return self.server.fds()
+
+    def poll(self, timeout: float = 0.0) -> int:
+        return self.server.poll(timeout)
+
+    def close(self) -> None:
+        self.server.close()
+
+    def __enter__(self) -> ClusterIsp:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
 
 def open_cluster_isp(
     cluster: Any,
@@ -114,9 +130,15 @@ def open_cluster_isp(
 def open_simulator_isp(sim: Any, lock: threading.Lock | None = None) -> ClusterIsp:
     """ISP ports for every module of a ``hexbot.hil_sim.Simulator``.
 
-    Integration with ``hexbot sim --pty`` is one line plus polling:
-    ``isp = open_simulator_isp(sim)``, add ``"isp": isp.ports_json()`` to the
-    JSON line, and call ``isp.server.poll(0)`` in the serving loop.
+    Integration with ``hexbot sim --pty`` (hil_sim/cli_sim.py)::
+
+        isp = stack.enter_context(open_simulator_isp(sim))
+        print(json.dumps({**bridge.names(), "isp": isp.ports_json()}), flush=True)
+        # in the loop, beside bridge.pump_in():  isp.poll()
+        # and in its select():  bridge.fds() + isp.fds()
+
+    Polling from the simulator's own loop keeps every Cluster access on one
+    thread; a programmed MCU restarts at the next slice.
     """
     boards = {mid: {"comm": module.comm.index, "control": module.control.index}
               for mid, module in sorted(sim.modules.items())}

@@ -60,6 +60,9 @@ class IspPtyServer:
     def paths(self) -> dict[str, str]:
         return {name: port.path for name, port in self.ports.items()}
 
+    def fds(self) -> list[int]:
+        return [port.master for port in self.ports.values()]
+
     def poll(self, timeout: float = 0.0) -> int:
         """Answer whatever the hosts have sent; return the bytes handled."""
         by_fd = {port.master: port for port in self.ports.values()}

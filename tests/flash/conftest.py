@@ -99,3 +99,25 @@ def hexbot_flash(capsys) -> Callable[..., CliResult]:
         return CliResult(code, captured.out, captured.err)
 
     return run
+
+
+FIRMWARE = Path(__file__).resolve().parents[2] / "firmware"
+
+
+@pytest.fixture(scope="session")
+def firmware_build(tmp_path_factory) -> Callable[[str], Path]:
+    """Build the real firmware with a version string into a private folder
+    (``make -C firmware BUILD=... VERSION=...``); return that folder."""
+    if not (FIRMWARE / "Makefile").exists() or shutil.which("avr-gcc") is None:
+        pytest.skip("firmware/Makefile or avr-gcc missing")
+    built: dict[str, Path] = {}
+
+    def get(version: str) -> Path:
+        if version not in built:
+            out = tmp_path_factory.mktemp("fw") / "build"
+            subprocess.run(["make", "-s", "-C", str(FIRMWARE), f"BUILD={out}",
+                            f"VERSION={version}"], check=True, capture_output=True)
+            built[version] = out
+        return built[version]
+
+    return get
