@@ -13,8 +13,9 @@ by its channel selector (Table 3-5). The medium decides, byte by byte:
   collide. The receiver gets the bitwise AND of the two (the IR line idles
   high and a lit LED pulls it low, so the low bits dominate) with the framing
   error flag set. A module receiver learns of the collision when the second
-  byte ends, so only that byte is marked; the PC's receiver waits until no
-  overlapping byte can still come (one frame time) and marks both.
+  byte ends, after the first was handed over: it gets the first intact and the
+  AND as a second, broken byte. The PC's receiver waits until no overlapping
+  byte can still come (one frame time) and gets one broken byte for the two.
 * A receiver whose baud rate differs by more than 4 % from the sender's, or
   whose frame format differs, gets a garbage byte from the seeded generator
   with the framing error flag.
@@ -91,9 +92,22 @@ class Air(Protocol):
 
 @dataclass
 class _Arrival:
-    byte: AirByte
+    """What one receiver makes of one or more overlapping bytes."""
+
+    start: int
+    end: int
+    senders: set[Endpoint]
     value: int
     framing_error: bool
+
+    def overlaps(self, byte: AirByte) -> bool:
+        return self.start < byte.end and byte.start < self.end and byte.sender not in self.senders
+
+    def absorb(self, byte: AirByte, value: int) -> None:
+        self.start, self.end = min(self.start, byte.start), max(self.end, byte.end)
+        self.senders.add(byte.sender)
+        self.value &= value
+        self.framing_error = True
 
 
 @dataclass
@@ -103,7 +117,7 @@ class IrMedium:
     faults_for: Callable[[Endpoint, Endpoint], Faults] = lambda s, r: Faults()
     emit: Callable[[int, dict], None] = lambda cycle, event: None
     rng: random.Random = field(init=False)
-    _last: dict[Endpoint, AirByte] = field(default_factory=dict)
+    _last: dict[Endpoint, _Arrival] = field(default_factory=dict)
     _pc_pending: list[_Arrival] = field(default_factory=list)
     _pc_ready: bytearray = field(default_factory=bytearray)
     _longest_frame: int = 0
@@ -156,36 +170,33 @@ class IrMedium:
             self._event(
                 byte, receiver, "ir-garbled", reason=f"sender {byte.frame}, receiver {rx}"
             )
-        arrival = _Arrival(byte, value, framing_error)
-        previous = self._last.get(receiver)
-        self._last[receiver] = byte
-        collided = (
-            previous is not None
-            and previous.sender != byte.sender
-            and previous.start < byte.end
-            and byte.start < previous.end
-        )
-        if collided:
-            assert previous is not None
-            arrival.value &= previous.value
-            arrival.framing_error = True
-            self._event(byte, receiver, "ir-collision", other=previous.sender)
         if receiver == PC:
-            if collided:
-                for pending in self._pc_pending:
-                    if pending.byte is previous:
-                        pending.value &= byte.value
-                        pending.framing_error = True
-            self._pc_pending.append(arrival)
+            # The PC's UART sees one broken frame where bytes overlap.
+            for pending in reversed(self._pc_pending):
+                if pending.overlaps(byte):
+                    self._event(byte, receiver, "ir-collision", other=sorted(
+                        pending.senders, key=str))
+                    pending.absorb(byte, value)
+                    return
+            self._pc_pending.append(_Arrival(byte.start, byte.end, {byte.sender}, value,
+                                             framing_error))
             return
         assert isinstance(receiver, int)
+        arrival = _Arrival(byte.start, byte.end, {byte.sender}, value, framing_error)
+        previous = self._last.get(receiver)
+        if previous is not None and previous.overlaps(byte):
+            self._event(byte, receiver, "ir-collision", other=sorted(previous.senders, key=str))
+            previous.absorb(byte, value)
+            arrival = previous
+        else:
+            self._last[receiver] = arrival
         if not self.air.deliver(receiver, arrival.value, arrival.framing_error):
             self._event(byte, receiver, "ir-dropped", reason="receiver off (RXEN) or overrun")
 
     def settle(self, now: int) -> None:
         """Move PC bytes that nothing can collide with any more to the PC's buffer."""
         horizon = now - self._longest_frame
-        while self._pc_pending and self._pc_pending[0].byte.end <= horizon:
+        while self._pc_pending and self._pc_pending[0].end <= horizon:
             arrival = self._pc_pending.pop(0)
             # A real RS232 converter passes a garbled byte on; so do we.
             self._pc_ready.append(arrival.value)

@@ -91,7 +91,7 @@ def test_centre_goes_to_pc_and_pc_goes_to_every_centre_listener():
     assert air.got == [(1, ord("*"), False), (2, ord("*"), False)]
 
 
-def test_overlapping_bytes_at_the_pc_are_both_corrupted():
+def test_overlapping_bytes_at_the_pc_become_one_broken_byte():
     air = Air({1: (0, 0), 2: (9, 9)}, {1: [(0, CENTRE)], 2: [(0, CENTRE)]})
     m, events = medium(air)
     m.transmit(AirByte(1, 0, BYTE, 0xF0, IR))
@@ -99,7 +99,7 @@ def test_overlapping_bytes_at_the_pc_are_both_corrupted():
     m.settle(BYTE + BYTE // 2)
     assert m.pc_take() == b""  # not settled: a third byte could still overlap
     m.settle(4 * BYTE)
-    assert m.pc_take() == bytes([0x30, 0x30])
+    assert m.pc_take() == bytes([0x30])
     assert [e["event"] for e in events] == ["ir-collision"]
 
 
@@ -136,3 +136,14 @@ def test_fault_injection_is_seeded_and_deterministic():
     lost = sum(e["event"] == "ir-lost" for e in events)
     assert 30 < lost < 90  # 30 % of 200
     assert any(value != sent for (_, value, _), sent in zip(got, range(200), strict=False))
+
+
+def test_three_senders_at_once_give_the_pc_one_broken_byte():
+    cells = {1: (0, 0), 2: (5, 5), 3: (9, 9)}
+    air = Air(cells, {m: [(0, CENTRE)] for m in cells})
+    m, events = medium(air)
+    for sender, value in ((1, 0xFE), (2, 0xFD), (3, 0xFB)):
+        m.transmit(AirByte(sender, 100, 100 + BYTE, value, IR))
+    m.settle(5 * BYTE)
+    assert m.pc_take() == bytes([0xF8])
+    assert len(events) == 2
