@@ -114,6 +114,7 @@ typedef struct m162_t {
 	struct m162_porthook_t { struct m162_t *m; int idx; } porthook[M162_NPORTS];
 	char last_error[256];
 	uint64_t crash_cycle;
+	unsigned sp_low_count; /* instructions in a row with SP below SRAM */
 	avr_io_write_t spdr_write_orig;
 } m162_t;
 

@@ -375,9 +375,13 @@ static void m162_run_step(avr_t *avr)
 
 	if (avr->state == cpu_Running) {
 		new_pc = avr_run_one(avr);
-		/* the stack ran out of SRAM into the I/O registers */
+		/* The stack ran out of SRAM into the I/O registers.  gcc sets SP
+		 * with SPH first, so one or two instructions may see a low SP in
+		 * passing; a real overflow stays low. */
 		uint16_t sp = avr->data[R_SPL] | (avr->data[R_SPH] << 8);
-		if (sp < RAMSTART - 1 && avr->state != cpu_Crashed) {
+		if (sp >= RAMSTART - 1)
+			m->sp_low_count = 0;
+		else if (++m->sp_low_count >= 4 && avr->state != cpu_Crashed) {
 			snprintf(m->last_error, sizeof m->last_error,
 					"stack overflow: SP=%04x below SRAM at PC=%04x", sp, avr->pc);
 			avr->state = cpu_Crashed;

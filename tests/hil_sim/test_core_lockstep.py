@@ -124,3 +124,12 @@ def test_run_returns_early_only_for_watched_bytes():
     [(start, end, byte)] = c.uart_take(m, 0)
     assert byte == 8 and end <= reached
     assert c.run(200_000) == 200_000
+
+
+def test_sp_passing_low_while_being_set_is_not_a_crash():
+    c = Cluster()
+    m = c.add_mcu(build("spfull"), "spfull")
+    c.run(10_000)
+    assert c.state(m) == "running"
+    assert c.port(m, "B")[1] == 0x01
+    assert c.read_data(m, 0x5D, 2) == b"\xff\x00"  # SPL, SPH: full but legal
