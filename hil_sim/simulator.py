@@ -17,7 +17,7 @@ from typing import Any
 
 from hexbot.errors import HexBotError, HexBotTimeoutError, ScenarioError
 
-from .geometry import Cell
+from .geometry import CENTRE, Cell, to_global
 from .ir_bus import AirByte, Frame, IrMedium
 from .module import Mcu, Module, decode_actuators
 from .plant import Plant, Timing
@@ -223,7 +223,12 @@ class Simulator:
     # --- the Air protocol of the IR medium ---------------------------------------
 
     def channel_at(self, module: int, cycle: int) -> int | None:
-        return self.modules[module].channel_at(cycle)
+        # The selector picks a body side; the medium routes by global side.
+        mod = self.modules[module]
+        channel = mod.channel_at(cycle)
+        if channel is None or channel == CENTRE:
+            return channel
+        return to_global(channel, mod.orientation)
 
     def position(self, module: int) -> Cell:
         return self.modules[module].position
