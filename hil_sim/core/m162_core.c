@@ -459,15 +459,11 @@ static void m162_spdr_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *par
 	}
 }
 
-static void m162_port_change(struct avr_irq_t *irq, uint32_t value, void *param)
+static void m162_pinlog_add(m162_t *m, int idx, uint8_t value)
 {
-	struct m162_porthook_t *h = (struct m162_porthook_t *)param;
-	m162_t *m = h->m;
-	int idx = h->idx;
-	(void)irq;
-	if ((uint8_t)value == m->last_port[idx])
+	if (value == m->last_port[idx])
 		return;
-	m->last_port[idx] = (uint8_t)value;
+	m->last_port[idx] = value;
 	if (m->pinlog_len >= M162_PINLOG_MAX) {
 		m->pinlog_dropped++;
 		return;
@@ -482,8 +478,22 @@ static void m162_port_change(struct avr_irq_t *irq, uint32_t value, void *param)
 		m->pinlog = n;
 		m->pinlog_cap = cap;
 	}
-	m->pinlog[m->pinlog_len++] = (m162_pinrec_t){ m->avr->cycle, (char)('A' + idx),
-		(uint8_t)value };
+	m->pinlog[m->pinlog_len++] = (m162_pinrec_t){ m->avr->cycle, (char)('A' + idx), value };
+}
+
+static void m162_port_change(struct avr_irq_t *irq, uint32_t value, void *param)
+{
+	struct m162_porthook_t *h = (struct m162_porthook_t *)param;
+	(void)irq;
+	m162_pinlog_add(h->m, h->idx, (uint8_t)value);
+}
+
+/* A reset clears PORTx without a write simavr would signal: log it, so the
+ * pin log's reader sees outputs drop (a watchdog reset releases magnets). */
+static void m162_log_reset_ports(m162_t *m)
+{
+	for (int i = 0; i < M162_NPORTS; i++)
+		m162_pinlog_add(m, i, 0);
 }
 
 /* Level-triggered INT0/INT1 (ISC = 00, the reset default).  simavr polls a
@@ -529,9 +539,13 @@ static void m162_fixup_reset(avr_io_t *io)
 		avr_irq_register_notify(m->mcu.extint.eint[i].vector.irq + AVR_INT_IRQ_RUNNING,
 				m162_extint_returned, m);
 	}
-	for (int i = 0; i < M162_NPORTS; i++)
-		m->last_port[i] = 0;
+	m162_log_reset_ports(m);
 	m162_usart_reset(m);
+}
+
+static void m162_stock_reset(avr_io_t *io)
+{
+	m162_log_reset_ports((m162_t *)((char *)io - offsetof(m162_t, fixup_io)));
 }
 
 static const avr_io_t m162_fixup_io_template = {
@@ -670,6 +684,8 @@ m162_t *m162_make_stock(const char *mmcu)
 		m->usart[i].index = i;
 	}
 	avr_init(stock);
+	m->fixup_io = (avr_io_t){ .kind = "pinlog-reset", .reset = m162_stock_reset };
+	avr_register_io(stock, &m->fixup_io);
 	m162_setup_run(m);
 	m162_hook_ports(m);
 	for (int i = 0; i < M162_NUARTS; i++) {
