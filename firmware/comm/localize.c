@@ -64,32 +64,48 @@ static int8_t coord(const uint8_t *p)
     return p[0] == '-' ? (int8_t)-v : v;
 }
 
-/* Read one MSG1 from the selected side within the catch time; @p b is the
- * byte that showed activity on this side. */
+static uint8_t valid_msg1(const uint8_t *m)
+{
+    return m[0] == HB_START && is_sign(m[1]) && is_digit(m[2]) && is_digit(m[3]) &&
+           is_sign(m[4]) && is_digit(m[5]) && is_digit(m[6]) && m[7] >= '1' && m[7] <= '6';
+}
+
+/* Collect bytes from the selected side, starting with @p b (the byte that
+ * showed activity), until the last eight consecutive ones hold a whole
+ * MSG1: the teacher repeats it back to back, so any eight consecutive bytes
+ * are one message in some rotation. A gap longer than a few byte times
+ * breaks the run. */
 static uint8_t catch_msg1(uint8_t *m, int16_t b, tick_t started)
 {
+    uint8_t ring[HB_LOC_FRAME_LEN];
+    uint8_t n = 0;
     tick_t t0 = tick_now();
     while (tick_since(t0) < LOC_CATCH_TICKS && !deadline_passed(started)) {
-        if (b != HB_START) {
-            b = uart_getc_wait(IR, MSG_BYTE_TICKS);
-            continue;
+        if (b < 0) {
+            n = 0;
+        } else {
+            ring[n % HB_LOC_FRAME_LEN] = (uint8_t)b;
+            n++;
+            if (n >= HB_LOC_FRAME_LEN) {
+                uint8_t at = n % HB_LOC_FRAME_LEN; /* oldest byte in the ring */
+                for (uint8_t k = 0; k < HB_LOC_FRAME_LEN; k++) {
+                    if (ring[(uint8_t)(at + k) % HB_LOC_FRAME_LEN] != HB_START)
+                        continue;
+                    for (uint8_t i = 0; i < HB_LOC_FRAME_LEN; i++)
+                        m[i] = ring[(uint8_t)(at + k + i) % HB_LOC_FRAME_LEN];
+                    if (valid_msg1(m))
+                        return 1;
+                }
+                if (n >= 2u * HB_LOC_FRAME_LEN)
+                    n = HB_LOC_FRAME_LEN; /* keep the index small, same rotation */
+            }
         }
-        uint8_t n = 1;
-        m[0] = HB_START;
-        while (n < HB_LOC_FRAME_LEN) {
-            b = uart_getc_wait(IR, MSG_BYTE_TICKS);
-            if (b < 0 || b == HB_START)
-                break;
-            m[n++] = (uint8_t)b;
-        }
-        if (n == HB_LOC_FRAME_LEN && is_sign(m[1]) && is_digit(m[2]) && is_digit(m[3]) &&
-            is_sign(m[4]) && is_digit(m[5]) && is_digit(m[6]) && m[7] >= '1' && m[7] <= '6')
-            return 1;
-        /* Broken message: if another one started inside it, take that one. */
+        b = uart_getc_wait(IR, MSG_BYTE_TICKS);
     }
     return 0;
 }
 
+/* Listen on each body side in turn; returns the side a MSG1 came from, 0 if none. */
 static uint8_t listen(tick_t started)
 {
     uint8_t m[HB_LOC_FRAME_LEN];
@@ -106,16 +122,19 @@ static uint8_t listen(tick_t started)
                 g_state.heard_side = (uint8_t)(m[7] - '0');
                 g_state.yref = (uint8_t)(wrap6((int8_t)(g_state.heard_side - j + 1)) - 1u);
                 g_state.localized = 1;
-                return 1;
+                return j;
             }
         }
     }
     return 0;
 }
 
-static void teach(tick_t started)
+/* Send MSG1 on every body side but @p skip (the side we learned from). */
+static void teach(tick_t started, uint8_t skip)
 {
     for (uint8_t b = 1; b <= 6 && !deadline_passed(started); b++) {
+        if (b == skip)
+            continue;
         uint8_t side = wrap6((int8_t)(b + g_state.yref));
         int16_t nx = g_state.x + dx[side - 1u];
         int16_t ny = g_state.y + dy[side - 1u];
@@ -143,12 +162,14 @@ static void teach(tick_t started)
 loc_result_t localize_run(tick_t started)
 {
     loc_result_t result = LOC_KNOWN;
+    uint8_t heard_on = 0;
     leds_all(0);
     if (!g_state.localized) {
-        result = listen(started) ? LOC_LEARNED : LOC_NOT_HEARD;
+        heard_on = listen(started);
+        result = heard_on ? LOC_LEARNED : LOC_NOT_HEARD;
     }
     if (g_state.localized)
-        teach(started);
+        teach(started, heard_on);
     comm_ir_select(IR_CENTRE);
     while (!deadline_passed(started))
         sys_idle();
