@@ -120,17 +120,19 @@ class Avrdude:
             part_guess=match.group(2) if match else None,
         )
 
-    def write(self, image: Path, fuses: FuseSet | None, verify: bool) -> WriteReport:
-        """Chip erase, flash (Intel HEX), then the fuses if given; avrdude
-        reads every memory back unless ``verify`` is false."""
+    @staticmethod
+    def write_args(image: Path, fuses: FuseSet | None, verify: bool) -> list[str]:
         ops = ["-U", f"flash:w:{image}:i"]
         if fuses is not None:
             # Fuses before lock: once locked, the fuses could not be changed.
             ops += ["-U", f"lfuse:w:0x{fuses.lfuse:02X}:m", "-U", f"hfuse:w:0x{fuses.hfuse:02X}:m",
                     "-U", f"efuse:w:0x{fuses.efuse:02X}:m", "-U", f"lock:w:0x{fuses.lock:02X}:m"]
-        if not verify:
-            ops.insert(0, "-V")
-        proc = self.run(ops, WRITE_TIMEOUT_S)
+        return ops if verify else ["-V", *ops]
+
+    def write(self, image: Path, fuses: FuseSet | None, verify: bool) -> WriteReport:
+        """Chip erase, flash (Intel HEX), then the fuses if given; avrdude
+        reads every memory back unless ``verify`` is false."""
+        proc = self.run(self.write_args(image, fuses, verify), WRITE_TIMEOUT_S)
         report = WriteReport(log=proc.stderr)
         for m in _WRITTEN.finditer(proc.stderr):
             report.written[m.group(2)] = report.written.get(m.group(2), 0) + int(m.group(1))

@@ -12,6 +12,7 @@ verify flash, and the fuses when asked.
 from __future__ import annotations
 
 import argparse
+import shlex
 from pathlib import Path
 
 from hexbot.errors import FlashingError
@@ -119,8 +120,10 @@ def flash_board(args: argparse.Namespace, say=print) -> int:
         guard_fuses(fuses, args.force, say)  # before touching the device at all
     avrdude = Avrdude(args.port, args.programmer, args.avrdude, args.baud, args.bitclock)
     if args.dry_run:
-        say(" ".join(avrdude.base_command()) + " -F -U signature:r:...")
-        say(" ".join(avrdude.base_command()) + f" -U flash:w:{image}:i ...")
+        base = avrdude.base_command()
+        say(shlex.join([*base, "-F", "-U", "signature:r:SIG:r", "-U", "lfuse:r:LFUSE:r",
+                        "-U", "hfuse:r:HFUSE:r", "-U", "efuse:r:EFUSE:r", "-U", "lock:r:LOCK:r"]))
+        say(shlex.join([*base, *avrdude.write_args(image, fuses, args.verify)]))
         return 0
     say(f"reading the device on {args.port} through {args.programmer} ...")
     device = avrdude.read_device()

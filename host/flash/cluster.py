@@ -38,7 +38,10 @@ def flash_all(args: argparse.Namespace, say=print) -> int:
 
     if not args.dry_run:
         build_firmware(args.firmware_version, args.build_dir, say)
-    sim = Simulator.from_name(args.scenario)
+    try:
+        sim = Simulator.from_name(args.scenario)
+    except OSError as exc:  # a scenario image missing or unreadable
+        raise FlashingError(f"cannot start scenario {args.scenario!r}: {exc}") from exc
     isp = open_simulator_isp(sim)
     try:
         isp.server.start()  # the simulation is not stepped while avrdude runs

@@ -113,3 +113,12 @@ def test_avrdude_errors_reach_the_user_in_words(hexbot_flash, images, tmp_path):
     result = hexbot_flash("--image", str(hexfile), "--port", str(tmp_path / "ttyNONE"))
     assert result.code == 1
     assert "cannot open port" in result.err and "is the programmer plugged in" in result.err
+
+
+def test_a_chip_that_does_not_answer_is_reported_with_the_likely_cause(isp_server, images,
+                                                                       hexbot_flash):
+    chip = isp_server(Atmega162Memory(hfuse=0xF9))  # SPIEN off: silent on SPI
+    _, hexfile = images("1.2.3")
+    result = hexbot_flash("--image", str(hexfile), "--port", chip.port)
+    assert result.code == 1
+    assert "did not enter programming mode" in result.err and "jumper" in result.err
