@@ -3,7 +3,9 @@
     hexbot sim pair --pty --speed 1 --events events.jsonl --vcd pins.vcd
 
 The first stdout line is one JSON object naming the ports:
-``{"ir": "/dev/pts/N", "uart1": {"<module id>": "/dev/pts/M", ...}}``.
+``{"ir": "/dev/pts/N", "uart1": {"<module id>": "/dev/pts/M", ...},
+"isp": {"<module id>": {"comm": PATH, "control": PATH}}}`` (STK500v2
+programmer ports for avrdude, see docs/flashing.md).
 SIGINT or SIGTERM end the run cleanly (files flushed, ptys closed, exit 0).
 """
 
@@ -18,7 +20,7 @@ import time
 from contextlib import ExitStack
 from pathlib import Path
 from types import FrameType
-from typing import TextIO
+from typing import Any, TextIO
 
 from hexbot.errors import HexBotError
 
@@ -89,18 +91,26 @@ def run(args: argparse.Namespace) -> int:
         if args.vcd:
             vcd = VcdWriter(sim, _open(args.vcd, stack))
             stack.callback(vcd.close)
-        bridge = None
+        bridge = isp = None
         if args.pty:
+            from .isp.cluster import open_simulator_isp
+
             bridge = stack.enter_context(PtyBridge(sim))
-            print(json.dumps(bridge.names()), flush=True)
+            isp = stack.enter_context(open_simulator_isp(sim))
+            print(json.dumps({**bridge.names(), "isp": isp.ports_json()}), flush=True)
         else:
             print(json.dumps({"scenario": sim.scenario.name}), flush=True)
-        _loop(sim, bridge, args.speed, args.duration, stop)
+        _loop(sim, bridge, isp, args.speed, args.duration, stop)
     return 0
 
 
 def _loop(
-    sim: Simulator, bridge: PtyBridge | None, speed: float, duration: float | None, stop: _Stop
+    sim: Simulator,
+    bridge: PtyBridge | None,
+    isp: Any,
+    speed: float,
+    duration: float | None,
+    stop: _Stop,
 ) -> None:
     wall0, sim0 = time.monotonic(), sim.time
     while not stop.requested:
@@ -108,6 +118,8 @@ def _loop(
             break
         if bridge:
             bridge.pump_in()
+        if isp:
+            isp.poll()  # ISP programming, on this thread like every Cluster access
         step = SLICE_S if duration is None else min(SLICE_S, duration - (sim.time - sim0))
         sim.run(step)
         if bridge:
@@ -116,7 +128,7 @@ def _loop(
             ahead = (sim.time - sim0) / speed - (time.monotonic() - wall0)
             if ahead > 0:
                 # Sleep, but wake as soon as a client writes something.
-                fds = bridge.fds() if bridge else []
+                fds = (bridge.fds() if bridge else []) + (isp.fds() if isp else [])
                 try:
                     select.select(fds, [], [], ahead)
                 except InterruptedError:
