@@ -153,6 +153,10 @@ static PyObject *Cluster_connect_uart(ClusterObject *self, PyObject *args)
 	m162_usart_t *sa = get_usart(self, a, ua), *sb = sa ? get_usart(self, b, ub) : NULL;
 	if (!sa || !sb)
 		return NULL;
+	if (!sa->mcu->is_m162 || !sb->mcu->is_m162) {
+		PyErr_SetString(PyExc_ValueError, "connect_uart needs atmega162 cores on both ends");
+		return NULL;
+	}
 	if (sa == sb) {
 		PyErr_SetString(PyExc_ValueError, "cannot wire a USART to itself");
 		return NULL;
