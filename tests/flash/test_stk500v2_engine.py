@@ -176,3 +176,21 @@ def test_any_command_body_gets_a_status(cmd, rest):
     p = standalone_programmer()
     answer = p.execute(bytes((cmd,)) + rest)
     assert answer[0] == cmd and answer[1] in set(Status)
+
+
+def test_word_mode_eeprom_write_with_value_polling():
+    memory = Atmega162Memory()
+    p = standalone_programmer(memory)
+    run(p, ENTER)
+    load_address(p, 0x1FE)
+    # mode 0x04: word mode, value polling; cmd1 = Write EEPROM, cmd3 = Read EEPROM
+    head = bytes((Cmd.PROGRAM_EEPROM_ISP, 0, 2, 0x04, 20, 0xC0, 0x00, 0xA0, 0xFF, 0xFF))
+    assert run(p, head + b"\x33\xff") == b"\x15\x00"
+    assert memory.eeprom[0x1FE:] == b"\x33\xff"
+
+
+def test_half_sent_frame_is_dropped_on_receive_timeout():
+    p = standalone_programmer()
+    assert p.feed(encode(1, READ_SIG)[:5]) == b""
+    p.receive_timeout()
+    assert run(p, b"\x01", seq=2)[:2] == b"\x01\x00"
