@@ -220,6 +220,12 @@ class Simulator:
     def module_at(self, cell: Cell) -> int | None:
         return self.plant.module_at(cell)
 
+    def actuators(self, module_id: int) -> dict:
+        """The control board's outputs now: joints open (J1..J6) and magnet polarity
+        per side (1 positive, -1 negative, 0 off, 2 both lines on)."""
+        joints, magnets = decode_actuators(self.modules[module_id].control_ports)
+        return {"joints": list(joints), "magnets": list(magnets)}
+
     # --- the Air protocol of the IR medium ---------------------------------------
 
     def channel_at(self, module: int, cycle: int) -> int | None:

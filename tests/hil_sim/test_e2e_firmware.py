@@ -48,8 +48,8 @@ def test_boot_texts_then_ack_for_a_function_code(hexbot_sim):
     reply = send(hexbot_sim, make("JxOpen", 3), b"ACK\x01\n\r")
     assert b"M: ACK\x01" in reply
     hexbot_sim.run(0.5)
-    joints_open = hexbot_sim.modules[1].control_ports["A"]
-    assert joints_open & (1 << 5)  # J3 = PA5 energised
+    assert hexbot_sim.actuators(1)["joints"] == [False, False, True, False, False, False]
+    assert hexbot_sim.modules[1].control_ports["A"] == 1 << 5  # J3 = PA5
     assert b"MSG\x01\x03NNN" in hexbot_sim.debug_read(1)
 
 
