@@ -123,8 +123,12 @@ static int boundary(cluster_t *c)
 			if (s->peer) {
 				for (; s->wire_pos < s->log_len; s->wire_pos++) {
 					m162_txrec_t *r = &s->log[s->wire_pos];
-					if (s->peer->mcu->is_m162)
-						m162_usart_queue_rx(s->peer, r->end, r->byte);
+					/* a receiver set to another baud rate or frame
+					 * format sees a framing error */
+					uint16_t v = r->byte;
+					if (!m162_usart_frame_ok(s->peer, r))
+						v |= UART_INPUT_FE;
+					m162_usart_queue_rx(s->peer, r->end, v);
 				}
 			}
 			if (s->watched) {

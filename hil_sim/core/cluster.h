@@ -12,7 +12,8 @@
  * after its first bit went out, due at the cycle its stop bit ends; the
  * receiver gets it exactly then if that is still in the future (frames
  * longer than a quantum, e.g. 4800 baud at 1 MHz with Q = 1000), otherwise
- * at once.
+ * at once.  A receiver whose baud rate differs by more than 4.5 % or whose
+ * frame format differs gets the byte with a framing error.
  */
 #ifndef HEXBOT_CLUSTER_H
 #define HEXBOT_CLUSTER_H

@@ -30,6 +30,8 @@
 typedef struct m162_txrec_t {
 	uint64_t start, end;
 	uint8_t byte;
+	uint8_t format;      /* data bits | parity mode << 4 | stop bits << 6 */
+	uint32_t bit_cycles; /* sender's bit time */
 } m162_txrec_t;
 
 /* A byte waiting to reach a receiver at a given cycle (wire delivery). */
@@ -50,6 +52,8 @@ typedef struct m162_usart_t {
 	uint16_t shared_addr, ubrrh_addr, ucsrc_addr;
 	uint64_t last_shared_read; /* cycle+1 of the last read, for the 2-read rule */
 	uint32_t frame_cycles;     /* 1 start + data + parity + stop bits */
+	uint32_t bit_cycles;
+	uint8_t format;            /* as in m162_txrec_t */
 	/* transmitter: UDR buffer + shift register */
 	int shifting;
 	uint64_t shift_start, shift_end;
@@ -137,6 +141,8 @@ void m162_usart_config(m162_usart_t *s, double *baud, int *data_bits, char *pari
 		int *stop_bits, int *rxen, int *txen);
 void m162_usart_set_keep_log(m162_usart_t *s, int keep);
 void m162_usart_compact_log(m162_usart_t *s);
+/* Would s receive this frame intact?  Same format, bit times within 4.5 %. */
+int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r);
 
 /* Register addresses (data space) used outside the descriptor table. */
 extern const uint16_t m162_port_regs[M162_NPORTS][3]; /* PIN, DDR, PORT */

@@ -663,7 +663,7 @@ static void m162_stock_uart_out(struct avr_irq_t *irq, uint32_t value, void *par
 		s->log_cap = cap;
 	}
 	uint64_t now = s->mcu->avr->cycle;
-	s->log[s->log_len++] = (m162_txrec_t){ now, now, (uint8_t)value };
+	s->log[s->log_len++] = (m162_txrec_t){ now, now, (uint8_t)value, 0, 0 };
 }
 
 m162_t *m162_make_stock(const char *mmcu)

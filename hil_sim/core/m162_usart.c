@@ -55,6 +55,8 @@ static void recompute_frame(m162_usart_t *s)
 	int sb = 1 + avr_regbit_get(avr, u->usbs);
 	uint32_t cycles_per_bit = (ubrr + 1) * (avr_regbit_get(avr, u->u2x) ? 8 : 16);
 	s->frame_cycles = cycles_per_bit * (1 + db + parity + sb);
+	s->bit_cycles = cycles_per_bit;
+	s->format = (uint8_t)(db | (upm << 4) | (sb << 6));
 	u->cycles_per_byte = s->frame_cycles;
 }
 
@@ -73,7 +75,7 @@ static void log_frame(m162_usart_t *s, uint64_t start, uint64_t end, uint8_t byt
 		s->log = n;
 		s->log_cap = cap;
 	}
-	s->log[s->log_len++] = (m162_txrec_t){ start, end, byte };
+	s->log[s->log_len++] = (m162_txrec_t){ start, end, byte, s->format, s->bit_cycles };
 }
 
 static void start_frame(m162_usart_t *s, uint8_t byte, uint64_t when)
@@ -311,6 +313,15 @@ void m162_usart_config(m162_usart_t *s, double *baud, int *data_bits, char *pari
 void m162_usart_set_keep_log(m162_usart_t *s, int keep)
 {
 	s->keep_log = keep;
+}
+
+int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r)
+{
+	if (r->format != s->format)
+		return 0;
+	uint32_t a = r->bit_cycles, b = s->bit_cycles;
+	uint32_t diff = a > b ? a - b : b - a;
+	return diff * 1000 <= 45 * (a > b ? a : b);
 }
 
 /* Forget records every consumer has seen, so logs stay small. */

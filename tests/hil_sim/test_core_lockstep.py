@@ -133,3 +133,22 @@ def test_sp_passing_low_while_being_set_is_not_a_crash():
     assert c.state(m) == "running"
     assert c.port(m, "B")[1] == 0x01
     assert c.read_data(m, 0x5D, 2) == b"\xff\x00"  # SPL, SPH: full but legal
+
+
+def test_wire_between_different_baud_rates_gives_framing_errors():
+    c = Cluster()
+    p = c.add_mcu(build("pinger"), "pinger")  # 4800 baud
+    slow = c.add_mcu(build("slow"), "slow")  # 2400 baud
+    c.connect_uart(p, 0, slow, 0)
+    c.run(10_000)
+    assert c.port(slow, "B")[1] == 1  # the byte arrives...
+    assert c.port(slow, "A")[1] == 0x10  # ...with FE0 set
+
+
+def test_wire_between_equal_settings_has_no_framing_error():
+    c = Cluster()
+    p = c.add_mcu(build("pinger"), "pinger")
+    e = c.add_mcu(build("echo"), "echo")
+    c.connect_uart(p, 0, e, 0)
+    c.run(4_000)
+    assert c.read_data(e, 0x2B, 1)[0] & 0x10 == 0  # UCSR0A.FE0
