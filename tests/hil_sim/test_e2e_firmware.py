@@ -153,3 +153,25 @@ def test_two_runs_give_the_same_trace(hexbot_sim_factory, tmp_path):
     assert first == scripted_run(hexbot_sim_factory, path, 11)
     assert any(e["event"] == "ir-lost" for e in first[0]["events"])
     assert first != scripted_run(hexbot_sim_factory, path, 12)
+
+
+@pytest.mark.hexbot_scenario("single")
+def test_byte_before_the_receiver_is_enabled_is_dropped_and_reported(hexbot_sim):
+    hexbot_sim.debug_write(1, b"x")  # arrives 2 ms after reset: UART1 not yet set up
+    hexbot_sim.run(0.01)
+    dropped = [e for e in hexbot_sim.events if e["event"] == "debug-dropped"]
+    assert [(e["module"], e["reason"]) for e in dropped] == [
+        (1, "receiver off (RXEN) or overrun")]
+
+
+@pytest.mark.hexbot_scenario("thesis-fig5-8")
+def test_thesis_configuration_localizes_from_module_1(hexbot_sim):
+    boot(hexbot_sim)
+    send(hexbot_sim, select([1]), b"M01: ACKE")
+    send(hexbot_sim, make("Ref"), b"S01: ACKA")
+    send(hexbot_sim, select([0]), b"M06: ACKE")
+    reports = send(hexbot_sim, make("Localize"), b"M06: ACKB", timeout=90)
+    # module 5 at (4, 0) is four hops from the reference
+    for module_id in range(2, 7):
+        x, y = hexbot_sim.modules[module_id].position
+        assert f"Pos: {x:+03d}{y:+03d}".encode() in reports, module_id

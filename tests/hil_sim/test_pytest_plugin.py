@@ -1,0 +1,37 @@
+"""The hexbot_sim plugin as a user meets it: a test file in another directory."""
+
+import subprocess
+import sys
+
+USER_TEST = '''
+import pytest
+
+@pytest.mark.hexbot_scenario("pair", seed=5)
+def test_marked(hexbot_sim):
+    assert hexbot_sim.seed == 5 and sorted(hexbot_sim.modules) == [1, 2]
+    hexbot_sim.expect(b"COMM. LISTENING", timeout=10)
+
+def test_default_scenario(hexbot_sim):
+    assert sorted(hexbot_sim.modules) == [1]
+
+def test_factory(hexbot_sim_factory):
+    a, b = hexbot_sim_factory("single"), hexbot_sim_factory("single", seed=9)
+    a.run(1.0)
+    assert a.time == 1.0 and b.time == 0.0 and b.seed == 9
+'''
+
+
+def test_plugin_fixtures_marker_and_events_dir(tmp_path):
+    (tmp_path / "test_user.py").write_text(USER_TEST)
+    events = tmp_path / "events"
+    result = subprocess.run(
+        [sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider", str(tmp_path),
+         "--hexbot-events-dir", str(events)],
+        capture_output=True, text=True, cwd=tmp_path, timeout=120,
+    )
+    assert result.returncode == 0, result.stdout + result.stderr
+    assert "3 passed" in result.stdout
+    saved = sorted(p.name for p in events.iterdir())
+    assert saved == ["test_user.py_test_default_scenario.jsonl", "test_user.py_test_factory-1.jsonl",
+                     "test_user.py_test_factory.jsonl", "test_user.py_test_marked.jsonl"]
+    assert "ir-collision" in (events / "test_user.py_test_marked.jsonl").read_text()
