@@ -10,6 +10,9 @@ Measures, in one run on this machine:
   idle_7_modules  14 MCUs (7 modules) of idle firmware: a 10 ms timer tick,
                   idle sleep in between.
   idle_50_modules 100 MCUs (50 modules) of the same.
+  firmware_7_modules  the real images firmware/build/comm.elf + control.elf,
+                  7 wired pairs, IR and debug USARTs watched and drained
+                  (skipped when the firmware is not built).
 Throughput is simulated cycles per wall-clock second over all MCUs; the idle
 runs report the real-time factor (simulated seconds per wall second).  Each
 number is the best of --repeat runs (the machine is shared).
@@ -30,6 +33,7 @@ from hexbot.hil_sim._avr import SIMAVR_VERSION, Cluster, raw_simavr_run
 
 ROOT = Path(__file__).resolve().parent.parent
 AVR_DIR = ROOT / "tests" / "hil_sim" / "avr"
+FIRMWARE = ROOT / "firmware" / "build"
 F_CPU = 1_000_000
 
 
@@ -59,6 +63,23 @@ def time_cluster(elf: str, count: int, cycles: int, quantum: int = 1000) -> floa
     return elapsed
 
 
+def time_firmware(pairs: int, cycles: int) -> float:
+    """7 modules of real firmware as the simulator wires them (comm/control)."""
+    c = Cluster()
+    for i in range(pairs):
+        comm = c.add_mcu(str(FIRMWARE / "comm.elf"), f"comm{i}")
+        control = c.add_mcu(str(FIRMWARE / "control.elf"), f"control{i}")
+        c.connect_uart(comm, 0, control, 0)
+        c.set_input(control, "C", 0xFF, i + 1)
+        c.watch_uart(comm, 1)
+        c.watch_uart(control, 1)
+    t0 = time.perf_counter()
+    while c.run(cycles) < cycles:
+        for m in range(2 * pairs):
+            c.uart_take(m, 1)
+    return time.perf_counter() - t0
+
+
 def main(argv: list[str] | None = None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--busy-cycles", type=int, default=20_000_000,
@@ -80,14 +101,18 @@ def main(argv: list[str] | None = None) -> int:
 
     idle_seconds = args.idle_seconds
     idle_cycles = int(idle_seconds * F_CPU)
-    t = best_of(args.repeat, {
+    runs = {
         "raw": lambda: raw(busy128, "atmega128"),
         "raw162": lambda: raw(busy162, "atmega162"),
         "busy1": lambda: time_cluster(busy162, 1, cycles),
         "busy14": lambda: time_cluster(busy162, 14, cycles // 4),
         "idle7": lambda: time_cluster(idle, 14, idle_cycles),
         "idle50": lambda: time_cluster(idle, 100, idle_cycles),
-    })
+    }
+    have_firmware = (FIRMWARE / "comm.elf").exists() and (FIRMWARE / "control.elf").exists()
+    if have_firmware:
+        runs["fw7"] = lambda: time_firmware(7, idle_cycles)
+    t = best_of(args.repeat, runs)
     raw_s, busy1_s, busy14_s, idle7_s, idle50_s = (
         t["raw"], t["busy1"], t["busy14"], t["idle7"], t["idle50"])
 
@@ -107,6 +132,10 @@ def main(argv: list[str] | None = None) -> int:
                            "realtime_factor": round(idle_seconds / idle7_s, 1)},
         "idle_50_modules": {"mcus": 100, "simulated_s": idle_seconds,
                             "realtime_factor": round(idle_seconds / idle50_s, 1)},
+        "firmware_7_modules": (
+            {"mcus": 14, "simulated_s": idle_seconds,
+             "realtime_factor": round(idle_seconds / t["fw7"], 1)}
+            if have_firmware else "skipped: firmware/build/comm.elf, control.elf not built"),
         "targets": {"idle_7_modules_realtime_factor": 20, "idle_50_modules_realtime_factor": 2,
                     "busy_vs_raw_min": 0.7},
     }
