@@ -101,7 +101,6 @@ static void run_pending(void)
     uart_puts_P(SRC_DEBUG, PSTR("\n\rMSG"));
     uart_write(SRC_DEBUG, &pending[1], 1 + HB_BOARD_ARGS);
     uart_puts_P(SRC_DEBUG, PSTR("\n\r"));
-    actuators_off(); /* whatever a stopped sequence left on */
     if (ok)
         actuators_run(code, args);
 }

@@ -1,0 +1,84 @@
+"""Boot: status texts on the IR port and the debug port, the handshake that
+passes the DIP-switch id, joint self-test, and every actuator off."""
+
+from __future__ import annotations
+
+from fwsim import BUILD, Bench, build_firmware, scenario_file
+
+from hexbot.protocol import parser
+
+IR_BOOT = [
+    ("COMM. BOARD READY", "FW=0.1.0"),
+    ("CTR. BOARD READY", "ID=01"),
+    ("CTR. LISTENING", ""),
+    ("COMM. LISTENING", "ID=01 FW=0.1.0"),
+]
+DEBUG_BOOT = [
+    ("CTR. BOARD READY", "ID=01 FW=0.1.0"),
+    ("COMM. BOARD READY", ""),
+    ("CTR. LISTENING", ""),
+]
+
+
+def texts(data: bytes) -> list[tuple[str, str]]:
+    events = parser.parse_all(data)
+    assert not [e for e in events if isinstance(e, parser.Garbage)], events
+    return [(e.phrase, e.tail) for e in events if isinstance(e, parser.Text)]
+
+
+def test_boot_texts_on_ir_and_debug_port(images):
+    bench = Bench.boot("single")
+    assert bench.drain().startswith(b"\n\r\n\rCOMM. BOARD READY")
+    bench = Bench.boot("single")
+    assert texts(bench.drain()) == IR_BOOT
+    assert texts(bench.sim.debug_read(1)) == DEBUG_BOOT
+
+
+def test_module_id_comes_from_the_dip_switches(images, tmp_path):
+    bench = Bench.boot(scenario_file(tmp_path, [(37, (0, 0), 0)]))
+    assert ("COMM. LISTENING", "ID=37 FW=0.1.0") in texts(bench.drain())
+    bench.sim.run(0.1)
+    assert ("CTR. BOARD READY", "ID=37 FW=0.1.0") in texts(bench.sim.debug_read(37))
+
+
+def test_version_string_from_make(tmp_path):
+    build = build_firmware(tmp_path / "build", version="9.8.7-rc1")
+    scenario = scenario_file(tmp_path, [(2, (0, 0), 0)], comm=build / "comm.elf",
+                             control=build / "control.elf")
+    bench = Bench.boot(scenario)
+    assert ("COMM. BOARD READY", "FW=9.8.7-rc1") in texts(bench.drain())
+
+
+def test_joint_self_test_then_everything_off(images):
+    from hexbot.hil_sim import Simulator, load_scenario
+
+    sim = Simulator(load_scenario("single"))
+    changes: list[tuple[int, int, str, str, int]] = []
+    sim.pin_sinks.append(changes.extend)
+    sim.run(3.0)
+    porta = [(c, v) for c, _m, board, port, v in changes if board == "control" and port == "A"]
+    # Each joint J1..J6 (PA2, PA3, PA5, PA4, PA0, PA1) opens alone, 50 ms, in turn.
+    opened = [v for _c, v in porta if v]
+    assert opened == [1 << 2, 1 << 3, 1 << 5, 1 << 4, 1 << 0, 1 << 1]
+    widths = [(porta[i + 1][0] - porta[i][0]) / 1e6 for i in range(0, len(porta) - 1, 2)]
+    assert all(0.04 <= w <= 0.06 for w in widths), widths
+    sim.run(3.0)
+    control = sim.modules[1].control
+    assert control.port("A")[1] & 0x3F == 0  # joints closed
+    assert control.port("B")[1] & 0xF3 == 0  # magnets off
+    assert control.port("D")[1] & 0xFC == 0
+
+
+def test_comm_board_without_control_board_still_answers(images, tmp_path):
+    # The RF12 image never answers the handshake: the comm board gives up after
+    # 3 s, reports no control board, and control functions answer '~'.
+    scenario = scenario_file(tmp_path, [(1, (0, 0), 0)], control=BUILD / "rf12.elf")
+    bench = Bench.boot(scenario, boot_s=9.0)
+    found = texts(bench.drain())
+    assert ("COMM. BOARD READY", "FW=0.1.0") in found
+    assert ("COMM. LISTENING", "ID=00 FW=0.1.0") in found
+    assert all(phrase != "CTR. LISTENING" for phrase, _ in found)
+    (ack,) = bench.command("JxOpen", 2)
+    assert ack.timed_out
+    (ack,) = bench.command("LOn")
+    assert ack.code == 44

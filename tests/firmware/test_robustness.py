@@ -1,0 +1,101 @@
+"""Bad input on the IR link: truncated and malformed frames, noise, and a
+thousand random byte strings. None of it may stop the module from
+acknowledging the next valid command."""
+
+from __future__ import annotations
+
+import random
+
+import pytest
+from fwsim import Bench, pc_frame, single_ack
+
+from hexbot.protocol import frames, parser
+from hexbot.protocol.codes import ErrorCode
+
+LON = frames.encode_pc(frames.make("LOn"))
+
+
+@pytest.mark.parametrize(
+    "junk",
+    [
+        pytest.param(b"*\x01\x02", id="truncated"),
+        pytest.param(b"*" + bytes(9) + b"X", id="end-byte-not-hash"),
+        pytest.param(b"*\x01\x01NNNNNNN", id="hash-missing"),
+        pytest.param(b"#####", id="hashes"),
+        pytest.param(b"**********", id="stars"),
+        pytest.param(b"*\x2a\x2a\x2a", id="stars-as-arguments"),
+        pytest.param(b"\x00\xff\x0a\x0d" * 4, id="binary"),
+    ],
+)
+def test_malformed_frame_then_valid_frame_back_to_back(single: Bench, junk: bytes):
+    replies = single.exchange(junk + LON)
+    assert [r.code for r in replies if isinstance(r, parser.Ack)][-1:] == [44]
+
+
+def test_truncated_frame_is_dropped_after_the_inter_byte_timeout(single: Bench):
+    single.send(b"*\x01\x03NN")
+    single.run(0.6)  # > 10 byte times of silence: the half frame is abandoned
+    assert single.replies() == []
+    single_ack(single.exchange(LON), 44)
+    (sta,) = single.command("Status")
+    assert sta.error == ErrorCode.BAD_FRAME
+
+
+def test_argument_bytes_may_be_star_and_hash(single: Bench):
+    # JTest(42, 35): '*' and '#' as arguments; the frame is taken by length.
+    ack = single_ack(single.exchange(pc_frame(5, 1, 35)), 5)
+    assert ack.code == 5
+    single_ack(single.exchange(pc_frame(36, 42, 0)), 36)
+
+
+def test_a_new_command_stops_a_long_led_sequence(single: Bench):
+    single.send(pc_frame(46, 255, 255))  # LCircle: hours at the thesis' pace
+    single.run(3.0)
+    replies = single.exchange(LON)
+    assert [r.code for r in replies] == [46, 44]
+
+
+def test_a_new_command_stops_a_long_actuator_sequence(single: Bench):
+    single.send(pc_frame(5, 255, 255))  # JTest(255, 255) on the control board
+    single.run(3.0)
+    single.drain()
+    replies = single.exchange(frames.encode_pc(frames.make("TurnOffAll")))
+    # JTest's LED echo on the comm board stops too; both get their ACK.
+    assert [r.code for r in replies] == [5, 20]
+    ports = {p: single.sim.modules[1].control.port(p)[1] for p in "ABD"}
+    assert ports["A"] & 0x3F == 0
+
+
+def random_strings(seed: int, count: int) -> list[bytes]:
+    rng = random.Random(seed)
+    return [bytes(rng.randrange(256) for _ in range(rng.randint(1, 12))) for _ in range(count)]
+
+
+VALID = [
+    (frames.encode_pc(frames.make("LOn")), 44),
+    (frames.encode_pc(frames.make("JxClose", 3)), 2),
+    # Not SideOffAllN: its code is '#' (35), and a random '*' eight bytes
+    # earlier makes "*........*#" a complete (unused-code) frame; the fixed
+    # frame length cannot tell them apart.
+    (frames.encode_pc(frames.make("SideOffAllP")), 31),
+    (frames.encode_pc(frames.make("ClearError")), 72),
+]
+
+
+def test_a_thousand_random_strings_never_stop_the_next_valid_command(single: Bench):
+    strings = random_strings(seed=2026, count=1000)
+    # The seed was chosen without help: none of the strings holds a complete
+    # frame that would send the module away (IrSel to a side, Select).
+    for s in strings:
+        for at in range(len(s) - 10):
+            if s[at] == 42 and s[at + 10] == 35:
+                assert s[at + 1] not in (25, 69)
+    for n, junk in enumerate(strings):
+        frame, code = VALID[n % len(VALID)]
+        single.drain()
+        single.send(junk + frame)
+        single.until(lambda b, c=code: any(isinstance(r, parser.Ack) and r.code == c
+                                           for r in b.replies()), 8.0, step=0.2)
+    assert single.sim.modules[1].comm.state in ("running", "sleeping")
+    single.sim.run(1.0)
+    assert single.sim.modules[1].control.state in ("running", "sleeping")
