@@ -1,6 +1,7 @@
 """Cluster API of the ATmega162 core: memories, fuses, inputs, errors."""
 
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -153,3 +154,18 @@ def test_int2_and_pin_change_interrupts():
     c.set_input(m, "E", 0x01, 0x00)  # INT2 falling edge
     c.run(4_000)
     assert c.port(m, "A")[1] == 0x10
+
+
+def test_simavr_prints_nothing_even_when_firmware_crashes_or_talks():
+    script = (
+        "from hexbot.hil_sim._avr import Cluster\n"
+        "c = Cluster()\n"
+        f"for elf in {[build('badop'), build('echo'), build('peripherals')]!r}:\n"
+        "    c.add_mcu(elf, 'x')\n"
+        f"c.add_mcu({build('peripherals', 'atmega128')!r}, 'stock', 'atmega128')\n"
+        "c.run(100_000)\n"
+        "assert c.state(0) == 'crashed'\n"
+    )
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout == "" and done.stderr == ""
