@@ -7,7 +7,7 @@ import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
 
-from hexbot.host import endpoints
+from hexbot.host import commands, endpoints
 from hexbot.host.host import Host
 from hexbot.host.link import LinkState
 
@@ -25,6 +25,10 @@ def session(args: argparse.Namespace, *, wait_s: float = 5.0,
         host.start(wait_s)
         if host.log is not None:
             print(f"session log: {host.log.folder}", file=sys.stderr)
+        if ends.sim is not None:
+            print(f"simulator: {ends.sim.scenario}, waiting for the modules to boot",
+                  file=sys.stderr)
+            commands.wait_until_booted(host)
         yield host
     finally:
         if host is not None:

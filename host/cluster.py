@@ -4,8 +4,9 @@ A module is known by its id once it speaks in addressed mode (``M03:``)
 or reports its status; before that (legacy mode, thesis prefix ``M:``) the
 only handle is its role letter, so legacy replies update a row keyed by the
 letter. Localization reports carry no prefix at all: each complete report
-(``LOCALIZED``, ``Side``, ``Yref``, ``Pos``) becomes a :class:`Placement`;
-a later status reply at the same position names its module.
+(``LOCALIZED``, ``Side``, ``Yref``, ``Pos``) becomes a :class:`Placement`,
+named by the ACK 66 the firmware sends right after it, or by a later
+status reply at the same position.
 """
 
 from __future__ import annotations
@@ -13,6 +14,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from hexbot.host.describe import error_name
+from hexbot.protocol.codes import lookup
 from hexbot.protocol.parser import (
     Ack,
     ErrorReply,
@@ -23,6 +25,8 @@ from hexbot.protocol.parser import (
     Text,
     YrefReport,
 )
+
+LOCALIZE_CODE = lookup("Localize").code
 
 
 @dataclass
@@ -68,6 +72,7 @@ class ClusterModel:
     acks: int = 0
     errors: int = 0
     _pending: dict[str, _PendingReport] = field(default_factory=dict)
+    _unnamed: dict[str, tuple[int, int]] = field(default_factory=dict)
 
     def module(self, module_id: int) -> ModuleState | None:
         return self.modules.get(f"{module_id:02d}")
@@ -94,6 +99,14 @@ class ClusterModel:
             if row is None:
                 return True
             row.last_ack, row.last_seen = ev.code, t
+            # The firmware sends its localization report just before its
+            # ACK 66: the ACK names the module that placed itself.
+            unnamed = self._unnamed.pop(port, None)
+            if ev.code == LOCALIZE_CODE and ev.module is not None and unnamed is not None:
+                p = self.placements.get(unnamed)
+                if p is not None and p.module_id is None:
+                    self._name_placement(p.x, p.y, p.yref, ev.module, t)
+                    row.position, row.orientation, row.localized = unnamed, p.yref, True
             return True
         if isinstance(ev, ErrorReply):
             self.errors += 1
@@ -135,10 +148,9 @@ class ClusterModel:
             pending.yref = ev.yref
         elif isinstance(ev, PositionReport):
             del self._pending[port]
-            old = self.placements.get((ev.x, ev.y))
             self.placements[(ev.x, ev.y)] = Placement(
-                ev.x, ev.y, pending.yref if pending.yref is not None else 0, pending.side, t,
-                old.module_id if old else None)
+                ev.x, ev.y, pending.yref if pending.yref is not None else 0, pending.side, t)
+            self._unnamed[port] = (ev.x, ev.y)
             return True
         return False
 
@@ -160,6 +172,7 @@ class ClusterModel:
         self.modules.clear()
         self.placements.clear()
         self._pending.clear()
+        self._unnamed.clear()
         self.acks = self.errors = 0
 
 

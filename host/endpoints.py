@@ -37,6 +37,8 @@ def add_port_arguments(parser: argparse.ArgumentParser, *, debug: bool = True) -
     g.add_argument("--scenario", default=None,
                    help=f"simulator scenario when no --port is given (default {DEFAULT_SCENARIO})")
     g.add_argument("--seed", type=int, default=None, help="simulator seed")
+    g.add_argument("--sim-speed", type=float, default=1.0, metavar="X",
+                   help="simulator speed, times real time (default 1; 0 = flat out)")
     g.add_argument("--retry", type=float, default=1.0, metavar="S",
                    help="seconds between reconnection attempts (default 1)")
     lg = parser.add_argument_group("session log")
@@ -68,7 +70,7 @@ def resolve(args: argparse.Namespace) -> Endpoints:
         debug = PortSettings(debug_url, debug_baud) if debug_url else None
         return Endpoints(ir, debug)
     scenario = args.scenario or DEFAULT_SCENARIO
-    sim = SimProcess(scenario, seed=args.seed)
+    sim = SimProcess(scenario, seed=args.seed, speed=args.sim_speed)
     ir = PortSettings(sim.ports.ir, args.baud, **frame)
     debug = None
     if debug_url:

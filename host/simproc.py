@@ -32,9 +32,11 @@ class SimPorts:
 
 class SimProcess:
     def __init__(self, scenario: str = DEFAULT_SCENARIO, seed: int | None = None,
-                 start_timeout: float = 60.0) -> None:
+                 speed: float = 1.0, start_timeout: float = 60.0) -> None:
         self.scenario = scenario
-        cmd = [sys.executable, "-m", "hexbot.cli", "sim", scenario, "--pty"]
+        self.speed = speed
+        cmd = [sys.executable, "-m", "hexbot.cli", "sim", scenario, "--pty",
+               "--speed", f"{speed:g}"]
         if seed is not None:
             cmd += ["--seed", str(seed)]
         self.command = cmd

@@ -116,12 +116,11 @@ class PtyResponder:
             if code == 66:
                 m.localized = True
                 x, y = m.position
-                self._reply(m, b"ACK" + bytes([code]))
+                # as the firmware does: the report, then the ACK
                 self.write(wire.PREAMBLE + b"LOCALIZED" + wire.EOL
                            + f"Side: {(m.yref % 6) + 1}".encode() + wire.EOL
                            + f"Yref: {m.yref}".encode() + wire.EOL
                            + f"Pos: {x:+03d}{y:+03d}".encode() + wire.EOL)
-                continue
             if code == 70:
                 self.write(parser.reply_status(m.ident, m.role, m.localized, *m.position,
                                                m.yref, 0, prefix_role=m.role))

@@ -61,6 +61,9 @@ class _Server:
             except OSError:
                 return
             self.conns.append(conn)
+            # pyserial drops what arrived before open() returned (it resets
+            # the input buffer), so a module's greeting comes a little later.
+            time.sleep(0.2)
             conn.sendall(parser.reply_ack(65, "S", 1))
 
     def stop(self) -> None:
@@ -81,7 +84,7 @@ def test_host_reconnects_and_keeps_state():
     host.add_port(IR, PortSettings(f"socket://127.0.0.1:{server.port}"), retry_s=0.1)
     host.start(wait_s=3)
     try:
-        assert _wait(lambda: host.model.acks == 1)
+        assert _wait(lambda: host.model.acks == 1), (host.model.acks, states, host.since(0))
         server.stop()
         assert _wait(lambda: LinkState.LOST in states)
         with pytest.raises(LinkUnavailableError):

@@ -70,3 +70,11 @@ def test_capture_round_trip_and_errors(tmp_path):
     (tmp_path / "x.hbcap").write_text("hello\n")
     with pytest.raises(ScenarioError, match="not a hexbot capture"):
         list(read_capture(tmp_path / "x.hbcap"))
+
+
+def test_ack_after_report_names_the_placement():
+    model = ClusterModel()
+    _feed(model, wire.PREAMBLE + b"LOCALIZED\n\rSide: 4\n\rYref: 0\n\rPos: -01+01\n\r"
+          + parser.reply_ack(66, "M", 2))
+    assert [(c.x, c.y, c.module_id) for c in model.cells()] == [(-1, 1, 2)]
+    assert model.module(2).position == (-1, 1) and model.module(2).localized
