@@ -365,6 +365,8 @@ void m162_install_logger(void)
 
 #define M162_MCUCR MCUCR
 #define M162_SE SE
+#define M162_WDTCR WDTCR
+#define M162_WDE WDE
 
 /* One instruction (or one sleep step), like simavr's avr_callback_run_raw
  * but in virtual time only. */
@@ -398,8 +400,11 @@ static void m162_run_step(avr_t *avr)
 	if (avr->state == cpu_Sleeping) {
 		if (m->is_m162 && !(avr->data[M162_MCUCR] & (1 << M162_SE))) {
 			avr->state = cpu_Running; /* SLEEP with SE clear is a no-op */
-		} else if (!avr->sreg[S_I]) {
-			avr->state = cpu_Done; /* nothing can ever wake it */
+		} else if (!avr->sreg[S_I] &&
+				!(m->is_m162 && (avr->data[M162_WDTCR] & (1 << M162_WDE)))) {
+			/* interrupts off and no watchdog to reset it: simavr calls this
+			 * the end of the program */
+			avr->state = cpu_Done;
 			return;
 		} else {
 			avr_cycle_count_t target = avr->cycle + 1 + sleep;

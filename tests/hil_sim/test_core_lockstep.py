@@ -152,3 +152,15 @@ def test_wire_between_equal_settings_has_no_framing_error():
     c.connect_uart(p, 0, e, 0)
     c.run(4_000)
     assert c.read_data(e, 0x2B, 1)[0] & 0x10 == 0  # UCSR0A.FE0
+
+
+def test_sleep_with_interrupts_off_ends_only_without_a_watchdog():
+    c = Cluster()
+    m = c.add_mcu(build("wdsleep"), "wdsleep")
+    c.run(5_000)
+    assert c.state(m) == "sleeping"  # the armed watchdog will reset it
+    c.run(40_000)
+    [(start, _, first), (reset, _, cleared), (after, _, second)] = c.pin_log(m)
+    assert (first, cleared, second) == (0x01, 0x00, 0xE0)
+    assert 16_000 <= reset - start <= 16_100
+    assert c.state(m) == "done"  # watchdog off now: nothing can wake it
