@@ -1,0 +1,85 @@
+"""The RF12 wireless board image: power-on LEDs, the radio's configuration
+words on the bit-banged SPI, and the packet format of the transmit test.
+
+The simulator has no RF12 radio: we run the image as a module's control MCU
+(its UART1 is then the debug port), decode the SPI words from the pin log,
+and play the radio's nIRQ line ourselves."""
+
+from __future__ import annotations
+
+import pytest
+from fwsim import BUILD, scenario_file
+
+from hexbot.hil_sim import Simulator, load_scenario
+
+INIT_WORDS = [0x80D7, 0x8239, 0xA640, 0xC647, 0x94A0, 0xC2AC, 0xCA81, 0xCED4,
+              0xC483, 0x9850, 0xCC67, 0xE000, 0xC800, 0xC400]
+SEL, SDI, SCK = 1 << 4, 1 << 5, 1 << 7
+
+
+@pytest.fixture
+def radio(images, tmp_path):
+    sim = Simulator(load_scenario(scenario_file(tmp_path, [(1, (0, 0), 0)],
+                                                control=BUILD / "rf12.elf")))
+    changes: list = []
+    sim.pin_sinks.append(changes.extend)
+    return sim, changes
+
+
+def port_values(changes, port: str) -> list[tuple[int, int]]:
+    return [(c, v) for c, _m, board, p, v in changes if board == "control" and p == port]
+
+
+def spi_words(changes) -> list[int]:
+    words, word, bits, prev = [], 0, 0, SEL
+    for _cycle, value in port_values(changes, "B"):
+        if prev & SEL and not value & SEL:
+            word, bits = 0, 0
+        if not value & SEL and value & SCK and not prev & SCK:
+            word, bits = (word << 1) | bool(value & SDI), bits + 1
+        if value & SEL and not prev & SEL and bits == 16:
+            words.append(word)
+        prev = value
+    return words
+
+
+def test_power_on_leds_then_ready_and_configuration(radio):
+    sim, changes = radio
+    sim.run(2.0)
+    raw = [(c, v & 0xC0) for c, v in port_values(changes, "D")]
+    # Two writes microseconds apart (one LED off, the other on) are one step.
+    leds = [(c, v) for i, (c, v) in enumerate(raw)
+            if i + 1 == len(raw) or raw[i + 1][0] - c > 1000]
+    leds = [x for i, x in enumerate(leds) if i == 0 or x[1] != leds[i - 1][1]]
+    while leds and leds[0][1] == 0:  # port initialisation, LEDs off
+        leds.pop(0)
+    pattern = [v for _c, v in leds]
+    green, red = 0x40, 0x80
+    assert pattern[:7] == [green, red, green, red, green, red, 0]
+    steps = [b[0] - a[0] for a, b in zip(leds, leds[1:], strict=False) if a[1] != b[1]][:6]
+    assert all(abs(s / 1e6 - 0.2) < 0.011 for s in steps), steps
+    assert spi_words(changes)[: len(INIT_WORDS)] == INIT_WORDS
+    assert sim.debug_read(1) == b"\n\r\n\rRF12 READY MODE=TX FW=0.1.0\n\r"
+
+
+def test_transmit_test_sends_preamble_sync_payload_and_sum(radio):
+    sim, changes = radio
+    sim.run(1.5)
+    control = sim.modules[1].control.index
+    sim.cluster.set_input(control, "D", 1 << 5, 0)  # nIRQ low: the radio wants bytes
+    sim.run(1.0)
+    words = spi_words(changes)[len(INIT_WORDS):]
+    sent = [w & 0xFF for w in words if w & 0xFF00 == 0xB800]
+    payload = [1, 2, 3, 4, 5, 6, 7, 8, 9] + [0] * 7
+    packet = [0xAA, 0xAA, 0xAA, 0x2D, 0xD4, *payload, sum(payload) & 0xFF, 0xAA, 0xAA, 0xAA]
+    assert sent[: len(packet)] == packet
+    assert words[:2] == [0x0000, 0x8239]  # status read, transmitter on
+
+
+def test_receive_mode_by_jumper(radio):
+    sim, _changes = radio
+    control = sim.modules[1].control.index
+    sim.cluster.set_input(control, "A", 1, 0)  # jumper closed: receive test
+    sim.run(2.0)
+    assert sim.debug_read(1).endswith(b"RF12 READY MODE=RX FW=0.1.0\n\r")
+    assert sim.modules[1].control.state in ("running", "sleeping")
