@@ -82,3 +82,17 @@ def test_comm_board_without_control_board_still_answers(images, tmp_path):
     assert ack.timed_out
     (ack,) = bench.command("LOn")
     assert ack.code == 44
+
+
+def test_control_board_restart_is_picked_up_by_the_comm_board(single):
+    sim = single.sim
+    module = sim.modules[1]
+    sim.cluster.reset(module.control.index)
+    # The DIP switches are still there (driven anew: a reset clears PINC).
+    sim.cluster.set_input(module.control.index, "C", 0xFF, 0)
+    sim.cluster.set_input(module.control.index, "C", 0xFF, 1)
+    single.run(3.0)
+    assert texts(sim.debug_read(1)) == DEBUG_BOOT  # it found the comm board again
+    (ack,) = single.command("JxOpen", 4)
+    assert ack.code == 1
+    assert module.control.port("A")[1] & 0x3F == 1 << 4
