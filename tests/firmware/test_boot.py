@@ -80,6 +80,8 @@ def test_comm_board_without_control_board_still_answers(images, tmp_path):
     assert all(phrase != "CTR. LISTENING" for phrase, _ in found)
     (ack,) = bench.command("JxOpen", 2)
     assert ack.timed_out
+    (sta,) = bench.command("Status")
+    assert sta.error == 2  # CONTROL_TIMEOUT
     (ack,) = bench.command("LOn")
     assert ack.code == 44
 

@@ -224,3 +224,16 @@ def test_ir_select_acknowledges_on_centre_then_returns_after_silence(single: Ben
     single.run(10.0)
     assert single.sim.modules[1].channel == 0
     single_ack(single.command("LOn"), 44)
+
+
+def test_debug_port_drives_the_control_board_directly(single: Bench):
+    # Thesis 3.4.5: UART1 of the control board takes commands without the comm board.
+    single.sim.debug_write(1, b"*\x01\x03NNN#")
+    single.run(0.2)
+    assert single.sim.debug_read(1) == b"\n\r\n\rACK\x01\n\rMSG\x01\x03NNN\n\r"
+    assert actuators(single)[0] == J(3)
+    single.sim.debug_write(1, b"*\x01\x09NNN#")  # joint 9: refused, nothing moves
+    single.run(0.2)
+    assert single.sim.debug_read(1).startswith(b"\n\r\n\rACKN\n\r")
+    assert actuators(single)[0] == J(3)
+    assert single.replies() == []  # nothing went to the PC

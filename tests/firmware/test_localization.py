@@ -98,3 +98,8 @@ def test_a_second_localize_keeps_positions(images):
     again = bench.command("Localize", replies=7, timeout=localize_s(7))
     assert [(r.code, r.module) for r in again] == [(66, i) for i in range(1, 8)]
     check_cluster(bench, ref=1)
+    # A mobile rotation moves the module: its position is no longer known.
+    bench.command("Select", 3)
+    bench.command("MCW", 2, 1, 1, 1)
+    (sta,) = bench.command("Status")
+    assert (sta.module_id, sta.localized) == (3, False)
