@@ -34,9 +34,11 @@ def build_firmware(build_dir: Path = BUILD, version: str | None = None) -> Path:
 
 def scenario_file(tmp: Path, modules: list[tuple[int, tuple[int, int], int]], *,
                   comm: Path | None = None, control: Path | None = None,
-                  base: int | None = None) -> Path:
+                  base: int | None = None, bit_error_rate: float = 0.0) -> Path:
     """Write a scenario TOML: modules as (id, (x, y), orientation)."""
     lines = ['name = "test"', "seed = 1", f"base = {base or modules[0][0]}"]
+    if bit_error_rate:
+        lines += ["[faults]", f"bit_error_rate = {bit_error_rate}"]
     if comm or control:
         lines.append("[firmware]")
         lines.append(f'comm = "{comm or BUILD / "comm.elf"}"')

@@ -99,3 +99,28 @@ def test_a_thousand_random_strings_never_stop_the_next_valid_command(single: Ben
     assert single.sim.modules[1].comm.state in ("running", "sleeping")
     single.sim.run(1.0)
     assert single.sim.modules[1].control.state in ("running", "sleeping")
+
+
+def test_noisy_ir_link_loses_frames_but_never_the_module(images, tmp_path):
+    from fwsim import scenario_file
+
+    # 0.3 % of the bits flip on every IR link: about one frame in four of
+    # the 11-byte PC frames or 13-byte replies is hit.
+    bench = Bench.boot(scenario_file(tmp_path, [(1, (0, 0), 0)], bit_error_rate=0.003))
+    bench.drain()
+    answered = 0
+    for n in range(60):
+        frame, code = VALID[n % len(VALID)]
+        bench.drain()
+        bench.send(frame)
+        bench.run(1.2)
+        answered += any(isinstance(r, parser.Ack) and r.code == code for r in bench.replies())
+    assert 30 <= answered < 60, answered  # noise did bite, yet most got through
+    for _attempt in range(5):  # what a host does: retry until acknowledged
+        bench.drain()
+        bench.send(LON)
+        bench.run(1.2)
+        if any(isinstance(r, parser.Ack) and r.code == 44 for r in bench.replies()):
+            break
+    else:
+        raise AssertionError("no acknowledgement in five attempts")
