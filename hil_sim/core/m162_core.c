@@ -536,6 +536,22 @@ static void m162_gicr_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *par
 	m162_extint_level(m162_of(avr));
 }
 
+/* A reset does not unplug what drives the pins from outside (DIP switches):
+ * put the external levels back into PINx, since simavr's IRQs filter a
+ * later set_input of the same value as "no change". */
+static void m162_reapply_external(m162_t *m)
+{
+	avr_ioport_t *ports[M162_NPORTS] = { &m->mcu.porta, &m->mcu.portb, &m->mcu.portc,
+		&m->mcu.portd, &m->mcu.porte };
+	for (int i = 0; i < M162_NPORTS; i++) {
+		uint8_t mask = ports[i]->external.pull_mask;
+		if (!mask)
+			continue;
+		uint8_t *pin = &m->avr->data[m162_port_regs[i][0]];
+		*pin = (uint8_t)((*pin & ~mask) | (ports[i]->external.pull_value & mask));
+	}
+}
+
 static void m162_fixup_reset(avr_io_t *io)
 {
 	m162_t *m = (m162_t *)((char *)io - offsetof(m162_t, fixup_io));
@@ -546,6 +562,7 @@ static void m162_fixup_reset(avr_io_t *io)
 	}
 	m162_log_reset_ports(m);
 	m162_usart_reset(m);
+	m162_reapply_external(m);
 }
 
 static void m162_stock_reset(avr_io_t *io)

@@ -72,6 +72,19 @@ def test_set_input_drives_pins_over_pull_ups():
     assert c.port(m, "B")[1] == 0x25
 
 
+def test_dip_switches_survive_a_reset():
+    # A reset (ISP, watchdog) does not unplug the switches: the firmware must
+    # read the same module id after it, without set_input being repeated.
+    c = Cluster()
+    m = c.add_mcu(build("dip"), "dip")
+    c.set_input(m, "C", 0xFF, 0x2A)
+    c.run(2_000)
+    c.reset(m)
+    c.run(c.cycle + 2_000)
+    assert c.port(m, "C")[2] == 0x2A
+    assert c.port(m, "B")[1] == 0x2A
+
+
 def test_external_int0_falling_edge():
     c = Cluster()
     m = c.add_mcu(build("dip"), "dip")
