@@ -143,13 +143,6 @@ def open_simulator_isp(sim: Any, lock: threading.Lock | None = None) -> ClusterI
     boards = {mid: {"comm": module.comm.index, "control": module.control.index}
               for mid, module in sorted(sim.modules.items())}
 
-    def redrive_dip_switches(module: int, board: str, mcu: int) -> None:
-        # Cluster.reset() clears PINC but keeps simavr's cached pin levels, so
-        # set_input with the same id would be filtered out as "no change"
-        # (seen 2026-11-22). The DIP switches do not move when RESET is pulsed:
-        # toggle every pin once so that the id lands on PINC again.
-        if board == "control":
-            sim.cluster.set_input(mcu, "C", 0xFF, ~module & 0xFF)
-            sim.cluster.set_input(mcu, "C", 0xFF, module)
-
-    return open_cluster_isp(sim.cluster, boards, lock, redrive_dip_switches)
+    # The core re-applies external pin levels (DIP switches) on reset, so a
+    # reprogrammed control board reads its module id without help.
+    return open_cluster_isp(sim.cluster, boards, lock)
