@@ -133,8 +133,8 @@ static void control_function(uint8_t code, const uint8_t *a)
         reply_err(code, HB_ERR_CONTROL_MISMATCH);
         return;
     }
-    if (code >= HB_FN_MCW && code <= HB_FN_MCCW)
-        g_state.localized = g_state.reference ? g_state.localized : 0; /* it moved */
+    if ((code == HB_FN_MCW || code == HB_FN_MCCW) && !g_state.reference)
+        g_state.localized = 0; /* the mobile module moved */
     leds_mirror(code, a);
     reply_ack(code);
 }

@@ -40,7 +40,6 @@ frame_result_t frame_push(frame_rx_t *f, uint8_t b)
         f->len = 0;
         return FRAME_DONE;
     }
-    f->dropped++;
     resync(f);
     return FRAME_DROPPED;
 }
@@ -49,7 +48,6 @@ frame_result_t frame_expire(frame_rx_t *f)
 {
     if (f->len && tick_since(f->last) > f->timeout) {
         f->len = 0;
-        f->dropped++;
         return FRAME_DROPPED;
     }
     return FRAME_NONE;

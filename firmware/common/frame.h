@@ -23,7 +23,6 @@ typedef struct {
     uint8_t size;     /* full frame length */
     tick_t last;      /* tick of the last byte, for the time-out */
     tick_t timeout;   /* inter-byte time-out in ticks */
-    uint8_t dropped;  /* frames abandoned (bad end byte or time-out) */
 } frame_rx_t;
 
 typedef enum { FRAME_NONE = 0, FRAME_DONE, FRAME_DROPPED } frame_result_t;

@@ -15,7 +15,6 @@
 typedef struct {
     ring_t rx;
     ring_t tx;
-    uint8_t rx_errors;
     volatile uint8_t sent; /* a byte has been loaded since boot: TXC means something */
 } uart_state_t;
 
@@ -48,10 +47,12 @@ void uart_init(uint8_t u, uint32_t baud)
     }
 }
 
+/* A byte with a framing or overrun error (collision, noise) is dropped: the
+ * frame it belonged to then fails its length or end-byte check. */
 static inline void rx_store(uart_state_t *s, uint8_t status, uint8_t b, uint8_t err_mask)
 {
-    if ((status & err_mask) || !ring_put(&s->rx, b))
-        s->rx_errors++;
+    if (!(status & err_mask))
+        ring_put(&s->rx, b);
 }
 
 ISR(USART0_RXC_vect)
@@ -149,12 +150,6 @@ void uart_puts_P(uint8_t u, const char *p)
         uart_putc(u, (uint8_t)c);
 }
 
-void uart_puts(uint8_t u, const char *s)
-{
-    while (*s)
-        uart_putc(u, (uint8_t)*s++);
-}
-
 static uint8_t tx_idle(uint8_t u)
 {
     if (ring_count(&port[u & 1u].tx))
@@ -172,9 +167,4 @@ void uart_flush(uint8_t u)
     tick_t start = tick_now();
     while (!tx_idle(u) && tick_since(start) < FLUSH_MAX_TICKS)
         sys_idle();
-}
-
-uint8_t uart_rx_errors(uint8_t u)
-{
-    return port[u & 1u].rx_errors;
 }

@@ -37,13 +37,7 @@ void uart_write(uint8_t u, const uint8_t *p, uint8_t n);
 /** Queue a string from flash. */
 void uart_puts_P(uint8_t u, const char *p);
 
-/** Queue a string from RAM. */
-void uart_puts(uint8_t u, const char *s);
-
 /** Wait (bounded) until every queued byte has left the shift register. */
 void uart_flush(uint8_t u);
-
-/** Bytes dropped on receive (framing error, overrun, full ring). */
-uint8_t uart_rx_errors(uint8_t u);
 
 #endif /* UART_H */
