@@ -77,17 +77,17 @@ class Deadlock:
 @dataclass
 class Goal:
     """When a run is done. ``advance``: k modules came to rest in new cells;
-    ``beyond``: every module rests with (position . direction) > threshold."""
+    ``beyond``: every module is past the obstacle, (position . direction) > threshold."""
 
     advance: int | None = None
     direction: Cell | None = None
     threshold: int | None = None
 
-    def reached_beyond(self, xy: np.ndarray, resting: np.ndarray) -> bool:
+    def reached_beyond(self, xy: np.ndarray) -> bool:
         if self.direction is None or self.threshold is None:
             return False
         prog = xy[:, 0] * self.direction[0] + xy[:, 1] * self.direction[1]
-        return bool(resting.all() and (prog > self.threshold).all())
+        return bool((prog > self.threshold).all())
 
 
 @dataclass
@@ -491,7 +491,7 @@ class Engine:
                 break
             if not acted:
                 self.round -= 1  # the empty round is not counted
-                if goal.reached_beyond(w.xy(), self.resting_lut[w.state]):
+                if goal.reached_beyond(w.xy()):
                     status = "reached"
                     break
                 status = "deadlock"
@@ -502,9 +502,7 @@ class Engine:
             if goal.advance is not None and self.advanced >= goal.advance:
                 status = "advanced"
                 break
-            if goal.direction is not None and goal.reached_beyond(
-                w.xy(), self.resting_lut[w.state]
-            ):
+            if goal.reached_beyond(w.xy()):
                 status = "reached"
                 break
         return self.result(status, violation, deadlock)

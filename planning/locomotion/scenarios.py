@@ -101,6 +101,8 @@ def parse_map(text: str, name: str, source: str, n: int | None = None) -> Scenar
                 modules.append((x, y))
     if not modules:
         raise ScenarioError(f"{source}: the map has no modules ('o')")
+    if not floor_rows:
+        raise ScenarioError(f"{source}: the map needs a floor: a row made only of '#'")
     module_rows = {y for _, y in modules}
     if len(module_rows) != 1:
         raise ScenarioError(f"{source}: the modules must form one horizontal strip")
