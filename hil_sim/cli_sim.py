@@ -50,6 +50,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--events", type=Path, help="write plant and bus events as JSON lines")
     parser.add_argument("--vcd", type=Path, help="write actuator, selector and LED pins as VCD")
     parser.add_argument(
+        "--wait-client", action="store_true",
+        help="with --pty: start simulating only once a client opened the IR port",
+    )
+    parser.add_argument(
         "--duration", type=float,
         help="stop after this many simulated seconds (default: run until SIGINT/SIGTERM)",
     )
@@ -98,6 +102,8 @@ def run(args: argparse.Namespace) -> int:
             bridge = stack.enter_context(PtyBridge(sim))
             isp = stack.enter_context(open_simulator_isp(sim))
             print(json.dumps({**bridge.names(), "isp": isp.ports_json()}), flush=True)
+            if args.wait_client and not bridge.wait_for_client(lambda: not stop.requested):
+                return 0
         else:
             print(json.dumps({"scenario": sim.scenario.name}), flush=True)
         _loop(sim, bridge, isp, args.speed, args.duration, stop)

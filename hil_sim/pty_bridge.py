@@ -4,8 +4,11 @@ Each port is a pty pair. A serial client opens the slave (``/dev/pts/N``)
 exactly as it would open the RS232 converter; the bridge reads and writes
 the master side. The bridge keeps its own handle on every slave open, so a
 client may come and go without the port hanging up, and bytes that arrived
-while no client was attached wait in the pty like in a UART's FIFO (up to
-the kernel's buffer; beyond that they are dropped and counted).
+while no client was attached wait in the pty (up to the kernel's buffer;
+beyond that they are dropped and counted). Most clients (pyserial among them)
+flush their input when they open a port, as on real hardware, so a client
+that must see the boot texts asks for ``wait_for_client`` (``--wait-client``):
+the simulation starts only once the IR port is open.
 Bytes from the IR port enter the simulator through ``pc_write``, which paces
 them at 300 baud of simulated time; the line settings a client asks for are
 ignored, as a pty has no baud rate.
@@ -15,7 +18,9 @@ from __future__ import annotations
 
 import errno
 import os
+import time
 import tty
+from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from hexbot.errors import LinkUnavailableError
@@ -29,6 +34,7 @@ class _Port:
     slave: int
     name: str
     dropped: int = 0
+    early: bytes = b""  # read while waiting for a client, not yet passed on
 
     @classmethod
     def open(cls) -> _Port:
@@ -41,7 +47,8 @@ class _Port:
         return cls(master, slave, os.ttyname(slave))
 
     def read(self) -> bytes:
-        chunks = []
+        chunks = [self.early]
+        self.early = b""
         while True:
             try:
                 chunk = os.read(self.master, 4096)
@@ -64,6 +71,37 @@ class _Port:
                 self.dropped += len(data)
                 return
             data = data[n:]
+
+    def wait_for_client(
+        self, keep_waiting: Callable[[], bool], poll_s: float = 0.02, grace_s: float = 0.3
+    ) -> bool:
+        """Block until a client has the slave open; False if ``keep_waiting`` says stop.
+
+        With no slave open anywhere, reading the master fails with EIO; once a
+        client opens the slave it would block instead. So the bridge lets go
+        of its own slave handle, waits for that change, and takes it back.
+        """
+        os.close(self.slave)
+        self.slave = -1
+        try:
+            while keep_waiting():
+                try:
+                    early = os.read(self.master, 4096)
+                except BlockingIOError:
+                    # Let the client finish opening (pyserial flushes its input
+                    # after configuring the port) before the first byte comes.
+                    time.sleep(grace_s)
+                    return True
+                except OSError as exc:
+                    if exc.errno != errno.EIO:
+                        raise
+                    time.sleep(poll_s)
+                    continue
+                self.early += early  # the client already wrote: it is there
+                return True
+            return False
+        finally:
+            self.slave = os.open(self.name, os.O_RDWR | os.O_NOCTTY)
 
     def close(self) -> None:
         for fd in (self.master, self.slave):
@@ -110,6 +148,10 @@ class PtyBridge:
             data = self.sim.debug_read(module_id)
             if data:
                 port.write(data)
+
+    def wait_for_client(self, keep_waiting: Callable[[], bool]) -> bool:
+        """Block until a client opened the IR port (see ``_Port.wait_for_client``)."""
+        return self.ir.wait_for_client(keep_waiting)
 
     def close(self) -> None:
         if self.closed:

@@ -12,9 +12,11 @@ import serial
 from hexbot.protocol.frames import encode_pc, make, select
 
 WAIT_S = 60.0  # wall-clock limit for a reply, only so that a broken build cannot hang
+_leftover: dict[int, bytes] = {}  # bytes read past a pattern, per open port
 
 
 def start(*args: str) -> tuple[subprocess.Popen, dict]:
+    _leftover.clear()
     proc = subprocess.Popen(
         [sys.executable, "-m", "hexbot.cli", "sim", *args],
         stdout=subprocess.PIPE,
@@ -36,17 +38,20 @@ def stop(proc: subprocess.Popen, signum: int = signal.SIGTERM) -> str:
 
 
 def read_until(port: serial.Serial, pattern: bytes) -> bytes:
-    data = b""
+    """Bytes up to and including ``pattern``; what came after waits for the next call."""
+    data = _leftover.pop(id(port), b"")
     deadline = time.monotonic() + WAIT_S
     while pattern not in data:
         if time.monotonic() > deadline:
             pytest.fail(f"{pattern!r} never came; got {data!r}")
         data += port.read(port.in_waiting or 1)
-    return data
+    cut = data.index(pattern) + len(pattern)
+    _leftover[id(port)] = data[cut:]
+    return data[:cut]
 
 
 def test_boot_texts_and_an_ack_through_the_ptys():
-    proc, ports = start("single", "--pty", "--speed", "0")
+    proc, ports = start("single", "--pty", "--speed", "0", "--wait-client")
     try:
         assert set(ports) == {"ir", "uart1", "isp"} and list(ports["uart1"]) == ["1"]
         with serial.Serial(ports["ir"], 300, timeout=0.2) as ir, \
@@ -64,8 +69,8 @@ def test_boot_texts_and_an_ack_through_the_ptys():
 
 def test_rotation_over_the_ptys_writes_events_and_vcd(tmp_path):
     events_path, vcd_path = tmp_path / "events.jsonl", tmp_path / "pins.vcd"
-    proc, ports = start("pair", "--pty", "--speed", "0", "--events", str(events_path),
-                        "--vcd", str(vcd_path))
+    proc, ports = start("pair", "--pty", "--speed", "0", "--wait-client",
+                        "--events", str(events_path), "--vcd", str(vcd_path))
     try:
         with serial.Serial(ports["ir"], 300, timeout=0.2) as ir:
             read_until(ir, b"COMM. LISTENING")

@@ -32,6 +32,10 @@ def test_plugin_fixtures_marker_and_events_dir(tmp_path):
     assert result.returncode == 0, result.stdout + result.stderr
     assert "3 passed" in result.stdout
     saved = sorted(p.name for p in events.iterdir())
-    assert saved == ["test_user.py_test_default_scenario.jsonl", "test_user.py_test_factory-1.jsonl",
-                     "test_user.py_test_factory.jsonl", "test_user.py_test_marked.jsonl"]
+    assert saved == [
+        "test_user.py_test_default_scenario.jsonl",
+        "test_user.py_test_factory-1.jsonl",
+        "test_user.py_test_factory.jsonl",
+        "test_user.py_test_marked.jsonl",
+    ]
     assert "ir-collision" in (events / "test_user.py_test_marked.jsonl").read_text()
