@@ -65,8 +65,8 @@ class Simulator:
     ) -> None:
         self.scenario = scenario
         self.seed = scenario.seed if seed is None else seed
-        self.hz = hz
         self.cluster = cluster if cluster is not None else _load_core().Cluster(quantum_cycles)
+        self.hz = int(getattr(self.cluster, "frequency", hz))
         self.events: list[dict] = []
         self.event_sinks: list[Callable[[dict], None]] = []
         # (cycle, module id, "comm"|"control", port, value) for VCD writers and the like
