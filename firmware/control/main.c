@@ -5,7 +5,8 @@
  * States: BOOT (self-test, "CTR. BOARD READY") -> HANDSHAKE ('R' id every
  * 100 ms until the comm board answers 'R', at most 5 s) -> LISTENING
  * (answer a late 'R' with 'L' id; run frames). A frame that arrives while
- * a sequence runs stops it, switches every actuator off and runs next.
+ * a sequence runs stops it, switches every actuator off and runs next. Every
+ * error path (a dropped or invalid frame) switches every actuator off.
  */
 #include <avr/pgmspace.h>
 #include <string.h>
@@ -57,18 +58,22 @@ static uint8_t poll_links(void)
 {
     for (uint8_t src = 0; src < 2; src++) {
         int16_t b;
-        frame_expire(&rx[src]);
         while ((b = uart_getc(src)) >= 0) {
             if (src == SRC_COMM && rx[src].len == 0 && b == LINK_READY) {
                 send_link(LINK_LISTENING); /* comm board (re)started */
                 continue;
             }
-            if (frame_push(&rx[src], (uint8_t)b) == FRAME_DONE) {
+            frame_result_t r = frame_push(&rx[src], (uint8_t)b);
+            if (r == FRAME_DONE) {
                 memcpy(pending, rx[src].buf, sizeof pending);
                 pending_src = src;
                 have_pending = 1;
+            } else if (r == FRAME_DROPPED) {
+                actuators_off(); /* error path: a broken command may have been a stop */
             }
         }
+        if (frame_expire(&rx[src]) == FRAME_DROPPED)
+            actuators_off();
     }
     return have_pending;
 }
@@ -103,6 +108,8 @@ static void run_pending(void)
     uart_puts_P(SRC_DEBUG, PSTR("\n\r"));
     if (ok)
         actuators_run(code, args);
+    else
+        actuators_off(); /* error path: a command we cannot run leaves nothing on */
 }
 
 static uint8_t handshake(void)

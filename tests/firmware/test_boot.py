@@ -90,9 +90,6 @@ def test_control_board_restart_is_picked_up_by_the_comm_board(single):
     sim = single.sim
     module = sim.modules[1]
     sim.cluster.reset(module.control.index)
-    # The DIP switches are still there (driven anew: a reset clears PINC).
-    sim.cluster.set_input(module.control.index, "C", 0xFF, 0)
-    sim.cluster.set_input(module.control.index, "C", 0xFF, 1)
     single.run(3.0)
     assert texts(sim.debug_read(1)) == DEBUG_BOOT  # it found the comm board again
     (ack,) = single.command("JxOpen", 4)

@@ -232,8 +232,14 @@ def test_debug_port_drives_the_control_board_directly(single: Bench):
     single.run(0.2)
     assert single.sim.debug_read(1) == b"\n\r\n\rACK\x01\n\rMSG\x01\x03NNN\n\r"
     assert actuators(single)[0] == J(3)
-    single.sim.debug_write(1, b"*\x01\x09NNN#")  # joint 9: refused, nothing moves
+    single.sim.debug_write(1, b"*\x01\x09NNN#")  # joint 9: refused, everything off
     single.run(0.2)
     assert single.sim.debug_read(1).startswith(b"\n\r\n\rACKN\n\r")
-    assert actuators(single)[0] == J(3)
+    assert actuators(single)[0] == J()
+    single.sim.debug_write(1, b"*\x0b\x02NNN#")  # SxP(2)
+    single.run(0.05)
+    assert actuators(single)[1] == M(s2=POS)
+    single.sim.debug_write(1, b"*\x01\x02NN")  # half a frame
+    single.run(0.1)  # it times out (30 ms): error path, everything off
+    assert actuators(single) == (J(), M())
     assert single.replies() == []  # nothing went to the PC
