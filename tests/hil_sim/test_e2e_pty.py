@@ -93,3 +93,8 @@ def test_rotation_over_the_ptys_writes_events_and_vcd(tmp_path):
     assert "$timescale 1us $end" in header and "$scope module module_2 $end" in header
     times = [int(line[1:]) for line in body.splitlines() if line.startswith("#")]
     assert times == sorted(times) and len(times) > 10
+    # the mobile's magnet S4 negative line (PB4) went high and low again during the CW
+    scope = header.split("$scope module module_2 $end")[1].split("$upscope")[0]
+    code = next(line.split()[3] for line in scope.splitlines() if line.endswith(" s4n $end"))
+    changes = [line for line in body.splitlines() if line[1:] == code and line[0] in "01"]
+    assert changes[-2:] == [f"1{code}", f"0{code}"]
