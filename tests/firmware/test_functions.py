@@ -243,3 +243,14 @@ def test_debug_port_drives_the_control_board_directly(single: Bench):
     single.run(0.1)  # it times out (30 ms): error path, everything off
     assert actuators(single) == (J(), M())
     assert single.replies() == []  # nothing went to the PC
+
+
+def test_ref_and_lyref(single: Bench):
+    single_ack(single.command("Ref"), 65)
+    (sta,) = single.command("Status")
+    assert (sta.role, sta.localized, sta.x, sta.y, sta.yref) == ("S", True, 0, 0, 0)
+    single.command("LYref", 1)  # the listing turns Yref one step CCW ...
+    single.command("LYref", 1)
+    single.command("LYref", 2)  # ... and back CW
+    (sta,) = single.command("Status")
+    assert sta.yref == 1
