@@ -135,13 +135,17 @@ def fillable(goal: frozenset[Cell], voids: set[Cell]) -> set[Cell]:
     return remaining
 
 
-def _allowed(state: _State, void: Cell, voids: set[Cell]) -> bool:
-    """Filling ``void`` now must leave an order in which the other voids can be entered."""
-    return not fillable(state.goal, voids - {void})
+def _allowed(goal: frozenset[Cell], void: Cell, pending: set[Cell]) -> bool:
+    """Filling ``void`` now must leave an order in which the other pending cells
+    (voids, and cells whose module will step aside) can be entered."""
+    return not fillable(goal, pending - {void})
 
 
-def _journey(state: _State, electron: Cell, voids: set[Cell], strict: bool) -> list | None:
-    """Shortest rotation path of ``electron`` to a void (allowed ones when strict)."""
+def _journey(
+    state: _State, electron: Cell, voids: set[Cell], pending: set[Cell] | None
+) -> list | None:
+    """Shortest rotation path of ``electron`` to a void (one that keeps the other
+    ``pending`` cells enterable, unless ``pending`` is None)."""
     parent: dict[Cell, tuple[Cell, object, Cell] | None] = {electron: None}
     queue = deque([electron])
     while queue:
@@ -150,7 +154,7 @@ def _journey(state: _State, electron: Cell, voids: set[Cell], strict: bool) -> l
             if goal in parent:
                 continue
             parent[goal] = (cell, rule, sub)
-            if goal in voids and (not strict or _allowed(state, goal, voids)):
+            if goal in voids and (pending is None or _allowed(state.goal, goal, pending)):
                 path = []
                 node = goal
                 while parent[node] is not None:
@@ -162,56 +166,115 @@ def _journey(state: _State, electron: Cell, voids: set[Cell], strict: bool) -> l
     return None
 
 
+def must_move(
+    goal: frozenset[Cell], voids: set[Cell], fixed: Cell | None = None
+) -> set[Cell] | None:
+    """Goal cells whose module has to step aside so that every void can be entered.
+
+    Peels voids as :func:`fillable` does; when no void can be peeled, peels a
+    module of the goal instead (it will leave and be refilled later),
+    preferring those touching the most stuck voids. None when even that fails.
+    """
+    remaining = set(voids)
+    moved: set[Cell] = set()
+    while True:
+        remaining = fillable(goal, remaining | moved) - moved
+        if not remaining:
+            return moved
+        pending = remaining | moved
+        best: tuple[int, Cell] | None = None
+        for cell in sorted(goal - pending):
+            if cell == fixed:
+                continue
+            blocked = {n for n in neighbors(cell) if n in goal and (n not in voids or n in pending)}
+            blocked -= moved
+            if not _free_run(blocked, cell):
+                continue
+            touching = sum(1 for n in neighbors(cell) if n in remaining)
+            if best is None or touching > best[0]:
+                best = (touching, cell)
+        if best is None:
+            return None
+        moved.add(best[1])
+
+
 def serial_moves(
     initial: Configuration, goal: frozenset[Cell], max_moves: int, fixed: Cell | None = None
 ) -> list[Move]:
     """The serial core; raises :class:`PlanningFailure` when stuck. The module
-    on ``fixed`` (fixed to the base) never moves."""
+    on ``fixed`` (fixed to the base) never moves.
+
+    Movers are the electrons plus goal modules that must step aside
+    (:func:`must_move`, or promoted when the electrons alone are stuck);
+    each journey ends in a void, so the loop ends.
+    """
     state = _State(set(initial.cells), {c: m.id for c, m in initial.items()}, goal)
+    aside = must_move(goal, state.voids(), fixed)
+    if aside is None:
+        raise PlanningFailure("some goal cell can never be entered, even with modules stepping "
+                              "aside (fewer than three consecutive free sides)")
+    promoted: set[Cell] = set(aside)  # cells ever made to step aside
     moves: list[Move] = []
     while True:
-        electrons = state.electrons()
-        if not electrons:
-            return moves
         voids = state.voids()
-        dist = _void_distances(state, voids)
-        ranked = []
-        for e in electrons:
-            if e == fixed or is_cut(state.occupied, e):
-                continue
-            first = [dist[g] for _, _, g in _moves_from(e, state.occupied, e) if g in dist]
-            if first:
-                ranked.append((1 + min(first), e))
-            elif any(True for _ in _moves_from(e, state.occupied, e)):
-                ranked.append((10**9, e))
-        ranked.sort()
-        path = None
-        for strict in (True, False):
-            for _, e in ranked:
-                path = _journey(state, e, voids, strict)
-                if path:
-                    break
-            if path:
-                break
-        if not path:
-            free = [e for _, e in ranked]
-            raise PlanningFailure(
-                f"stuck after {len(moves)} moves with {len(electrons)} electrons left: "
-                + (
-                    "no electron can move without disconnecting the configuration"
-                    if not free
-                    else f"none of the {len(free)} movable electrons can reach a void"
+        movers = sorted((state.occupied - goal) | (aside & state.occupied))
+        if not voids:
+            return moves
+        pending = voids | (aside & state.occupied)
+        path = _best_journey(state, movers, voids, pending, fixed)
+        if path is None:
+            # let one more goal module step aside: the one with the shortest journey
+            extra = [c for c in sorted(goal & state.occupied) if c not in promoted and c != fixed]
+            for c in extra:
+                trial = _best_journey(state, [c], voids, pending | {c}, fixed, strict=False)
+                if trial and (path is None or len(trial) < len(path)):
+                    path = trial
+            if path is None:
+                raise PlanningFailure(
+                    f"stuck after {len(moves)} moves with {len(voids)} voids left: no module "
+                    "can reach a void without disconnecting the configuration or colliding "
+                    "(the goal is unreachable from here by Table 4-3 rotations)"
                 )
-                + " (the goal is unreachable from here by Table 4-3 rotations)"
-            )
+            promoted.add(path[0][0])
+            aside.add(path[0][0])
         if len(moves) + len(path) > max_moves:
             raise PlanningFailure(f"more than {max_moves} moves needed")
-        module = state.ids.pop(path[0][0])
-        state.occupied.discard(path[0][0])
+        start = path[0][0]
+        aside.discard(start)  # its module leaves; the cell is a plain void from now on
+        module = state.ids.pop(start)
+        state.occupied.discard(start)
         for src, dst, rule, sub in path:
             moves.append(Move(module, src, dst, rule.joint, rule.direction, sub, state.ids[sub]))
         state.occupied.add(path[-1][1])
         state.ids[path[-1][1]] = module
+
+
+def _best_journey(
+    state: _State,
+    movers: list[Cell],
+    voids: set[Cell],
+    pending: set[Cell],
+    fixed: Cell | None,
+    strict: bool | None = None,
+) -> list | None:
+    """A journey of the mover closest (by rotations) to a void it may fill."""
+    dist = _void_distances(state, voids)
+    ranked = []
+    for e in movers:
+        if e == fixed or is_cut(state.occupied, e):
+            continue
+        first = [dist[g] for _, _, g in _moves_from(e, state.occupied, e) if g in dist]
+        if first:
+            ranked.append((1 + min(first), e))
+        elif any(True for _ in _moves_from(e, state.occupied, e)):
+            ranked.append((10**9, e))
+    ranked.sort()
+    for level in ((True, False) if strict is None else (strict,)):
+        for _, e in ranked:
+            path = _journey(state, e, voids, pending if level else None)
+            if path:
+                return path
+    return None
 
 
 def _footprint(move: Move) -> set[Cell]:
@@ -328,10 +391,10 @@ def check_inputs(initial: Configuration, goal: frozenset[Cell], fixed: Cell | No
     if is_immobile(goal, fixed):
         return ("the goal configuration is immobile (Fig. 4-6): rotations are reversible, "
                 "so no rotation can end in it")
-    stuck = fillable(goal, set(goal - initial.cells))
-    if stuck:
-        return (f"goal cell {min(stuck)} can never be entered: whatever the order, it ends "
-                "with fewer than three consecutive free sides (Table 4-3 sweeps three cells)")
+    if must_move(goal, set(goal - initial.cells), fixed) is None:
+        stuck = fillable(goal, set(goal) - {fixed}) or set(goal)
+        return (f"goal cell {min(stuck)} can never be entered: it never has three consecutive "
+                "free sides, which a Table 4-3 rotation sweeps")
     return ""
 
 
