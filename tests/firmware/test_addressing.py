@@ -31,6 +31,9 @@ def test_select_all_every_module_answers_in_id_order_without_collision(flower: B
     replies = flower.command("Select", 0, replies=7)
     assert acks(replies) == [(69, i) for i in range(1, 8)]
     assert not [e for e in flower.events() if isinstance(e, parser.Garbage)]
+    # Forwarded to seven control boards: the echo delay does not shift the slots.
+    assert acks(flower.command("JxOpenAll", replies=7)) == [(3, i) for i in range(1, 8)]
+    assert all(m.control.port("A")[1] & 0x3F == 0x3F for m in flower.sim.modules.values())
     assert collisions(flower) == []
 
 
