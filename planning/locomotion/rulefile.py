@@ -17,7 +17,8 @@ Layout (``#`` starts a comment; indentation is for the reader only)::
       become active
 
 A ``require`` line is a boolean expression over cells: ``POS is CLASS|CLASS``,
-``POS is not CLASS``, ``and``, ``or``, ``not`` and parentheses. POS is a name
+``POS is not CLASS``, ``and``, ``or``, ``not``, parentheses, and names given
+earlier by ``define NAME EXPRESSION`` (a shared condition written once). POS is a name
 (N E S W NE NW SE SW) or an offset ``(dx,dy)``; CLASS is ``empty``,
 ``obstacle``, ``module`` (any state) or a state name. All ``require`` lines
 must hold. Actions: ``become STATE`` and/or ``move POS`` (a neighbour cell).
@@ -78,10 +79,11 @@ def parse_position(token: str) -> Offset:
 
 
 class _ExprParser:
-    def __init__(self, tokens: list[str], classes: set[str]):
+    def __init__(self, tokens: list[str], classes: set[str], names: dict[str, Expr]):
         self.toks = tokens
         self.i = 0
         self.classes = classes
+        self.names = names
 
     def peek(self) -> str | None:
         return self.toks[self.i] if self.i < len(self.toks) else None
@@ -125,6 +127,9 @@ class _ExprParser:
                 raise _Error("missing ')'")
             self.take()
             return inner
+        if tok in self.names:
+            self.take()
+            return self.names[tok]
         return self.atom()
 
     def atom(self) -> Atom:
@@ -148,10 +153,13 @@ class _ExprParser:
         return tok
 
 
-def parse_expression(text: str, states: list[str]) -> Expr:
+def parse_expression(
+    text: str, states: list[str], names: dict[str, Expr] | None = None
+) -> Expr:
     """Parse one ``require`` expression (raises ValueError with the reason)."""
     try:
-        return _ExprParser(_tokenize(text), set(BUILTIN_CLASSES) | set(states)).parse()
+        classes = set(BUILTIN_CLASSES) | set(states)
+        return _ExprParser(_tokenize(text), classes, names or {}).parse()
     except _Error as exc:
         raise ValueError(str(exc)) from None
 
@@ -185,6 +193,7 @@ def loads(text: str, source: str = "<string>") -> RuleSet:
     drafts: list[_Draft] = []
     description: list[str] = []
     states: list[str] = []
+    names: dict[str, Expr] = {}
     current: _Draft | None = None
     lineno = 0
     try:
@@ -206,6 +215,20 @@ def loads(text: str, source: str = "<string>") -> RuleSet:
                     states = rest.split()
                     _check_state_names(states)
                 continue
+            if key == "define":
+                if "states" not in header:
+                    raise _Error("'states' must come before the first define")
+                name, _, body = rest.partition(" ")
+                if not re.fullmatch(r"[A-Z][A-Z0-9_]*", name):
+                    raise _Error(f"define: {name!r} must be an upper-case name like C_SLIDE")
+                if name in DIRECTIONS or name in names:
+                    raise _Error(f"define: {name!r} is already a position or defined")
+                try:
+                    names[name] = parse_expression(body, states, names)
+                except ValueError as exc:
+                    raise _Error(f"define {name}: {exc}") from None
+                current = None
+                continue
             if key == "rule":
                 if "states" not in header:
                     raise _Error("'states' must come before the first rule")
@@ -217,7 +240,7 @@ def loads(text: str, source: str = "<string>") -> RuleSet:
                 continue
             if current is None:
                 raise _Error(f"unknown header keyword {key!r}")
-            _rule_line(current, key, rest, states)
+            _rule_line(current, key, rest, states, names)
         if "ruleset" not in header or "states" not in header:
             lineno = 0
             raise _Error("a rule file needs 'ruleset NAME' and 'states ...'")
@@ -260,7 +283,9 @@ def _check_state_names(states: list[str]) -> None:
         raise _Error("a state is listed twice")
 
 
-def _rule_line(d: _Draft, key: str, rest: str, states: list[str]) -> None:
+def _rule_line(
+    d: _Draft, key: str, rest: str, states: list[str], names: dict[str, Expr]
+) -> None:
     if key == "priority":
         if not re.fullmatch(r"-?\d+", rest):
             raise _Error(f"priority must be an integer, not {rest!r}")
@@ -271,7 +296,7 @@ def _rule_line(d: _Draft, key: str, rest: str, states: list[str]) -> None:
         d.state = rest
     elif key == "require":
         try:
-            d.conditions.append(parse_expression(rest, states))
+            d.conditions.append(parse_expression(rest, states, names))
         except ValueError as exc:
             raise _Error(str(exc)) from None
     elif key == "become":
