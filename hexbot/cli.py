@@ -34,6 +34,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "hexbot.planning.locomotion.cli",
         "square-lattice locomotion rule engine (Salvador, Otero rule sets)",
     ),
+    "plan": ("hexbot.planning.cli_plan", "plan a hex reconfiguration (thesis or robust planner)"),
 }
 
 

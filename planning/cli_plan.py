@@ -1,0 +1,123 @@
+"""``hexbot plan INITIAL GOAL``: plan a reconfiguration and print its moves and commands.
+
+Exit status 0 when the plan reaches the goal; 1 (reason on stderr) when it
+does not, or when an input file is invalid.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import sys
+from typing import Any
+
+from hexbot.errors import ScenarioError
+from hexbot.planning.commands import command_json, plan_to_commands
+from hexbot.planning.config_io import load_configuration
+from hexbot.planning.hexlattice import Cell
+from hexbot.planning.plan import Plan
+
+MODES = ("faithful-serial", "faithful-parallel", "robust")
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("initial", help="initial configuration (0/1 grid text or .toml)")
+    parser.add_argument("goal", help="goal configuration (0/1 grid text or .toml)")
+    parser.add_argument("--mode", choices=MODES, default="robust",
+                        help="planner (default: robust)")
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument("--plot", metavar="FILE.png", help="draw one panel per time step")
+    parser.add_argument("--style", choices=("combined", "single"), default="combined",
+                        help="firmware commands: combined CW/CCW (67/68, default) or "
+                             "single-role MCW..SCCW (21-24)")
+    parser.add_argument("--serial", action="store_true",
+                        help="robust mode: one move per time step")
+    parser.add_argument("--fixed", metavar="X,Y", type=_cell,
+                        help="robust mode: the module fixed to the base, which never moves")
+    parser.add_argument("--max-steps", type=int, default=200,
+                        help="faithful modes: give up after this many time steps (default 200)")
+
+
+def _cell(text: str) -> Cell:
+    try:
+        x, y = (int(v) for v in text.replace("(", "").replace(")", "").split(","))
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(f"expected X,Y (two integers), got {text!r}") from exc
+    return (x, y)
+
+
+def make_plan(args: argparse.Namespace) -> Plan:
+    initial = load_configuration(args.initial)
+    goal = load_configuration(args.goal).cells
+    if args.mode == "robust":
+        from hexbot.planning.robust import plan_robust
+
+        return plan_robust(initial, goal, parallel=not args.serial, fixed=args.fixed)
+    from hexbot.planning.thesis.planner import FaithfulOptions, plan_faithful
+
+    if args.max_steps < 1:
+        raise ScenarioError("--max-steps must be at least 1")
+    return plan_faithful(initial, goal, parallel=args.mode == "faithful-parallel",
+                         options=FaithfulOptions(max_steps=args.max_steps))
+
+
+def plan_json(plan: Plan, style: str = "combined") -> dict[str, Any]:
+    """The ``--json`` object."""
+    commands = plan_to_commands(plan, style)  # type: ignore[arg-type]
+    return {
+        "mode": plan.mode,
+        "reached": plan.reached,
+        "steps": [
+            {
+                "moves": [
+                    {
+                        "module": mc.move.module,
+                        "from": list(mc.move.src),
+                        "to": list(mc.move.dst),
+                        "joint": mc.move.joint,
+                        "direction": mc.move.direction,
+                        "substrate": list(mc.move.substrate),
+                        "commands": [command_json(c) for c in mc.commands],
+                    }
+                    for mc in step
+                ]
+            }
+            for step in commands
+        ],
+    }
+
+
+def plan_text(plan: Plan, style: str = "combined") -> str:
+    lines = [
+        f"mode {plan.mode}: goal {'reached' if plan.reached else 'NOT reached'}, "
+        f"{plan.time_steps} time step(s), {plan.move_count} move(s)"
+        + (f" (lower bound {plan.lower_bound} moves)" if plan.lower_bound is not None else "")
+    ]
+    for t, step in enumerate(plan_to_commands(plan, style), start=1):  # type: ignore[arg-type]
+        lines.append(f"step {t}:")
+        for mc in step:
+            m = mc.move
+            lines.append(
+                f"  module {m.module}: {m.src} -> {m.dst}  joint {m.joint} {m.direction}, "
+                f"substrate {m.substrate} (module {m.substrate_module})"
+            )
+            lines.append("      " + " ".join(str(c) for c in mc.commands))
+    for warning in plan.warnings:
+        lines.append(f"warning: {warning}")
+    return "\n".join(lines)
+
+
+def run(args: argparse.Namespace) -> int:
+    plan = make_plan(args)
+    if args.json:
+        print(json.dumps(plan_json(plan, args.style)))
+    else:
+        print(plan_text(plan, args.style))
+    if args.plot:
+        from hexbot.planning.plot import plot_plan
+
+        plot_plan(plan, args.plot)
+    if not plan.reached:
+        print(f"hexbot plan: goal not reached: {plan.reason}", file=sys.stderr)
+        return 1
+    return 0

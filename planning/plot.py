@@ -1,0 +1,88 @@
+"""Drawings of configurations and plans (matplotlib, Agg backend, files only)."""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable
+from pathlib import Path
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.patches import Polygon  # noqa: E402
+
+from hexbot.planning.hexlattice import Cell, cartesian, vertices  # noqa: E402
+from hexbot.planning.plan import Plan  # noqa: E402
+
+COLORS = {
+    "module": "#f2d04b",  # the thesis' yellow
+    "mover": "#4caf50",  # green: mobile electron
+    "target": "#e53935",  # red: its void
+    "goal": "#1e88e5",
+    "state": "#d81b8c",  # magenta: MDP states
+}
+
+
+def draw_cells(ax, cells: Iterable[Cell], color: str, alpha: float = 1.0, edge: str = "k",
+               fill: bool = True, lw: float = 1.0) -> None:
+    for cell in cells:
+        ax.add_patch(Polygon(vertices(cell), closed=True, facecolor=color if fill else "none",
+                             edgecolor=edge, alpha=alpha, linewidth=lw))
+
+
+def label_cells(ax, labels: dict[Cell, str], size: float = 7) -> None:
+    for cell, text in labels.items():
+        x, y = cartesian(cell)
+        ax.text(x, y, text, ha="center", va="center", fontsize=size)
+
+
+def frame(ax, cells: Iterable[Cell], margin: float = 1.0) -> None:
+    pts = [p for c in cells for p in vertices(c)]
+    xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+    ax.set_xlim(min(xs) - margin, max(xs) + margin)
+    ax.set_ylim(min(ys) - margin, max(ys) + margin)
+    ax.set_aspect("equal")
+    ax.axis("off")
+
+
+def plot_plan(plan: Plan, path: str | Path, max_panels: int = 60, ids: bool = True) -> Path:
+    """One panel per time step, like Figs. 5-8/5-9: the configuration before the
+    step with its movers in green, their destinations outlined in red, the
+    goal outlined in blue; a last panel shows the final configuration."""
+    configs = plan.configurations()
+    panels = list(range(len(plan.steps) + 1))
+    if len(panels) > max_panels:  # keep the first and last steps readable
+        keep = max_panels - 1
+        panels = panels[: keep // 2] + panels[-(keep - keep // 2):]
+    cols = min(4, len(panels))
+    rows = math.ceil(len(panels) / cols)
+    every = set().union(*(c.cells for c in configs), plan.goal)
+    fig, axes = plt.subplots(rows, cols, figsize=(3.2 * cols, 3.0 * rows), squeeze=False)
+    for ax in axes.flat:
+        ax.axis("off")
+    small = len(every) <= 80
+    for ax, t in zip(axes.flat, panels, strict=False):
+        config = configs[t]
+        moves = plan.steps[t].moves if t < len(plan.steps) else []
+        movers = {m.src for m in moves}
+        draw_cells(ax, config.cells - movers, COLORS["module"], lw=0.6 if small else 0.2)
+        draw_cells(ax, movers, COLORS["mover"], lw=0.6 if small else 0.2)
+        draw_cells(ax, plan.goal, "none", fill=False, edge=COLORS["goal"], lw=1.2 if small else 0.4)
+        draw_cells(ax, {m.dst for m in moves}, "none", fill=False, edge=COLORS["target"], lw=1.6)
+        for m in moves:
+            (x0, y0), (x1, y1) = cartesian(m.src), cartesian(m.dst)
+            ax.annotate("", (x1, y1), (x0, y0), arrowprops={"arrowstyle": "->", "lw": 0.8})
+        if ids and small:
+            label_cells(ax, {c: str(mod.id) for c, mod in config.items()}, 6)
+        title = f"time step {t + 1}" + (f": {len(moves)} move(s)" if moves else " (final)")
+        ax.set_title(title, fontsize=8)
+        frame(ax, every)
+    state = "reached" if plan.reached else "NOT reached"
+    fig.suptitle(f"{plan.mode}: goal {state} in {plan.time_steps} step(s), "
+                 f"{plan.move_count} move(s)", fontsize=10)
+    fig.tight_layout()
+    path = Path(path)
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
