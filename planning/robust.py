@@ -23,6 +23,7 @@ breaking connectivity), and goals no electron can reach.
 from __future__ import annotations
 
 from collections import deque
+from collections.abc import Callable
 from dataclasses import dataclass
 
 from hexbot.planning.configuration import Configuration, is_connected
@@ -141,11 +142,8 @@ def _allowed(goal: frozenset[Cell], void: Cell, pending: set[Cell]) -> bool:
     return not fillable(goal, pending - {void})
 
 
-def _journey(
-    state: _State, electron: Cell, voids: set[Cell], pending: set[Cell] | None
-) -> list | None:
-    """Shortest rotation path of ``electron`` to a void (one that keeps the other
-    ``pending`` cells enterable, unless ``pending`` is None)."""
+def _journey(state: _State, electron: Cell, accept: Callable[[Cell], bool]) -> list | None:
+    """Shortest rotation path of ``electron`` to an empty cell ``accept`` takes."""
     parent: dict[Cell, tuple[Cell, object, Cell] | None] = {electron: None}
     queue = deque([electron])
     while queue:
@@ -154,7 +152,7 @@ def _journey(
             if goal in parent:
                 continue
             parent[goal] = (cell, rule, sub)
-            if goal in voids and (pending is None or _allowed(state.goal, goal, pending)):
+            if accept(goal):
                 path = []
                 node = goal
                 while parent[node] is not None:
@@ -229,6 +227,12 @@ def serial_moves(
                 trial = _best_journey(state, [c], voids, pending | {c}, fixed, strict=False)
                 if trial and (path is None or len(trial) < len(path)):
                     path = trial
+            # or let a goal module park outside the goal (it becomes an electron)
+            parkers = sorted(aside & state.occupied) + extra
+            for c in parkers if path is None else ():
+                path = _park(state, c, pending | {c})
+                if path:
+                    break
             if path is None:
                 raise PlanningFailure(
                     f"stuck after {len(moves)} moves with {len(voids)} voids left: no module "
@@ -269,12 +273,27 @@ def _best_journey(
         elif any(True for _ in _moves_from(e, state.occupied, e)):
             ranked.append((10**9, e))
     ranked.sort()
+    def strict_void(cell: Cell) -> bool:
+        return cell in voids and _allowed(state.goal, cell, pending)
+
     for level in ((True, False) if strict is None else (strict,)):
         for _, e in ranked:
-            path = _journey(state, e, voids, pending if level else None)
+            path = _journey(state, e, strict_void if level else voids.__contains__)
             if path:
                 return path
     return None
+
+
+def _park(state: _State, mover: Cell, pending: set[Cell]) -> list | None:
+    """A journey of a goal module out of the way: to a cell outside the goal,
+    preferably one that touches no cell still to be filled."""
+    if is_cut(state.occupied, mover):
+        return None
+
+    def clear(cell: Cell) -> bool:
+        return cell not in state.goal and not any(n in pending for n in neighbors(cell))
+
+    return _journey(state, mover, clear) or _journey(state, mover, lambda c: c not in state.goal)
 
 
 def _footprint(move: Move) -> set[Cell]:

@@ -1,0 +1,104 @@
+"""The robust planner: legal, connected, collision-free plans, or a clear reason."""
+
+import random
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from hexbot.planning.configuration import Configuration, is_connected
+from hexbot.planning.generate import parallelogram, random_blob
+from hexbot.planning.plan import check_step
+from hexbot.planning.robust import is_immobile, plan_robust, step_lower_bound
+
+
+def assert_legal(plan):
+    configs = plan.configurations()
+    for t, (config, step) in enumerate(zip(configs, plan.steps, strict=False), start=1):
+        assert check_step(config, step) == [], f"time step {t}"
+        assert is_connected(configs[t].cells)
+        # no module moves twice in a step and no mover is another's substrate
+        movers = [m.module for m in step.moves]
+        assert len(movers) == len(set(movers))
+        assert not {m.substrate for m in step.moves} & {m.src for m in step.moves}
+
+
+def test_completes_the_swapped_p02_example_where_the_thesis_stalls(p02_swapped):
+    initial, goal = p02_swapped
+    plan = plan_robust(initial, goal)
+    assert plan.reached, plan.reason
+    assert_legal(plan)
+    assert plan.move_count >= plan.lower_bound
+
+
+@pytest.mark.parametrize("fixture", ["p01", "s02"])
+def test_thesis_examples_parallel_and_serial(fixture, request):
+    initial, goal = request.getfixturevalue(fixture)
+    parallel = plan_robust(initial, goal)
+    serial = plan_robust(initial, goal, parallel=False)
+    for plan in (parallel, serial):
+        assert plan.reached, plan.reason
+        assert_legal(plan)
+    assert serial.move_count == parallel.move_count
+    assert parallel.time_steps <= serial.time_steps
+    assert parallel.time_steps >= step_lower_bound(initial.cells, goal)
+
+
+def test_reverse_s02_needs_goal_modules_filled_in_order(s02):
+    # filling the top row from both ends would trap its middle cell (4 occupied sides)
+    initial, goal = s02
+    back = plan_robust(Configuration.from_cells(goal), initial.cells)
+    assert back.reached, back.reason
+    assert_legal(back)
+
+
+def test_fig_4_6_immobile_configuration_is_detected(example):
+    cells = example("test_immobile.txt").cells
+    fixed = (3, 3)  # Test_Immobile's blue module, fixed to the base
+    assert is_immobile(cells, fixed)
+    assert not is_immobile(cells)  # unbolted, the tail end could swing
+    goal = (cells - {(1, 10)}) | {(2, 9)}
+    assert is_connected(goal) and len(goal) == len(cells)
+    plan = plan_robust(Configuration.from_cells(cells), goal, fixed=fixed)
+    assert not plan.reached and "immobile" in plan.reason
+
+
+@pytest.mark.parametrize(
+    ("goal", "words"),
+    [
+        ({(0, 0), (1, 0), (5, 5)}, "not connected"),
+        ({(0, 0), (1, 0)}, "3 modules"),
+    ],
+)
+def test_unreachable_goals_are_reported(goal, words):
+    plan = plan_robust(Configuration.from_cells({(0, 0), (1, 0), (2, 0)}), frozenset(goal))
+    assert not plan.reached and words in plan.reason and not plan.steps
+
+
+def test_parallelogram_to_parallelogram_is_planned_and_parallel():
+    initial = Configuration.from_cells(parallelogram(6, 4))
+    plan = plan_robust(initial, parallelogram(8, 3))
+    assert plan.reached
+    assert_legal(plan)
+    assert plan.time_steps < plan.move_count  # some steps move several modules
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(size=st.integers(3, 14), seed_a=st.integers(0, 10**6), seed_b=st.integers(0, 10**6))
+def test_random_connected_configurations_give_legal_plans_or_reasons(size, seed_a, seed_b):
+    a = random_blob(size, seed_a, compact=random.Random(seed_a).random())
+    b = random_blob(size, seed_b, compact=0.6)
+    plan = plan_robust(Configuration.from_cells(a), b)
+    assert_legal(plan)  # even a failed plan stops without an illegal step
+    if plan.reached:
+        assert plan.final.cells == b
+        assert plan.move_count >= plan.lower_bound
+    else:
+        assert plan.reason and not plan.steps
+
+
+def test_same_input_gives_the_same_plan():
+    a, b = random_blob(30, 1), random_blob(30, 2)
+    one = plan_robust(Configuration.from_cells(a), b)
+    two = plan_robust(Configuration.from_cells(a), b)
+    assert [s.moves for s in one.steps] == [s.moves for s in two.steps]
