@@ -1,0 +1,77 @@
+"""``hexbot plan``: JSON format, exit status, reasons on stderr, plots, input errors."""
+
+import json
+
+import pytest
+
+from hexbot.cli import main
+from hexbot.errors import ScenarioError
+from hexbot.planning.config_io import parse_grid, parse_toml
+
+P01 = ("test_all_p01_initial.txt", "test_all_p01_goal.txt")
+
+
+def run_plan(capsys, *argv):
+    code = main(["plan", *map(str, argv)])
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_json_object_has_the_documented_shape(capsys, examples_dir):
+    code, out, err = run_plan(capsys, examples_dir / P01[0], examples_dir / P01[1],
+                              "--mode", "faithful-parallel", "--json")
+    assert code == 0 and err == ""
+    data = json.loads(out)
+    assert set(data) == {"mode", "reached", "steps"}
+    assert data["mode"] == "faithful-parallel" and data["reached"] is True
+    assert len(data["steps"]) == 5
+    move = data["steps"][0]["moves"][0]
+    assert set(move) == {"module", "from", "to", "joint", "direction", "substrate", "commands"}
+    assert 1 <= move["joint"] <= 6 and move["direction"] in ("CW", "CCW")
+    assert move["commands"][-1]["code"] in (67, 68)
+    assert all(set(c) == {"code", "args"} for c in move["commands"])
+
+
+def test_unreached_goal_exits_non_zero_with_reason(capsys, examples_dir):
+    code, out, err = run_plan(capsys, examples_dir / P01[1], examples_dir / P01[0],
+                              "--mode", "faithful-parallel", "--json")
+    assert code == 1
+    assert json.loads(out)["reached"] is False
+    assert "goal not reached" in err and "stalled" in err
+
+
+def test_robust_mode_text_output_and_plot(capsys, examples_dir, tmp_path):
+    png = tmp_path / "plan.png"
+    code, out, _ = run_plan(capsys, examples_dir / P01[1], examples_dir / P01[0], "--plot", png)
+    assert code == 0
+    assert "mode robust: goal reached" in out and "Select(" in out
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_bad_grid_file_names_file_and_line(capsys, tmp_path, examples_dir):
+    bad = tmp_path / "bad.txt"
+    bad.write_text("0 0 1\n0 2 1\n")
+    code, _, err = run_plan(capsys, bad, examples_dir / P01[1])
+    assert code == 1 and f"{bad}:2" in err and "'2'" in err
+
+
+def test_grid_accepts_matlab_decorations_and_rejects_ragged_rows():
+    config = parse_grid("I = [0 0 0 0 0\n     1 0 0 0 0\n     1 1 1 1 1];  % comment\n")
+    assert config.cells == {(0, 1), (0, 0), (1, 0), (2, 0), (3, 0), (4, 0)}
+    assert config[(0, 1)].id == 1  # reading order: top row first
+    with pytest.raises(ScenarioError, match=r"f:3: row has 2 columns"):
+        parse_grid("1 1 1\n\n1 0", "f")
+    with pytest.raises(ScenarioError, match="all zeros"):
+        parse_grid("0 0\n0 0", "f")
+
+
+def test_toml_cells_and_modules():
+    assert parse_toml("cells = [[0, 0], [1, 0]]").cells == {(0, 0), (1, 0)}
+    config = parse_toml("[[module]]\nid = 5\ncell = [2, -1]\norientation = 3\n")
+    assert config[(2, -1)].id == 5 and config[(2, -1)].orientation == 3
+    with pytest.raises(ScenarioError, match="orientation must be 0..5"):
+        parse_toml("[[module]]\nid = 5\ncell = [0, 0]\norientation = 7\n", "m.toml")
+    with pytest.raises(ScenarioError, match="listed twice"):
+        parse_toml("cells = [[0, 0], [0, 0]]", "c.toml")
+    with pytest.raises(ScenarioError, match="c.toml"):
+        parse_toml("cells = [[0, 0]", "c.toml")
