@@ -39,6 +39,6 @@ def session(args: argparse.Namespace, *, wait_s: float = 5.0,
 def _print_state(kind: str, port: str, payload: object) -> None:
     if kind != "state":
         return
-    state, detail = payload  # type: ignore[misc]
+    state, detail, _t = payload  # type: ignore[misc]
     if state in (LinkState.LOST, LinkState.CONNECTED):
         print(f"{port}: {state.value} {detail}".rstrip(), file=sys.stderr, flush=True)

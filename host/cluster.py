@@ -25,6 +25,7 @@ from hexbot.protocol.parser import (
     Text,
     YrefReport,
 )
+from hexbot.protocol.wire import MAX_MODULE_ID
 
 LOCALIZE_CODE = lookup("Localize").code
 
@@ -180,6 +181,6 @@ def _id_from_tail(tail: str) -> int | None:
     for word in tail.split():
         if word.upper().startswith("ID="):
             digits = word[3:]
-            if digits.isdigit():
-                return int(digits)
+            if digits.isdigit() and 1 <= int(digits) <= MAX_MODULE_ID:
+                return int(digits)  # 0: the comm board has no id before the handshake
     return None

@@ -122,7 +122,9 @@ class Outcome:
         return [describe_event(r.event) for r in self.replies]
 
 
-def _reply_to(obs: Observed, code: int, modules: set[int] | None) -> bool:
+def _reply_to(obs: Observed, code: int, modules: set[int] | None, port: str = IR) -> bool:
+    if obs.port != port:  # a control board's debug port echoes ACKs too
+        return False
     ev = obs.event
     if not isinstance(ev, (Ack, ErrorReply, StatusReport)):
         return False
@@ -153,7 +155,8 @@ def exchange(host: Host, command: Command, *, modules: list[int] | None = None,
         left = deadline - time.monotonic()
         if left <= 0:
             break
-        obs = host.wait_for(lambda o: _reply_to(o, command.code, wanted), seen, min(left, 0.1))
+        obs = host.wait_for(lambda o: _reply_to(o, command.code, wanted, port), seen,
+                             min(left, 0.1))
         if obs is None:
             seen = max(seen, host.mark())
             continue

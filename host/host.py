@@ -13,11 +13,12 @@ from __future__ import annotations
 
 import threading
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from typing import Any
 
 from hexbot.errors import LinkUnavailableError
+from hexbot.host.capture import Record
 from hexbot.host.cluster import ClusterModel
 from hexbot.host.link import Link, LinkState, PortSettings
 from hexbot.host.session_log import SessionLog
@@ -38,7 +39,9 @@ class Observed:
     event: Event
 
 
-Listener = Callable[[str, str, Any], None]  # (kind, port, payload)
+#: (kind, port, payload): "tx"/"rx" -> (t, bytes); "event" -> Observed;
+#: "state" -> (LinkState, detail, t)
+Listener = Callable[[str, str, Any], None]
 
 
 class Channel:
@@ -180,13 +183,48 @@ class Host:
         self._notify("event", port, obs)
 
     def link_state(self, port: str, state: LinkState, detail: str) -> None:
-        if self.log:
-            self.log.state(port, f"{state.value} {detail}".strip())
-        self._notify("state", port, (state, detail))
+        text = f"{state.value} {detail}".strip()
+        t = self.log.state(port, text) if self.log else self.elapsed()
+        self._notify("state", port, (state, detail, t))
 
     def _notify(self, kind: str, port: str, payload: Any) -> None:
         for listener in list(self._listeners):
             listener(kind, port, payload)
+
+    # --- replay ----------------------------------------------------------------
+
+    def replay(self, records: Iterable[Record], *, realtime: bool = False,
+               cancel: threading.Event | None = None) -> int:
+        """Play capture records into the host as if they happened now, with
+        their recorded time stamps (the console's ``--replay``): received
+        bytes go through a parser, sent bytes and state changes to the
+        listeners. Nothing is written to a port. Returns records played."""
+        parsers: dict[str, ReplyParser] = {}
+        start, n, last = time.monotonic(), 0, 0.0
+        for rec in records:
+            if cancel is not None and cancel.is_set():
+                break
+            if realtime:
+                time.sleep(max(0.0, rec.t - (time.monotonic() - start)))
+            last = rec.t
+            n += 1
+            if rec.kind == "rx":
+                self._notify("rx", rec.port, (rec.t, rec.data))
+                for ev in parsers.setdefault(rec.port, ReplyParser()).feed(rec.data):
+                    self.observe(rec.t, rec.port, ev)
+            elif rec.kind == "tx":
+                self._notify("tx", rec.port, (rec.t, rec.data))
+            elif rec.kind == "state":
+                word, _, detail = rec.text.partition(" ")
+                try:
+                    state = LinkState(word)
+                except ValueError:
+                    continue
+                self._notify("state", rec.port, (state, detail, rec.t))
+        for port, parser in parsers.items():
+            for ev in parser.flush():
+                self.observe(last, port, ev)
+        return n
 
     # --- sending ------------------------------------------------------------
 

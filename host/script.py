@@ -40,7 +40,7 @@ from pathlib import Path
 from hexbot.errors import FrameError, HexBotError, ScenarioError
 from hexbot.host import commands
 from hexbot.host.describe import describe_event
-from hexbot.host.host import Host, Observed
+from hexbot.host.host import IR, Host, Observed
 from hexbot.protocol.codes import ErrorCode, lookup
 from hexbot.protocol.frames import Command
 from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
@@ -360,8 +360,8 @@ class ScriptRunner:
             # A broadcast: more modules may still answer; let them finish.
             commands.collect_until_quiet(self.host, before, ALL_QUIET_S, self.timeout,
                                          self.cancel)
-            extra = [o for o in self.host.since(before)
-                     if isinstance(o.event, ErrorReply) and o.event.code == cmd.code]
+            extra = [o for o in self.host.since(before) if o.port == IR
+                     and isinstance(o.event, ErrorReply) and o.event.code == cmd.code]
             if extra:
                 raise self._fail(step, "; ".join(describe_event(o.event) for o in extra))
         if not outcome.ok:
@@ -394,7 +394,7 @@ class ScriptRunner:
 
             def match(o: Observed) -> bool:
                 ev = o.event
-                if not isinstance(ev, cls) or ev.code != code:
+                if o.port != IR or not isinstance(ev, cls) or ev.code != code:
                     return False
                 if reason is not None and ev.reason != reason:
                     return False
@@ -428,7 +428,7 @@ class ScriptRunner:
             return f"{len(seen)} x {phrase}"
         if kind == "status":
             want = _parse_status_expect(args, where)
-            obs = self._wait(lambda o: isinstance(o.event, StatusReport)
+            obs = self._wait(lambda o: o.port == IR and isinstance(o.event, StatusReport)
                              and o.event.module_id == want["id"], None)
             if obs is None:
                 raise self._fail(step, f"no status from module {want['id']}" + self._recent())

@@ -76,9 +76,10 @@ class SessionLog:
     def event(self, t: float, port: str, ev: Event) -> None:
         self._line(t, port, "<", describe_event(ev))
 
-    def state(self, port: str, text: str) -> None:
+    def state(self, port: str, text: str) -> float:
         t = self.capture.record(port, "state", text=text)
         self._line(t, port, "!", text)
+        return t
 
     def note(self, port: str, text: str) -> None:
         t = self.capture.record(port, "note", text=text)

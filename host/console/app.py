@@ -20,6 +20,7 @@ from textual.widgets import Footer, Header, ProgressBar, Static, TabbedContent, 
 
 from hexbot.errors import HexBotError
 from hexbot.host import commands
+from hexbot.host.capture import Record
 from hexbot.host.console.composer import Composer
 from hexbot.host.console.connection import PortPanel
 from hexbot.host.console.dialogs import HelpScreen, PromptScreen, RotateScreen
@@ -82,7 +83,8 @@ class HexBotConsole(App[None]):
 
     def __init__(self, host: Host | None = None, *, opener: Opener | None = None,
                  reply_timeout: float = 5.0, quiet_s: float = 1.5,
-                 localize_timeout: float = 60.0, start_ports: bool = True) -> None:
+                 localize_timeout: float = 120.0, boot_quiet: float = 2.0,
+                 start_ports: bool = True, replay: list[Record] | None = None) -> None:
         super().__init__()
         self.host = host
         self._opener = opener
@@ -91,6 +93,8 @@ class HexBotConsole(App[None]):
         self.quiet_s = quiet_s
         self.localize_timeout = localize_timeout
         self.start_ports = start_ports
+        self.boot_quiet = boot_quiet
+        self.replay_records = replay
         self.selection: list[int] | None = None
         self.cancel_event = threading.Event()
         self.busy = ""
@@ -174,6 +178,20 @@ class HexBotConsole(App[None]):
             host.start()
         self._update_status()
         self.refresh_cluster()
+        if endpoints is not None and endpoints.sim is not None:
+            # Frames sent while the simulated modules boot are lost.
+            def boot(cancel: threading.Event) -> str:
+                n = commands.wait_until_booted(host, self.boot_quiet, 60.0, cancel)
+                return f"{n} boot events"
+            boot.__name__ = "modules booting"
+            self.start_operation("Simulator", [boot])
+        if self.replay_records is not None:
+            records = self.replay_records
+
+            def replay(cancel: threading.Event) -> str:
+                return f"{host.replay(records, realtime=True, cancel=cancel)} records"
+            replay.__name__ = f"{len(records)} records"
+            self.start_operation("Replay", [replay])
 
     def _fill_panel(self, panel: PortPanel, s: PortSettings) -> None:
         from textual.widgets import Input, Select
@@ -193,8 +211,8 @@ class HexBotConsole(App[None]):
             t, data = payload  # type: ignore[misc]
             self.post_message(Traffic(port, kind, t, data))
         elif kind == "state":
-            state, detail = payload  # type: ignore[misc]
-            self.post_message(PortState(port, state, detail))
+            state, detail, t = payload  # type: ignore[misc]
+            self.post_message(PortState(port, state, detail, t))
 
     def terminal(self, port: str) -> Terminal:
         return self.query_one("#ir-term" if port == IR else "#debug-term", Terminal)
@@ -209,8 +227,8 @@ class HexBotConsole(App[None]):
 
     def on_port_state(self, msg: PortState) -> None:
         self.port_states[msg.port] = (msg.state, msg.detail)
-        t = self.host.elapsed() if self.host else 0.0
-        self.terminal(msg.port).add(Entry(t, "state", text=f"{msg.state.value} {msg.detail}"))
+        self.terminal(msg.port).add(Entry(msg.t, "state",
+                                          text=f"{msg.state.value} {msg.detail}"))
         self.query_one(f"#port-{msg.port}", PortPanel).show_state(msg.state, msg.detail)
         if msg.state is LinkState.LOST:
             self.notify(f"{msg.port}: {msg.detail}; retrying", title="Port lost",
@@ -282,7 +300,7 @@ class HexBotConsole(App[None]):
 
     # --- workflows -------------------------------------------------------------
 
-    def run_action(self, action: str) -> None:
+    def do_workflow(self, action: str) -> None:
         """Run ``action_<name>`` (for the command palette)."""
         getattr(self, f"action_{action}")()
 

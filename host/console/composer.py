@@ -18,13 +18,20 @@ from hexbot.protocol.frames import Command
 
 def function_rows(query: str) -> list[FunctionCode]:
     """Executable functions whose code, name, board or comment contain
-    every word of the query."""
+    every word of the query, best name matches first."""
     words = query.lower().split()
     out = []
     for fn in executable_codes():
         hay = f"{fn.code} {fn.name} {fn.board.value} {fn.comment} {fn.signature()}".lower()
         if all(w in hay for w in words):
             out.append(fn)
+    if words:
+        # Exact code or name first, then names starting with / containing the query.
+        first = words[0]
+        name_rank = [(lambda n: 0 if n == first or str(fn.code) == first else
+                      1 if n.startswith(first) else 2 if first in n else 3)(fn.name.lower())
+                     for fn in out]
+        out = [fn for _, fn in sorted(zip(name_rank, out, strict=True), key=lambda p: p[0])]
     return out
 
 
@@ -49,10 +56,10 @@ class Composer(Vertical):
             yield DataTable(id="fn-table", cursor_type="row", zebra_stripes=True)
         with VerticalScroll(id="fn-form"):
             yield Label("pick a function", id="fn-title")
-            yield Vertical(id="fn-args")
-            yield Static("", id="fn-preview")
             with Horizontal(id="fn-buttons"):
                 yield Button("Send", id="fn-send", variant="primary", disabled=True)
+                yield Static("", id="fn-preview")
+            yield Vertical(id="fn-args")
             yield Label("history (enter re-sends)", classes="section")
             yield DataTable(id="fn-history", cursor_type="row")
 
@@ -80,7 +87,8 @@ class Composer(Vertical):
         event.stop()
         table = self.query_one("#fn-table", DataTable)
         if table.row_count:
-            self.choose(int(table.coordinate_to_cell_key((table.cursor_row, 0)).row_key.value))
+            key = table.coordinate_to_cell_key((table.cursor_row, 0)).row_key.value
+            self.choose(int(key), focus=True)
 
     @on(DataTable.RowHighlighted, "#fn-table")
     @on(DataTable.RowSelected, "#fn-table")
@@ -135,12 +143,16 @@ class Composer(Vertical):
     @on(Input.Submitted, ".arg-input")
     def _arg_submitted(self, event: Input.Submitted) -> None:
         event.stop()
+        # Enter sends as soon as the command is complete, else moves on.
+        if self.command is not None:
+            self.send()
+            return
         inputs = list(self.query(".arg-input").results(Input))
         idx = inputs.index(event.input)
         if idx + 1 < len(inputs):
             inputs[idx + 1].focus()
         else:
-            self.send()
+            self.app.bell()
 
     def _validate(self) -> None:
         preview = self.query_one("#fn-preview", Static)

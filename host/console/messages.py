@@ -25,6 +25,6 @@ class Parsed(Message):
 
 
 class PortState(Message):
-    def __init__(self, port: str, state: LinkState, detail: str) -> None:
+    def __init__(self, port: str, state: LinkState, detail: str, t: float) -> None:
         super().__init__()
-        self.port, self.state, self.detail = port, state, detail
+        self.port, self.state, self.detail, self.t = port, state, detail, t

@@ -19,7 +19,7 @@ class ConsoleCommands(Provider):
         app: HexBotConsole = self.app  # type: ignore[assignment]
         out: list[tuple[str, str, Callable[[], object]]] = []
         for action, title, help_text in app.WORKFLOWS:
-            out.append((title, help_text, partial(app.run_action, action)))
+            out.append((title, help_text, partial(app.do_workflow, action)))
         for tab, title in app.TABS:
             out.append((f"Show {title}", f"switch to the {title} tab",
                         partial(app.show_tab, tab)))

@@ -1,0 +1,174 @@
+"""Pilot tests of the console: against the pty test double (fast) and
+against the embedded simulator (the product path)."""
+
+from __future__ import annotations
+
+import pytest
+from conftest import sync
+
+from hexbot.host import cli_console
+from hexbot.host.console.app import HexBotConsole
+from hexbot.host.console.composer import Composer
+from hexbot.host.console.lattice import lattice_cells
+from hexbot.host.console.modules_view import ModulesView
+from hexbot.host.console.terminal import Terminal
+from hexbot.host.host import IR, Host
+from hexbot.host.link import LinkState, PortSettings
+
+
+async def until(pilot, pred, timeout=20.0, step=0.05):
+    loops = int(timeout / step)
+    for _ in range(loops):
+        if pred():
+            return True
+        await pilot.pause(step)
+    return pred()
+
+
+def ir_text(app: HexBotConsole) -> str:
+    return "\n".join(line.plain for line in app.query_one("#ir-term", Terminal).lines())
+
+
+def modules_rows(app: HexBotConsole) -> list[list[str]]:
+    table = app.query_one(ModulesView)
+    return [[str(c) for c in table.get_row_at(i)] for i in range(table.row_count)]
+
+
+def _app(responder, **kw) -> HexBotConsole:
+    host = Host()
+    host.add_port(IR, PortSettings(responder.path), retry_s=0.1)
+    return HexBotConsole(host, reply_timeout=2.0, quiet_s=0.3, **kw)
+
+
+@sync
+async def test_composer_sends_from_the_table_and_shows_the_ack(responder):
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        assert await until(pilot, lambda: app.port_states.get(IR, (None,))[0]
+                           is LinkState.CONNECTED)
+        await pilot.press("2")  # composer tab
+        await pilot.click("#fn-filter")
+        await pilot.press(*"select", "enter")  # first match, focus its first argument
+        await pilot.pause()
+        composer = app.query_one(Composer)
+        assert composer.function.name == "Select"
+        await pilot.press("4")
+        assert "2a 45 04 4e 4e 4e 4e 4e 4e 4e 23" in str(
+            app.query_one("#fn-preview").render())
+        await pilot.click("#fn-send")
+        assert await until(pilot, lambda: "M04 ACK 69 Select" in ir_text(app))
+        assert responder.received == [b"*E\x04NNNNNNN#"]
+        assert await until(pilot, lambda: ["04", "M", "no", "-", "-", "69 Select", "-", "-"]
+                           in modules_rows(app))
+        assert composer.history and str(composer.history[0]) == "Select(4)"
+
+
+@sync
+async def test_composer_refuses_out_of_range_argument(responder):
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        app.compose_function(1)  # JxOpen(i), i in 1..6
+        await pilot.pause()
+        await pilot.press("9")
+        assert "must be 1..6, got 9" in str(app.query_one("#fn-preview").render())
+        assert app.query_one("#fn-send").disabled
+        await pilot.press("enter")
+        await pilot.pause(0.2)
+        assert responder.received == []
+
+
+@sync
+async def test_localize_workflow_fills_modules_and_lattice(responder):
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        await until(pilot, lambda: app.port_states.get(IR, (None,))[0] is LinkState.CONNECTED)
+        await pilot.press("l")  # asks for the reference id, default 1
+        await pilot.press("enter")
+        assert await until(pilot, lambda: not app.busy and app.last_result)
+        assert "Localize: done" in app.last_result
+        cells = lattice_cells(app.host.model)
+        assert len(cells) == 7 and cells[(0, 0)][0] == "01"
+        lattice = str(app.query_one("#lattice-view").render())
+        assert all(f"/{i:02d}\\" in lattice for i in range(1, 8))
+        assert [r[0] for r in modules_rows(app)] == [f"{i:02d}" for i in range(1, 8)]
+
+
+@sync
+async def test_cancel_stops_a_long_operation(silent_responder):
+    app = _app(silent_responder)
+    app.reply_timeout = 30.0
+    async with app.run_test(size=(100, 30)) as pilot:
+        await until(pilot, lambda: app.port_states.get(IR, (None,))[0] is LinkState.CONNECTED)
+        await pilot.press("t")
+        assert await until(pilot, lambda: bool(app.busy))
+        await pilot.press("escape")
+        assert await until(pilot, lambda: not app.busy, timeout=5)
+        assert "cancelled" in app.last_result
+
+
+@sync
+async def test_help_palette_and_views(responder, tmp_path):
+    app = _app(responder)
+    async with app.run_test(size=(80, 24)) as pilot:
+        await pilot.press("f1")
+        assert app.screen.__class__.__name__ == "HelpScreen"
+        await pilot.press("escape")
+        await pilot.press("ctrl+p")
+        await pilot.press(*"compose 21")
+        await pilot.pause(0.5)
+        await pilot.press("enter")
+        await pilot.pause(0.3)
+        assert app.query_one(Composer).function.name == "MCW"
+        term = app.query_one("#ir-term", Terminal)
+        assert term.cycle_mode() == "text" and term.cycle_mode() == "hex"
+
+
+@sync
+async def test_port_loss_is_shown_and_state_kept(responder):
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        await until(pilot, lambda: app.port_states.get(IR, (None,))[0] is LinkState.CONNECTED)
+        app.select_modules([3])
+        assert await until(pilot, lambda: not app.busy and app.last_result)
+        responder.close()
+        assert await until(pilot, lambda: app.port_states[IR][0] is LinkState.LOST)
+        assert "lost" in ir_text(app)
+        assert ["03", "M", "no", "-", "-", "69 Select", "-", "-"] in modules_rows(app)
+
+
+# --- the embedded simulator -------------------------------------------------
+
+
+@pytest.fixture
+def sim_args(log_dir):
+    return cli_console.parse(["--scenario", "flower7", "--sim-speed", "20", "--timeout", "3"])
+
+
+@sync
+async def test_console_on_simulator_flower7(sim_args):
+    """Connect, send Select(0) from the composer table, see the ACKs in the
+    IR terminal and modules view, localize and see seven positions."""
+    app = HexBotConsole(opener=cli_console.make_opener(sim_args), reply_timeout=3.0,
+                        quiet_s=1.0, boot_quiet=1.5)
+    async with app.run_test(size=(120, 36)) as pilot:
+        assert await until(pilot, lambda: app.host is not None, timeout=60)
+        assert await until(pilot, lambda: app.port_states.get(IR, (None,))[0]
+                           is LinkState.CONNECTED, timeout=30)
+        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        await pilot.press("2")
+        await pilot.click("#fn-filter")
+        await pilot.press(*"69", "enter")
+        await pilot.pause()
+        await pilot.press("0")
+        await pilot.click("#fn-send")
+        assert await until(pilot, lambda: ir_text(app).count("ACK 69 Select") == 7, timeout=30)
+        assert await until(pilot, lambda: len(modules_rows(app)) == 7)
+        assert all(row[5] == "69 Select" for row in modules_rows(app))
+        app.localize(1)
+        assert await until(pilot, lambda: not app.busy and app.last_result, timeout=120)
+        assert "Localize: done" in app.last_result, app.last_result
+        cells = lattice_cells(app.host.model)
+        assert sorted(cells) == sorted([(0, 0), (-1, 1), (0, 1), (1, 0), (1, -1), (0, -1),
+                                        (-1, 0)])
+        assert {label for label, _, _ in cells.values()} == {f"{i:02d}" for i in range(1, 8)}
+        assert cells[(0, 0)][1] == "S"
