@@ -221,6 +221,12 @@ def serial_moves(
         pending = voids | (aside & state.occupied)
         path = _best_journey(state, movers, voids, pending, fixed)
         if path is None:
+            # filling out of order may have walled a void in: let the walls step aside
+            walls = (must_move(goal, pending, fixed) or set()) - promoted
+            if walls:
+                aside |= walls
+                promoted |= walls
+                continue
             # let one more goal module step aside: the one with the shortest journey
             extra = [c for c in sorted(goal & state.occupied) if c not in promoted and c != fixed]
             for c in extra:
@@ -235,9 +241,10 @@ def serial_moves(
                     break
             if path is None:
                 raise PlanningFailure(
-                    f"stuck after {len(moves)} moves with {len(voids)} voids left: no module "
-                    "can reach a void without disconnecting the configuration or colliding "
-                    "(the goal is unreachable from here by Table 4-3 rotations)"
+                    f"no plan found: stuck after {len(moves)} moves with {len(voids)} voids "
+                    "left, no module can reach a void without disconnecting the configuration "
+                    "or colliding (the goal may be unreachable by Table 4-3 rotations, or "
+                    "need an order this planner does not try)"
                 )
             promoted.add(path[0][0])
             aside.add(path[0][0])

@@ -1,0 +1,121 @@
+"""Benchmark of the hex reconfiguration planners: planning time and moves vs module count.
+
+    .venv/bin/python bench/planning_bench.py            # table (markdown)
+    .venv/bin/python bench/planning_bench.py --json     # one JSON object per line
+
+Families (deterministic, no randomness outside the given seeds):
+
+* ``parallelogram``: a w x h parallelogram into a wider, flatter one with the
+  same module count, sharing the corner cell (0, 0);
+* ``blob``: two seeded random compact blobs of the same size (success rate);
+* ``thesis``: Test_All_S02 with both faithful planners and the robust one.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import time
+from pathlib import Path
+
+from hexbot.planning.config_io import load_configuration
+from hexbot.planning.configuration import Configuration
+from hexbot.planning.generate import parallelogram, random_blob
+from hexbot.planning.robust import plan_robust, step_lower_bound
+from hexbot.planning.thesis.planner import plan_faithful
+
+EXAMPLES = Path(__file__).resolve().parents[1] / "planning" / "examples"
+
+#: module count -> (initial w, h, goal w, h)
+PARALLELOGRAMS = {
+    10: (5, 2, 10, 1),
+    30: (6, 5, 10, 3),
+    100: (10, 10, 20, 5),
+    300: (20, 15, 30, 10),
+    1000: (40, 25, 50, 20),
+}
+
+
+def timed(fn):
+    start = time.perf_counter()
+    result = fn()
+    return result, time.perf_counter() - start
+
+
+def row(family: str, n: int, plan, seconds: float, initial, goal) -> dict:
+    return {
+        "family": family,
+        "modules": n,
+        "mode": plan.mode,
+        "reached": plan.reached,
+        "seconds": round(seconds, 3),
+        "moves": plan.move_count,
+        "time_steps": plan.time_steps,
+        "move_lower_bound": plan.lower_bound,
+        "step_lower_bound": step_lower_bound(initial, goal),
+        "reason": plan.reason,
+    }
+
+
+def bench_parallelograms(sizes: list[int]) -> list[dict]:
+    out = []
+    for n in sizes:
+        w, h, w2, h2 = PARALLELOGRAMS[n]
+        a, b = parallelogram(w, h), parallelogram(w2, h2)
+        plan, dt = timed(lambda a=a, b=b: plan_robust(Configuration.from_cells(a), b))
+        out.append(row("parallelogram", n, plan, dt, a, b))
+    return out
+
+
+def bench_blobs(sizes: list[int], seeds: int) -> list[dict]:
+    out = []
+    for n in sizes:
+        for seed in range(seeds):
+            a, b = random_blob(n, 2 * seed, 0.8), random_blob(n, 2 * seed + 1, 0.8)
+            plan, dt = timed(lambda a=a, b=b: plan_robust(Configuration.from_cells(a), b))
+            out.append(row(f"blob seed {seed}", n, plan, dt, a, b))
+    return out
+
+
+def bench_thesis() -> list[dict]:
+    initial = load_configuration(EXAMPLES / "test_all_s02_initial.txt")
+    goal = load_configuration(EXAMPLES / "test_all_s02_goal.txt").cells
+    out = []
+    for label, fn in (
+        ("faithful-serial", lambda: plan_faithful(initial, goal, parallel=False)),
+        ("faithful-parallel", lambda: plan_faithful(initial, goal, parallel=True)),
+        ("robust", lambda: plan_robust(initial, goal)),
+    ):
+        plan, dt = timed(fn)
+        out.append(row(f"Test_All_S02 {label}", len(initial), plan, dt, initial.cells, goal))
+    return out
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--sizes", default="10,30,100,300,1000",
+                        help="parallelogram sizes among " + ",".join(map(str, PARALLELOGRAMS)))
+    parser.add_argument("--blob-sizes", default="10,30,100", help="random blob sizes")
+    parser.add_argument("--seeds", type=int, default=5, help="random blob pairs per size")
+    parser.add_argument("--json", action="store_true", help="JSON lines instead of a table")
+    args = parser.parse_args()
+    sizes = [int(s) for s in args.sizes.split(",") if s]
+    blob_sizes = [int(s) for s in args.blob_sizes.split(",") if s]
+    rows = bench_thesis() + bench_parallelograms(sizes) + bench_blobs(blob_sizes, args.seeds)
+    if args.json:
+        for r in rows:
+            print(json.dumps(r))
+        return
+    print("| case | modules | reached | time (s) | moves | move bound | steps | step bound |")
+    print("|---|---:|---|---:|---:|---:|---:|---:|")
+    for r in rows:
+        print(f"| {r['family']} | {r['modules']} | {'yes' if r['reached'] else 'no'} | "
+              f"{r['seconds']:.3f} | {r['moves']} | {r['move_lower_bound']} | "
+              f"{r['time_steps']} | {r['step_lower_bound']} |")
+    failed = [r for r in rows if not r["reached"] and "faithful" not in r["family"]]
+    for r in failed:
+        print(f"\n{r['family']} ({r['modules']}): {r['reason']}")
+
+
+if __name__ == "__main__":
+    main()
