@@ -150,3 +150,11 @@ def test_faithful_serial_moves_follow_table_4_3_and_keep_connectivity(p01, s02):
         plan = plan_faithful(initial, goal, parallel=False)
         for config, step in zip(plan.configurations(), plan.steps, strict=False):
             assert check_step(config, step) == []
+
+
+def test_listing_action_limit_gives_the_same_plans_on_the_thesis_examples(p01, s02):
+    for initial, goal in (p01, s02):
+        for parallel in (True, False):
+            full = plan_faithful(initial, goal, parallel)
+            listed = plan_faithful(initial, goal, parallel, FaithfulOptions(action_limit=3))
+            assert [s.moves for s in full.steps] == [s.moves for s in listed.steps]
