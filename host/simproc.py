@@ -9,9 +9,11 @@ simulator exactly like hardware, through pyserial.
 
 from __future__ import annotations
 
+import ctypes
 import json
 import os
 import selectors
+import signal
 import subprocess
 import sys
 import tempfile
@@ -22,6 +24,19 @@ from dataclasses import dataclass
 from hexbot.errors import LinkUnavailableError
 
 DEFAULT_SCENARIO = "flower7"
+
+
+# Looked up before any fork: the child must not load libraries (another
+# thread of the console may hold the import or malloc lock at fork time).
+_PRCTL = ctypes.CDLL(None).prctl if sys.platform.startswith("linux") else None
+_PR_SET_PDEATHSIG = 1
+
+
+def _die_with_parent() -> None:
+    """In the child: ask Linux to SIGTERM it when the host process dies, so
+    a killed console never leaves a simulator running."""
+    if _PRCTL is not None:
+        _PRCTL(_PR_SET_PDEATHSIG, int(signal.SIGTERM))
 
 
 @dataclass(frozen=True)
@@ -44,7 +59,7 @@ class SimProcess:
         # must never block on a full pipe.
         self._stderr = tempfile.TemporaryFile()
         self._proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                                      stderr=self._stderr)
+                                      stderr=self._stderr, preexec_fn=_die_with_parent)
         try:
             self.ports = self._read_ports(start_timeout)
         except BaseException:

@@ -44,3 +44,28 @@ def test_failing_expectation_on_the_simulator(log_dir, tmp_path):
     proc = hexbot("run", str(script), "--scenario", "pair", *SIM)
     assert proc.returncode == 1
     assert "bad.hbs:3: expect status 1 localized: module is not localized" in proc.stderr
+
+
+def test_simulator_dies_with_its_host(tmp_path):
+    """A killed console (SIGKILL: no clean-up runs) leaves no simulator."""
+    code = ("from hexbot.host.simproc import SimProcess\n"
+            "import os, time\n"
+            "s = SimProcess('single')\n"
+            "print(s._proc.pid, flush=True)\n"
+            "time.sleep(60)\n")
+    proc = subprocess.Popen([sys.executable, "-c", code], stdout=subprocess.PIPE, text=True)
+    child = int(proc.stdout.readline())
+    proc.kill()
+    proc.wait()
+    import os
+    import time
+
+    for _ in range(100):
+        try:
+            os.kill(child, 0)
+        except ProcessLookupError:
+            break
+        time.sleep(0.05)
+    else:
+        os.kill(child, 9)
+        raise AssertionError("simulator outlived its host")
