@@ -58,14 +58,38 @@ class SimProcess:
         # stderr to a file and stdout drained by a thread: a chatty child
         # must never block on a full pipe.
         self._stderr = tempfile.TemporaryFile()
-        self._proc = subprocess.Popen(cmd, stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                                      stderr=self._stderr, preexec_fn=_die_with_parent)
+        self._proc = self._spawn(cmd)
         try:
             self.ports = self._read_ports(start_timeout)
         except BaseException:
             self.close()
             raise
         threading.Thread(target=self._drain, daemon=True, name="sim stdout").start()
+
+    def _spawn(self, cmd: list[str]) -> subprocess.Popen:
+        """Start the child from a thread that lives until close(): Linux
+        sends the parent-death signal when the *thread* that forked exits,
+        and callers (the console's workers) are short-lived threads."""
+        started = threading.Event()
+        self._release = threading.Event()
+        box: list[subprocess.Popen | BaseException] = []
+
+        def owner() -> None:
+            try:
+                box.append(subprocess.Popen(cmd, stdin=subprocess.DEVNULL,
+                                            stdout=subprocess.PIPE, stderr=self._stderr,
+                                            preexec_fn=_die_with_parent))
+            except BaseException as exc:  # handed to the caller below
+                box.append(exc)
+            finally:
+                started.set()
+            self._release.wait()
+
+        threading.Thread(target=owner, name="sim owner", daemon=True).start()
+        started.wait()
+        if isinstance(box[0], BaseException):
+            raise LinkUnavailableError(f"cannot start the simulator: {box[0]}") from box[0]
+        return box[0]
 
     def _drain(self) -> None:
         stream = self._proc.stdout
@@ -128,6 +152,7 @@ class SimProcess:
         if self._proc.stdout is not None:
             self._proc.stdout.close()
         self._stderr.close()
+        self._release.set()
 
     def __enter__(self) -> SimProcess:
         return self

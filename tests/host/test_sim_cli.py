@@ -69,3 +69,22 @@ def test_simulator_dies_with_its_host(tmp_path):
     else:
         os.kill(child, 9)
         raise AssertionError("simulator outlived its host")
+
+
+def test_simulator_outlives_the_thread_that_started_it():
+    """The console opens its session in a worker thread that then ends."""
+    import threading
+    import time
+
+    from hexbot.host.simproc import SimProcess
+
+    box: list[SimProcess] = []
+    t = threading.Thread(target=lambda: box.append(SimProcess("single")))
+    t.start()
+    t.join()
+    try:
+        time.sleep(0.5)
+        assert box[0].running
+    finally:
+        box[0].close()
+    assert not box[0].running
