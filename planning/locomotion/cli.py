@@ -39,6 +39,17 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="skip the connectivity invariant (faster on huge runs)",
     )
     sub.add_parser("list", help="list the shipped rule sets and scenarios")
+    bank = sub.add_parser("bank", help="run every scenario of the test bank for several n")
+    bank.add_argument("--rulesets", default="salvador-pyramids,salvador",
+                      help="comma-separated rule sets (default: salvador-pyramids,salvador)")
+    bank.add_argument("--n", default="5,10,20", help="comma-separated strip sizes (5,10,20)")
+    bank.add_argument("--rounds", type=int, default=3000, help="round limit per run (3000)")
+    bank.add_argument("--directions", action="store_true",
+                      help="also run the north, west and south versions of every map")
+    bank.add_argument("--json", action="store_true", help="JSON instead of a Markdown table")
+    tables = sub.add_parser("tables", help="our rounds next to Tables 1-5 of Salvador's thesis")
+    tables.add_argument("--only", default=None, help="comma-separated: table1,...,table5")
+    tables.add_argument("--json", action="store_true", help="JSON instead of Markdown")
 
 
 def run(args: argparse.Namespace) -> int:
@@ -46,6 +57,10 @@ def run(args: argparse.Namespace) -> int:
         print("rule sets:", " ".join(ruleset_names()))
         print("scenarios:", " ".join(scenario_names()))
         return 0
+    if args.action == "bank":
+        return _bank(args)
+    if args.action == "tables":
+        return _tables(args)
     if args.rounds < 0:
         raise ScenarioError("--rounds must not be negative")
     if args.until_advance is not None and args.until_advance < 1:
@@ -76,3 +91,42 @@ def run(args: argparse.Namespace) -> int:
         print("moves per module:", " ".join(map(str, result.moves_per_module)))
         print(render.ascii_map(result.positions, result.states, result.obstacles))
     return 0 if result.status in ("advanced", "reached", "rounds-exhausted") else 3
+
+
+def _int_list(text: str, what: str) -> list[int]:
+    try:
+        values = [int(v) for v in text.split(",") if v.strip()]
+    except ValueError:
+        raise ScenarioError(f"{what}: expected comma-separated integers, not {text!r}") from None
+    if not values or min(values) < 1:
+        raise ScenarioError(f"{what}: give at least one positive integer")
+    return values
+
+
+def _bank(args: argparse.Namespace) -> int:
+    from hexbot.planning.locomotion import bank
+
+    rulesets = [r for r in args.rulesets.split(",") if r]
+    for r in rulesets:
+        load_ruleset(r)  # fail early on a misspelt name
+    rows = bank.run_bank(rulesets, _int_list(args.n, "--n"), args.rounds, args.directions)
+    if args.json:
+        print(json.dumps([r.to_dict() for r in rows]))
+    else:
+        print(bank.bank_markdown(rows))
+    return 0
+
+
+def _tables(args: argparse.Namespace) -> int:
+    from hexbot.planning.locomotion import bank
+
+    keys = args.only.split(",") if args.only else list(bank.THESIS)
+    unknown = [k for k in keys if k not in bank.THESIS]
+    if unknown:
+        raise ScenarioError(f"--only: unknown table {unknown[0]!r} (table1 ... table5)")
+    tabs = [bank.thesis_table(k) for k in keys]
+    if args.json:
+        print(json.dumps(tabs))
+    else:
+        print("\n\n".join(bank.table_markdown(t) for t in tabs))
+    return 0
