@@ -1,0 +1,78 @@
+"""``hexbot locomotion``: the JSON contract, rendering, and user errors."""
+
+import json
+
+import pytest
+
+from hexbot.cli import main
+
+
+def run_cli(capsys, *argv):
+    code = main(["locomotion", *argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+def test_json_output_has_the_promised_fields(capsys):
+    code, out, _ = run_cli(
+        capsys, "run", "salvador-free", "flat", "--n", "20", "--until-advance", "5", "--json"
+    )
+    data = json.loads(out)
+    assert code == 0
+    assert data["status"] == "advanced"
+    assert data["rounds"] == 38  # Table 1: n = 20, k = 5
+    assert len(data["moves_per_module"]) == 20
+    assert data["moves_per_module"][:5] == [20] * 5
+    assert len(data["final"]["modules"]) == 20
+
+
+def test_rounds_exhausted_and_text_output(capsys):
+    code, out, _ = run_cli(capsys, "run", "salvador-free", "flat", "--n", "6", "--rounds", "9")
+    assert code == 0
+    assert "status: rounds-exhausted after 9 rounds" in out
+    assert "moves per module:" in out
+    assert "######" in out  # the final state, drawn
+
+
+def test_deadlock_exit_code_and_report(capsys):
+    code, out, _ = run_cli(capsys, "run", "salvador-free", "flat", "--n", "1", "--json")
+    data = json.loads(out)
+    assert code == 3
+    assert data["status"] == "deadlock"
+    assert data["deadlock"]["round"] == 1
+
+
+@pytest.mark.parametrize("suffix", ["png", "gif"])
+def test_render(tmp_path, capsys, suffix):
+    out = tmp_path / f"run.{suffix}"
+    code, _, _ = run_cli(capsys, "run", "salvador-pyramids", "pyramid", "--n", "5",
+                         "--rounds", "30", "--render", str(out))
+    assert code == 0
+    head = out.read_bytes()[:4]
+    assert head == (b"\x89PNG" if suffix == "png" else b"GIF8")
+
+
+def test_bad_rule_file_error_names_the_line(tmp_path, capsys):
+    bad = tmp_path / "bad.rules"
+    bad.write_text("ruleset x\nstates a b\nrule R\n  priority 1\n  state a\n  move NNE\n")
+    code, _, err = run_cli(capsys, "run", str(bad), "flat")
+    assert code == 1
+    assert f"{bad}:6:" in err and "NNE" in err
+
+
+def test_unknown_names_are_user_errors(capsys):
+    assert run_cli(capsys, "run", "nope", "flat")[0] == 1
+    code, _, err = run_cli(capsys, "run", "salvador", "nowhere")
+    assert code == 1 and "unknown scenario" in err
+    code, _, err = run_cli(capsys, "run", "salvador", "flat", "--render", "x.bmp")
+    assert code == 1 and ".png or .gif" in err
+
+
+def test_bank_json(capsys):
+    code, out, _ = run_cli(capsys, "bank", "--rulesets", "salvador-pyramids", "--n", "5",
+                           "--rounds", "400", "--json")
+    rows = json.loads(out)
+    assert code == 0
+    assert {r["scenario"] for r in rows} >= {"pyramid", "maze", "histogram-1"}
+    assert all(r["status"] in ("reached", "deadlock", "violation", "rounds-exhausted")
+               for r in rows)
