@@ -65,6 +65,8 @@ def run(args: argparse.Namespace) -> int:
         raise ScenarioError("--rounds must not be negative")
     if args.until_advance is not None and args.until_advance < 1:
         raise ScenarioError("--until-advance must be at least 1")
+    if args.render and not args.render.lower().endswith((".png", ".gif")):
+        raise ScenarioError(f"--render: {args.render!r} must end in .png or .gif")
     rs = load_ruleset(args.ruleset)
     sc = load_scenario(args.scenario, args.n)
     rec = render.Recorder() if args.render else None
