@@ -47,7 +47,7 @@ firmware: deps
 	@if [ -f firmware/Makefile ]; then $(MAKE) --no-print-directory -C firmware all; fi
 
 run: setup
-	$(BIN)/hexbot --help
+	$(BIN)/hexbot console
 
 lint: venv
 	$(BIN)/ruff check .
