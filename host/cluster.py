@@ -72,6 +72,9 @@ class ClusterModel:
     placements: dict[tuple[int, int], Placement] = field(default_factory=dict)
     acks: int = 0
     errors: int = 0
+    #: the embedded simulator's ground truth: id -> (cell, orientation)
+    truth: dict[int, tuple[tuple[int, int], int]] = field(default_factory=dict)
+    sim_log: list[str] = field(default_factory=list)
     _pending: dict[str, _PendingReport] = field(default_factory=dict)
     _unnamed: dict[str, tuple[int, int]] = field(default_factory=dict)
 
@@ -165,6 +168,26 @@ class ClusterModel:
         else:
             p.module_id, p.yref = module_id, yref
 
+    def seed_truth(self, cells: dict[int, tuple[tuple[int, int], int]]) -> None:
+        self.truth = dict(cells)
+
+    def apply_sim(self, event: dict) -> bool:
+        """A simulator plant event: ``moved`` updates the truth; every event
+        is kept as one line for the lattice view."""
+        kind = event.get("event", "?")
+        module = event.get("module")
+        if kind == "moved" and isinstance(module, int):
+            to, orient = event.get("to"), event.get("orientation")
+            if isinstance(to, list) and len(to) == 2 and isinstance(orient, int):
+                self.truth[module] = ((int(to[0]), int(to[1])), orient)
+            self.sim_log.append(f"{event.get('t', 0):.2f}s module {module} moved "
+                                f"{tuple(event.get('from', ()))} -> {tuple(to or ())}")
+        else:
+            why = event.get("reason") or event.get("detail") or ""
+            self.sim_log.append(f"{event.get('t', 0):.2f}s {kind} module {module} {why}".strip())
+        del self.sim_log[:-20]
+        return True
+
     def cells(self) -> list[Placement]:
         """Every occupied lattice cell the host knows, sorted by position."""
         return [self.placements[k] for k in sorted(self.placements)]
@@ -174,6 +197,7 @@ class ClusterModel:
         self.placements.clear()
         self._pending.clear()
         self._unnamed.clear()
+        self.sim_log.clear()
         self.acks = self.errors = 0
 
 

@@ -87,6 +87,9 @@ def open_host(args: argparse.Namespace, endpoints: Endpoints) -> Host:
     if not args.no_log:
         log = SessionLog(new_session_dir(args.log_dir))
     host = Host(log)
+    if endpoints.sim is not None:
+        host.model.seed_truth(_scenario_cells(endpoints.sim.scenario))
+        endpoints.sim.on_event = host.sim_event
     for note in endpoints.notes:
         if log:
             log.note("host", note)
@@ -95,3 +98,12 @@ def open_host(args: argparse.Namespace, endpoints: Endpoints) -> Host:
     if endpoints.debug is not None:
         host.add_port(DEBUG, endpoints.debug, args.retry)
     return host
+
+
+def _scenario_cells(name: str) -> dict[int, tuple[tuple[int, int], int]]:
+    """Where the simulator starts each module: the lattice's ground truth
+    until plant events move them."""
+    from hexbot.hil_sim.scenario import load_scenario
+
+    sc = load_scenario(name)
+    return {m.id: ((m.position[0], m.position[1]), m.orientation) for m in sc.modules}

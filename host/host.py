@@ -11,6 +11,7 @@ their own thread.
 
 from __future__ import annotations
 
+import json
 import threading
 import time
 from collections.abc import Callable, Iterable
@@ -28,7 +29,8 @@ from hexbot.protocol.parser import Event, ReplyParser
 
 #: Port names: the central IR transceiver and one control board's UART1.
 IR, DEBUG = "ir", "debug"
-QUIET_FLUSH_S = 1.0  # a half reply older than this becomes garbage
+QUIET_FLUSH_S = 1.0
+SIM_PLANT_EVENTS = ("moved", "refused")  # a half reply older than this becomes garbage
 
 
 @dataclass(frozen=True)
@@ -40,7 +42,7 @@ class Observed:
 
 
 #: (kind, port, payload): "tx"/"rx" -> (t, bytes); "event" -> Observed;
-#: "state" -> (LinkState, detail, t)
+#: "state" -> (LinkState, detail, t); "sim" -> the simulator's event dict
 Listener = Callable[[str, str, Any], None]
 
 
@@ -181,6 +183,18 @@ class Host:
         if self.log:
             self.log.event(t, port, ev)
         self._notify("event", port, obs)
+
+    def sim_event(self, event: dict) -> None:
+        """An event of the embedded simulator (called from its own thread).
+        Only plant events (moved, refused) are kept: the bus events (one
+        per collided byte) would drown them."""
+        if event.get("event") not in SIM_PLANT_EVENTS:
+            return
+        with self.lock:
+            self.model.apply_sim(event)
+        if self.log:
+            self.log.note("sim", json.dumps(event, sort_keys=True))
+        self._notify("sim", "sim", event)
 
     def link_state(self, port: str, state: LinkState, detail: str) -> None:
         text = f"{state.value} {detail}".strip()

@@ -19,7 +19,9 @@ import sys
 import tempfile
 import threading
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
+from pathlib import Path
 
 from hexbot.errors import LinkUnavailableError
 
@@ -47,11 +49,18 @@ class SimPorts:
 
 class SimProcess:
     def __init__(self, scenario: str = DEFAULT_SCENARIO, seed: int | None = None,
-                 speed: float = 1.0, start_timeout: float = 60.0) -> None:
+                 speed: float = 1.0, start_timeout: float = 60.0,
+                 on_event: Callable[[dict], None] | None = None) -> None:
         self.scenario = scenario
         self.speed = speed
+        # Plant events ("moved", "refused", ...) come through a JSON-lines
+        # file the child appends to; a thread follows it (like tail -f).
+        self._events_dir = tempfile.TemporaryDirectory(prefix="hexbot-sim-")
+        self.events_path = Path(self._events_dir.name) / "events.jsonl"
+        self.on_event = on_event
+        self._closed = threading.Event()
         cmd = [sys.executable, "-m", "hexbot.cli", "sim", scenario, "--pty",
-               "--speed", f"{speed:g}"]
+               "--speed", f"{speed:g}", "--events", str(self.events_path)]
         if seed is not None:
             cmd += ["--seed", str(seed)]
         self.command = cmd
@@ -65,6 +74,33 @@ class SimProcess:
             self.close()
             raise
         threading.Thread(target=self._drain, daemon=True, name="sim stdout").start()
+        threading.Thread(target=self._follow_events, daemon=True, name="sim events").start()
+
+    def _follow_events(self) -> None:
+        pending = b""
+        handle = None
+        while not self._closed.is_set():
+            if handle is None:
+                try:
+                    handle = self.events_path.open("rb")
+                except OSError:
+                    self._closed.wait(0.1)
+                    continue
+            chunk = handle.read()
+            if not chunk:
+                self._closed.wait(0.05)
+                continue
+            pending += chunk
+            *lines, pending = pending.split(b"\n")
+            for line in lines:
+                try:
+                    event = json.loads(line)
+                except ValueError:
+                    continue  # the simulator's file, not ours: skip what we cannot read
+                if self.on_event is not None and isinstance(event, dict):
+                    self.on_event(event)
+        if handle is not None:
+            handle.close()
 
     def _spawn(self, cmd: list[str]) -> subprocess.Popen:
         """Start the child from a thread that lives until close(): Linux
@@ -153,6 +189,8 @@ class SimProcess:
             self._proc.stdout.close()
         self._stderr.close()
         self._release.set()
+        self._closed.set()
+        self._events_dir.cleanup()
 
     def __enter__(self) -> SimProcess:
         return self

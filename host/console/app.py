@@ -25,7 +25,7 @@ from hexbot.host.console.composer import Composer
 from hexbot.host.console.connection import PortPanel
 from hexbot.host.console.dialogs import HelpScreen, PromptScreen, RotateScreen
 from hexbot.host.console.lattice import LatticeView
-from hexbot.host.console.messages import Parsed, PortState, Traffic
+from hexbot.host.console.messages import Parsed, PortState, SimEvent, Traffic
 from hexbot.host.console.modules_view import ModulesView
 from hexbot.host.console.palette import ConsoleCommands
 from hexbot.host.console.terminal import Entry, Terminal
@@ -213,6 +213,8 @@ class HexBotConsole(App[None]):
         elif kind == "state":
             state, detail, t = payload  # type: ignore[misc]
             self.post_message(PortState(port, state, detail, t))
+        elif kind == "sim":
+            self.post_message(SimEvent(payload))  # type: ignore[arg-type]
 
     def terminal(self, port: str) -> Terminal:
         return self.query_one("#ir-term" if port == IR else "#debug-term", Terminal)
@@ -223,6 +225,12 @@ class HexBotConsole(App[None]):
     def on_parsed(self, msg: Parsed) -> None:
         obs = msg.observed
         self.terminal(msg.port).add(Entry(obs.t, "event", event=obs.event))
+        self.refresh_cluster()
+
+    def on_sim_event(self, msg: SimEvent) -> None:
+        if msg.event.get("event") == "refused":
+            self.notify(f"module {msg.event.get('module')}: {msg.event.get('reason', '')}",
+                        title="Simulator: rotation refused", severity="warning")
         self.refresh_cluster()
 
     def on_port_state(self, msg: PortState) -> None:

@@ -1,5 +1,8 @@
 """The cluster drawn on the hexagonal lattice, from localization and status.
 
+With the embedded simulator, modules the replies have not placed (yet)
+are drawn dim where the simulator has them (its plant events).
+
 Coordinates as in Table 4-1: +y is side 2 (up), +x is side 3 (up-right).
 Each module is two text rows: ``/id\\`` over ``\\role arrow/``; the arrow
 points along the module's body side 1 in the lattice (global side
@@ -21,7 +24,8 @@ NEIGHBOURS = ((-1, 1), (0, 1), (1, 0), (1, -1), (0, -1), (-1, 0))
 
 
 def lattice_cells(model: ClusterModel) -> dict[tuple[int, int], tuple[str, str, int | None]]:
-    """(x, y) -> (label, role, yref) for every module with a position."""
+    """(x, y) -> (label, role, yref) for every module the host placed from
+    localization and status replies."""
     cells: dict[tuple[int, int], tuple[str, str, int | None]] = {}
     for p in model.cells():
         label = f"{p.module_id:02d}" if p.module_id is not None else "??"
@@ -35,12 +39,26 @@ def lattice_cells(model: ClusterModel) -> dict[tuple[int, int], tuple[str, str, 
     return cells
 
 
+def sim_cells(model: ClusterModel) -> dict[tuple[int, int], tuple[str, str, int | None]]:
+    """Cells where the embedded simulator has a module the replies have not
+    (yet) placed there: drawn dim, so a wrong localization stands out."""
+    known = lattice_cells(model)
+    out: dict[tuple[int, int], tuple[str, str, int | None]] = {}
+    for ident, (cell, orientation) in sorted(model.truth.items()):
+        if known.get(cell, ("",))[0] != f"{ident:02d}":
+            row = model.module(ident)
+            out[cell] = (f"{ident:02d}", row.role if row else "-", orientation)
+    return out
+
+
 def draw_lattice(model: ClusterModel) -> Text:
     cells = lattice_cells(model)
-    if not cells:
+    ghosts = {c: v for c, v in sim_cells(model).items() if c not in cells}
+    if not cells and not ghosts:
         return Text("no positions yet: localize the cluster (key l)", style="dim")
-    empty = {(x + dx, y + dy) for (x, y) in cells for dx, dy in NEIGHBOURS} - set(cells)
-    every = set(cells) | empty
+    occupied = set(cells) | set(ghosts)
+    empty = {(x + dx, y + dy) for (x, y) in occupied for dx, dy in NEIGHBOURS} - occupied
+    every = occupied | empty
     rows = [-(x + 2 * y) for x, y in every]
     cols = [x * CELL_W for x, y in every]
     top, left = min(rows), min(cols)
@@ -54,9 +72,11 @@ def draw_lattice(model: ClusterModel) -> Text:
 
     for x, y in sorted(empty):
         put(-(x + 2 * y) - top, x * CELL_W - left, " .. ", "dim")
-    for (x, y), (label, role, yref) in sorted(cells.items()):
+    drawn = [(cell, v, False) for cell, v in cells.items()]
+    drawn += [(cell, v, True) for cell, v in ghosts.items()]
+    for (x, y), (label, role, yref), ghost in sorted(drawn):
         r, c = -(x + 2 * y) - top, x * CELL_W - left
-        style = STYLE.get(role, "bold yellow")
+        style = "dim" if ghost else STYLE.get(role, "bold yellow")
         arrow = ARROWS.get((yref or 0) + 1, "?") if yref is not None else "?"
         put(r, c, f"/{label}\\", style)
         put(r + 1, c, f"\\{role}{arrow}/", style)
@@ -74,12 +94,17 @@ def draw_lattice(model: ClusterModel) -> Text:
 
 def lattice_legend(model: ClusterModel) -> str:
     cells = lattice_cells(model)
-    if not cells:
-        return ""
-    parts = [f"{label} ({x:+d},{y:+d}) yref {'?' if yref is None else yref}"
-             for (x, y), (label, _, yref) in sorted(cells.items(), key=lambda kv: kv[1][0])]
-    return (f"{len(cells)} placed: " + ", ".join(parts)
-            + "\n+x = side 3 (up-right), +y = side 2 (up); arrow = body side 1")
+    lines = []
+    if cells:
+        parts = [f"{label} ({x:+d},{y:+d}) yref {'?' if yref is None else yref}"
+                 for (x, y), (label, _, yref) in sorted(cells.items(), key=lambda kv: kv[1][0])]
+        lines.append(f"{len(cells)} placed: " + ", ".join(parts))
+    if model.truth:
+        lines.append("dim: where the simulator has a module the replies did not place")
+    lines.extend(f"sim {line}" for line in model.sim_log[-3:])
+    if lines:
+        lines.append("+x = side 3 (up-right), +y = side 2 (up); arrow = body side 1")
+    return "\n".join(lines)
 
 
 class LatticeView(Static):

@@ -28,3 +28,11 @@ class PortState(Message):
     def __init__(self, port: str, state: LinkState, detail: str, t: float) -> None:
         super().__init__()
         self.port, self.state, self.detail, self.t = port, state, detail, t
+
+
+class SimEvent(Message):
+    """A plant event of the embedded simulator (moved, refused, ...)."""
+
+    def __init__(self, event: dict) -> None:
+        super().__init__()
+        self.event = event

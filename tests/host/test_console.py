@@ -172,3 +172,36 @@ async def test_console_on_simulator_flower7(sim_args):
                                         (-1, 0)])
         assert {label for label, _, _ in cells.values()} == {f"{i:02d}" for i in range(1, 8)}
         assert cells[(0, 0)][1] == "S"
+
+
+@sync
+async def test_rotation_on_simulator_moves_module_in_lattice(log_dir):
+    """Localize the pair, rotate module 2 CW about lattice joint 4 (Table
+    3-1's example) from the rotate dialog: both ACK 67, and the lattice shows
+    where the simulator's plant put it (dim until localized again)."""
+    args = cli_console.parse(["--scenario", "pair", "--sim-speed", "20"])
+    app = HexBotConsole(opener=cli_console.make_opener(args), reply_timeout=3.0,
+                        quiet_s=1.0, boot_quiet=1.5)
+    async with app.run_test(size=(100, 30)) as pilot:
+        assert await until(pilot, lambda: app.host is not None, timeout=60)
+        assert await until(pilot, lambda: not app.busy, timeout=60)
+        app.localize(1)
+        assert await until(pilot, lambda: not app.busy and "Localize" in app.last_result,
+                           timeout=120)
+        assert app.host.model.module(2).position == (-1, 1)
+        await pilot.press("w")
+        await pilot.pause()
+        screen = app.screen
+        screen.query_one("#rot-joint").value = "4"
+        screen.query_one("#rot-mobile").value = 2
+        screen.query_one("#rot-substrate").value = 1
+        await pilot.click("#rot-go")
+        assert await until(pilot, lambda: not app.busy and "Rotate" in app.last_result,
+                           timeout=30)
+        assert "done" in app.last_result, app.last_result
+        assert "S01 ACK 67 CW" in ir_text(app) and "M02 ACK 67 CW" in ir_text(app)
+        sent = [line for line in ir_text(app).splitlines() if "> CW(" in line]
+        assert sent and sent[-1].endswith("> CW(4, 8, 4, 10, 4, 8, 5, 9)")
+        assert await until(pilot, lambda: app.host.model.truth[2] == ((0, 1), 2), timeout=10)
+        lattice = app.query_one("#lattice-view").render()
+        assert "module 2 moved (-1, 1) -> (0, 1)" in str(lattice)
