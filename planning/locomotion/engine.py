@@ -229,14 +229,20 @@ Check = Callable[[np.ndarray], np.ndarray]
 class Engine:
     """Runs one rule set on one world, round by round."""
 
-    def __init__(self, ruleset: RuleSet, world: World, check_connectivity: bool = True):
+    def __init__(
+        self,
+        ruleset: RuleSet,
+        world: World,
+        check_connectivity: bool = True,
+        frame: int = 0,
+    ):
         self.rs = ruleset
         self.world = world
         self.check_connectivity = check_connectivity
         self.nstates = len(ruleset.states)
         if world.state_names != ruleset.states:
             raise ScenarioError("world and rule set disagree on the states")
-        self.variants: list[Variant] = ruleset.ordered_variants()
+        self.variants: list[Variant] = ruleset.ordered_variants(frame)
         self.reach = ruleset.reach()
         self.round = 0
         self.moves = np.zeros(world.pos.size, dtype=np.int64)

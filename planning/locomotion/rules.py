@@ -192,10 +192,19 @@ class RuleSet:
     source: str = ""
     description: str = ""
 
-    def ordered_variants(self) -> list[Variant]:
-        """All variants by decreasing priority; file order, then orientation, breaks ties."""
+    def ordered_variants(self, frame: int = 0) -> list[Variant]:
+        """All variants by decreasing priority; file order, then orientation, breaks ties.
+
+        Orientations are ranked counting from ``frame`` (quarter turns of the
+        scenario), so a scenario turned by 90 degrees makes the same choices,
+        turned: the tie-break must not depend on which way is north.
+        """
         ranked = sorted(enumerate(self.rules), key=lambda ir: (-ir[1].priority, ir[0]))
-        return [v for _, r in ranked for v in variants(r)]
+        out: list[Variant] = []
+        for _, r in ranked:
+            vs = variants(r)
+            out.extend(sorted(vs, key=lambda v: ((v.quarter_turns - frame) % 4, v.mirrored)))
+        return out
 
     def reach(self) -> int:
         """How far (Chebyshev) from the module the rules look."""

@@ -205,7 +205,8 @@ def simulate(
     ``rounds`` rounds."""
     axis = 0 if scenario.direction[0] else 1
     world = World(scenario.obstacles, scenario.modules, ruleset.states, extend_axis=axis)
-    engine = Engine(ruleset, world, check_connectivity=check_connectivity)
+    frame = [(1, 0), (0, 1), (-1, 0), (0, -1)].index(scenario.direction)
+    engine = Engine(ruleset, world, check_connectivity=check_connectivity, frame=frame)
     if until_advance is not None:
         goal = Goal(advance=until_advance)
     elif scenario.threshold is not None:
