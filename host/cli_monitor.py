@@ -44,8 +44,7 @@ def run(args: argparse.Namespace) -> int:
                                   "raw": data.hex()}) if args.json
                       else f"{t:9.3f} {port:<5} > {describe_tx(data)}")
 
-    with session(args, wait_s=0.0) as host:
-        host.add_listener(listener)
+    with session(args, wait_s=0.0, listener=listener, wait_boot=False):
         end = None if args.duration is None else time.monotonic() + args.duration
         while end is None or time.monotonic() < end:
             try:

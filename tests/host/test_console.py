@@ -61,6 +61,32 @@ async def test_composer_sends_from_the_table_and_shows_the_ack(responder):
         assert await until(pilot, lambda: ["04", "M", "no", "-", "-", "69 Select", "-", "-"]
                            in modules_rows(app))
         assert composer.history and str(composer.history[0]) == "Select(4)"
+        app.query_one("#fn-history").focus()
+        await pilot.press("enter")  # re-send the history's first row
+        assert await until(pilot, lambda: len(responder.received) == 2)
+        assert responder.received[1] == b"*E\x04NNNNNNN#"
+
+
+@sync
+async def test_terminal_search_views_and_save(responder, tmp_path):
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        await until(pilot, lambda: app.port_states.get(IR, (None,))[0] is LinkState.CONNECTED)
+        app.select_modules([2, 5])
+        assert await until(pilot, lambda: not app.busy and app.last_result)
+        term = app.query_one("#ir-term", Terminal)
+        assert term.bytes_out == 11 and term.bytes_in > 0 and term.last_ack == "M05 69 Select"
+        await pilot.click("#ir-term .term-search")
+        await pilot.press(*"m05")
+        await pilot.pause()
+        assert [line.plain.split(None, 1)[1] for line in term.lines()] == ["< M05 ACK 69 Select"]
+        term.cycle_mode()  # text view: raw bytes with escapes
+        term.query_text = ""
+        assert any("\\n\\r\\n\\r" in line.plain for line in term.lines())
+        term.cycle_mode()  # hex
+        assert any("2a 45 02 05 4e" in line.plain for line in term.lines())
+        path = term.save(tmp_path / "ir.txt")
+        assert "2a 45 02 05 4e" in path.read_text()
 
 
 @sync
