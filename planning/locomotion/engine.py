@@ -29,6 +29,7 @@ from hexbot.planning.locomotion.rules import (
     EMPTY,
     MODULE,
     OBSTACLE,
+    SIMPLE,
     And,
     Atom,
     Expr,
@@ -293,6 +294,16 @@ class Engine:
 
     def _expr(self, e: Expr) -> Check:
         flat, h = self.world.flat, self.world.height
+        if isinstance(e, Atom) and SIMPLE in e.classes:
+            ring = connectivity.ring_offsets(h)
+            weights = (1 << np.arange(8)).astype(np.int64)
+            simple, negated = connectivity.SIMPLE, e.negated
+
+            def is_simple(p: np.ndarray) -> np.ndarray:
+                occupied = flat[p[:, None] + ring[None, :]] >= MODULE_BASE
+                out = simple[occupied.astype(np.int64) @ weights]
+                return ~out if negated else out
+            return is_simple
         if isinstance(e, Atom):
             lut, off = self._atom_lut(e), e.offset[0] * h + e.offset[1]
             return lambda p: lut[flat[p + off]]

@@ -18,7 +18,9 @@ Layout (``#`` starts a comment; indentation is for the reader only)::
 
 A ``require`` line is a boolean expression over cells: ``POS is CLASS|CLASS``,
 ``POS is not CLASS``, ``and``, ``or``, ``not``, parentheses, and names given
-earlier by ``define NAME EXPRESSION`` (a shared condition written once). POS is a name
+earlier by ``define NAME EXPRESSION`` (a shared condition written once), and
+``simple``: the module's occupied 8 neighbours form one run that holds all its
+edge neighbours, so its leaving cannot cut the robot locally. POS is a name
 (N E S W NE NW SE SW) or an offset ``(dx,dy)``; CLASS is ``empty``,
 ``obstacle``, ``module`` (any state) or a state name. All ``require`` lines
 must hold. Actions: ``become STATE`` and/or ``move POS`` (a neighbour cell).
@@ -43,6 +45,7 @@ from hexbot.planning.locomotion.rules import (
     Offset,
     Or,
     Rule,
+    SIMPLE,
     RuleSet,
     atoms_of,
 )
@@ -130,6 +133,9 @@ class _ExprParser:
         if tok in self.names:
             self.take()
             return self.names[tok]
+        if tok == "simple":
+            self.take()
+            return Atom((0, 0), frozenset({SIMPLE}))
         return self.atom()
 
     def atom(self) -> Atom:
@@ -325,7 +331,7 @@ def _finish(d: _Draft, default_sym: str) -> Rule:
         raise _Error(f"rule {d.ident} has no action (become and/or move)")
     for c in d.conditions:
         for a in atoms_of(c):
-            if a.offset == (0, 0):
+            if a.offset == (0, 0) and SIMPLE not in a.classes:
                 raise _Error(f"rule {d.ident}: use 'state' for the module itself, not (0,0)")
     return Rule(
         ident=d.ident,

@@ -28,6 +28,7 @@ DIRECTIONS: dict[str, Offset] = {
 EMPTY = "empty"
 OBSTACLE = "obstacle"
 MODULE = "module"  # a module in any state
+SIMPLE = "@simple"  # pseudo-class of the `simple` test on the module's own ring
 BUILTIN_CLASSES = (EMPTY, OBSTACLE, MODULE)
 
 SYMMETRIES = ("none", "rotations", "rotations+reflections")
@@ -72,6 +73,8 @@ class Atom:
         return Atom(transform(self.offset, quarter_turns, mirrored), self.classes, self.negated)
 
     def __str__(self) -> str:
+        if SIMPLE in self.classes:
+            return "not simple" if self.negated else "simple"
         cls = "|".join(sorted(self.classes))
         return f"{offset_name(self.offset)} is {'not ' if self.negated else ''}{cls}"
 
