@@ -106,8 +106,8 @@ class Terminal(Vertical):
         elif entry.kind == "event":
             ev = entry.event
             if isinstance(ev, Ack):
-                who = f"{ev.role or '?'}{'' if ev.module is None else f'{ev.module:02d}'}"
-                self.last_ack = f"{who} {code_name(ev.code)}"
+                who = (ev.role or "") + ("" if ev.module is None else f"{ev.module:02d}")
+                self.last_ack = f"{who} {code_name(ev.code)}".strip()
             elif isinstance(ev, ControlMessage):
                 self.last_msg = f"{code_name(ev.code)} {' '.join(map(str, ev.args))}"
         self._update_info()
