@@ -37,6 +37,7 @@ from hexbot.errors import ScenarioError
 from hexbot.planning.locomotion.rules import (
     BUILTIN_CLASSES,
     DIRECTIONS,
+    SIMPLE,
     SYMMETRIES,
     And,
     Atom,
@@ -45,7 +46,6 @@ from hexbot.planning.locomotion.rules import (
     Offset,
     Or,
     Rule,
-    SIMPLE,
     RuleSet,
     atoms_of,
 )
