@@ -22,7 +22,7 @@ breaking connectivity), and goals no electron can reach.
 
 from __future__ import annotations
 
-from collections import deque
+from collections import Counter, deque
 from collections.abc import Callable
 from dataclasses import dataclass
 
@@ -33,6 +33,10 @@ from hexbot.planning.plan import Plan, Step, apply_move, distance_lower_bound
 
 # Precomputed Table 4-3 offsets: (rule, substrate, goal, swept) relative to (0, 0).
 _RULES = [(rule, *rule.at((0, 0))) for rule in ROTATIONS]
+
+
+#: How many times one goal cell may be emptied to make room (bounds the search).
+ASIDE_LIMIT = 3
 
 
 class PlanningFailure(Exception):
@@ -211,7 +215,8 @@ def serial_moves(
     if aside is None:
         raise PlanningFailure("some goal cell can never be entered, even with modules stepping "
                               "aside (fewer than three consecutive free sides)")
-    promoted: set[Cell] = set(aside)  # cells ever made to step aside
+    # how often each cell was made to step aside; capped so that the loop ends
+    promoted: Counter[Cell] = Counter(aside)
     moves: list[Move] = []
     while True:
         voids = state.voids()
@@ -219,16 +224,23 @@ def serial_moves(
         if not voids:
             return moves
         pending = voids | (aside & state.occupied)
-        path = _best_journey(state, movers, voids, pending, fixed)
+        path = _best_journey(state, movers, voids, pending, fixed, strict=True)
         if path is None:
-            # filling out of order may have walled a void in: let the walls step aside
-            walls = (must_move(goal, pending, fixed) or set()) - promoted
-            if walls:
-                aside |= walls
-                promoted |= walls
-                continue
+            # the voids left may be walled in: park the walls well away first
+            walls = {c for c in (must_move(goal, pending, fixed) or set()) & state.occupied
+                     if promoted[c] < ASIDE_LIMIT}
+            for c in sorted(walls):
+                path = _park(state, c, pending | walls)
+                if path:
+                    aside |= walls - aside
+                    promoted.update(walls)
+                    break
+        if path is None:
+            path = _best_journey(state, movers, voids, pending, fixed, strict=False)
+        if path is None:
             # let one more goal module step aside: the one with the shortest journey
-            extra = [c for c in sorted(goal & state.occupied) if c not in promoted and c != fixed]
+            extra = [c for c in sorted(goal & state.occupied)
+                     if promoted[c] < ASIDE_LIMIT and c != fixed]
             for c in extra:
                 trial = _best_journey(state, [c], voids, pending | {c}, fixed, strict=False)
                 if trial and (path is None or len(trial) < len(path)):
@@ -246,8 +258,7 @@ def serial_moves(
                     "or colliding (the goal may be unreachable by Table 4-3 rotations, or "
                     "need an order this planner does not try)"
                 )
-            promoted.add(path[0][0])
-            aside.add(path[0][0])
+            promoted[path[0][0]] += 1
         if len(moves) + len(path) > max_moves:
             raise PlanningFailure(f"more than {max_moves} moves needed")
         start = path[0][0]
@@ -293,12 +304,13 @@ def _best_journey(
 
 def _park(state: _State, mover: Cell, pending: set[Cell]) -> list | None:
     """A journey of a goal module out of the way: to a cell outside the goal,
-    preferably one that touches no cell still to be filled."""
+    preferably one from which it cannot block the sweep into a cell still to fill."""
     if is_cut(state.occupied, mover):
         return None
 
     def clear(cell: Cell) -> bool:
-        return cell not in state.goal and not any(n in pending for n in neighbors(cell))
+        # swept cells lie within two steps of a rotation's goal: park farther away
+        return cell not in state.goal and all(distance(cell, p) > 2 for p in pending)
 
     return _journey(state, mover, clear) or _journey(state, mover, lambda c: c not in state.goal)
 
