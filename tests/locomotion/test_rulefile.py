@@ -3,7 +3,8 @@
 import pytest
 
 from hexbot.errors import ScenarioError
-from hexbot.planning.locomotion import load_ruleset, loads, ruleset_names
+from hexbot.planning.locomotion import Engine, World, load_ruleset, loads, ruleset_names
+from hexbot.planning.locomotion.engine import Goal
 from hexbot.planning.locomotion.rules import variants
 
 HEADER = "ruleset t\nstates static active\n"
@@ -20,6 +21,26 @@ def test_expression_grammar_and_actions():
     assert rule.priority == 7 and rule.become == "active" and rule.move == (1, 0)
     assert rs.reach() == 2
     assert "(2,0) is not active" in str(rule.conditions[0])
+
+
+def test_define_and_simple():
+    rs = loads(HEADER + "define FREE N is empty and NE is empty\n"
+               "rule X\n priority 1\n state static\n require FREE and not simple\n become active\n")
+    text = str(rs.rules[0].conditions[0])
+    assert "N is empty and NE is empty" in text and "not (simple)" in text
+
+
+def test_simple_means_leaving_keeps_the_neighbours_joined():
+    rs = loads("ruleset t\nstates a b\nrule X\n priority 1\n state a\n require simple\n"
+               " become b\n")
+    world = World([(x, -1) for x in range(-2, 5)], [(0, 0), (1, 0), (2, 0)], rs.states)
+    result = Engine(rs, world).run(1, Goal())
+    assert result.states == ["b", "a", "b"]  # the middle module holds the strip together
+
+
+def test_define_needs_an_upper_case_name():
+    with pytest.raises(ScenarioError, match="x.rules:3: define"):
+        loads(HEADER + "define free N is empty\n", "x.rules")
 
 
 def test_symmetry_gives_four_or_eight_orientations():
