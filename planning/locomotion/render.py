@@ -18,10 +18,17 @@ COLOURS = {
     "active": (220, 40, 40),
     "cork": (240, 200, 30),
     "opener": (20, 20, 20),
+    "STOPA": (40, 70, 160),
+    "ACTIV": (220, 40, 40),
+    "HEADD": (60, 200, 220),
+    "PIVOT": (230, 120, 200),
+    "SUPER": (240, 200, 30),
+    "PERFE": (200, 0, 200),
 }
 OBSTACLE_RGB = (150, 150, 150)
 EMPTY_RGB = (250, 250, 250)
-ASCII = {"static": "o", "active": "A", "cork": "C", "opener": "P"}
+ASCII = {"static": "o", "active": "A", "cork": "C", "opener": "P",
+         "STOPA": "o", "ACTIV": "A", "HEADD": "H", "PIVOT": "V", "SUPER": "U", "PERFE": "F"}
 
 
 @dataclass

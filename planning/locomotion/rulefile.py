@@ -7,6 +7,7 @@ Layout (``#`` starts a comment; indentation is for the reader only)::
     resting static              # states that count as "stopped"
     support module              # what may carry a slide or pivot a convex move
     symmetry rotations          # none | rotations | rotations+reflections
+    front HEADD                 # optional: the strip's front module starts in this state
 
     rule R1 "Activation"
       priority 10
@@ -49,6 +50,8 @@ from hexbot.planning.locomotion.rules import (
     RuleSet,
     atoms_of,
 )
+
+HEADER_KEYS = ("ruleset", "states", "resting", "support", "symmetry", "front")
 
 _TOKEN = re.compile(
     r"\s*(?:(?P<offset>\(\s*-?\d+\s*,\s*-?\d+\s*\))|(?P<punct>[()|!])|(?P<word>[A-Za-z_][\w-]*))"
@@ -211,7 +214,7 @@ def loads(text: str, source: str = "<string>") -> RuleSet:
                 continue
             key, _, rest = line.partition(" ")
             rest = rest.strip()
-            if key in ("ruleset", "states", "resting", "support", "symmetry") and current is None:
+            if key in HEADER_KEYS and current is None:
                 if key in header:
                     raise _Error(f"{key!r} given twice")
                 if not rest:
@@ -261,6 +264,10 @@ def loads(text: str, source: str = "<string>") -> RuleSet:
             if bad:
                 lineno = header_line[key]
                 raise _Error(f"{key}: unknown class {sorted(bad)[0]!r}")
+        front = header.get("front")
+        if front is not None and front not in states:
+            lineno = header_line["front"]
+            raise _Error(f"front: unknown state {front!r}")
         rules = []
         for d in drafts:
             lineno = d.line
@@ -278,6 +285,7 @@ def loads(text: str, source: str = "<string>") -> RuleSet:
         rules=rules,
         source=source,
         description=" ".join(description),
+        front_state=front,
     )
 
 

@@ -194,6 +194,7 @@ class RuleSet:
     rules: list[Rule] = field(default_factory=list)
     source: str = ""
     description: str = ""
+    front_state: str | None = None  # the state the strip's front module starts in
 
     def ordered_variants(self, frame: int = 0) -> list[Variant]:
         """All variants by decreasing priority; file order, then orientation, breaks ties.

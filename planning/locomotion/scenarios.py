@@ -204,7 +204,14 @@ def simulate(
     (maps only, without ``until_advance``), on a deadlock, a violation, or after
     ``rounds`` rounds."""
     axis = 0 if scenario.direction[0] else 1
-    world = World(scenario.obstacles, scenario.modules, ruleset.states, extend_axis=axis)
+    states = [ruleset.states[0]] * len(scenario.modules)
+    if ruleset.front_state:
+        dx, dy = scenario.direction
+        front = max(range(len(states)), key=lambda i: scenario.modules[i][0] * dx
+                    + scenario.modules[i][1] * dy)
+        states[front] = ruleset.front_state
+    world = World(scenario.obstacles, scenario.modules, ruleset.states,
+                  module_states=states, extend_axis=axis)
     frame = [(1, 0), (0, 1), (-1, 0), (0, -1)].index(scenario.direction)
     engine = Engine(ruleset, world, check_connectivity=check_connectivity, frame=frame)
     if until_advance is not None:

@@ -71,3 +71,30 @@ def test_obstacle_rules_stall_safely_where_the_reconstruction_falls_short(scenar
     assert result.status == "deadlock"
     assert result.violation is None
     assert result.deadlock.round <= 3000
+
+
+def test_otero_front_module_starts_as_head():
+    result = simulate(load_ruleset("otero"), flat_scenario(6), rounds=0)
+    assert result.states == ["STOPA"] * 5 + ["HEADD"]
+
+
+def test_otero_core_walks_flat_ground_and_hands_the_head_over():
+    result = simulate(load_ruleset("otero"), flat_scenario(8), rounds=400)
+    assert result.status == "rounds-exhausted" and result.violation is None
+    assert result.advanced >= 90
+    assert result.states.count("HEADD") == 1
+    head = result.positions[result.states.index("HEADD")]
+    assert head[0] == max(x for x, _ in result.positions)  # the head is in front
+
+
+@pytest.mark.parametrize("scenario", ["histogram-3", "maze", "wide-cavity-middle", "cavity-two"])
+def test_otero_core_passes_these_scenarios(scenario):
+    result = simulate(load_ruleset("otero"), load_scenario(scenario, 10), rounds=3000)
+    assert result.status == "reached", result.violation or result.deadlock
+
+
+def test_otero_core_without_pivot_rules_deadlocks_in_deep_cavities():
+    # The pivot, superactive and cycle rules are not rebuilt yet; the engine
+    # must report the resulting deadlock (docs/locomotion.md).
+    result = simulate(load_ruleset("otero"), load_scenario("cavity-simple", 20), rounds=3000)
+    assert result.status == "deadlock" and result.violation is None

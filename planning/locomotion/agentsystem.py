@@ -1,0 +1,178 @@
+"""Reader for AgentSystem rule listings (the simulator both theses used).
+
+A listing is a sequence of rules: a name line, a priority line, then a
+precondition of juxtaposed (AND) terms and an action::
+
+    N movement
+    3
+    SACTIV E0,1 !(!E-1,0 !T-1,0,OBSTA ...) ...
+    P0,1 A1111
+
+Terms: ``S<state>`` the module's own state, ``E x,y`` an empty cell,
+``T x,y,<state>`` a cell holding that state (obstacles are state ``OBSTA``),
+``!`` negates the next term, parentheses group. Actions: ``P x,y`` move (with
+``A....`` attach flags, which our model does not need) and/or a final
+``S<state>`` new state. Whitespace inside terms is OCR noise and is ignored,
+as are the letter O for a zero in coordinates and code-fence lines.
+
+`read_listing` returns the rules with every defect it had to repair listed,
+so a translation can be checked rule by rule.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from hexbot.planning.locomotion.rules import And, Atom, Expr, Not, Or
+
+_TERM = re.compile(
+    r"!|\(|\)|S[A-Z]{5}|E-?\d+,-?\d+|T-?\d+,-?\d+,[A-Z]{5}|P-?\d+,-?\d+|A\d{4}"
+)
+
+
+@dataclass
+class ASRule:
+    name: str
+    priority: int
+    line: int
+    tokens: list[str]
+    move: tuple[int, int] | None = None
+    become: str | None = None
+    repairs: list[str] = field(default_factory=list)
+
+
+def _normalise(body: str) -> str:
+    body = re.sub(r"\s+", "", body)
+    # OCR reads the digit zero in coordinates as the letter O ("TO,1", "EO,-1").
+    return re.sub(r"(?<=[TE])O(?=,)", "0", body)
+
+
+def tokenize(body: str) -> tuple[list[str], str | None]:
+    text = _normalise(body)
+    out: list[str] = []
+    pos = 0
+    while pos < len(text):
+        m = _TERM.match(text, pos)
+        if not m:
+            return out, text[pos : pos + 24]
+        out.append(m.group())
+        pos = m.end()
+    return out, None
+
+
+def read_listing(text: str) -> list[ASRule]:
+    """Rules of an AgentSystem listing (state declarations and comments skipped)."""
+    lines: list[tuple[int, str]] = []
+    for number, raw in enumerate(text.splitlines(), start=1):
+        s = raw.strip()
+        if not s or s.startswith(("```", "%", "_init")):
+            continue
+        lines.append((number, s))
+    prio_at = [i for i, (_, s) in enumerate(lines) if re.fullmatch(r"\d+", s)]
+    rules: list[ASRule] = []
+    for j, i in enumerate(prio_at):
+        name_line, name = lines[i - 1]
+        end = prio_at[j + 1] - 1 if j + 1 < len(prio_at) else len(lines)
+        body = " ".join(s for _, s in lines[i + 1 : end])
+        toks, bad = tokenize(body)
+        rule = ASRule(name, int(lines[i][1]), name_line, toks)
+        if bad:
+            rule.repairs.append(f"unreadable text {bad!r} dropped with what follows")
+        _split_action(rule)
+        rules.append(rule)
+    return rules
+
+
+def _split_action(rule: ASRule) -> None:
+    toks = rule.tokens
+    for k, t in enumerate(toks):
+        if t.startswith("P"):
+            dx, dy = t[1:].split(",")
+            rule.move = (int(dx), int(dy))
+            rest = [x for x in toks[k + 1 :] if not x.startswith("A")]
+            if rest and re.fullmatch(r"S[A-Z]{5}", rest[-1]):
+                rule.become = rest[-1][1:]
+            rule.tokens = toks[:k]
+            return
+    if toks and re.fullmatch(r"S[A-Z]{5}", toks[-1]):
+        rule.become = toks[-1][1:]
+        rule.tokens = toks[:-1]
+
+
+# --- expressions ----------------------------------------------------------
+
+
+@dataclass(frozen=True)
+class Own:
+    """``S<state>`` inside a precondition: the module's own state."""
+
+    state: str
+
+
+def parse(tokens: list[str], repairs: list[str] | None = None) -> list:
+    """Nested lists: a group is a list of items; an item is a term, ('!', item)
+    or a sub-group. Unbalanced parentheses are repaired (an extra ')' closes
+    nothing and is dropped; missing ')' are added at the end) and noted."""
+    repairs = repairs if repairs is not None else []
+    stack: list[list] = [[]]
+    pending_not = 0
+    for t in tokens:
+        if t == "!":
+            pending_not += 1
+            continue
+        if t == "(":
+            stack.append([])
+            stack[-1].append(("not-count", pending_not))
+            pending_not = 0
+            continue
+        if t == ")":
+            if len(stack) == 1:
+                repairs.append("extra ')' dropped")
+                continue
+            group = stack.pop()
+            nots = group.pop(0)[1]
+            item: object = group
+            for _ in range(nots % 2):
+                item = ("!", item)
+            if nots >= 2:
+                repairs.append("'!!' read as no negation")
+            stack[-1].append(item)
+            continue
+        item = t
+        for _ in range(pending_not % 2):
+            item = ("!", item)
+        if pending_not >= 2:
+            repairs.append("'!!' read as no negation")
+        pending_not = 0
+        stack[-1].append(item)
+    while len(stack) > 1:
+        repairs.append("missing ')' added at the end")
+        group = stack.pop()
+        nots = group.pop(0)[1]
+        item = group
+        for _ in range(nots % 2):
+            item = ("!", item)
+        stack[-1].append(item)
+    return stack[0]
+
+
+def to_expr(item) -> Expr:
+    """One parsed item as our expression (own-state terms become (0,0) atoms)."""
+    if isinstance(item, tuple) and item[0] == "!":
+        return Not(to_expr(item[1]))
+    if isinstance(item, list):
+        parts = [to_expr(x) for x in item]
+        return parts[0] if len(parts) == 1 else And(tuple(parts))
+    t = item
+    if t.startswith("S"):
+        return Atom((0, 0), frozenset({t[1:]}))
+    if t.startswith("E"):
+        dx, dy = t[1:].split(",")
+        return Atom((int(dx), int(dy)), frozenset({"empty"}))
+    dx, dy, st = t[1:].split(",")
+    cls = "obstacle" if st == "OBSTA" else st
+    return Atom((int(dx), int(dy)), frozenset({cls}))
+
+
+__all__ = ["ASRule", "Or", "Own", "parse", "read_listing", "to_expr", "tokenize"]
