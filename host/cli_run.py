@@ -15,6 +15,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("script", type=Path, help="a .hbs script (see docs/console.md)")
     parser.add_argument("--check", action="store_true",
                         help="only check the script's syntax; send nothing")
+    parser.add_argument("--quiet", type=float, default=1.5, metavar="S",
+                        help="after a broadcast, answers are over when the link was quiet "
+                             "this long (default 1.5; less with a fast simulator)")
     add_port_arguments(parser)
 
 
@@ -24,7 +27,7 @@ def run(args: argparse.Namespace) -> int:
         print(f"{args.script}: {len(steps)} steps, syntax OK")
         return 0
     with session(args) as host:
-        runner = ScriptRunner(host, str(args.script))
+        runner = ScriptRunner(host, str(args.script), quiet=args.quiet)
         try:
             runner.run(steps)
         except ScriptFailed as exc:

@@ -278,8 +278,9 @@ Printer = Callable[[str], None]
 
 class ScriptRunner:
     def __init__(self, host: Host, name: str = "<script>", out: Printer = print,
-                 cancel: threading.Event | None = None) -> None:
+                 cancel: threading.Event | None = None, quiet: float = ALL_QUIET_S) -> None:
         self.host = host
+        self.quiet = quiet
         self.name = name
         self.out = out
         self.cancel = cancel
@@ -358,7 +359,7 @@ class ScriptRunner:
         self.mark = before
         if self.selection is None and outcome.ok:
             # A broadcast: more modules may still answer; let them finish.
-            commands.collect_until_quiet(self.host, before, ALL_QUIET_S, self.timeout,
+            commands.collect_until_quiet(self.host, before, self.quiet, self.timeout,
                                          self.cancel)
             extra = [o for o in self.host.since(before) if o.port == IR
                      and isinstance(o.event, ErrorReply) and o.event.code == cmd.code]

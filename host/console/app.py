@@ -436,7 +436,9 @@ class HexBotConsole(App[None]):
             self._exchange(commands.select(ref_id), [ref_id]),
             self._exchange(commands.ref(), [ref_id]),
             self._exchange(commands.select(0), None, collect=True),
-            self._exchange(commands.localize(), None, collect=True, quiet=3.0, timeout=long),
+            # reports come one slot apart (2.4 s at 300 baud): allow twice the usual quiet
+            self._exchange(commands.localize(), None, collect=True, quiet=2 * self.quiet_s,
+                           timeout=long),
             self._exchange(commands.status(), None, collect=True),
         ])
 

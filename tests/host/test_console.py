@@ -175,7 +175,7 @@ async def test_console_on_simulator_flower7(sim_args):
     """Connect, send Select(0) from the composer table, see the ACKs in the
     IR terminal and modules view, localize and see seven positions."""
     app = HexBotConsole(opener=cli_console.make_opener(sim_args), reply_timeout=3.0,
-                        quiet_s=1.0, boot_quiet=1.5)
+                        quiet_s=0.5, boot_quiet=1.0)
     async with app.run_test(size=(120, 36)) as pilot:
         assert await until(pilot, lambda: app.host is not None, timeout=60)
         assert await until(pilot, lambda: app.port_states.get(IR, (None,))[0]
@@ -207,7 +207,7 @@ async def test_rotation_on_simulator_moves_module_in_lattice(log_dir):
     where the simulator's plant put it (dim until localized again)."""
     args = cli_console.parse(["--scenario", "pair", "--sim-speed", "20"])
     app = HexBotConsole(opener=cli_console.make_opener(args), reply_timeout=3.0,
-                        quiet_s=1.0, boot_quiet=1.5)
+                        quiet_s=0.5, boot_quiet=1.0)
     async with app.run_test(size=(100, 30)) as pilot:
         assert await until(pilot, lambda: app.host is not None, timeout=60)
         assert await until(pilot, lambda: not app.busy, timeout=60)
