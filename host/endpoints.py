@@ -12,6 +12,7 @@ import argparse
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from hexbot.errors import HexBotError
 from hexbot.host.host import DEBUG, IR, Host
 from hexbot.host.link import PortSettings
 from hexbot.host.session_log import SessionLog, new_session_dir
@@ -65,6 +66,8 @@ def resolve(args: argparse.Namespace) -> Endpoints:
     frame = dict(parity=args.parity, data_bits=args.data_bits, stop_bits=args.stop_bits)
     debug_url = getattr(args, "debug_port", None)
     debug_baud = getattr(args, "debug_baud", wire.BAUD_DEBUG)
+    if args.port and args.scenario:
+        raise HexBotError("--scenario starts the simulator; it cannot be combined with --port")
     if args.port:
         ir = PortSettings(args.port, args.baud, **frame)
         debug = PortSettings(debug_url, debug_baud) if debug_url else None

@@ -104,3 +104,23 @@ def test_capture_is_byte_exact(responder, log_dir, capsys):
     assert rx.count(b"STA\x02") == 1 and rx.startswith(wire.PREAMBLE)
     stamps = [r.t for r in records]
     assert stamps == sorted(stamps)
+
+
+def test_scenario_and_port_are_exclusive(log_dir, capsys):
+    assert main(["send", "Status", "--scenario", "pair", "--port", "loop://"]) == 1
+    assert "cannot be combined with --port" in capsys.readouterr().err
+
+
+def test_monitor_over_loop_url_sees_its_own_frames_as_garbage(log_dir, capsys):
+    """loop:// echoes: a PC frame is no reply, so the parser calls it garbage."""
+    from hexbot.host.host import IR, Host
+    from hexbot.host.link import PortSettings
+    from hexbot.protocol import frames
+
+    with Host() as host:
+        host.add_port(IR, PortSettings("loop://"), retry_s=0.1)
+        host.start(wait_s=2)
+        mark = host.send(frames.make("Ref"))
+        obs = host.wait_for(lambda o: True, mark, 3.0)
+    assert obs is not None and type(obs.event).__name__ == "Garbage"
+    assert obs.event.raw == b"*ANNNNNNNN#"
