@@ -24,7 +24,7 @@ from __future__ import annotations
 
 from collections import Counter, deque
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.hexlattice import ROTATIONS, Cell, distance, neighbors
@@ -453,9 +453,13 @@ def plan_robust(
         return plan
     try:
         serial = serial_moves(initial, goal, max_moves, fixed)
-    except PlanningFailure as exc:
-        plan.reason = str(exc)
-        return plan
+    except PlanningFailure as forward:
+        # rotations are reversible: plan from the goal back to the start and reverse it
+        try:
+            serial = reversed_plan(initial, goal, max_moves, fixed)
+        except PlanningFailure:
+            plan.reason = f"{forward} (planning backwards from the goal failed too)"
+            return plan
     if not parallel:
         plan.steps = [Step([m]) for m in serial]
     else:
@@ -468,6 +472,32 @@ def plan_robust(
     if not plan.reached:  # a bug, not a user error: say so loudly
         plan.reason = "internal error: the schedule does not end in the goal"
     return plan
+
+
+def reverse_move(move: Move) -> Move:
+    """The rotation that undoes ``move`` (same substrate, same swept cells)."""
+    for rule, (sx, sy), (gx, gy), _ in _RULES:
+        x, y = move.dst
+        if (x + sx, y + sy) == move.substrate and (x + gx, y + gy) == move.src:
+            return Move(move.module, move.dst, move.src, rule.joint, rule.direction,
+                        move.substrate, move.substrate_module)
+    raise ValueError(f"no rotation undoes {move}")
+
+
+def reversed_plan(
+    initial: Configuration, goal: frozenset[Cell], max_moves: int, fixed: Cell | None
+) -> list[Move]:
+    """Serial moves from ``initial`` to ``goal`` found by planning from the goal back."""
+    start = Configuration.from_cells(goal, first_id=1000)  # provisional ids
+    backward = serial_moves(start, initial.cells, max_moves, fixed)
+    config = start
+    for move in backward:
+        config = apply_move(config, move)
+    real = {config[c].id: initial[c].id for c in config}
+    return [
+        replace(reverse_move(m), module=real[m.module], substrate_module=real[m.substrate_module])
+        for m in reversed(backward)
+    ]
 
 
 def step_lower_bound(current: frozenset[Cell], goal: frozenset[Cell]) -> int:
