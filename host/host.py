@@ -52,6 +52,7 @@ class Channel:
         self.name = name
         self.parser = ReplyParser()
         self._last_rx = 0.0
+        self._unflushed = False
         self.link = Link(settings, self._on_data, self._on_state, self._on_idle, retry_s=retry_s)
 
     @property
@@ -60,12 +61,16 @@ class Channel:
 
     def _on_data(self, data: bytes) -> None:
         self._last_rx = time.monotonic()
+        self._unflushed = True
         t = self.host.received(self.name, data)
         for ev in self.parser.feed(data):
             self.host.observe(t, self.name, ev)
 
     def _on_idle(self) -> None:
-        if self.parser.pending and time.monotonic() - self._last_rx > QUIET_FLUSH_S:
+        # The parser holds a half reply (and garbage, until the next reply)
+        # back: after a quiet second, nothing more is coming to complete it.
+        if self._unflushed and time.monotonic() - self._last_rx > QUIET_FLUSH_S:
+            self._unflushed = False
             t = self.host.elapsed()
             for ev in self.parser.flush():
                 self.host.observe(t, self.name, ev)
