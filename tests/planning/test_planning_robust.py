@@ -102,3 +102,28 @@ def test_same_input_gives_the_same_plan():
     one = plan_robust(Configuration.from_cells(a), b)
     two = plan_robust(Configuration.from_cells(a), b)
     assert [s.moves for s in one.steps] == [s.moves for s in two.steps]
+
+
+def test_backward_planning_rescues_a_pair_the_forward_search_cannot_finish():
+    from hexbot.planning.robust import PlanningFailure, serial_moves
+
+    a, b = random_blob(30, 0, 0.8), random_blob(30, 1, 0.8)
+    with pytest.raises(PlanningFailure):
+        serial_moves(Configuration.from_cells(a), b, 10**5)
+    plan = plan_robust(Configuration.from_cells(a), b)
+    assert plan.reached, plan.reason
+    assert_legal(plan)
+
+
+def test_reverse_move_undoes_every_rotation():
+    from hexbot.planning.hexlattice import ROTATIONS
+    from hexbot.planning.moves import Move
+    from hexbot.planning.robust import reverse_move
+
+    for rule in ROTATIONS:
+        sub, goal, swept = rule.at((3, -1))
+        move = Move(1, (3, -1), goal, rule.joint, rule.direction, sub, 2)
+        back = reverse_move(move)
+        assert (back.src, back.dst, back.substrate) == (goal, (3, -1), sub)
+        assert set(back.swept()) == set(swept)
+        assert reverse_move(back) == move
