@@ -231,3 +231,26 @@ async def test_rotation_on_simulator_moves_module_in_lattice(log_dir):
         assert await until(pilot, lambda: app.host.model.truth[2] == ((0, 1), 2), timeout=10)
         lattice = app.query_one("#lattice-view").render()
         assert "module 2 moved (-1, 1) -> (0, 1)" in str(lattice)
+
+
+@sync
+async def test_console_reconnects_when_the_port_returns():
+    from test_link import _Server
+
+    server = _Server()
+    host = Host()
+    host.add_port(IR, PortSettings(f"socket://127.0.0.1:{server.port}"), retry_s=0.1)
+    app = HexBotConsole(host, reply_timeout=2.0, quiet_s=0.3)
+    try:
+        async with app.run_test(size=(100, 30)) as pilot:
+            assert await until(pilot, lambda: "S01 ACK 65 Ref" in ir_text(app), timeout=5)
+            server.stop()
+            assert await until(pilot, lambda: app.port_states[IR][0] is LinkState.LOST)
+            assert "Port lost" in [n.title for n in app._notifications]
+            server = _Server(server.port)
+            assert await until(pilot, lambda: app.port_states[IR][0] is LinkState.CONNECTED)
+            assert await until(pilot, lambda: ir_text(app).count("S01 ACK 65 Ref") == 2)
+            text = ir_text(app)
+            assert text.index("-- lost") < text.rindex("-- connected")
+    finally:
+        server.stop()
