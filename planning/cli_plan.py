@@ -14,6 +14,7 @@ from typing import Any
 from hexbot.errors import ScenarioError
 from hexbot.planning.commands import command_json, plan_to_commands
 from hexbot.planning.config_io import load_configuration
+from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import Cell
 from hexbot.planning.plan import Plan
 
@@ -36,6 +37,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="robust mode: the module fixed to the base, which never moves")
     parser.add_argument("--max-steps", type=int, default=200,
                         help="faithful modes: give up after this many time steps (default 200)")
+    hil = parser.add_argument_group("execution on the simulated cluster")
+    hil.add_argument("--execute", action="store_true",
+                     help="localize the simulated cluster, send the plan's commands through "
+                          "the PC IR port and check every move against the plant")
+    hil.add_argument("--scenario", metavar="NAME_OR_FILE",
+                     help="simulator scenario for --execute; its module ids, orientations "
+                          "and base module are used, its cells must match INITIAL")
+    hil.add_argument("--seed", type=int, default=None, help="simulator seed (default: scenario's)")
 
 
 def _cell(text: str) -> Cell:
@@ -46,8 +55,9 @@ def _cell(text: str) -> Cell:
     return (x, y)
 
 
-def make_plan(args: argparse.Namespace) -> Plan:
-    initial = load_configuration(args.initial)
+def make_plan(args: argparse.Namespace, initial: Configuration | None = None) -> Plan:
+    if initial is None:
+        initial = load_configuration(args.initial)
     goal = load_configuration(args.goal).cells
     if args.mode == "robust":
         from hexbot.planning.robust import plan_robust
@@ -108,6 +118,8 @@ def plan_text(plan: Plan, style: str = "combined") -> str:
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.execute:
+        return run_execute(args)
     plan = make_plan(args)
     if args.json:
         print(json.dumps(plan_json(plan, args.style)))
@@ -119,5 +131,48 @@ def run(args: argparse.Namespace) -> int:
         plot_plan(plan, args.plot)
     if not plan.reached:
         print(f"hexbot plan: goal not reached: {plan.reason}", file=sys.stderr)
+        return 1
+    return 0
+
+
+BOOT_S = 6.0  # firmware boot texts and LED shows
+
+
+def run_execute(args: argparse.Namespace) -> int:
+    """Plan from the scenario's cluster, then execute on the simulator."""
+    from hexbot.hil_sim import Simulator, load_scenario
+    from hexbot.planning.execute import configuration_of, execute
+
+    if not args.scenario:
+        raise ScenarioError("--execute needs --scenario NAME (the simulated cluster)")
+    sim = Simulator(load_scenario(args.scenario), seed=args.seed)
+    initial = configuration_of(sim)
+    wanted = load_configuration(args.initial).cells
+    if wanted != initial.cells:
+        raise ScenarioError(
+            f"{args.initial} does not describe scenario {args.scenario}: cells "
+            f"{sorted(wanted)} vs {sorted(initial.cells)}")
+    base = sim.scenario.base
+    if args.mode == "robust" and base is not None:
+        args.fixed = sim.modules[base].position
+    plan = make_plan(args, initial)
+    if not plan.reached:
+        print(plan_text(plan, args.style))
+        print(f"hexbot plan: goal not reached, nothing executed: {plan.reason}",
+              file=sys.stderr)
+        return 1
+    if not args.json:
+        print(plan_text(plan, args.style))
+        print(f"executing on scenario {args.scenario}: boot, localize, then move by move")
+    sim.run(BOOT_S)
+    report = execute(plan, sim, log=None if args.json else print)
+    if args.json:
+        print(json.dumps({**plan_json(plan, args.style), "execution": report.as_json()}))
+    else:
+        done = sum(m.ok for m in report.moves)
+        print(f"executed {done}/{plan.move_count} moves in {report.sim_seconds:.1f} s of "
+              f"simulated time; goal {'reached' if report.reached else 'NOT reached'}")
+    if not report.reached:
+        print(f"hexbot plan: execution stopped: {report.failure}", file=sys.stderr)
         return 1
     return 0
