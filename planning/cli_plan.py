@@ -17,6 +17,7 @@ from hexbot.planning.config_io import load_configuration
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import Cell
 from hexbot.planning.plan import Plan
+from hexbot.planning.robust import step_lower_bound
 
 MODES = ("faithful-serial", "faithful-parallel", "robust")
 
@@ -101,7 +102,9 @@ def plan_text(plan: Plan, style: str = "combined") -> str:
     lines = [
         f"mode {plan.mode}: goal {'reached' if plan.reached else 'NOT reached'}, "
         f"{plan.time_steps} time step(s), {plan.move_count} move(s)"
-        + (f" (lower bound {plan.lower_bound} moves)" if plan.lower_bound is not None else "")
+        + (f" (lower bounds: {plan.lower_bound} moves, "
+           f"{step_lower_bound(plan.initial.cells, plan.goal)} time steps)"
+           if plan.lower_bound is not None else "")
     ]
     for t, step in enumerate(plan_to_commands(plan, style), start=1):  # type: ignore[arg-type]
         lines.append(f"step {t}:")
