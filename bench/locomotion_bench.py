@@ -3,9 +3,9 @@
     python bench/locomotion_bench.py            # the 10,000 x 10,000 case and smaller ones
     python bench/locomotion_bench.py --quick    # small cases only
 
-Each case runs Salvador's no-obstacle rules on a flat strip of n modules for
-R rounds (connectivity check on, as in every normal run) and reports the wall
-time, rounds per second and module-rounds per second.
+Each case runs a rule set on a flat strip of n modules for R rounds
+(connectivity check on, as in every normal run) and reports the wall time,
+rounds per second and module-rounds per second.
 """
 
 from __future__ import annotations
@@ -44,7 +44,12 @@ def main() -> int:
     args = ap.parse_args()
     cases = [("salvador-free", 100, 2000), ("salvador-pyramids", 1000, 2000)]
     if not args.quick:
-        cases += [("salvador-free", 10_000, 10_000), ("salvador-pyramids", 10_000, 10_000)]
+        cases += [
+            ("salvador-free", 10_000, 10_000),
+            ("salvador-pyramids", 10_000, 10_000),
+            ("salvador", 10_000, 10_000),
+            ("otero", 10_000, 10_000),
+        ]
     out = {
         "python": sys.version.split()[0],
         "machine": platform.machine(),
