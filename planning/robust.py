@@ -1,12 +1,17 @@
 """The ``robust`` planner: the thesis' idea (fill voids with electrons) made safe.
 
-Serial core. While electrons remain: pick an electron that is not a cut
-vertex, search (breadth-first over Table 4-3 rotations, with every other
-module fixed) a path to a void, and move it there. The module travels over
-the configuration minus itself, which is connected, so every intermediate
-configuration is connected; every rotation has its substrate and its three
-swept cells and goal empty. Voids are only filled when no neighbouring void
-is left without three consecutive free sides (it could never be entered).
+Serial core. While voids remain: pick a mover (an electron, or a goal module
+that must step aside) that is not a cut vertex, search breadth-first over
+Table 4-3 rotations, with every other module fixed, a path to a void, and
+move it there. The module travels over the configuration minus itself,
+which is connected, so every intermediate configuration is connected; every
+rotation has its substrate and its goal and three swept cells empty. A void
+is only filled when the cells still to fill can then be entered in some
+order (:func:`fillable`); goal modules that wall a void in step aside
+(:func:`must_move`) or park outside the goal. If the forward search gets
+stuck, the same search runs from the goal back to the start and the moves
+are reversed (every rotation is undone by the opposite one over the same
+cells).
 
 Parallel schedule. The serial moves are list-scheduled into time steps: a
 move runs as soon as no earlier pending move touches its cells (start,
@@ -17,7 +22,8 @@ order is packed greedily instead (always possible).
 
 Failures are reported, never hidden: disconnected inputs, different module
 counts, immobile configurations (Fig. 4-6: no module can rotate without
-breaking connectivity), and goals no electron can reach.
+breaking connectivity), goal cells that can never be entered, and searches
+that find no plan (the planner is not complete; see docs/planning.md).
 """
 
 from __future__ import annotations
