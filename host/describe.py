@@ -26,10 +26,10 @@ from hexbot.protocol.parser import (
 
 
 def who(role: str | None, module: int | None) -> str:
-    """``M03``, ``S`` or ``?`` (no prefix)."""
+    """``M03 ``, ``S `` or nothing (no prefix: a control board's debug port)."""
     if role is None:
-        return "?"
-    return f"{role}{module:02d}" if module is not None else role
+        return ""
+    return (f"{role}{module:02d}" if module is not None else role) + " "
 
 
 def code_name(code: int) -> str:
@@ -50,9 +50,9 @@ def error_name(reason: int) -> str:
 
 def describe_event(ev: Event) -> str:  # noqa: C901 - one line per event kind
     if isinstance(ev, Ack):
-        return f"{who(ev.role, ev.module)} {ev.describe()}"
+        return f"{who(ev.role, ev.module)}{ev.describe()}"
     if isinstance(ev, ErrorReply):
-        return f"{who(ev.role, ev.module)} ERR {code_name(ev.code)}: {error_name(ev.reason)}"
+        return f"{who(ev.role, ev.module)}ERR {code_name(ev.code)}: {error_name(ev.reason)}"
     if isinstance(ev, StatusReport):
         loc = f"at ({ev.x:+03d},{ev.y:+03d}) yref {ev.yref}" if ev.localized else "not localized"
         return (f"STA id {ev.module_id} role {ev.role} {loc} "
