@@ -32,7 +32,7 @@ from hexbot.host.console.terminal import Entry, Terminal
 from hexbot.host.endpoints import Endpoints
 from hexbot.host.host import DEBUG, IR, Host
 from hexbot.host.link import LinkState, PortSettings
-from hexbot.protocol import wire
+from hexbot.protocol import frames, wire
 from hexbot.protocol.frames import Command
 
 Opener = Callable[[], tuple[Host, Endpoints | None]]
@@ -54,6 +54,8 @@ class HexBotConsole(App[None]):
         ("status", "Status (70)", "status of the selected modules (or all)"),
         ("rotate", "Rotate CW/CCW (67/68)", "rotate a mobile module about a lattice joint"),
         ("all_off", "All actuators off (20)", "TurnOffAll to every module"),
+        ("set_role", "Set role (71)", "mobile (1) or substrate (2) for the selected modules"),
+        ("clear_error", "Clear error (72)", "clear the last error of the selected modules"),
         ("cancel", "Cancel operation", "stop the running workflow"),
         ("cycle_mode", "Terminal view: decoded/text/hex", "cycle how terminals show bytes"),
         ("save_terminals", "Save terminals", "write both terminals to the session folder"),
@@ -423,6 +425,21 @@ class HexBotConsole(App[None]):
         self.start_operation("All off", [
             self._exchange(commands.select(0), None, collect=True),
             self._exchange(commands.all_off(), None, collect=True)])
+
+    def action_set_role(self) -> None:
+        def chosen(ids: list[int]) -> None:
+            try:
+                cmd = frames.make("SetRole", ids[0])
+            except HexBotError as exc:
+                self.notify(str(exc), severity="error")
+                return
+            self.start_operation("SetRole", [self._exchange(cmd, self.selection,
+                                                            collect=self.selection is None)])
+        self._ask("Role for the selected modules: 1 mobile (M), 2 substrate (S)", "1", chosen)
+
+    def action_clear_error(self) -> None:
+        self.start_operation("ClearError", [self._exchange(
+            frames.make("ClearError"), self.selection, collect=self.selection is None)])
 
     def action_localize(self) -> None:
         default = str(self.selection[0]) if self.selection else "1"

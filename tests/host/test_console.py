@@ -254,3 +254,21 @@ async def test_console_reconnects_when_the_port_returns():
             assert text.index("-- lost") < text.rindex("-- connected")
     finally:
         server.stop()
+
+
+@sync
+async def test_set_role_from_the_palette(responder):
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        await until(pilot, lambda: app.port_states.get(IR, (None,))[0] is LinkState.CONNECTED)
+        app.select_modules([6])
+        assert await until(pilot, lambda: not app.busy and app.last_result)
+        await pilot.press("ctrl+p")
+        await pilot.press(*"set role")
+        await pilot.pause(0.5)
+        await pilot.press("enter")  # the palette runs the workflow, which asks
+        await pilot.pause(0.3)
+        await pilot.press("backspace", "2", "enter")
+        assert await until(pilot, lambda: "S06 ACK 71 SetRole" in ir_text(app))
+        assert responder.received[-1] == b"*G\x02NNNNNNN#"
+        assert ["06", "S"] == modules_rows(app)[0][:2]
