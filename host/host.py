@@ -163,10 +163,6 @@ class Host:
                     return None
                 self._changed.wait(left)
 
-    def quiet_for(self, seconds: float) -> None:
-        """Sleep; replies keep arriving into the journal meanwhile."""
-        time.sleep(seconds)
-
     # --- traffic (called by channels, from reader threads) -----------------
 
     def received(self, port: str, data: bytes) -> float:

@@ -130,11 +130,6 @@ class Composer(Vertical):
     def arg_values(self) -> list[str]:
         return [inp.value.strip() for inp in self.query(".arg-input").results(Input)]
 
-    def set_args(self, values: list[int]) -> None:
-        for inp, value in zip(self.query(".arg-input").results(Input), values, strict=False):
-            inp.value = str(value)
-        self._validate()
-
     @on(Input.Changed, ".arg-input")
     def _arg_changed(self, event: Input.Changed) -> None:
         event.stop()

@@ -36,9 +36,3 @@ class ModulesView(DataTable):
         self.clear()
         for row in rows:
             self.add_row(*row, key=row[0])
-
-    def selected_id(self) -> int | None:
-        if not self.row_count:
-            return None
-        key = self.coordinate_to_cell_key((self.cursor_row, 0)).row_key.value
-        return int(key) if key and key.isdigit() else None
