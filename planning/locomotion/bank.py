@@ -45,7 +45,7 @@ def run_one(ruleset: str, scenario: str, n: int, rounds: int) -> BankRow:
         v = res.violation
         detail = f"{v.kind} in round {v.round} at {v.cells[:3]}"
     elif res.deadlock:
-        detail = f"no rule fires in round {res.deadlock.round}"
+        detail = res.deadlock.message
     return BankRow(
         ruleset, sc.name, n, res.status, res.rounds, res.advanced,
         min(moves), round(sum(moves) / len(moves), 1), max(moves), detail,

@@ -69,7 +69,9 @@ def run(args: argparse.Namespace) -> int:
         raise ScenarioError(f"--render: {args.render!r} must end in .png or .gif")
     rs = load_ruleset(args.ruleset)
     sc = load_scenario(args.scenario, args.n)
-    rec = render.Recorder() if args.render else None
+    rec = None
+    if args.render:  # a GIF keeps 400 to 800 frames of a long run; a PNG the last one
+        rec = render.Recorder(last_only=args.render.lower().endswith(".png"))
     result = simulate(
         rs, sc, rounds=args.rounds, until_advance=args.until_advance, on_round=rec,
         check_connectivity=not args.no_connectivity_check,

@@ -18,6 +18,7 @@ walls continue) whenever a module comes near its border.
 
 from __future__ import annotations
 
+import hashlib
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -65,14 +66,20 @@ class Violation:
 
 @dataclass
 class Deadlock:
-    """No rule fired in a round and the goal was not reached."""
+    """No rule fired in a round and the goal was not reached, or the whole
+    configuration came back to an earlier one (a livelock: the run would
+    repeat for ever without reaching the goal)."""
 
     round: int
     moving_states: dict[str, int]  # modules per non-resting state
     message: str
+    repeats_round: int | None = None  # livelock: the earlier round it equals
 
     def to_dict(self) -> dict:
-        return {"round": self.round, "states": self.moving_states, "message": self.message}
+        out = {"round": self.round, "states": self.moving_states, "message": self.message}
+        if self.repeats_round is not None:
+            out["repeats_round"] = self.repeats_round
+        return out
 
 
 @dataclass
@@ -499,6 +506,7 @@ class Engine:
         goal = goal or Goal()
         status, violation, deadlock = "rounds-exhausted", None, None
         w = self.world
+        seen: dict[bytes, int] = {self._fingerprint(): self.round}
         if on_round:
             on_round(self)
         while self.round < max_rounds:
@@ -522,15 +530,38 @@ class Engine:
             if goal.reached_beyond(w.xy()):
                 status = "reached"
                 break
+            key = self._fingerprint()
+            if key in seen:
+                status = "deadlock"
+                deadlock = self._deadlock_report(repeats=seen[key])
+                break
+            seen[key] = self.round
         return self.result(status, violation, deadlock)
 
-    def _deadlock_report(self) -> Deadlock:
+    def _fingerprint(self) -> bytes:
+        """Digest of the configuration: positions (with the lattice's origin
+        and shape, which give them meaning) and states."""
+        w = self.world
+        h = hashlib.blake2b(digest_size=16)
+        h.update(np.array([w.ox, w.oy, *w.grid.shape], dtype=np.int64).tobytes())
+        h.update(w.pos.tobytes())
+        h.update(w.state.tobytes())
+        return h.digest()
+
+    def _deadlock_report(self, repeats: int | None = None) -> Deadlock:
         w = self.world
         counts: dict[str, int] = {}
         for s in w.state.tolist():
             name = self.rs.states[s]
             if name not in self.rs.resting:
                 counts[name] = counts.get(name, 0) + 1
+        if repeats is not None:
+            return Deadlock(
+                self.round,
+                counts,
+                f"livelock: round {self.round} repeats the configuration of round {repeats}",
+                repeats_round=repeats,
+            )
         return Deadlock(
             self.round + 1,
             counts,

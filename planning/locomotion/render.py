@@ -36,8 +36,11 @@ class Recorder:
     """Keeps module positions and states each round (``on_round`` callback)."""
 
     every: int = 1
+    last_only: bool = False  # a PNG needs the final frame only
+    max_frames: int = 400  # past twice this, every other frame goes and `every` doubles
     frames: list[tuple[np.ndarray, np.ndarray]] = field(default_factory=list)
     states: list[str] = field(default_factory=list)
+    box: list[int] = field(default_factory=list)  # x0, y0, x1, y1 over every round seen
     obstacles: set[Cell] = field(default_factory=set)
 
     def __call__(self, engine: Engine) -> None:
@@ -45,17 +48,24 @@ class Recorder:
             return
         w = engine.world
         self.states = engine.rs.states
-        self.frames.append((w.xy().copy(), w.state.copy()))
+        frame = (w.xy().copy(), w.state.copy())
+        lo, hi = frame[0].min(axis=0), frame[0].max(axis=0)
+        if not self.box:
+            self.box = [int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1])]
+        else:
+            self.box = [min(self.box[0], int(lo[0])), min(self.box[1], int(lo[1])),
+                        max(self.box[2], int(hi[0])), max(self.box[3], int(hi[1]))]
+        if self.last_only:
+            self.frames = [frame]
+            return
+        self.frames.append(frame)
+        if len(self.frames) > 2 * self.max_frames:  # long runs: keep memory bounded
+            self.frames = self.frames[::2]
+            self.every *= 2
 
 
-def _bounds(frames, pad: int = 2) -> tuple[int, int, int, int]:
-    allxy = np.concatenate([f[0] for f in frames])
-    return (
-        int(allxy[:, 0].min()) - pad,
-        int(allxy[:, 1].min()) - pad,
-        int(allxy[:, 0].max()) + pad,
-        int(allxy[:, 1].max()) + pad,
-    )
+def _bounds(box: list[int], pad: int = 2) -> tuple[int, int, int, int]:
+    return box[0] - pad, box[1] - pad, box[2] + pad, box[3] + pad
 
 
 def ascii_map(positions: list[Cell], states: list[str], obstacles: list[Cell]) -> str:
@@ -82,7 +92,7 @@ def save(path: str, rec: Recorder, obstacles: list[Cell], cell_px: int = 0) -> N
         raise ScenarioError(f"--render: {path!r} must end in .png or .gif")
     if not rec.frames:
         raise ScenarioError("nothing was recorded")
-    x0, y0, x1, y1 = _bounds(rec.frames)
+    x0, y0, x1, y1 = _bounds(rec.box)
     w, h = x1 - x0 + 1, y1 - y0 + 1
     px = cell_px or max(2, min(16, 1200 // max(w, h)))
     base = np.zeros((h, w, 3), dtype=np.uint8)

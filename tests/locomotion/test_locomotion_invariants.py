@@ -70,3 +70,13 @@ def test_nothing_fires_is_a_deadlock():
     assert res.status == "deadlock"
     assert res.deadlock.round == 1
     assert res.deadlock.moving_states == {"a": 2}
+
+
+def test_a_configuration_that_comes_back_is_a_livelock():
+    # Two states that flip back and forth: rules keep firing, nothing moves.
+    rules = ("rule F\n priority 1\n state a\n become c\n"
+             "rule G\n priority 1\n state c\n become a\n")
+    res = run(rules, [(0, 0), (1, 0)], ["a", "a"], rounds=50)
+    assert res.status == "deadlock"
+    assert res.deadlock.repeats_round == 0 and res.deadlock.round == 2
+    assert "livelock" in res.deadlock.message
