@@ -15,7 +15,7 @@ from pathlib import Path
 from textual import on, work
 from textual.app import App, ComposeResult
 from textual.binding import Binding
-from textual.containers import Horizontal, Vertical
+from textual.containers import Horizontal, ScrollableContainer, Vertical
 from textual.widgets import Footer, Header, ProgressBar, Static, TabbedContent, TabPane
 
 from hexbot.errors import HexBotError
@@ -24,7 +24,7 @@ from hexbot.host.capture import Record
 from hexbot.host.console.composer import Composer
 from hexbot.host.console.connection import PortPanel
 from hexbot.host.console.dialogs import HelpScreen, PromptScreen, RotateScreen
-from hexbot.host.console.lattice import LatticeView
+from hexbot.host.console.lattice import LatticeLegend, LatticeView
 from hexbot.host.console.messages import Parsed, PortState, SimEvent, Traffic
 from hexbot.host.console.modules_view import ModulesView
 from hexbot.host.console.palette import ConsoleCommands
@@ -117,7 +117,9 @@ class HexBotConsole(App[None]):
             with TabPane("Modules", id="modules"):
                 yield ModulesView(id="modules-view")
             with TabPane("Lattice", id="lattice"):
-                yield LatticeView(id="lattice-view")
+                with ScrollableContainer(id="lattice-box"):  # big clusters scroll
+                    yield LatticeView(id="lattice-view")
+                yield LatticeLegend(id="lattice-legend")
             with TabPane("Ports", id="ports"):
                 with Vertical(id="ports-box"):
                     yield PortPanel(IR, "IR transceiver (all modules)", None, wire.BAUD_IR)
@@ -251,6 +253,7 @@ class HexBotConsole(App[None]):
         with self.host.lock:
             self.query_one(ModulesView).refresh_from(self.host.model)
             self.query_one(LatticeView).refresh_from(self.host.model)
+            self.query_one(LatticeLegend).refresh_from(self.host.model)
         self._update_status()
 
     def _update_status(self) -> None:

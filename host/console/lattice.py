@@ -108,10 +108,14 @@ def lattice_legend(model: ClusterModel) -> str:
 
 
 class LatticeView(Static):
+    """The drawing (scrolls with its container for big clusters)."""
+
     def refresh_from(self, model: ClusterModel) -> None:
-        text = draw_lattice(model)
-        legend = lattice_legend(model)
-        if legend:
-            text.append("\n\n")
-            text.append(legend, style="dim")
-        self.update(text)
+        self.update(draw_lattice(model))
+
+
+class LatticeLegend(Static):
+    """Positions in words, the simulator's last plant events, the axes."""
+
+    def refresh_from(self, model: ClusterModel) -> None:
+        self.update(Text(lattice_legend(model), style="dim"))

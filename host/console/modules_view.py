@@ -33,6 +33,9 @@ class ModulesView(DataTable):
 
     def refresh_from(self, model: ClusterModel) -> None:
         rows = module_rows(model)
+        cursor = self.cursor_row  # keep the user's place across refreshes
         self.clear()
         for row in rows:
             self.add_row(*row, key=row[0])
+        if rows:
+            self.move_cursor(row=min(cursor, len(rows) - 1))

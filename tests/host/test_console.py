@@ -229,8 +229,8 @@ async def test_rotation_on_simulator_moves_module_in_lattice(log_dir):
         sent = [line for line in ir_text(app).splitlines() if "> CW(" in line]
         assert sent and sent[-1].endswith("> CW(4, 8, 4, 10, 4, 8, 5, 9)")
         assert await until(pilot, lambda: app.host.model.truth[2] == ((0, 1), 2), timeout=10)
-        lattice = app.query_one("#lattice-view").render()
-        assert "module 2 moved (-1, 1) -> (0, 1)" in str(lattice)
+        legend = app.query_one("#lattice-legend").render()
+        assert "module 2 moved (-1, 1) -> (0, 1)" in str(legend)
 
 
 @sync
