@@ -270,7 +270,9 @@ class ReplyParser:
         body = _fixed(buf, b"ACK", 1)
         if body is None or body == PARTIAL:
             return body
-        return 6, Ack(raw=buf[:6], code=body[0], role=self._role, module=self._module)
+        ev = Ack(raw=buf[:6], code=body[0], role=self._role, module=self._module)
+        self._role = self._module = None  # a prefix belongs to one reply only
+        return 6, ev
 
     def _m_err(self, buf: bytes):
         body = _fixed(buf, b"ERR", 2)
@@ -278,6 +280,7 @@ class ReplyParser:
             return body
         ev = ErrorReply(raw=buf[:7], code=body[0], reason=body[1], role=self._role,
                         module=self._module)
+        self._role = self._module = None
         return 7, ev
 
     def _m_status(self, buf: bytes):
@@ -290,6 +293,7 @@ class ReplyParser:
         ev = StatusReport(raw=buf[:12], module_id=ident, role=chr(role), localized=bool(loc),
                           x=_signed(x), y=_signed(y), yref=yref, error=err,
                           prefix_role=self._role)
+        self._role = self._module = None
         return 12, ev
 
     def _m_msg(self, buf: bytes):
