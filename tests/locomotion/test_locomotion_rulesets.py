@@ -54,7 +54,7 @@ def test_rule_12_reconstruction_lower_left():
 
 
 @pytest.mark.parametrize(
-    "scenario", ["pyramid", "histogram-1", "wide-cavity-right", "wide-diagonal"]
+    "scenario", ["pyramid", "histogram-1", "wide-cavity-right", "wide-diagonal", "maze"]
 )
 @pytest.mark.parametrize("n", [5, 20])
 def test_obstacle_rules_pass_these_scenarios(scenario, n):
@@ -70,7 +70,6 @@ def test_obstacle_rules_stall_safely_where_the_reconstruction_falls_short(scenar
     result = simulate(load_ruleset("salvador"), load_scenario(scenario, 20), rounds=3000)
     assert result.status == "deadlock"
     assert result.violation is None
-    assert result.deadlock.round <= 3000
 
 
 def test_otero_front_module_starts_as_head():
