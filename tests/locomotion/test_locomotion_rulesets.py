@@ -62,12 +62,16 @@ def test_obstacle_rules_pass_these_scenarios(scenario, n):
     assert result.status == "reached", result.violation or result.deadlock
 
 
-@pytest.mark.parametrize("scenario", ["cavity-simple", "histogram-2", "wide-cavity-middle"])
-def test_obstacle_rules_stall_safely_where_the_reconstruction_falls_short(scenario):
+@pytest.mark.parametrize(
+    ("scenario", "n"),
+    [("cavity-simple", 20), ("histogram-2", 20), ("wide-cavity-middle", 20),
+     ("irregular-right", 15)],  # the last one: two corks collided before NO_STOPPER_*
+)
+def test_obstacle_rules_stall_safely_where_the_reconstruction_falls_short(scenario, n):
     # Our reconstruction does not yet pass these: the run must end in a
     # reported deadlock, never in success and never with a broken invariant
     # (corks and openers move only when 'simple'). See docs/locomotion.md.
-    result = simulate(load_ruleset("salvador"), load_scenario(scenario, 20), rounds=3000)
+    result = simulate(load_ruleset("salvador"), load_scenario(scenario, n), rounds=3000)
     assert result.status == "deadlock"
     assert result.violation is None
 
