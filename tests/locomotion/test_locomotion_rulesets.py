@@ -25,7 +25,7 @@ def test_pyramid_rules_match_table_2_first_rows(n):
     assert {k: result.advance_rounds[k - 1] - n for k in TABLE_2_FIRST_ROWS} == TABLE_2_FIRST_ROWS
 
 
-@pytest.mark.parametrize("name", ["salvador-pyramids", "salvador"])
+@pytest.mark.parametrize("name", ["salvador-pyramids", "salvador", "otero"])
 def test_later_rule_sets_keep_table_1_on_flat_ground(name):
     result = simulate(load_ruleset(name), flat_scenario(10), until_advance=10)
     assert result.advance_rounds == [12 + 4 * i for i in range(10)]
