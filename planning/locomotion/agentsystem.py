@@ -24,7 +24,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
-from hexbot.planning.locomotion.rules import And, Atom, Expr, Not, Or
+from hexbot.planning.locomotion.rules import And, Atom, Expr, Not
 
 _TERM = re.compile(
     r"!|\(|\)|S[A-Z]{5}|E-?\d+,-?\d+|T-?\d+,-?\d+,[A-Z]{5}|P-?\d+,-?\d+|A\d{4}"
@@ -103,13 +103,6 @@ def _split_action(rule: ASRule) -> None:
 # --- expressions ----------------------------------------------------------
 
 
-@dataclass(frozen=True)
-class Own:
-    """``S<state>`` inside a precondition: the module's own state."""
-
-    state: str
-
-
 def parse(tokens: list[str], repairs: list[str] | None = None) -> list:
     """Nested lists: a group is a list of items; an item is a term, ('!', item)
     or a sub-group. Unbalanced parentheses are repaired (an extra ')' closes
@@ -175,4 +168,4 @@ def to_expr(item) -> Expr:
     return Atom((int(dx), int(dy)), frozenset({cls}))
 
 
-__all__ = ["ASRule", "Or", "Own", "parse", "read_listing", "to_expr", "tokenize"]
+__all__ = ["ASRule", "parse", "read_listing", "to_expr", "tokenize"]

@@ -152,7 +152,6 @@ class World:
         if len(set(modules)) != len(modules):
             raise ScenarioError("two modules in one cell")
         self.state_names = list(states)
-        self.margin = margin
         # Obstacles at the ends of this axis (x: 0, y: 1) continue without end:
         # floors (and walls, for rotated scenarios) never run out.
         self.extend_axis = extend_axis
@@ -257,7 +256,7 @@ class Engine:
         self.advanced = 0
         self.advance_rounds: list[int] = []
         self.rule_counts = np.zeros(len(self.variants), dtype=np.int64)
-        self._luts = self._class_luts()
+        self._luts: dict[tuple[frozenset[str], bool], np.ndarray] = {}
         self.resting_lut = np.array([s in ruleset.resting for s in ruleset.states], dtype=bool)
         self.support_lut = self._lut(frozenset(ruleset.support))
         self.become = np.array(
@@ -288,9 +287,6 @@ class Engine:
             else:
                 lut[MODULE_BASE + self.rs.states.index(c)] = True
         return lut
-
-    def _class_luts(self) -> dict[tuple[frozenset[str], bool], np.ndarray]:
-        return {}
 
     def _atom_lut(self, atom: Atom) -> np.ndarray:
         key = (atom.classes, atom.negated)
