@@ -50,8 +50,11 @@ class PtyResponder:
         self._thread.start()
 
     def close(self) -> None:
-        # Join before closing: a recycled fd number must not be read by
-        # this thread on behalf of the next test's pty.
+        # Idempotent: a second close must not close a recycled fd number
+        # that now belongs to someone else. Join before closing: a recycled
+        # fd must not be read by this thread on behalf of the next test's pty.
+        if self._stop.is_set():
+            return
         self._stop.set()
         self._thread.join(timeout=2)
         for fd in (self.master, self.slave):

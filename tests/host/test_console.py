@@ -154,7 +154,8 @@ async def test_help_palette_and_views(responder, tmp_path):
 async def test_port_loss_is_shown_and_state_kept(responder):
     app = _app(responder)
     async with app.run_test(size=(100, 30)) as pilot:
-        await until(pilot, lambda: app.port_states.get(IR, (None,))[0] is LinkState.CONNECTED)
+        assert await until(pilot, lambda: app.port_states.get(IR, (None,))[0]
+                           is LinkState.CONNECTED)
         app.select_modules([3])
         assert await until(pilot, lambda: not app.busy and app.last_result)
         responder.close()
