@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import re
 import sys
 from pathlib import Path
 
@@ -19,6 +20,23 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="after a broadcast, answers are over when the link was quiet "
                              "this long (default 1.5; less with a fast simulator)")
     add_port_arguments(parser)
+    # Scripts are regressions: on the embedded simulator run them 20x faster
+    # than real time (timeouts in a script are wall-clock seconds).
+    parser.set_defaults(sim_speed=20.0)
+
+
+_SCENARIO_PRAGMA = re.compile(r"^#\s*scenario:\s*(\S+)\s*$")
+
+
+def declared_scenario(path: Path) -> str | None:
+    """A script may name the simulator scenario it was written for in a
+    comment line ``# scenario: NAME``; used when neither --port nor
+    --scenario is given, so ``hexbot run SCRIPT`` just works."""
+    for line in path.read_text().splitlines():
+        m = _SCENARIO_PRAGMA.match(line.strip())
+        if m:
+            return m.group(1)
+    return None
 
 
 def run(args: argparse.Namespace) -> int:
@@ -26,6 +44,8 @@ def run(args: argparse.Namespace) -> int:
     if args.check:
         print(f"{args.script}: {len(steps)} steps, syntax OK")
         return 0
+    if not args.port and not args.scenario:
+        args.scenario = declared_scenario(args.script)
     with session(args) as host:
         runner = ScriptRunner(host, str(args.script), quiet=args.quiet)
         try:
