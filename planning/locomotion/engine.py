@@ -260,7 +260,7 @@ class Engine:
         self.resting_lut = np.array([s in ruleset.resting for s in ruleset.states], dtype=bool)
         self.support_lut = self._lut(frozenset(ruleset.support))
         self.become = np.array(
-            [ruleset.states.index(v.rule.become) if v.rule.become else -1 for v in self.variants],
+            [ruleset.states.index(v.become) if v.become else -1 for v in self.variants],
             dtype=np.int16,
         )
         self.has_move = np.array([v.move is not None for v in self.variants], dtype=bool)

@@ -24,7 +24,9 @@ earlier by ``define NAME EXPRESSION`` (a shared condition written once), and
 edge neighbours, so its leaving cannot cut the robot locally. POS is a name
 (N E S W NE NW SE SW) or an offset ``(dx,dy)``; CLASS is ``empty``,
 ``obstacle``, ``module`` (any state) or a state name. All ``require`` lines
-must hold. Actions: ``become STATE`` and/or ``move POS`` (a neighbour cell).
+must hold. Actions: ``become STATE`` and/or ``move POS`` (a neighbour cell);
+``become A B C D`` names one state per quarter turn of the rule (0, 90, 180,
+270 degrees counter-clockwise), for states that carry a direction.
 Every error names the file and line.
 """
 
@@ -183,6 +185,7 @@ class _Draft:
     become: str | None = None
     move: Offset | None = None
     symmetry: str | None = None
+    become_turns: tuple[str, str, str, str] | None = None
 
     def __post_init__(self) -> None:
         self.conditions: list[Expr] = []
@@ -314,9 +317,14 @@ def _rule_line(
         except ValueError as exc:
             raise _Error(str(exc)) from None
     elif key == "become":
-        if rest not in states:
-            raise _Error(f"unknown state {rest!r} (states: {', '.join(states)})")
-        d.become = rest
+        words = rest.split()
+        if len(words) not in (1, 4):
+            raise _Error("become takes one state, or four: one per quarter turn")
+        for w in words:
+            if w not in states:
+                raise _Error(f"unknown state {w!r} (states: {', '.join(states)})")
+        d.become = words[0]
+        d.become_turns = tuple(words) if len(words) == 4 else None
     elif key == "move":
         off = parse_position(rest)
         if off == (0, 0) or max(abs(off[0]), abs(off[1])) != 1:
@@ -337,6 +345,8 @@ def _finish(d: _Draft, default_sym: str) -> Rule:
         raise _Error(f"rule {d.ident} has no state")
     if d.become is None and d.move is None:
         raise _Error(f"rule {d.ident} has no action (become and/or move)")
+    if d.become_turns and (d.symmetry or default_sym) != "rotations":
+        raise _Error(f"rule {d.ident}: four 'become' states need 'symmetry rotations'")
     for c in d.conditions:
         for a in atoms_of(c):
             if a.offset == (0, 0) and SIMPLE not in a.classes:
@@ -348,6 +358,7 @@ def _finish(d: _Draft, default_sym: str) -> Rule:
         state=d.state,
         conditions=tuple(d.conditions),
         become=d.become,
+        become_turns=d.become_turns,
         move=d.move,
         symmetry=d.symmetry or default_sym,
         line=d.line,

@@ -141,6 +141,9 @@ class Rule:
     move: Offset | None = None
     symmetry: str = "rotations"
     line: int = 0  # where the rule starts in its file
+    # One new state per quarter turn (0, 90, 180, 270 degrees counter-clockwise):
+    # Otero's cycle breakers keep their direction of travel in their state.
+    become_turns: tuple[str, str, str, str] | None = None
 
     @property
     def label(self) -> str:
@@ -156,6 +159,11 @@ class Variant:
     mirrored: bool
     conditions: tuple[Expr, ...]
     move: Offset | None
+
+    @property
+    def become(self) -> str | None:
+        turns = self.rule.become_turns
+        return turns[self.quarter_turns] if turns else self.rule.become
 
     @property
     def label(self) -> str:
@@ -177,7 +185,8 @@ def variants(rule: Rule) -> list[Variant]:
         for q in turns:
             conds = tuple(c.transformed(q, mirrored) for c in rule.conditions)
             move = transform(rule.move, q, mirrored) if rule.move else None
-            key = (conds, move)
+            become = rule.become_turns[q] if rule.become_turns else rule.become
+            key = (conds, move, become)
             if key in seen:  # a symmetric rule gives the same variant twice
                 continue
             seen.add(key)
