@@ -407,9 +407,13 @@ static void m162_run_step(avr_t *avr)
 			avr->state = cpu_Done;
 			return;
 		} else {
+			/* Never past the quantum's end, where the scheduler delivers
+			 * the bytes other MCUs sent meanwhile.  The SLEEP instruction
+			 * itself may have ended on (or just past) the boundary: then
+			 * stay put and sleep on in the next quantum. */
 			avr_cycle_count_t target = avr->cycle + 1 + sleep;
-			if (target > m->quantum_end && m->quantum_end > avr->cycle)
-				target = m->quantum_end;
+			if (target > m->quantum_end)
+				target = m->quantum_end > avr->cycle ? m->quantum_end : avr->cycle;
 			avr->cycle = target;
 		}
 	}

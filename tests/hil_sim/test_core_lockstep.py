@@ -164,3 +164,16 @@ def test_sleep_with_interrupts_off_ends_only_without_a_watchdog():
     assert (first, cleared, second) == (0x01, 0x00, 0xE0)
     assert 16_000 <= reset - start <= 16_100
     assert c.state(m) == "done"  # watchdog off now: nothing can wake it
+
+
+def test_sleep_that_starts_on_a_quantum_boundary_does_not_skip_the_next_quantum():
+    # Run one cycle at a time across the tick: at some step the SLEEP after the
+    # interrupt ends exactly on the boundary. The core used to sleep on from
+    # there to the next timer event (10 ms), so bytes sent to it meanwhile all
+    # arrived at once and overran its receiver.
+    c = Cluster(1000)
+    m = c.add_mcu(build("idle"), "idle")
+    c.run(9_990)
+    for until in range(9_991, 10_300):
+        c.run(until)
+        assert c.mcu_cycle(m) <= until + 4, (until, c.mcu_cycle(m))
