@@ -129,3 +129,23 @@ def test_become_takes_one_state_per_quarter_turn():
 def test_bad_become_lines_name_the_problem(tail, message):
     with pytest.raises(ScenarioError, match=message):
         loads(HEADER + tail, "x.rules")
+
+
+@ALL_TURNS
+def test_a_pivot_walled_in_by_a_filled_dead_end_leaves_as_superactive(turns):
+    # U4 (ours): three static edge neighbours, its west side free; it leaves
+    # north-west around its north neighbour (the deadlock of cavity-simple).
+    block = [(0, 1), (1, 1), (1, 0), (1, -1), (0, -1)]
+    cfg = {(0, 0): "PIVOT", **{c: "STOPA" for c in block}}
+    obstacles = [(-1, -1), (-1, -2), (0, -2), (1, -2), (2, -1), (2, 0), (2, 1), (1, 2), (0, 2)]
+    after, _ = run(cfg, obstacles, turns=turns)
+    assert after[(0, 0)] == "SUPER"
+    after, _ = run(cfg, obstacles, rounds=2, turns=turns)
+    assert after.get((-1, 1)) == "ACTIV" and (0, 0) not in after
+
+
+def test_a_walled_in_pivot_that_holds_the_robot_together_stays():
+    # Without the diagonal modules its neighbours meet only through it.
+    cfg = {(0, 0): "PIVOT", (0, 1): "STOPA", (1, 0): "STOPA", (0, -1): "STOPA"}
+    after, _ = run(cfg, obstacles=[(-1, -1), (1, -1), (1, 1), (0, 2), (2, 0), (0, -2)])
+    assert after[(0, 0)] != "SUPER"
