@@ -28,7 +28,7 @@ from .geometry import Cell, neighbor
 from .scenario import ModuleSpec, Scenario, load_scenario
 from .simulator import Simulator, _load_core
 
-BOOT_S = 6.0  # simulated seconds of boot (texts, handshake) excluded from every case
+BOOT_S = 24.0  # simulated seconds of boot (8 boot-text slots, docs/firmware.md) excluded
 AVR_TESTS = Path(__file__).resolve().parent.parent / "tests" / "hil_sim" / "avr"
 
 

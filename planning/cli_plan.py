@@ -138,7 +138,7 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-BOOT_S = 6.0  # firmware boot texts and LED shows
+BOOT_S = 24.0  # firmware boot: id texts in 8 slots of 2.64 s from 2 s (docs/firmware.md)
 
 
 def run_execute(args: argparse.Namespace) -> int:

@@ -33,6 +33,17 @@
 #define PC_BYTE_TIMEOUT_TICKS 34u  /* 10 byte times at 300 baud */
 #define IRSEL_HOLD_TICKS 1000u     /* a side channel falls back to the centre after 10 s of silence */
 
+/* Boot slots: every module of a cluster boots at once and the PC hears them
+ * all on one IR medium, so the texts that carry the id go out in the
+ * module's own slot: rank (id - 1) mod BOOT_SLOTS, the first slot at
+ * BOOT_FIRST_SLOT_TICKS after reset (the handshake and LFlash1/2 are over
+ * by 1.7 s), each slot as long as the slot text at 300 baud plus a guard. */
+#define BOOT_SLOTS 8u
+#define BOOT_FIRST_SLOT_TICKS 200u
+#define BOOT_GUARD_TICKS 5u
+#define BOOT_SLOT_TICKS ((REPLY_BYTES_BOOT * IR_BYTE_TICKS_X10 + 9u) / 10u + BOOT_GUARD_TICKS)
+_Static_assert(REPLY_BYTES_BOOT < 200u, "version string too long for the boot text");
+
 module_state_t g_state;
 
 static frame_rx_t pc_rx;
@@ -40,6 +51,8 @@ static uint8_t pending[HB_PC_FRAME_LEN];
 static uint8_t have_pending;
 static tick_t last_ir_byte;
 static uint8_t control_ready; /* 'R' seen from the control board */
+static const uint8_t *boot_next; /* boot text still to queue (see boot_texts) */
+static uint8_t boot_left;
 
 /* --- links ---------------------------------------------------------------- */
 
@@ -64,6 +77,10 @@ static void link_byte(uint8_t b)
 static uint8_t poll_inputs(void)
 {
     int16_t b;
+    while (boot_left && uart_try_putc(IR, *boot_next)) {
+        boot_next++;
+        boot_left--;
+    }
     if (frame_expire(&pc_rx) == FRAME_DROPPED)
         g_state.last_error = HB_ERR_BAD_FRAME;
     while ((b = uart_getc(IR)) >= 0) {
@@ -287,8 +304,10 @@ static void handle_frame(const uint8_t *f, tick_t received)
 
 static const uint8_t flash_args[2] = {3, 10};
 
-static void handshake(void)
+/* Control board handshake with its LED shows; returns the BOOT_* texts due. */
+static uint8_t handshake(void)
 {
+    uint8_t texts = BOOT_COMM_LISTENING;
     tick_t start = tick_now();
     while (!control_ready && tick_since(start) < HANDSHAKE_TICKS) {
         poll_inputs();
@@ -296,9 +315,7 @@ static void handshake(void)
     }
     if (control_ready) {
         leds_run(HB_FN_LFLASH1, flash_args);
-        uart_puts_P(IR, PSTR("CTR. BOARD READY"));
-        reply_tail(1, 0);
-        uart_puts_P(IR, PSTR("\n\r"));
+        texts |= BOOT_CTR_READY;
         start = tick_now();
         tick_t last = start;
         while (!g_state.control_up && tick_since(start) < HANDSHAKE_TICKS) {
@@ -312,8 +329,36 @@ static void handshake(void)
     }
     if (g_state.control_up) {
         leds_run(HB_FN_LFLASH2, flash_args);
-        reply_line_P(PSTR("CTR. LISTENING"));
+        texts |= BOOT_CTR_LISTENING;
     }
+    return texts;
+}
+
+/* Boot texts on the IR link. "COMM. BOARD READY" goes out at once on every
+ * module (no id yet: the texts are identical). The texts that carry the id
+ * wait for this module's boot slot and go out while LColor runs
+ * (poll_inputs() feeds the transmitter); return once they are on the air. */
+static void __attribute__((noinline)) boot(void)
+{
+    uint8_t text[REPLY_BYTES_BOOT];
+    uart_write(IR, text, reply_boot_text(text, BOOT_COMM_READY));
+    uint8_t texts = handshake();
+    uint8_t rank = g_state.id ? (uint8_t)((g_state.id - 1u) % BOOT_SLOTS) : 0u;
+    tick_t at = BOOT_FIRST_SLOT_TICKS + (tick_t)rank * BOOT_SLOT_TICKS;
+    while ((int16_t)(tick_now() - at) < 0) { /* ticks count from reset */
+        poll_inputs();
+        sys_idle();
+    }
+    boot_left = reply_boot_text(text, texts);
+    boot_next = text;
+    leds_run(HB_FN_LCOLOR, flash_args);
+    tick_t start = tick_now();
+    while (boot_left && tick_since(start) < BOOT_SLOT_TICKS) {
+        poll_inputs();
+        sys_idle();
+    }
+    boot_left = 0; /* text[] is about to go */
+    uart_flush(IR);
 }
 
 int main(void)
@@ -327,15 +372,7 @@ int main(void)
     leds_init(wait_or_abort);
     reply_init(poll_inputs);
 
-    reply_preamble();
-    uart_puts_P(IR, PSTR("COMM. BOARD READY"));
-    reply_tail(0, 1);
-    uart_puts_P(IR, PSTR("\n\r"));
-    handshake();
-    leds_run(HB_FN_LCOLOR, flash_args);
-    uart_puts_P(IR, PSTR("COMM. LISTENING"));
-    reply_tail(1, 1);
-    uart_puts_P(IR, PSTR("\n\r"));
+    boot();
     have_pending = 0; /* nothing sent during boot is for us */
 
     for (;;) {

@@ -7,7 +7,6 @@
 #include "state.h"
 #include "system.h"
 #include "uart.h"
-#include "version.h"
 
 #define IR UART1
 
@@ -67,14 +66,42 @@ void reply_line_P(const char *text)
     eol();
 }
 
-void reply_tail(uint8_t with_id, uint8_t with_fw)
+static uint8_t *text_P(uint8_t *p, const char *s)
 {
+    char c;
+    while ((c = (char)pgm_read_byte(s++)) != 0)
+        *p++ = (uint8_t)c;
+    return p;
+}
+
+/* One boot line: text, optional " ID=nn", optional " FW=x", LF CR. */
+static uint8_t *boot_line(uint8_t *p, const char *text, uint8_t with_id, uint8_t with_fw)
+{
+    p = text_P(p, text);
     if (with_id) {
-        uart_puts_P(IR, PSTR(" ID="));
-        reply_dec2(g_state.id);
+        p = text_P(p, PSTR(BOOT_ID_TAIL));
+        *p++ = (uint8_t)('0' + (g_state.id / 10u) % 10u);
+        *p++ = (uint8_t)('0' + g_state.id % 10u);
     }
     if (with_fw)
-        uart_puts_P(IR, PSTR(" FW=" HB_FW_VERSION));
+        p = text_P(p, PSTR(BOOT_FW_TAIL));
+    *p++ = '\n';
+    *p++ = '\r';
+    return p;
+}
+
+uint8_t reply_boot_text(uint8_t *buf, uint8_t which)
+{
+    uint8_t *p = text_P(buf, PSTR("\n\r\n\r"));
+    if (which & BOOT_COMM_READY)
+        p = boot_line(p, PSTR(BOOT_TEXT_COMM_READY), 0, 1);
+    if (which & BOOT_CTR_READY)
+        p = boot_line(p, PSTR(BOOT_TEXT_CTR_READY), 1, 0);
+    if (which & BOOT_CTR_LISTENING)
+        p = boot_line(p, PSTR(BOOT_TEXT_CTR_LISTENING), 0, 0);
+    if (which & BOOT_COMM_LISTENING)
+        p = boot_line(p, PSTR(BOOT_TEXT_COMM_LISTENING), 1, 1);
+    return (uint8_t)(p - buf);
 }
 
 void reply_ack_now(uint8_t code)

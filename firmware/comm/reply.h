@@ -14,6 +14,7 @@
 #include <stdint.h>
 
 #include "hexbot_codes.h"
+#include "version.h"
 
 /* Ticks one byte occupies at 300 baud, rounded up with margin (3.33 ms x 10). */
 #define IR_BYTE_TICKS_X10 34u
@@ -26,6 +27,24 @@
 #define REPLY_BYTES_STATUS (4u + 5u + 12u)
 /* Localization: report (4 + 11 + 9 + 9 + 13) then the ACK. */
 #define REPLY_BYTES_LOCALIZE (46u + REPLY_BYTES_ACK)
+
+/* Boot texts (reply_boot_text), in the thesis' order; one bit each. */
+#define BOOT_COMM_READY 0x01u     /* "COMM. BOARD READY FW=x" */
+#define BOOT_CTR_READY 0x02u      /* "CTR. BOARD READY ID=nn" */
+#define BOOT_CTR_LISTENING 0x04u  /* "CTR. LISTENING" */
+#define BOOT_COMM_LISTENING 0x08u /* "COMM. LISTENING ID=nn FW=x" */
+#define BOOT_TEXT_COMM_READY "COMM. BOARD READY"
+#define BOOT_TEXT_CTR_READY "CTR. BOARD READY"
+#define BOOT_TEXT_CTR_LISTENING "CTR. LISTENING"
+#define BOOT_TEXT_COMM_LISTENING "COMM. LISTENING"
+#define BOOT_ID_TAIL " ID="
+#define BOOT_FW_TAIL " FW=" HB_FW_VERSION
+#define TEXT_LEN(s) (sizeof(s) - 1u)
+/* What a module sends once its id is known: preamble, then three lines. */
+#define REPLY_BYTES_BOOT                                                              \
+    (4u + TEXT_LEN(BOOT_TEXT_CTR_READY BOOT_ID_TAIL "nn\n\r") +                        \
+     TEXT_LEN(BOOT_TEXT_CTR_LISTENING "\n\r") +                                        \
+     TEXT_LEN(BOOT_TEXT_COMM_LISTENING BOOT_ID_TAIL "nn" BOOT_FW_TAIL "\n\r"))
 
 #define SLOTS_ACK REPLY_SLOTS(REPLY_BYTES_ERR)
 #define SLOTS_STATUS REPLY_SLOTS(REPLY_BYTES_STATUS)
@@ -54,8 +73,11 @@ void reply_status(void);
 /** A text line from flash (no preamble), LF CR appended. */
 void reply_line_P(const char *text);
 
-/** " ID=nn" and/or " FW=x.y.z" tail of a boot text. */
-void reply_tail(uint8_t with_id, uint8_t with_fw);
+/** Write the boot texts chosen by @p which (BOOT_* bits) after a preamble
+ * into @p buf (REPLY_BYTES_BOOT bytes at least); returns their length.
+ * Built in RAM so that the caller can feed them to the IR transmitter while
+ * the LEDs run. */
+uint8_t reply_boot_text(uint8_t *buf, uint8_t which);
 
 /** Ack/err/status body helpers for callers that waited already. */
 void reply_ack_now(uint8_t code);

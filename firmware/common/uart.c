@@ -124,17 +124,21 @@ static inline void tx_kick(uint8_t u)
         UCSR1B |= (1 << UDRIE1);
 }
 
+uint8_t uart_try_putc(uint8_t u, uint8_t b)
+{
+    uint8_t queued = ring_put(&port[u & 1u].tx, b);
+    tx_kick(u);
+    return queued;
+}
+
 void uart_putc(uint8_t u, uint8_t b)
 {
-    uart_state_t *s = &port[u & 1u];
     tick_t start = tick_now();
-    while (!ring_put(&s->tx, b)) {
-        tx_kick(u);
+    while (!uart_try_putc(u, b)) {
         if (tick_since(start) >= TX_STALL_TICKS)
             return; /* transmitter stuck: drop rather than hang */
         sys_idle();
     }
-    tx_kick(u);
 }
 
 void uart_write(uint8_t u, const uint8_t *p, uint8_t n)

@@ -28,7 +28,10 @@ int16_t uart_getc_wait(uint8_t u, tick_t ticks);
 /** Discard every received byte not yet read. */
 void uart_rx_clear(uint8_t u);
 
-/** Queue one byte for transmission. */
+/** Queue one byte if the ring has room; 0 (nothing queued) if it is full. */
+uint8_t uart_try_putc(uint8_t u, uint8_t b);
+
+/** Queue one byte for transmission (waits, bounded, for room). */
 void uart_putc(uint8_t u, uint8_t b);
 
 /** Queue @p n bytes. */

@@ -18,8 +18,19 @@ ROOT = Path(__file__).resolve().parents[2]
 FIRMWARE = ROOT / "firmware"
 BUILD = FIRMWARE / "build"
 
-#: Boot: texts plus the LED shows of the thesis (LFlash1, LFlash2, LColor) take 4 s.
-BOOT_S = 6.0
+#: Boot schedule of firmware/comm/main.c (docs/firmware.md, "Boot slots"): the
+#: texts that carry the id go out in slot (id - 1) mod 8, the first at 2.0 s,
+#: each 2.64 s long (VERSION 0.1.0; 0.034 s more per extra version character).
+BOOT_FIRST_SLOT_S = 2.0
+BOOT_SLOT_S = 2.64
+BOOT_SLOTS = 8
+
+
+def boot_seconds(ids, version: str = "0.1.0") -> float:
+    """Simulated time until every module in ``ids`` is listening, with 0.5 s margin."""
+    slot = BOOT_SLOT_S + 0.034 * (len(version) - 5)
+    rank = max((i - 1) % BOOT_SLOTS for i in ids)
+    return BOOT_FIRST_SLOT_S + (rank + 1) * slot + 0.5
 REPLY_KINDS = (parser.Ack, parser.ErrorReply, parser.StatusReport)
 
 
@@ -59,10 +70,11 @@ class Bench:
     heard: bytearray = field(default_factory=bytearray)
 
     @classmethod
-    def boot(cls, scenario: str | Path, seed: int = 1, boot_s: float = BOOT_S) -> Bench:
+    def boot(cls, scenario: str | Path, seed: int = 1, boot_s: float | None = None,
+             version: str = "0.1.0") -> Bench:
         sim = Simulator(load_scenario(scenario), seed=seed)
         bench = cls(sim)
-        bench.run(boot_s)
+        bench.run(boot_s if boot_s is not None else boot_seconds(sim.modules, version))
         return bench
 
     def run(self, seconds: float) -> None:

@@ -13,7 +13,7 @@ from hexbot.protocol import frames, parser
 @pytest.fixture
 def flower(images) -> Bench:
     bench = Bench.boot("flower7")
-    bench.drain()  # seven boot texts at once collide: legacy mode has no schedule
+    bench.drain()  # the boot texts
     bench.sim.events.clear()
     return bench
 

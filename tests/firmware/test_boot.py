@@ -3,7 +3,7 @@ passes the DIP-switch id, joint self-test, and every actuator off."""
 
 from __future__ import annotations
 
-from fwsim import BUILD, Bench, build_firmware, scenario_file
+from fwsim import BUILD, Bench, boot_seconds, build_firmware, scenario_file
 
 from hexbot.protocol import parser
 
@@ -45,8 +45,40 @@ def test_version_string_from_make(tmp_path):
     build = build_firmware(tmp_path / "build", version="9.8.7-rc1")
     scenario = scenario_file(tmp_path, [(2, (0, 0), 0)], comm=build / "comm.elf",
                              control=build / "control.elf")
-    bench = Bench.boot(scenario)
-    assert ("COMM. BOARD READY", "FW=9.8.7-rc1") in texts(bench.drain())
+    bench = Bench.boot(scenario, version="9.8.7-rc1")
+    found = texts(bench.drain())
+    assert ("COMM. BOARD READY", "FW=9.8.7-rc1") in found
+    assert ("COMM. LISTENING", "ID=02 FW=9.8.7-rc1") in found
+
+
+def test_a_booting_cluster_reports_every_id_and_version(images):
+    # Seven modules boot at once on one IR medium: each sends the texts that
+    # carry its id in its own boot slot, in id order, and none collide.
+    bench = Bench.boot("flower7")
+    events = parser.parse_all(bench.drain())
+    assert not [e for e in events if isinstance(e, parser.Garbage)], events
+    found = [(e.phrase, e.tail) for e in events if isinstance(e, parser.Text)]
+    assert found[0] == ("COMM. BOARD READY", "FW=0.1.0")  # all at once, identical
+    slots = [found[1 + 3 * k: 4 + 3 * k] for k in range(7)]
+    assert slots == [[("CTR. BOARD READY", f"ID={i:02d}"), ("CTR. LISTENING", ""),
+                      ("COMM. LISTENING", f"ID={i:02d} FW=0.1.0")] for i in range(1, 8)]
+    assert len(found) == 22
+    # Bytes only overlapped while every module sent the same boot text.
+    collided = [e for e in bench.sim.events if e["event"] == "ir-collision"]
+    assert collided and max(e["t"] for e in collided) < 1.2, collided[-1]
+    # And every module listens once its text is out.
+    replies = bench.command("Select", 0, replies=7)
+    assert [(r.code, r.module) for r in replies] == [(69, i) for i in range(1, 8)]
+
+
+def test_boot_slots_wrap_after_eight_ids(images, tmp_path):
+    # Id 12 sends in slot (12 - 1) mod 8 = 3, from 2.0 + 3 x 2.64 = 9.9 s: a
+    # high id does not keep its module silent for 11 slots.
+    bench = Bench.boot(scenario_file(tmp_path, [(12, (0, 0), 0)]), boot_s=9.8)
+    assert [phrase for phrase, _ in texts(bench.heard)] == ["COMM. BOARD READY"]
+    bench.run(boot_seconds([12]) - 9.8)
+    assert texts(bench.drain())[1:] == [("CTR. BOARD READY", "ID=12"), ("CTR. LISTENING", ""),
+                                        ("COMM. LISTENING", "ID=12 FW=0.1.0")]
 
 
 def test_joint_self_test_then_everything_off(images):

@@ -13,7 +13,8 @@ THESIS_TIMES = (8, 4, 9)  # Table 3-1: t1 = 80 ms, t2 = 40-45 ms, t3 = 90-95 ms,
 
 
 def boot(sim, modules=1):
-    sim.expect(b"COMM. LISTENING", timeout=10)
+    for _ in sim.modules:  # one per module, each in its boot slot (docs/firmware.md)
+        sim.expect(b"COMM. LISTENING", timeout=10)
     sim.run(1.0)
     sim.pc_read()
 

@@ -73,7 +73,7 @@ def test_rotation_over_the_ptys_writes_events_and_vcd(tmp_path):
                         "--events", str(events_path), "--vcd", str(vcd_path))
     try:
         with serial.Serial(ports["ir"], 300, timeout=0.2) as ir:
-            read_until(ir, b"COMM. LISTENING")
+            read_until(ir, b"COMM. LISTENING ID=02")  # the last boot slot (docs/firmware.md)
             for command, reply in ((select([1]), b"M01: ACKE"), (make("Ref"), b"S01: ACKA"),
                                    (select([1, 2]), b"M02: ACKE"),
                                    (make("CW", 4, 8, 4, 9, 4, 8, 4, 9), b"M02: ACKC")):

@@ -42,7 +42,7 @@ def test_divergence_stops_with_a_report():
     # Module 1 is fixed to the base in the pair scenario: a plan that rotates
     # it must stop at that move, with the plant's reason.
     sim = Simulator(load_scenario("pair"), seed=1)
-    sim.run(6.0)
+    sim.run(24.0)  # every module booted (boot-text slots, docs/firmware.md)
     initial = configuration_of(sim)
     # CW about joint 1: substrate on side 1 (module 2), goal on side 6 (Table 4-3).
     bad = Move(module=1, src=(0, 0), dst=(-1, 0), joint=1, direction="CW",
