@@ -54,7 +54,9 @@ def test_rule_12_reconstruction_lower_left():
 
 
 @pytest.mark.parametrize(
-    "scenario", ["pyramid", "histogram-1", "wide-cavity-right", "wide-diagonal", "maze"]
+    "scenario", ["pyramid", "histogram-1", "wide-cavity-right", "wide-diagonal", "maze",
+                 # these need R19/R20 and the CARRIER reading (salvador.rules)
+                 "histogram-2", "wide-cavity-middle"]
 )
 @pytest.mark.parametrize("n", [5, 20])
 def test_obstacle_rules_pass_these_scenarios(scenario, n):
@@ -64,7 +66,7 @@ def test_obstacle_rules_pass_these_scenarios(scenario, n):
 
 @pytest.mark.parametrize(
     ("scenario", "n"),
-    [("cavity-simple", 20), ("histogram-2", 20), ("wide-cavity-middle", 20),
+    [("cavity-simple", 20), ("cavity-double", 10), ("histogram-3", 20),
      ("irregular-right", 15)],  # the last one: two corks collided before NO_STOPPER_*
 )
 def test_obstacle_rules_stall_safely_where_the_reconstruction_falls_short(scenario, n):
@@ -107,3 +109,28 @@ def test_otero_stalls_safely_where_the_reconstruction_falls_short():
     # while the Z-corner test ignored a head in the hand-over round).
     result = simulate(load_ruleset("otero"), load_scenario("irregular-right", 20), rounds=3000)
     assert result.status == "deadlock" and result.violation is None
+
+
+CARRIER = "require S is static or (S is cork|opener and SW is not empty and (0,-2) is not empty)"
+
+
+def test_stopper_carrying_a_stopper_must_be_boxed_in():
+    # A cork or opener may turn round another one only when that carrier has
+    # no other free edge cell; any stopper as carrier lets two stacked corks
+    # move together (the engine's unsupported-move) on histogram-2, n = 20.
+    text = _data("rulesets", ".rules")["salvador"].read_text()
+    assert text.count(CARRIER) == 3
+    ours = simulate(loads(text), load_scenario("histogram-2", 20), rounds=3000)
+    assert ours.status == "reached"
+    loose = loads(text.replace(CARRIER, "require S is static|cork|opener"))
+    bad = simulate(loose, load_scenario("histogram-2", 20), rounds=3000).violation
+    assert bad is not None and bad.kind == "unsupported-move"
+
+
+@pytest.mark.parametrize("state", ["cork", "opener"])
+def test_a_stopper_left_hanging_as_a_leaf_is_static_again(state):
+    rs = load_ruleset("salvador")
+    world = World([(1, 0), (-1, 0), (1, 1), (-1, 1), (0, 3)], [(0, 0), (0, 1), (0, 2)],
+                  rs.states, module_states=[state, "static", "static"], extend_axis=None)
+    result = Engine(rs, world).run(1, Goal())
+    assert result.states[0] == "static" and result.violation is None
