@@ -57,12 +57,12 @@ void comm_board_init(void)
 void comm_led_side(uint8_t side, uint8_t pole, uint8_t on)
 {
     const uint8_t *table = pole == POLE_P ? led_side_p : led_side_n;
-    pin_write(pgm_read_byte(&table[side - 1u]), !on);
+    pin_write_nth_P(table, side, !on);
 }
 
 void comm_led_joint(uint8_t joint, uint8_t on)
 {
-    pin_write(pgm_read_byte(&led_joint[joint - 1u]), !on);
+    pin_write_nth_P(led_joint, joint, !on);
 }
 
 void comm_ir_select(uint8_t ch)

@@ -40,7 +40,7 @@ void control_board_init(void)
 
 void control_joint(uint8_t joint, uint8_t open)
 {
-    pin_write(pgm_read_byte(&joint_pin[joint - 1u]), open);
+    pin_write_nth_P(joint_pin, joint, open);
 }
 
 void control_joints_all(uint8_t open)
@@ -62,8 +62,8 @@ void control_magnet_on(uint8_t side, uint8_t pole)
 
 void control_magnet_off(uint8_t side)
 {
-    pin_write(pgm_read_byte(&magnet_p[side - 1u]), 0);
-    pin_write(pgm_read_byte(&magnet_n[side - 1u]), 0);
+    pin_write_nth_P(magnet_p, side, 0);
+    pin_write_nth_P(magnet_n, side, 0);
 }
 
 void control_magnets_all_off(void)

@@ -4,6 +4,7 @@
 #define PINS_H
 
 #include <avr/io.h>
+#include <avr/pgmspace.h>
 #include <stdint.h>
 
 enum { PORT_A = 0, PORT_B, PORT_C, PORT_D, PORT_E };
@@ -29,6 +30,13 @@ static inline void pin_write(uint8_t pin, uint8_t high)
         *reg |= mask;
     else
         *reg &= (uint8_t)~mask;
+}
+
+/** Write the pin of entry @p n (1-based: side or joint number) of a pin
+ *  table in flash. */
+static inline void pin_write_nth_P(const uint8_t *table, uint8_t n, uint8_t high)
+{
+    pin_write(pgm_read_byte(&table[n - 1u]), high);
 }
 
 #endif /* PINS_H */

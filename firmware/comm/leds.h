@@ -8,9 +8,7 @@
 
 #include <stdint.h>
 
-#include "system.h"
-
-typedef uint8_t (*wait_fn)(tick_t ticks);
+#include "sequence.h"
 
 void leds_init(wait_fn wait);
 void leds_all(uint8_t on);

@@ -101,13 +101,7 @@ static uint8_t poll_inputs(void)
 /* Sequence delay that gives way to a new PC command. */
 static uint8_t wait_or_abort(tick_t n)
 {
-    tick_t start = tick_now();
-    while (tick_since(start) < n) {
-        if (poll_inputs())
-            return 1;
-        sys_idle();
-    }
-    return poll_inputs();
+    return sys_delay_polling(n, poll_inputs);
 }
 
 /* Forward a control-board function; returns the echo, HB_TIMEOUT, or the

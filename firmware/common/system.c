@@ -55,3 +55,14 @@ void sys_delay(tick_t n)
     while (tick_since(start) < n)
         sys_idle();
 }
+
+uint8_t sys_delay_polling(tick_t n, uint8_t (*poll)(void))
+{
+    tick_t start = tick_now();
+    while (tick_since(start) < n) {
+        if (poll())
+            return 1;
+        sys_idle();
+    }
+    return poll();
+}

@@ -30,4 +30,8 @@ void sys_idle(void);
 /** Sleep for @p ticks ticks (10 ms each), feeding the watchdog. */
 void sys_delay(tick_t ticks);
 
+/** Like sys_delay(), calling @p poll at every wake-up; returns 1 as soon as
+ *  it returns non-zero (a new command arrived), 0 after @p ticks. */
+uint8_t sys_delay_polling(tick_t ticks, uint8_t (*poll)(void));
+
 #endif /* SYSTEM_H */

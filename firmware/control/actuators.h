@@ -9,10 +9,7 @@
 
 #include <stdint.h>
 
-#include "system.h"
-
-/** Returns 1 when the running sequence must stop. */
-typedef uint8_t (*wait_fn)(tick_t ticks);
+#include "sequence.h"
 
 void actuators_init(wait_fn wait);
 

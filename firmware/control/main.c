@@ -81,13 +81,7 @@ static uint8_t poll_links(void)
 /* Sequence delay that gives way to a newly arrived command. */
 static uint8_t wait_or_abort(tick_t n)
 {
-    tick_t start = tick_now();
-    while (tick_since(start) < n) {
-        if (poll_links())
-            return 1;
-        sys_idle();
-    }
-    return poll_links();
+    return sys_delay_polling(n, poll_links);
 }
 
 static void run_pending(void)

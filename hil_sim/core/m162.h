@@ -130,6 +130,7 @@ int m162_load_elf(m162_t *m, const char *path, char *err, size_t errlen);
 void m162_install_logger(void);
 void m162_run_until(m162_t *m, uint64_t end);
 void m162_reset(m162_t *m);
+const char *m162_state_name(int state); /* "running", "sleeping", "crashed", "done", "stopped" */
 static inline m162_t *m162_of(avr_t *avr) { return (m162_t *)avr->custom.data; }
 
 /* USART (m162_usart.c) */
@@ -140,6 +141,7 @@ void m162_usart_queue_rx(m162_usart_t *s, uint64_t due, uint16_t value);
 void m162_usart_config(m162_usart_t *s, double *baud, int *data_bits, char *parity,
 		int *stop_bits, int *rxen, int *txen);
 void m162_usart_set_keep_log(m162_usart_t *s, int keep);
+void m162_usart_log(m162_usart_t *s, m162_txrec_t rec); /* append, if the log is kept */
 void m162_usart_compact_log(m162_usart_t *s);
 /* Would s receive this frame intact?  Same format, bit times within 4.5 %. */
 int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r);

@@ -421,6 +421,17 @@ static void m162_run_step(avr_t *avr)
 		avr_service_interrupts(avr);
 }
 
+const char *m162_state_name(int st)
+{
+	switch (st) {
+	case cpu_Running: return "running";
+	case cpu_Sleeping: return "sleeping";
+	case cpu_Crashed: return "crashed";
+	case cpu_Done: return "done";
+	default: return "stopped";
+	}
+}
+
 static void m162_sleep_virtual(avr_t *avr, avr_cycle_count_t how_long)
 {
 	(void)avr;
@@ -678,18 +689,8 @@ static void m162_stock_uart_out(struct avr_irq_t *irq, uint32_t value, void *par
 {
 	m162_usart_t *s = (m162_usart_t *)param;
 	(void)irq;
-	if (!s->keep_log)
-		return;
-	if (s->log_len == s->log_cap) {
-		size_t cap = s->log_cap ? s->log_cap * 2 : 64;
-		m162_txrec_t *n = realloc(s->log, cap * sizeof *n);
-		if (!n)
-			return;
-		s->log = n;
-		s->log_cap = cap;
-	}
 	uint64_t now = s->mcu->avr->cycle;
-	s->log[s->log_len++] = (m162_txrec_t){ now, now, (uint8_t)value, 0, 0 };
+	m162_usart_log(s, (m162_txrec_t){ now, now, (uint8_t)value, 0, 0 });
 }
 
 m162_t *m162_make_stock(const char *mmcu)

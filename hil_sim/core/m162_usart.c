@@ -63,7 +63,7 @@ static void recompute_frame(m162_usart_t *s)
 /* ---------------------------------------------------------------- */
 /* transmitter */
 
-static void log_frame(m162_usart_t *s, uint64_t start, uint64_t end, uint8_t byte)
+void m162_usart_log(m162_usart_t *s, m162_txrec_t rec)
 {
 	if (!s->keep_log)
 		return;
@@ -75,7 +75,7 @@ static void log_frame(m162_usart_t *s, uint64_t start, uint64_t end, uint8_t byt
 		s->log = n;
 		s->log_cap = cap;
 	}
-	s->log[s->log_len++] = (m162_txrec_t){ start, end, byte, s->format, s->bit_cycles };
+	s->log[s->log_len++] = rec;
 }
 
 static void start_frame(m162_usart_t *s, uint8_t byte, uint64_t when)
@@ -84,7 +84,8 @@ static void start_frame(m162_usart_t *s, uint8_t byte, uint64_t when)
 	s->shift_byte = byte;
 	s->shift_start = when;
 	s->shift_end = when + s->frame_cycles;
-	log_frame(s, s->shift_start, s->shift_end, byte);
+	m162_usart_log(s, (m162_txrec_t){ s->shift_start, s->shift_end, byte, s->format,
+			s->bit_cycles });
 }
 
 static avr_cycle_count_t tx_done(avr_t *avr, avr_cycle_count_t when, void *param)

@@ -16,17 +16,6 @@ typedef struct {
 	cluster_t *c;
 } ClusterObject;
 
-static const char *state_name(int st)
-{
-	switch (st) {
-	case cpu_Running: return "running";
-	case cpu_Sleeping: return "sleeping";
-	case cpu_Crashed: return "crashed";
-	case cpu_Done: return "done";
-	default: return "stopped";
-	}
-}
-
 static m162_t *get_mcu(ClusterObject *self, long i)
 {
 	if (i < 0 || i >= self->c->n) {
@@ -65,6 +54,25 @@ static m162_t *get_m162(ClusterObject *self, long i)
 		return NULL;
 	}
 	return m;
+}
+
+/* The argument list "(mcu)" of most methods: the MCU, or NULL with the
+ * Python error set. */
+static m162_t *mcu_arg(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	return get_mcu(self, m);
+}
+
+/* The same for methods that need our ATmega162 core. */
+static m162_t *m162_arg(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	return get_m162(self, m);
 }
 
 /* ---------------------------------------------------------------- */
@@ -312,10 +320,7 @@ static PyObject *Cluster_set_input(ClusterObject *self, PyObject *args)
 
 static PyObject *Cluster_pin_log(ClusterObject *self, PyObject *args)
 {
-	long m;
-	if (!PyArg_ParseTuple(args, "l", &m))
-		return NULL;
-	m162_t *mc = get_mcu(self, m);
+	m162_t *mc = mcu_arg(self, args);
 	if (!mc)
 		return NULL;
 	PyObject *list = PyList_New((Py_ssize_t)mc->pinlog_len);
@@ -337,54 +342,31 @@ static PyObject *Cluster_pin_log(ClusterObject *self, PyObject *args)
 
 static PyObject *Cluster_state(ClusterObject *self, PyObject *args)
 {
-	long m;
-	if (!PyArg_ParseTuple(args, "l", &m))
-		return NULL;
-	m162_t *mc = get_mcu(self, m);
-	if (!mc)
-		return NULL;
-	return PyUnicode_FromString(state_name(mc->avr->state));
+	m162_t *mc = mcu_arg(self, args);
+	return mc ? PyUnicode_FromString(m162_state_name(mc->avr->state)) : NULL;
 }
 
 static PyObject *Cluster_last_error(ClusterObject *self, PyObject *args)
 {
-	long m;
-	if (!PyArg_ParseTuple(args, "l", &m))
-		return NULL;
-	m162_t *mc = get_mcu(self, m);
-	if (!mc)
-		return NULL;
-	return PyUnicode_FromString(mc->last_error);
+	m162_t *mc = mcu_arg(self, args);
+	return mc ? PyUnicode_FromString(mc->last_error) : NULL;
 }
 
 static PyObject *Cluster_name(ClusterObject *self, PyObject *args)
 {
-	long m;
-	if (!PyArg_ParseTuple(args, "l", &m))
-		return NULL;
-	m162_t *mc = get_mcu(self, m);
-	if (!mc)
-		return NULL;
-	return PyUnicode_FromString(mc->name);
+	m162_t *mc = mcu_arg(self, args);
+	return mc ? PyUnicode_FromString(mc->name) : NULL;
 }
 
 static PyObject *Cluster_mcu_cycle(ClusterObject *self, PyObject *args)
 {
-	long m;
-	if (!PyArg_ParseTuple(args, "l", &m))
-		return NULL;
-	m162_t *mc = get_mcu(self, m);
-	if (!mc)
-		return NULL;
-	return PyLong_FromUnsignedLongLong(mc->avr->cycle);
+	m162_t *mc = mcu_arg(self, args);
+	return mc ? PyLong_FromUnsignedLongLong(mc->avr->cycle) : NULL;
 }
 
 static PyObject *Cluster_reset(ClusterObject *self, PyObject *args)
 {
-	long m;
-	if (!PyArg_ParseTuple(args, "l", &m))
-		return NULL;
-	m162_t *mc = get_mcu(self, m);
+	m162_t *mc = mcu_arg(self, args);
 	if (!mc)
 		return NULL;
 	m162_reset(mc);
@@ -409,13 +391,9 @@ static PyObject *Cluster_read_data(ClusterObject *self, PyObject *args)
 
 static PyObject *Cluster_read_flash(ClusterObject *self, PyObject *args)
 {
-	long m;
-	if (!PyArg_ParseTuple(args, "l", &m))
-		return NULL;
-	m162_t *mc = get_mcu(self, m);
-	if (!mc)
-		return NULL;
-	return PyBytes_FromStringAndSize((const char *)mc->avr->flash, mc->avr->flashend + 1);
+	m162_t *mc = mcu_arg(self, args);
+	return mc ? PyBytes_FromStringAndSize((const char *)mc->avr->flash, mc->avr->flashend + 1)
+		  : NULL;
 }
 
 static PyObject *Cluster_write_flash(ClusterObject *self, PyObject *args)
@@ -451,10 +429,7 @@ static uint8_t *eeprom_bytes(m162_t *mc, uint32_t *size)
 
 static PyObject *Cluster_read_eeprom(ClusterObject *self, PyObject *args)
 {
-	long m;
-	if (!PyArg_ParseTuple(args, "l", &m))
-		return NULL;
-	m162_t *mc = get_m162(self, m);
+	m162_t *mc = m162_arg(self, args);
 	if (!mc)
 		return NULL;
 	uint32_t size;
@@ -488,13 +463,9 @@ static PyObject *Cluster_write_eeprom(ClusterObject *self, PyObject *args)
 
 static PyObject *Cluster_fuses(ClusterObject *self, PyObject *args)
 {
-	long m;
-	if (!PyArg_ParseTuple(args, "l", &m))
-		return NULL;
-	m162_t *mc = get_mcu(self, m);
-	if (!mc)
-		return NULL;
-	return Py_BuildValue("(iii)", mc->avr->fuse[0], mc->avr->fuse[1], mc->avr->fuse[2]);
+	m162_t *mc = mcu_arg(self, args);
+	return mc ? Py_BuildValue("(iii)", mc->avr->fuse[0], mc->avr->fuse[1], mc->avr->fuse[2])
+		  : NULL;
 }
 
 static PyObject *Cluster_set_fuses(ClusterObject *self, PyObject *args)
@@ -517,13 +488,8 @@ static PyObject *Cluster_set_fuses(ClusterObject *self, PyObject *args)
 
 static PyObject *Cluster_signature(ClusterObject *self, PyObject *args)
 {
-	long m;
-	if (!PyArg_ParseTuple(args, "l", &m))
-		return NULL;
-	m162_t *mc = get_mcu(self, m);
-	if (!mc)
-		return NULL;
-	return PyBytes_FromStringAndSize((const char *)mc->avr->signature, 3);
+	m162_t *mc = mcu_arg(self, args);
+	return mc ? PyBytes_FromStringAndSize((const char *)mc->avr->signature, 3) : NULL;
 }
 
 static PyObject *Cluster_set_signature(ClusterObject *self, PyObject *args)

@@ -16,17 +16,6 @@
 
 #include "../cluster.h"
 
-static const char *state_name(int st)
-{
-	switch (st) {
-	case cpu_Running: return "running";
-	case cpu_Sleeping: return "sleeping";
-	case cpu_Crashed: return "crashed";
-	case cpu_Done: return "done";
-	default: return "stopped";
-	}
-}
-
 static void drain(cluster_t *c)
 {
 	for (int i = 0; i < c->n; i++) {
@@ -85,7 +74,7 @@ int main(int argc, char **argv)
 		drain(c);
 	drain(c);
 	for (int i = 0; i < c->n; i++)
-		printf("%d state %s %s\n", i, state_name(c->mcu[i]->avr->state),
+		printf("%d state %s %s\n", i, m162_state_name(c->mcu[i]->avr->state),
 				c->mcu[i]->last_error);
 	cluster_free(c);
 	return 0;
