@@ -1,0 +1,216 @@
+"""Reconfiguration through a canonical strip: the robust planner's complete fallback.
+
+The direct planner (:mod:`hexbot.planning.robust`) fills goal voids greedily
+and can wall itself in. This module goes through an intermediate shape
+instead, as the literature on pivoting modules does:
+
+1. **initial -> strip.** The module on the *anchor* (the configuration's
+   rightmost cell, topmost among those) never moves. The strip is a
+   ``width``-row parallelogram that grows to the right of it, column by
+   column, bottom to top (:func:`strip_cells`). Every cell right of the
+   anchor's column is empty, so the strip touches the rest only at the anchor.
+   For each strip cell in turn, the mover is the module farthest (in contact
+   hops) from the anchor that is not a cut vertex and has a Table 4-3 path to
+   the cell with everything else fixed. A farthest module is never a cut
+   vertex of the contact graph, which is why peeling from the far end keeps
+   movers available; the next strip cell always has its occupied sides in
+   one arc of at most three (5, 6, 1 for a column cell), so it is enterable.
+2. **strip -> strip.** The strips of the initial and the goal have the same
+   shape; the direct planner shifts one onto the other in hops of at most
+   ``HOP`` cells (convex shapes have no notches, so it does not stall there).
+3. **strip -> goal** is step 1 run on the goal and reversed: every rotation is
+   undone by the opposite one over the same cells (:func:`reverse_move`).
+
+Each step raises :class:`PlanningFailure` when it cannot continue; the
+caller then tries a narrower strip (width 1 is a line, which needs the most
+moves and stalls least).
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from dataclasses import replace
+
+from hexbot.planning.configuration import Configuration, Module
+from hexbot.planning.hexlattice import Cell, distance, neighbors
+from hexbot.planning.moves import Move, orientation_after
+from hexbot.planning.robust import (
+    PlanningFailure,
+    _moves_from,
+    is_cut,
+    reverse_move,
+    serial_moves,
+)
+
+#: Largest shift (cells) of one strip -> strip hop of the direct planner.
+HOP = 3
+
+
+def anchor_of(cells: frozenset[Cell] | set[Cell]) -> Cell:
+    """The rightmost cell, topmost among those: nothing lies right of its column
+    above it, nor anywhere right of its column."""
+    return max(cells)
+
+
+def strip_cells(anchor: Cell, count: int, width: int) -> list[Cell]:
+    """The ``count - 1`` cells added right of ``anchor``, in build order."""
+    cells: list[Cell] = []
+    column = 1
+    while len(cells) < count - 1:
+        for row in range(width):
+            if len(cells) < count - 1:
+                cells.append((anchor[0] + column, anchor[1] + row))
+        column += 1
+    return cells
+
+
+def strip_shape(anchor: Cell, count: int, width: int) -> frozenset[Cell]:
+    return frozenset([anchor, *strip_cells(anchor, count, width)])
+
+
+def _hops_from(occupied: set[Cell], root: Cell) -> dict[Cell, int]:
+    """Contact hops from ``root`` to every module."""
+    hops = {root: 0}
+    queue = deque([root])
+    while queue:
+        cell = queue.popleft()
+        for n in neighbors(cell):
+            if n in occupied and n not in hops:
+                hops[n] = hops[cell] + 1
+                queue.append(n)
+    return hops
+
+
+def _path_to(occupied: set[Cell], start: Cell, target: Cell) -> list | None:
+    """Shortest Table 4-3 path of the module at ``start`` to ``target``, others fixed."""
+    parent: dict[Cell, tuple | None] = {start: None}
+    queue = deque([start])
+    while queue:
+        cell = queue.popleft()
+        for rule, sub, goal in _moves_from(cell, occupied, start):
+            if goal in parent:
+                continue
+            parent[goal] = (cell, rule, sub)
+            if goal == target:
+                path = []
+                node = goal
+                while parent[node] is not None:
+                    prev, r, s = parent[node]  # type: ignore[misc]
+                    path.append((prev, node, r, s))
+                    node = prev
+                return path[::-1]
+            queue.append(goal)
+    return None
+
+
+def to_strip(config: Configuration, width: int) -> list[Move]:
+    """Serial moves that gather ``config`` into the strip at its anchor."""
+    occupied = set(config.cells)
+    ids = {c: m.id for c, m in config.items()}
+    anchor = anchor_of(config.cells)
+    built = {anchor}
+    moves: list[Move] = []
+    for target in strip_cells(anchor, len(config), width):
+        if target in occupied:  # cannot happen: every cell right of the anchor is empty
+            raise PlanningFailure(f"strip cell {target} is occupied")
+        hops = _hops_from(occupied, anchor)
+        movers = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
+        path = None
+        for mover in movers:
+            if is_cut(occupied, mover):
+                continue
+            path = _path_to(occupied, mover, target)
+            if path:
+                break
+        if path is None:
+            raise PlanningFailure(
+                f"no module can reach strip cell {target} (width {width}) after "
+                f"{len(moves)} moves")
+        module = ids.pop(path[0][0])
+        occupied.discard(path[0][0])
+        for src, dst, rule, sub in path:
+            moves.append(Move(module, src, dst, rule.joint, rule.direction, sub, ids[sub]))
+        occupied.add(target)
+        ids[target] = module
+        built.add(target)
+    return moves
+
+
+def replay(config: Configuration, moves: list[Move]) -> Configuration:
+    """The configuration after ``moves`` (fast: one dict, orientation tracked)."""
+    cells = dict(config.items())
+    for move in moves:
+        module = cells.pop(move.src)
+        if module.id != move.module:
+            raise ValueError(f"module {move.module} is not at {move.src}")
+        cells[move.dst] = Module(module.id, orientation_after(module.orientation,
+                                                              move.direction))
+    return Configuration(cells)
+
+
+def _hop_anchors(start: Cell, end: Cell, hop: int = HOP) -> list[Cell]:
+    """Anchors from ``start`` (excluded) to ``end``, at most ``hop`` cells apart."""
+    count = -(-distance(start, end) // hop)
+    return [(start[0] + round((end[0] - start[0]) * k / count),
+             start[1] + round((end[1] - start[1]) * k / count)) for k in range(1, count + 1)]
+
+
+def shift_strip(config: Configuration, start: Cell, end: Cell, width: int,
+                max_moves: int) -> list[Move]:
+    """Serial moves taking the strip anchored at ``start`` to the one at ``end``."""
+    moves: list[Move] = []
+    for hop in _hop_anchors(start, end):
+        try:
+            part = serial_moves(config, strip_shape(hop, len(config), width), max_moves)
+        except PlanningFailure:
+            if distance(start, hop) <= 1:
+                raise
+            # one cell at a time: a unit shift of a convex strip is the easy case
+            part, at = [], config
+            for unit in _hop_anchors(start, hop, 1):
+                piece = serial_moves(at, strip_shape(unit, len(config), width), max_moves)
+                part += piece
+                at = replay(at, piece)
+        moves += part
+        config = replay(config, part)
+        start = hop
+    return moves
+
+
+def reversed_to_strip(goal: frozenset[Cell], strip: Configuration, width: int) -> list[Move]:
+    """Serial moves from ``strip`` (the goal's strip, with real module ids) to ``goal``."""
+    provisional = Configuration.from_cells(goal, first_id=10**6)
+    backward = to_strip(provisional, width)
+    end = replay(provisional, backward)
+    real = {end[c].id: strip[c].id for c in end}
+    return [replace(reverse_move(m), module=real[m.module],
+                    substrate_module=real[m.substrate_module]) for m in reversed(backward)]
+
+
+def default_widths(count: int) -> list[int]:
+    """Strip widths to try: about half the side of a square of ``count`` cells, then
+    narrower; width 1 (a line) last."""
+    wide = max(1, round(count ** 0.5 / 2))
+    return sorted({wide, max(1, wide // 3), 1}, reverse=True)
+
+
+def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10**7,
+              widths: list[int] | None = None) -> list[Move]:
+    """Serial moves initial -> strip -> goal's strip -> goal (raises PlanningFailure)."""
+    failures = []
+    for width in widths or default_widths(len(initial)):
+        try:
+            first = to_strip(initial, width)
+            at_strip = replay(initial, first)
+            shift = shift_strip(at_strip, anchor_of(initial.cells), anchor_of(goal), width,
+                                max_moves)
+            at_goal_strip = replay(at_strip, shift)
+            last = reversed_to_strip(goal, at_goal_strip, width)
+        except PlanningFailure as exc:
+            failures.append(str(exc))
+            continue
+        moves = first + shift + last
+        if len(moves) > max_moves:
+            raise PlanningFailure(f"more than {max_moves} moves needed")
+        return moves
+    raise PlanningFailure("no canonical strip could be built: " + "; ".join(failures))
