@@ -73,6 +73,17 @@ static void link_byte(uint8_t b)
     }
 }
 
+/* A stray '*' eight bytes before a frame whose code is '#' (35, SideOffAllN)
+ * makes "*" + 8 bytes + "*#" a complete frame, and the real one is lost.
+ * A complete frame that ends in "*#" and that we would refuse anyway
+ * (unknown code, argument out of range) is taken for that: its "*#" starts
+ * the next frame. A frame we would execute is executed. */
+static uint8_t junk_before_hash_code(const uint8_t *f)
+{
+    return f[HB_PC_FRAME_LEN - 2] == HB_START &&
+           (table_board(f[1]) == HB_BOARD_NONE || !table_args_ok(f[1], f + 2));
+}
+
 /* Keep both links moving; 1 when a complete PC frame is pending. */
 static uint8_t poll_inputs(void)
 {
@@ -86,7 +97,10 @@ static uint8_t poll_inputs(void)
     while ((b = uart_getc(IR)) >= 0) {
         last_ir_byte = tick_now();
         frame_result_t r = frame_push(&pc_rx, (uint8_t)b);
-        if (r == FRAME_DONE) {
+        if (r == FRAME_DONE && junk_before_hash_code(pc_rx.buf)) {
+            frame_resume(&pc_rx, HB_PC_FRAME_LEN - 2);
+            g_state.last_error = HB_ERR_BAD_FRAME;
+        } else if (r == FRAME_DONE) {
             memcpy(pending, pc_rx.buf, sizeof pending);
             have_pending = 1;
         } else if (r == FRAME_DROPPED) {

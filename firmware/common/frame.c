@@ -44,6 +44,13 @@ frame_result_t frame_push(frame_rx_t *f, uint8_t b)
     return FRAME_DROPPED;
 }
 
+void frame_resume(frame_rx_t *f, uint8_t from)
+{
+    f->len = (uint8_t)(f->size - from);
+    memmove(f->buf, f->buf + from, f->len);
+    f->last = tick_now();
+}
+
 frame_result_t frame_expire(frame_rx_t *f)
 {
     if (f->len && tick_since(f->last) > f->timeout) {

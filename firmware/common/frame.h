@@ -33,6 +33,10 @@ void frame_init(frame_rx_t *f, uint8_t size, tick_t timeout);
  *  the next call). FRAME_DROPPED: a frame was just abandoned. */
 frame_result_t frame_push(frame_rx_t *f, uint8_t b);
 
+/** Take back the bytes buf[@p from..size-1] of the frame just completed as
+ *  the start of the next frame (a caller that found the frame to be junk). */
+void frame_resume(frame_rx_t *f, uint8_t from);
+
 /** Abandon a half frame whose next byte is overdue; FRAME_DROPPED if so. */
 frame_result_t frame_expire(frame_rx_t *f);
 

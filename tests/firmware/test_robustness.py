@@ -124,3 +124,32 @@ def test_noisy_ir_link_loses_frames_but_never_the_module(images, tmp_path):
             break
     else:
         raise AssertionError("no acknowledgement in five attempts")
+
+
+SIDE_OFF_ALL_N = frames.encode_pc(frames.make("SideOffAllN"))  # code '#' (35)
+
+
+@pytest.mark.parametrize("junk", [b"N" * 8, b"\x00ABCDEFG", b"\x011\x00\x00\x00\x00\x00\x00"],
+                         ids=["unused-code-N", "unknown-code", "argument-out-of-range"])
+def test_stray_star_before_a_hash_coded_frame_does_not_swallow_it(single: Bench, junk: bytes):
+    # '*' + 8 bytes + "*#" looks like a complete frame; it is one this module
+    # would refuse, so the "*#" is taken as the start of the real frame.
+    replies = single.exchange(b"*" + junk + SIDE_OFF_ALL_N)
+    assert [(type(r).__name__, r.code) for r in replies] == [("Ack", 35)]
+    (sta,) = single.command("Status")
+    assert sta.error == ErrorCode.BAD_FRAME
+
+
+def test_a_valid_frame_ending_in_star_is_still_executed(single: Bench):
+    # Select(1, 2, ..., 7, 42): id 42 is valid, B8 = '*'; the frame is real.
+    frame = pc_frame(69, 1, 2, 3, 4, 5, 6, 7, 42)
+    assert frame[-2:] == b"*#"
+    (ack,) = single.exchange(frame)
+    assert (ack.code, ack.module) == (69, 1)
+
+
+def test_a_stray_star_before_a_valid_looking_frame_still_swallows_it(single: Bench):
+    # The documented limit: "*" + LOn's code and 7 bytes + "*#" is a frame this
+    # module executes (LOn takes no arguments); the '#'-coded frame after it is lost.
+    replies = single.exchange(b"*,NNNNNNN" + SIDE_OFF_ALL_N)
+    assert [r.code for r in replies] == [44]
