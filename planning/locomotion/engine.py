@@ -302,8 +302,10 @@ class Engine:
             weights = (1 << np.arange(8)).astype(np.int64)
             simple, negated = connectivity.SIMPLE, e.negated
 
+            at = e.offset[0] * h + e.offset[1]
+
             def is_simple(p: np.ndarray) -> np.ndarray:
-                occupied = flat[p[:, None] + ring[None, :]] >= MODULE_BASE
+                occupied = flat[(p + at)[:, None] + ring[None, :]] >= MODULE_BASE
                 out = simple[occupied.astype(np.int64) @ weights]
                 return ~out if negated else out
             return is_simple

@@ -21,7 +21,8 @@ A ``require`` line is a boolean expression over cells: ``POS is CLASS|CLASS``,
 ``POS is not CLASS``, ``and``, ``or``, ``not``, parentheses, and names given
 earlier by ``define NAME EXPRESSION`` (a shared condition written once), and
 ``simple``: the module's occupied 8 neighbours form one run that holds all its
-edge neighbours, so its leaving cannot cut the robot locally. POS is a name
+edge neighbours, so its leaving cannot cut the robot locally (``POS is simple``
+asks the same about the module at POS). POS is a name
 (N E S W NE NW SE SW) or an offset ``(dx,dy)``; CLASS is ``empty``,
 ``obstacle``, ``module`` (any state) or a state name. All ``require`` lines
 must hold. Actions: ``become STATE`` and/or ``move POS`` (a neighbour cell);
@@ -151,6 +152,11 @@ class _ExprParser:
         if self.peek() in ("not", "!"):
             self.take()
             negated = True
+        if self.peek() == "simple":  # the ring test, about a neighbour
+            self.take()
+            if offset == (0, 0):
+                raise _Error("write 'simple' for the module itself")
+            return Atom(offset, frozenset({SIMPLE}), negated)
         names = [self.cls()]
         while self.peek() == "|":
             self.take()

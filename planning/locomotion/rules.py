@@ -74,7 +74,8 @@ class Atom:
 
     def __str__(self) -> str:
         if SIMPLE in self.classes:
-            return "not simple" if self.negated else "simple"
+            test = "not simple" if self.negated else "simple"
+            return test if self.offset == (0, 0) else f"{offset_name(self.offset)} is {test}"
         cls = "|".join(sorted(self.classes))
         return f"{offset_name(self.offset)} is {'not ' if self.negated else ''}{cls}"
 
@@ -225,5 +226,6 @@ class RuleSet:
         for r in self.rules:
             for c in r.conditions:
                 for a in atoms_of(c):
-                    far = max(far, abs(a.offset[0]), abs(a.offset[1]))
+                    ring = 1 if SIMPLE in a.classes else 0  # the test reads the cell's ring
+                    far = max(far, abs(a.offset[0]) + ring, abs(a.offset[1]) + ring)
         return far

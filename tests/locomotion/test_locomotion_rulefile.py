@@ -100,3 +100,27 @@ def test_shipped_rule_sets_load():
 def test_unknown_rule_set_lists_the_shipped_ones():
     with pytest.raises(ScenarioError, match="salvador-free"):
         load_ruleset("no-such-rules")
+
+
+def test_simple_about_a_neighbour():
+    # 'S is not simple': the module below cannot leave without cutting its
+    # ring. Here it holds two arms that meet only through it.
+    rs = loads(HEADER + "rule X\n priority 1\n state active\n require S is not simple\n"
+               " become static\n")
+    assert str(rs.rules[0].conditions[0]) == "S is not simple"
+    assert rs.reach() == 2  # the test reads the ring of a cell one step away
+
+    def after(below_ring):
+        cells = [(0, 0), (0, -1), *below_ring]
+        world = World([], cells, rs.states, module_states=["active"] + ["static"] * (
+            len(cells) - 1), extend_axis=None)
+        return Engine(rs, world).run(1, Goal()).states[0]
+
+    assert after([(-1, -1), (1, -1)]) == "static"  # (0,-1) joins W and E arms
+    assert after([(-1, -1), (-1, 0)]) == "active"  # one run round it: it could leave
+
+
+def test_simple_of_the_module_itself_is_written_plain():
+    with pytest.raises(ScenarioError, match="write 'simple' for the module itself"):
+        loads(HEADER + "rule X\n priority 1\n state active\n require (0,0) is simple\n"
+              " become static\n", "x.rules")
