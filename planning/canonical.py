@@ -43,7 +43,7 @@ from hexbot.planning.robust import (
 )
 
 #: Largest shift (cells) of one strip -> strip hop of the direct planner.
-HOP = 3
+HOP = 1
 
 
 def anchor_of(cells: frozenset[Cell] | set[Cell]) -> Cell:

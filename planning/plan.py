@@ -28,6 +28,7 @@ class Plan:
     reason: str = ""
     warnings: list[str] = field(default_factory=list)
     lower_bound: int | None = None
+    method: str = ""  # robust mode: which method planned (direct, backwards, canonical)
 
     @property
     def move_count(self) -> int:

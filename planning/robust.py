@@ -35,7 +35,7 @@ from dataclasses import dataclass, replace
 from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.hexlattice import ROTATIONS, Cell, distance, neighbors
 from hexbot.planning.moves import Move
-from hexbot.planning.plan import Plan, Step, apply_move, distance_lower_bound
+from hexbot.planning.plan import Plan, Step, distance_lower_bound
 
 # Precomputed Table 4-3 offsets: (rule, substrate, goal, swept) relative to (0, 0).
 _RULES = [(rule, *rule.at((0, 0))) for rule in ROTATIONS]
@@ -97,6 +97,8 @@ class _State:
     occupied: set[Cell]
     ids: dict[Cell, int]
     goal: frozenset[Cell]
+    #: fruitless searches left before giving up (None: unlimited)
+    budget: int | None = None
 
     def electrons(self) -> list[Cell]:
         return sorted(self.occupied - self.goal)
@@ -171,6 +173,12 @@ def _journey(state: _State, electron: Cell, accept: Callable[[Cell], bool]) -> l
                     node = prev
                 return path[::-1]
             queue.append(goal)
+    if state.budget is not None:
+        state.budget -= 1
+        if state.budget < 0:
+            raise PlanningFailure("no plan found: the direct search gave up (too many "
+                                  "fruitless searches; the goal likely needs an order it "
+                                  "does not try)")
     return None
 
 
@@ -207,16 +215,21 @@ def must_move(
 
 
 def serial_moves(
-    initial: Configuration, goal: frozenset[Cell], max_moves: int, fixed: Cell | None = None
+    initial: Configuration,
+    goal: frozenset[Cell],
+    max_moves: int,
+    fixed: Cell | None = None,
+    budget: int | None = None,
 ) -> list[Move]:
-    """The serial core; raises :class:`PlanningFailure` when stuck. The module
-    on ``fixed`` (fixed to the base) never moves.
+    """The serial core; raises :class:`PlanningFailure` when stuck, or after
+    ``budget`` journey searches that found nothing. The module on ``fixed``
+    (fixed to the base) never moves.
 
     Movers are the electrons plus goal modules that must step aside
     (:func:`must_move`, or promoted when the electrons alone are stuck);
     each journey ends in a void, so the loop ends.
     """
-    state = _State(set(initial.cells), {c: m.id for c, m in initial.items()}, goal)
+    state = _State(set(initial.cells), {c: m.id for c, m in initial.items()}, goal, budget)
     aside = must_move(goal, state.voids(), fixed)
     if aside is None:
         raise PlanningFailure("some goal cell can never be entered, even with modules stepping "
@@ -325,22 +338,30 @@ def _footprint(move: Move) -> set[Cell]:
     return move.footprint()
 
 
+#: How many pending serial moves the scheduler looks at (keeps it linear in plan length).
+WINDOW = 400
+
+
 def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] | None:
-    """List-schedule the serial moves into time steps (None if it gets stuck)."""
-    pending = list(serial)
+    """List-schedule the serial moves into time steps (None if it gets stuck).
+
+    Only the first ``WINDOW`` pending moves are candidates; a candidate's
+    earlier pending moves are all inside the window, so the check is exact.
+    """
     prints = [_footprint(m) for m in serial]
     occupied = set(initial.cells)
     steps: list[Step] = []
-    order = list(range(len(serial)))
-    while order:
+    pending = deque(range(len(serial)))
+    while pending:
+        window = [pending.popleft() for _ in range(min(WINDOW, len(pending)))]
         blocked: set[Cell] = set()  # cells of earlier pending moves and of chosen ones
         blocked_subs: set[Cell] = set()
         busy: set[int] = set()
         static = set(occupied)
         chosen: list[int] = []
         rest: list[int] = []
-        for k in order:
-            move, fp = pending[k], prints[k]
+        for k in window:
+            move, fp = serial[k], prints[k]
             ready = (
                 move.module not in busy
                 and not (fp & blocked)
@@ -357,13 +378,13 @@ def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] 
             blocked_subs.add(move.substrate)
         if not chosen:
             return None
-        step_moves = [pending[k] for k in chosen]
+        step_moves = [serial[k] for k in chosen]
         for move in step_moves:
             occupied.discard(move.src)
         for move in step_moves:
             occupied.add(move.dst)
         steps.append(Step(step_moves))
-        order = rest
+        pending.extendleft(reversed(rest))
     return steps
 
 
@@ -442,14 +463,27 @@ def check_inputs(initial: Configuration, goal: frozenset[Cell], fixed: Cell | No
     return ""
 
 
+def direct_budget(count: int) -> int:
+    """Fruitless journey searches the direct method may make before the planner
+    moves on (successful direct plans make almost none; failing ones thousands)."""
+    return 10 + min(count // 10, 100)
+
+
 def plan_robust(
     initial: Configuration,
     goal: frozenset[Cell],
     parallel: bool = True,
-    max_moves: int = 1_000_000,
+    max_moves: int = 10_000_000,
     fixed: Cell | None = None,
 ) -> Plan:
-    """Plan a connected, collision-free reconfiguration (see the module docstring)."""
+    """Plan a connected, collision-free reconfiguration (see the module docstring).
+
+    Methods, in order: the direct one forward, the direct one from the goal
+    backwards (both with a search budget), then through a canonical strip
+    (:mod:`hexbot.planning.canonical`). ``plan.method`` says which one planned.
+    """
+    from hexbot.planning.canonical import anchor_of, replay, via_strip
+
     goal = frozenset(goal)
     plan = Plan(mode="robust", initial=initial, goal=goal)
     plan.lower_bound = distance_lower_bound(initial.cells, goal)
@@ -457,24 +491,40 @@ def plan_robust(
     if reason:
         plan.reason = reason
         return plan
+    budget = direct_budget(len(initial))
+    failures: list[str] = []
+    serial: list[Move] | None = None
     try:
-        serial = serial_moves(initial, goal, max_moves, fixed)
-    except PlanningFailure as forward:
-        # rotations are reversible: plan from the goal back to the start and reverse it
+        serial = serial_moves(initial, goal, max_moves, fixed, budget)
+        plan.method = "direct"
+    except PlanningFailure as exc:
+        failures.append(f"direct: {exc}")
+    if serial is None:
         try:
-            serial = reversed_plan(initial, goal, max_moves, fixed)
-        except PlanningFailure:
-            plan.reason = f"{forward} (planning backwards from the goal failed too)"
-            return plan
+            serial = reversed_plan(initial, goal, max_moves, fixed, budget)
+            plan.method = "direct, backwards"
+        except PlanningFailure as exc:
+            failures.append(f"backwards: {exc}")
+    if serial is None:
+        anchor = anchor_of(initial.cells)
+        if fixed is not None and not fixed == anchor == anchor_of(goal):
+            failures.append(f"canonical strip: the fixed module at {fixed} would have to "
+                            "move (the strip keeps only the rightmost module in place)")
+        else:
+            try:
+                serial = via_strip(initial, goal, max_moves)
+                plan.method = "canonical strip"
+            except PlanningFailure as exc:
+                failures.append(f"canonical strip: {exc}")
+    if serial is None:
+        plan.reason = "no plan found: " + "; ".join(failures)
+        return plan
     if not parallel:
         plan.steps = [Step([m]) for m in serial]
     else:
         plan.steps = schedule_parallel(initial, serial) or pack_consecutive(initial, serial)
-    config = initial
-    for step in plan.steps:
-        for move in step.moves:
-            config = apply_move(config, move)
-    plan.reached = config.cells == goal
+    final = replay(initial, [m for step in plan.steps for m in step.moves])
+    plan.reached = final.cells == goal
     if not plan.reached:  # a bug, not a user error: say so loudly
         plan.reason = "internal error: the schedule does not end in the goal"
     return plan
@@ -491,14 +541,18 @@ def reverse_move(move: Move) -> Move:
 
 
 def reversed_plan(
-    initial: Configuration, goal: frozenset[Cell], max_moves: int, fixed: Cell | None
+    initial: Configuration,
+    goal: frozenset[Cell],
+    max_moves: int,
+    fixed: Cell | None,
+    budget: int | None = None,
 ) -> list[Move]:
     """Serial moves from ``initial`` to ``goal`` found by planning from the goal back."""
+    from hexbot.planning.canonical import replay
+
     start = Configuration.from_cells(goal, first_id=1000)  # provisional ids
-    backward = serial_moves(start, initial.cells, max_moves, fixed)
-    config = start
-    for move in backward:
-        config = apply_move(config, move)
+    backward = serial_moves(start, initial.cells, max_moves, fixed, budget)
+    config = replay(start, backward)
     real = {config[c].id: initial[c].id for c in config}
     return [
         replace(reverse_move(m), module=real[m.module], substrate_module=real[m.substrate_module])
