@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import asyncio
-import functools
 import sys
 from pathlib import Path
 
@@ -34,12 +32,3 @@ def log_dir(tmp_path, monkeypatch):
     monkeypatch.setenv("HEXBOT_LOG_DIR", str(path))
     return path
 
-
-def sync(fn):
-    """Run an async test (Textual's Pilot) without an asyncio plugin."""
-
-    @functools.wraps(fn)
-    def wrapper(*args, **kwargs):
-        return asyncio.run(fn(*args, **kwargs))
-
-    return wrapper

@@ -4,7 +4,7 @@ against the embedded simulator (the product path)."""
 from __future__ import annotations
 
 import pytest
-from conftest import sync
+from pilot_sync import sync
 
 from hexbot.host import cli_console
 from hexbot.host.console.app import HexBotConsole
