@@ -333,15 +333,28 @@ class Engine:
         return disj
 
     def _compile(self) -> None:
-        """Per state, the variants that apply to it, as lists of filters."""
-        self.by_state: list[list[tuple[int, list[Check]]]] = [[] for _ in range(self.nstates)]
-        for vid, v in enumerate(self.variants):
-            filters: list[Check] = []
-            for c in v.conditions:  # top-level 'and' splits into filters: cheaper
-                for part in c.args if isinstance(c, And) else (c,):
-                    filters.append(self._expr(part))
-            self.by_state[self.rs.states.index(v.rule.state)].append((vid, filters))
+        """Per state, the variants that apply to it, as lists of filters.
+
+        A variant whose first condition asks a cell for module states (``W is
+        HEADD``) also gets an *anchor*: when those states are rarer than the
+        modules to test, the candidates are found from the anchor modules
+        (each one names the module it could serve) instead of testing all."""
+        self.by_state: list[list[tuple[int, list[Check], tuple | None]]] = [
+            [] for _ in range(self.nstates)
+        ]
         h = self.world.height
+        for vid, v in enumerate(self.variants):
+            parts: list[Expr] = []
+            for c in v.conditions:  # top-level 'and' splits into filters: cheaper
+                parts.extend(c.args if isinstance(c, And) else (c,))
+            filters = [self._expr(part) for part in parts]
+            anchor = None
+            first = parts[0] if parts else None
+            if (isinstance(first, Atom) and not first.negated and SIMPLE not in first.classes
+                    and first.classes <= set(self.rs.states)):
+                ids = tuple(sorted(self.rs.states.index(c) for c in first.classes))
+                anchor = (ids, first.offset[0] * h + first.offset[1])
+            self.by_state[self.rs.states.index(v.rule.state)].append((vid, filters, anchor))
         self.move_off = self.move_xy[:, 0] * h + self.move_xy[:, 1]
 
     # --- one round --------------------------------------------------------------
@@ -350,21 +363,42 @@ class Engine:
         """Variant id chosen by each module on the current snapshot, -1 for none."""
         w = self.world
         chosen = np.full(w.pos.size, -1, dtype=np.int64)
+        counts = np.bincount(w.state, minlength=self.nstates)
+        members: dict[tuple[int, ...], np.ndarray] = {}
+        rare: dict[tuple[int, ...], int] = {}  # how many modules are in these states
+        who: np.ndarray | None = None  # module index by flat cell, built on demand
         for s in range(self.nstates):
             idx = np.flatnonzero(w.state == s)
-            for vid, filters in self.by_state[s]:
+            for vid, filters, anchor in self.by_state[s]:
                 if idx.size == 0:
                     break
-                sel = np.arange(idx.size)
-                p = w.pos[idx]
-                for f in filters:
-                    keep = f(p)
-                    sel, p = sel[keep], p[keep]
+                todo = filters
+                if anchor is not None:
+                    ids, off = anchor
+                    if ids not in rare:
+                        rare[ids] = int(counts[list(ids)].sum())
+                if anchor is not None and rare[ids] < idx.size:
+                    if ids not in members:
+                        members[ids] = np.flatnonzero(np.isin(w.state, ids))
+                    if who is None:
+                        who = np.full(w.flat.size, -1, dtype=np.int64)
+                        who[w.pos] = np.arange(w.pos.size)
+                    cand = who[w.pos[members[ids]] - off]
+                    cand = cand[cand >= 0]
+                    cand = cand[(w.state[cand] == s) & (chosen[cand] < 0)]
+                    todo = filters[1:]  # the anchor test holds by construction
+                else:
+                    cand = idx
+                sel = np.arange(cand.size)
+                p = w.pos[cand]
+                for f in todo:
                     if sel.size == 0:
                         break
+                    keep = f(p)
+                    sel, p = sel[keep], p[keep]
                 if sel.size:
-                    chosen[idx[sel]] = vid
-                    idx = np.delete(idx, sel)
+                    chosen[cand[sel]] = vid
+                    idx = idx[chosen[idx] < 0]
         return chosen
 
     def _labels(self, chosen: np.ndarray, movers: np.ndarray) -> list[str]:

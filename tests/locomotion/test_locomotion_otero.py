@@ -149,3 +149,24 @@ def test_a_walled_in_pivot_that_holds_the_robot_together_stays():
     cfg = {(0, 0): "PIVOT", (0, 1): "STOPA", (1, 0): "STOPA", (0, -1): "STOPA"}
     after, _ = run(cfg, obstacles=[(-1, -1), (1, -1), (1, 1), (0, 2), (2, 0), (0, -2)])
     assert after[(0, 0)] != "SUPER"
+
+
+def test_anchored_candidates_choose_exactly_what_a_full_scan_chooses(monkeypatch):
+    # The engine finds candidates for 'W is HEADD'-style rules from the rare
+    # modules they name; a run must not change when every module is scanned.
+    from hexbot.planning.locomotion import load_scenario, simulate
+
+    def run_once():
+        r = simulate(OTERO, load_scenario("irregular-multi", 10), rounds=3000)
+        return r.status, r.rounds, r.moves_per_module, r.positions, r.states, r.rule_counts
+
+    anchored = run_once()
+    compile_ = Engine._compile
+
+    def no_anchors(self):
+        compile_(self)
+        self.by_state = [[(v, f, None) for v, f, _ in lst] for lst in self.by_state]
+
+    monkeypatch.setattr(Engine, "_compile", no_anchors)
+    assert run_once() == anchored
+    assert anchored[0] == "reached" and "U4" in " ".join(anchored[5])
