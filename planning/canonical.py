@@ -32,7 +32,7 @@ from collections import deque
 from dataclasses import replace
 
 from hexbot.planning.configuration import Configuration, Module
-from hexbot.planning.hexlattice import Cell, distance, neighbors
+from hexbot.planning.hexlattice import Cell, distance, neighbors, rotate_cell, wrap
 from hexbot.planning.moves import Move, orientation_after
 from hexbot.planning.robust import (
     PlanningFailure,
@@ -110,17 +110,24 @@ def to_strip(config: Configuration, width: int) -> list[Move]:
     anchor = anchor_of(config.cells)
     built = {anchor}
     moves: list[Move] = []
+    order: list[Cell] = []
     for target in strip_cells(anchor, len(config), width):
         if target in occupied:  # cannot happen: every cell right of the anchor is empty
             raise PlanningFailure(f"strip cell {target} is occupied")
-        hops = _hops_from(occupied, anchor)
-        movers = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
+        if not order:
+            # farthest first; taking a farthest module changes no other distance, so the
+            # order is only recomputed when a nearer module had to go instead
+            hops = _hops_from(occupied, anchor)
+            order = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
         path = None
-        for mover in movers:
+        for k, mover in enumerate(order):
             if is_cut(occupied, mover):
                 continue
             path = _path_to(occupied, mover, target)
             if path:
+                del order[k]
+                if k:
+                    order = []
                 break
         if path is None:
             raise PlanningFailure(
@@ -194,23 +201,47 @@ def default_widths(count: int) -> list[int]:
     return sorted({wide, max(1, wide // 3), 1}, reverse=True)
 
 
+def _rotated(config: Configuration, steps: int) -> Configuration:
+    return Configuration({rotate_cell(c, steps): m for c, m in config.items()})
+
+
+def _rotate_move(move: Move, steps: int) -> Move:
+    """The same rotation seen in a frame turned ``steps`` sixth-turns clockwise:
+    cells turn, and joint ``j`` becomes joint ``j + steps`` (sides turn with them)."""
+    return replace(move, src=rotate_cell(move.src, steps), dst=rotate_cell(move.dst, steps),
+                   substrate=rotate_cell(move.substrate, steps),
+                   joint=wrap(move.joint + steps))
+
+
+def _via_strip_once(initial: Configuration, goal: frozenset[Cell], width: int,
+                    max_moves: int) -> list[Move]:
+    first = to_strip(initial, width)
+    at_strip = replay(initial, first)
+    shift = shift_strip(at_strip, anchor_of(initial.cells), anchor_of(goal), width, max_moves)
+    last = reversed_to_strip(goal, replay(at_strip, shift), width)
+    return first + shift + last
+
+
 def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10**7,
               widths: list[int] | None = None) -> list[Move]:
-    """Serial moves initial -> strip -> goal's strip -> goal (raises PlanningFailure)."""
+    """Serial moves initial -> strip -> goal's strip -> goal (raises PlanningFailure).
+
+    Tries each width of ``widths`` (default :func:`default_widths`) with the strip
+    growing in each of the six lattice directions (the whole problem is turned,
+    planned, and its moves turned back).
+    """
     failures = []
     for width in widths or default_widths(len(initial)):
-        try:
-            first = to_strip(initial, width)
-            at_strip = replay(initial, first)
-            shift = shift_strip(at_strip, anchor_of(initial.cells), anchor_of(goal), width,
-                                max_moves)
-            at_goal_strip = replay(at_strip, shift)
-            last = reversed_to_strip(goal, at_goal_strip, width)
-        except PlanningFailure as exc:
-            failures.append(str(exc))
-            continue
-        moves = first + shift + last
-        if len(moves) > max_moves:
-            raise PlanningFailure(f"more than {max_moves} moves needed")
-        return moves
-    raise PlanningFailure("no canonical strip could be built: " + "; ".join(failures))
+        for turn in range(6):
+            try:
+                moves = _via_strip_once(_rotated(initial, -turn),
+                                        frozenset(rotate_cell(c, -turn) for c in goal),
+                                        width, max_moves)
+            except PlanningFailure as exc:
+                failures.append(f"width {width}, direction {turn}: {exc}")
+                continue
+            if len(moves) > max_moves:
+                raise PlanningFailure(f"more than {max_moves} moves needed")
+            return [_rotate_move(m, turn) for m in moves]
+    raise PlanningFailure("no canonical strip could be built (" + "; ".join(failures[:2])
+                          + (f"; {len(failures) - 2} more" if len(failures) > 2 else "") + ")")

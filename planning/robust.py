@@ -183,7 +183,8 @@ def _journey(state: _State, electron: Cell, accept: Callable[[Cell], bool]) -> l
 
 
 def must_move(
-    goal: frozenset[Cell], voids: set[Cell], fixed: Cell | None = None
+    goal: frozenset[Cell], voids: set[Cell], fixed: Cell | None = None,
+    limit: int | None = None,
 ) -> set[Cell] | None:
     """Goal cells whose module has to step aside so that every void can be entered.
 
@@ -198,20 +199,43 @@ def must_move(
         if not remaining:
             return moved
         pending = remaining | moved
-        best: tuple[int, Cell] | None = None
-        for cell in sorted(goal - pending):
-            if cell == fixed:
-                continue
-            blocked = {n for n in neighbors(cell) if n in goal and (n not in voids or n in pending)}
-            blocked -= moved
-            if not _free_run(blocked, cell):
-                continue
-            touching = sum(1 for n in neighbors(cell) if n in remaining)
-            if best is None or touching > best[0]:
-                best = (touching, cell)
+        # the cells touching a stuck void win if any qualifies (same choice as a full
+        # scan in sorted order); the full scan only when none does
+        near = {n for v in remaining for n in neighbors(v) if n in goal} - pending
+        best = _step_aside_choice(goal, voids, pending, moved, remaining, sorted(near), fixed)
+        if best is None:
+            best = _step_aside_choice(goal, voids, pending, moved, remaining,
+                                      sorted(goal - pending - near), fixed)
         if best is None:
             return None
-        moved.add(best[1])
+        moved.add(best)
+        if limit is not None and len(moved) > limit:
+            raise PlanningFailure(f"no plan found: more than {limit} goal modules would "
+                                  "have to step aside")
+
+
+def _step_aside_choice(
+    goal: frozenset[Cell],
+    voids: set[Cell],
+    pending: set[Cell],
+    moved: set[Cell],
+    remaining: set[Cell],
+    cells: list[Cell],
+    fixed: Cell | None,
+) -> Cell | None:
+    """The goal module (of ``cells``) that can leave and touches the most stuck voids."""
+    best: tuple[int, Cell] | None = None
+    for cell in cells:
+        if cell == fixed:
+            continue
+        blocked = {n for n in neighbors(cell) if n in goal and (n not in voids or n in pending)}
+        blocked -= moved
+        if not _free_run(blocked, cell):
+            continue
+        touching = sum(1 for n in neighbors(cell) if n in remaining)
+        if best is None or touching > best[0]:
+            best = (touching, cell)
+    return None if best is None else best[1]
 
 
 def serial_moves(
@@ -230,7 +254,7 @@ def serial_moves(
     each journey ends in a void, so the loop ends.
     """
     state = _State(set(initial.cells), {c: m.id for c, m in initial.items()}, goal, budget)
-    aside = must_move(goal, state.voids(), fixed)
+    aside = must_move(goal, state.voids(), fixed, budget)
     if aside is None:
         raise PlanningFailure("some goal cell can never be entered, even with modules stepping "
                               "aside (fewer than three consecutive free sides)")
@@ -339,7 +363,7 @@ def _footprint(move: Move) -> set[Cell]:
 
 
 #: How many pending serial moves the scheduler looks at (keeps it linear in plan length).
-WINDOW = 400
+WINDOW = 120
 
 
 def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] | None:
@@ -456,17 +480,25 @@ def check_inputs(initial: Configuration, goal: frozenset[Cell], fixed: Cell | No
     if is_immobile(goal, fixed):
         return ("the goal configuration is immobile (Fig. 4-6): rotations are reversible, "
                 "so no rotation can end in it")
-    if must_move(goal, set(goal - initial.cells), fixed) is None:
-        stuck = fillable(goal, set(goal) - {fixed}) or set(goal)
+    # A cell entered for the last time has the cells filled before it occupied; if it
+    # cannot be peeled even when every other goal module may be placed after it, no
+    # order enters it (cells of the initial whose module never moves need no entry).
+    stuck = fillable(goal, set(goal) - {fixed}) - initial.cells
+    if stuck:
         return (f"goal cell {min(stuck)} can never be entered: it never has three consecutive "
                 "free sides, which a Table 4-3 rotation sweeps")
     return ""
 
 
+#: Above this many modules (and with no fixed module) a failed forward search goes
+#: straight to the canonical strip: the backward search rarely helps there and costs seconds.
+BACKWARD_LIMIT = 300
+
+
 def direct_budget(count: int) -> int:
     """Fruitless journey searches the direct method may make before the planner
     moves on (successful direct plans make almost none; failing ones thousands)."""
-    return 10 + min(count // 10, 100)
+    return 10 + min(count // 10, 20)
 
 
 def plan_robust(
@@ -499,7 +531,7 @@ def plan_robust(
         plan.method = "direct"
     except PlanningFailure as exc:
         failures.append(f"direct: {exc}")
-    if serial is None:
+    if serial is None and (len(initial) <= BACKWARD_LIMIT or fixed is not None):
         try:
             serial = reversed_plan(initial, goal, max_moves, fixed, budget)
             plan.method = "direct, backwards"
