@@ -223,16 +223,27 @@ def _via_strip_once(initial: Configuration, goal: frozenset[Cell], width: int,
 
 
 def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10**7,
-              widths: list[int] | None = None) -> list[Move]:
+              widths: list[int] | None = None, fixed: Cell | None = None) -> list[Move]:
     """Serial moves initial -> strip -> goal's strip -> goal (raises PlanningFailure).
 
     Tries each width of ``widths`` (default :func:`default_widths`) with the strip
     growing in each of the six lattice directions (the whole problem is turned,
-    planned, and its moves turned back).
+    planned, and its moves turned back). A ``fixed`` module (bolted to the base)
+    allows only the directions in which it is the anchor of both configurations.
     """
     failures = []
+    turns = list(range(6))
+    if fixed is not None:
+        turns = [t for t in turns
+                 if rotate_cell(fixed, -t) == anchor_of({rotate_cell(c, -t) for c in goal})
+                 == anchor_of({rotate_cell(c, -t) for c in initial.cells})]
+        if not turns:
+            raise PlanningFailure(f"the fixed module at {fixed} would have to move (a strip "
+                                  "keeps only the extreme module in place, and the fixed one "
+                                  "is not extreme in the same direction in both "
+                                  "configurations)")
     for width in widths or default_widths(len(initial)):
-        for turn in range(6):
+        for turn in turns:
             try:
                 moves = _via_strip_once(_rotated(initial, -turn),
                                         frozenset(rotate_cell(c, -turn) for c in goal),

@@ -514,7 +514,7 @@ def plan_robust(
     backwards (both with a search budget), then through a canonical strip
     (:mod:`hexbot.planning.canonical`). ``plan.method`` says which one planned.
     """
-    from hexbot.planning.canonical import anchor_of, replay, via_strip
+    from hexbot.planning.canonical import replay, via_strip
 
     goal = frozenset(goal)
     plan = Plan(mode="robust", initial=initial, goal=goal)
@@ -538,16 +538,11 @@ def plan_robust(
         except PlanningFailure as exc:
             failures.append(f"backwards: {exc}")
     if serial is None:
-        anchor = anchor_of(initial.cells)
-        if fixed is not None and not fixed == anchor == anchor_of(goal):
-            failures.append(f"canonical strip: the fixed module at {fixed} would have to "
-                            "move (the strip keeps only the rightmost module in place)")
-        else:
-            try:
-                serial = via_strip(initial, goal, max_moves)
-                plan.method = "canonical strip"
-            except PlanningFailure as exc:
-                failures.append(f"canonical strip: {exc}")
+        try:
+            serial = via_strip(initial, goal, max_moves, fixed=fixed)
+            plan.method = "canonical strip"
+        except PlanningFailure as exc:
+            failures.append(f"canonical strip: {exc}")
     if serial is None:
         plan.reason = "no plan found: " + "; ".join(failures)
         return plan
