@@ -7,8 +7,14 @@ Families (deterministic, no randomness outside the given seeds):
 
 * ``parallelogram``: a w x h parallelogram into a wider, flatter one with the
   same module count, sharing the corner cell (0, 0);
-* ``blob``: two seeded random compact blobs of the same size (success rate);
+* ``blob``: two seeded random compact blobs of the same size, both grown from
+  (0, 0), so they overlap (success rate, plan quality);
+* ``apart``: the same pairs with the goal shifted right until it no longer
+  overlaps the initial configuration (one empty column between them);
 * ``thesis``: Test_All_S02 with both faithful planners and the robust one.
+
+Columns: ``method`` (robust mode: direct, direct backwards, canonical strip),
+moves and time steps with their lower bounds and the ratio plan / bound.
 """
 
 from __future__ import annotations
@@ -53,6 +59,7 @@ def row(family: str, n: int, plan, seconds: float, initial, goal) -> dict:
         "time_steps": plan.time_steps,
         "move_lower_bound": plan.lower_bound,
         "step_lower_bound": step_lower_bound(initial, goal),
+        "method": plan.method,
         "reason": plan.reason,
     }
 
@@ -67,13 +74,21 @@ def bench_parallelograms(sizes: list[int]) -> list[dict]:
     return out
 
 
-def bench_blobs(sizes: list[int], seeds: int) -> list[dict]:
+def apart(initial: frozenset, goal: frozenset) -> frozenset:
+    """``goal`` shifted right so that one empty column separates it from ``initial``."""
+    dx = max(x for x, _ in initial) - min(x for x, _ in goal) + 2
+    return frozenset((x + dx, y) for x, y in goal)
+
+
+def bench_blobs(sizes: list[int], seeds: int, family: str = "blob") -> list[dict]:
     out = []
     for n in sizes:
         for seed in range(seeds):
             a, b = random_blob(n, 2 * seed, 0.8), random_blob(n, 2 * seed + 1, 0.8)
+            if family == "apart":
+                b = apart(a, b)
             plan, dt = timed(lambda a=a, b=b: plan_robust(Configuration.from_cells(a), b))
-            out.append(row(f"blob seed {seed}", n, plan, dt, a, b))
+            out.append(row(f"{family} seed {seed}", n, plan, dt, a, b))
     return out
 
 
@@ -95,26 +110,37 @@ def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--sizes", default="10,30,100,300,1000",
                         help="parallelogram sizes among " + ",".join(map(str, PARALLELOGRAMS)))
-    parser.add_argument("--blob-sizes", default="10,30,100", help="random blob sizes")
+    parser.add_argument("--blob-sizes", default="10,30,100,1000", help="random blob sizes")
+    parser.add_argument("--apart-sizes", default="10,30,100",
+                        help="random blob sizes with the goal apart from the initial")
     parser.add_argument("--seeds", type=int, default=5, help="random blob pairs per size")
     parser.add_argument("--json", action="store_true", help="JSON lines instead of a table")
     args = parser.parse_args()
     sizes = [int(s) for s in args.sizes.split(",") if s]
     blob_sizes = [int(s) for s in args.blob_sizes.split(",") if s]
-    rows = bench_thesis() + bench_parallelograms(sizes) + bench_blobs(blob_sizes, args.seeds)
+    apart_sizes = [int(s) for s in args.apart_sizes.split(",") if s]
+    rows = (bench_thesis() + bench_parallelograms(sizes) + bench_blobs(blob_sizes, args.seeds)
+            + bench_blobs(apart_sizes, args.seeds, "apart"))
     if args.json:
         for r in rows:
             print(json.dumps(r))
         return
-    print("| case | modules | reached | time (s) | moves | move bound | steps | step bound |")
-    print("|---|---:|---|---:|---:|---:|---:|---:|")
+    print("| case | modules | method | reached | time (s) | moves | move bound | ratio "
+          "| steps | step bound | ratio |")
+    print("|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|")
     for r in rows:
-        print(f"| {r['family']} | {r['modules']} | {'yes' if r['reached'] else 'no'} | "
-              f"{r['seconds']:.3f} | {r['moves']} | {r['move_lower_bound']} | "
-              f"{r['time_steps']} | {r['step_lower_bound']} |")
+        print(f"| {r['family']} | {r['modules']} | {r['method'] or '-'} | "
+              f"{'yes' if r['reached'] else 'no'} | {r['seconds']:.3f} | {r['moves']} | "
+              f"{r['move_lower_bound']} | {ratio(r['moves'], r['move_lower_bound'])} | "
+              f"{r['time_steps']} | {r['step_lower_bound']} | "
+              f"{ratio(r['time_steps'], r['step_lower_bound'])} |")
     failed = [r for r in rows if not r["reached"] and "faithful" not in r["family"]]
     for r in failed:
         print(f"\n{r['family']} ({r['modules']}): {r['reason']}")
+
+
+def ratio(value: int, bound: int | None) -> str:
+    return f"{value / bound:.1f}" if bound else "-"
 
 
 if __name__ == "__main__":
