@@ -11,7 +11,10 @@ Families (deterministic, no randomness outside the given seeds):
   (0, 0), so they overlap (success rate, plan quality);
 * ``apart``: the same pairs with the goal shifted right until it no longer
   overlaps the initial configuration (one empty column between them);
-* ``thesis``: Test_All_S02 with both faithful planners and the robust one.
+* ``thesis``: Test_All_S02 with both faithful planners and the robust one;
+* ``--scan N``: N random pairs of 3 to 30 modules, the initial of random
+  compactness (the property test's generator); prints how many each method
+  planned and every failure.
 
 Columns: ``method`` (robust mode: direct, direct backwards, canonical strip),
 moves and time steps with their lower bounds and the ratio plan / bound.
@@ -92,6 +95,24 @@ def bench_blobs(sizes: list[int], seeds: int, family: str = "blob") -> list[dict
     return out
 
 
+def scan(count: int) -> None:
+    """Completion over many small random pairs (counts per method, failures listed)."""
+    import random
+    from collections import Counter
+
+    methods: Counter[str] = Counter()
+    for i in range(count):
+        rng = random.Random(i)
+        size, sa, sb = rng.randint(3, 30), rng.randint(0, 10**6), rng.randint(0, 10**6)
+        a = random_blob(size, sa, compact=random.Random(sa).random())
+        b = random_blob(size, sb, compact=0.6)
+        plan = plan_robust(Configuration.from_cells(a), b)
+        methods[plan.method if plan.reached else "not reached"] += 1
+        if not plan.reached:
+            print(f"pair {i} (size {size}, seeds {sa}, {sb}): {plan.reason}")
+    print(f"{count} random pairs: " + ", ".join(f"{k}: {v}" for k, v in methods.most_common()))
+
+
 def bench_thesis() -> list[dict]:
     initial = load_configuration(EXAMPLES / "test_all_s02_initial.txt")
     goal = load_configuration(EXAMPLES / "test_all_s02_goal.txt").cells
@@ -115,7 +136,12 @@ def main() -> None:
                         help="random blob sizes with the goal apart from the initial")
     parser.add_argument("--seeds", type=int, default=5, help="random blob pairs per size")
     parser.add_argument("--json", action="store_true", help="JSON lines instead of a table")
+    parser.add_argument("--scan", type=int, metavar="N",
+                        help="only: completion over N small random pairs")
     args = parser.parse_args()
+    if args.scan:
+        scan(args.scan)
+        return
     sizes = [int(s) for s in args.sizes.split(",") if s]
     blob_sizes = [int(s) for s in args.blob_sizes.split(",") if s]
     apart_sizes = [int(s) for s in args.apart_sizes.split(",") if s]

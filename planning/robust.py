@@ -362,22 +362,24 @@ def _footprint(move: Move) -> set[Cell]:
     return move.footprint()
 
 
-#: How many pending serial moves the scheduler looks at (keeps it linear in plan length).
-WINDOW = 120
+#: How many pending serial moves the scheduler looks at, at least and at most (keeps it
+#: linear in plan length; long plans get a wider window: their journeys are longer).
+WINDOW = (120, 400)
 
 
 def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] | None:
     """List-schedule the serial moves into time steps (None if it gets stuck).
 
-    Only the first ``WINDOW`` pending moves are candidates; a candidate's
+    Only the first few hundred pending moves (``WINDOW``) are candidates; a candidate's
     earlier pending moves are all inside the window, so the check is exact.
     """
+    width = min(WINDOW[1], max(WINDOW[0], len(serial) // 50))
     prints = [_footprint(m) for m in serial]
     occupied = set(initial.cells)
     steps: list[Step] = []
     pending = deque(range(len(serial)))
     while pending:
-        window = [pending.popleft() for _ in range(min(WINDOW, len(pending)))]
+        window = [pending.popleft() for _ in range(min(width, len(pending)))]
         blocked: set[Cell] = set()  # cells of earlier pending moves and of chosen ones
         blocked_subs: set[Cell] = set()
         busy: set[int] = set()
