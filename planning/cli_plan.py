@@ -77,6 +77,7 @@ def plan_json(plan: Plan, style: str = "combined") -> dict[str, Any]:
     commands = plan_to_commands(plan, style)  # type: ignore[arg-type]
     return {
         "mode": plan.mode,
+        "method": plan.method,
         "reached": plan.reached,
         "steps": [
             {
@@ -100,7 +101,8 @@ def plan_json(plan: Plan, style: str = "combined") -> dict[str, Any]:
 
 def plan_text(plan: Plan, style: str = "combined") -> str:
     lines = [
-        f"mode {plan.mode}: goal {'reached' if plan.reached else 'NOT reached'}, "
+        f"mode {plan.mode}{f' ({plan.method})' if plan.method else ''}: "
+        f"goal {'reached' if plan.reached else 'NOT reached'}, "
         f"{plan.time_steps} time step(s), {plan.move_count} move(s)"
         + (f" (lower bounds: {plan.lower_bound} moves, "
            f"{step_lower_bound(plan.initial.cells, plan.goal)} time steps)"

@@ -22,7 +22,7 @@ def test_json_object_has_the_documented_shape(capsys, examples_dir):
                               "--mode", "faithful-parallel", "--json")
     assert code == 0 and err == ""
     data = json.loads(out)
-    assert set(data) == {"mode", "reached", "steps"}
+    assert set(data) == {"mode", "method", "reached", "steps"}
     assert data["mode"] == "faithful-parallel" and data["reached"] is True
     assert len(data["steps"]) == 5
     move = data["steps"][0]["moves"][0]
@@ -44,8 +44,26 @@ def test_robust_mode_text_output_and_plot(capsys, examples_dir, tmp_path):
     png = tmp_path / "plan.png"
     code, out, _ = run_plan(capsys, examples_dir / P01[1], examples_dir / P01[0], "--plot", png)
     assert code == 0
-    assert "mode robust: goal reached" in out and "Select(" in out
+    assert "mode robust (direct): goal reached" in out and "Select(" in out
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_pair_apart_from_toml_files_goes_through_the_strip(capsys, tmp_path):
+    from hexbot.planning.generate import random_blob
+
+    initial = sorted(random_blob(30, 0, 0.8))
+    goal = random_blob(30, 1, 0.8)
+    shift = max(x for x, _ in initial) - min(x for x, _ in goal) + 2  # no overlap
+    files = []
+    for name, cells in (("initial", initial), ("goal", sorted((x + shift, y) for x, y in goal))):
+        path = tmp_path / f"{name}.toml"
+        path.write_text("cells = [" + ", ".join(f"[{x}, {y}]" for x, y in cells) + "]\n")
+        files.append(path)
+    code, out, _ = run_plan(capsys, *files, "--json")
+    result = json.loads(out)
+    assert code == 0 and result["reached"] is True
+    assert result["method"] == "canonical strip"
+    assert sum(len(step["moves"]) for step in result["steps"]) > 100
 
 
 def test_bad_grid_file_names_file_and_line(capsys, tmp_path, examples_dir):
