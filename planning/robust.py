@@ -383,7 +383,7 @@ def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] 
         blocked: set[Cell] = set()  # cells of earlier pending moves and of chosen ones
         blocked_subs: set[Cell] = set()
         busy: set[int] = set()
-        static = set(occupied)
+        static = occupied  # shrinks to the modules that stay put (no copy: it is hot)
         chosen: list[int] = []
         rest: list[int] = []
         for k in window:
@@ -405,8 +405,6 @@ def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] 
         if not chosen:
             return None
         step_moves = [serial[k] for k in chosen]
-        for move in step_moves:
-            occupied.discard(move.src)
         for move in step_moves:
             occupied.add(move.dst)
         steps.append(Step(step_moves))
