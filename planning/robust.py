@@ -9,9 +9,11 @@ rotation has its substrate and its goal and three swept cells empty. A void
 is only filled when the cells still to fill can then be entered in some
 order (:func:`fillable`); goal modules that wall a void in step aside
 (:func:`must_move`) or park outside the goal. If the forward search gets
-stuck, the same search runs from the goal back to the start and the moves
-are reversed (every rotation is undone by the opposite one over the same
-cells).
+stuck (or exceeds its budget, :func:`direct_budget`), the same search runs
+from the goal back to the start and the moves are reversed (every rotation
+is undone by the opposite one over the same cells); if that fails too, the
+plan goes through a canonical strip (:mod:`hexbot.planning.canonical`),
+which does not stall on notched goals.
 
 Parallel schedule. The serial moves are list-scheduled into time steps: a
 move runs as soon as no earlier pending move touches its cells (start,
@@ -23,7 +25,8 @@ order is packed greedily instead (always possible).
 Failures are reported, never hidden: disconnected inputs, different module
 counts, immobile configurations (Fig. 4-6: no module can rotate without
 breaking connectivity), goal cells that can never be entered, and searches
-that find no plan (the planner is not complete; see docs/planning.md).
+that find no plan (restricted pivoting has locked configurations, so no
+planner is complete on every pair; see docs/planning.md).
 """
 
 from __future__ import annotations
