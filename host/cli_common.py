@@ -32,7 +32,8 @@ def session(args: argparse.Namespace, *, wait_s: float = 5.0, verbose_states: bo
         if ends.sim is not None and wait_boot:
             print(f"simulator: {ends.sim.scenario}, waiting for the modules to boot",
                   file=sys.stderr)
-            commands.wait_until_booted(host)
+            ids = endpoints.scenario_module_ids(ends.sim.scenario)
+            commands.wait_until_booted(host, expected=ids)
         yield host
     finally:
         if host is not None:

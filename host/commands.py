@@ -12,8 +12,10 @@ with each module's own orientation.
 
 from __future__ import annotations
 
+import re
 import threading
 import time
+from collections.abc import Collection
 from dataclasses import dataclass, field
 
 from hexbot.errors import FrameError
@@ -22,7 +24,7 @@ from hexbot.host.host import IR, Host, Observed
 from hexbot.protocol import frames
 from hexbot.protocol.codes import lookup
 from hexbot.protocol.frames import Command
-from hexbot.protocol.parser import Ack, ErrorReply, StatusReport
+from hexbot.protocol.parser import Ack, ErrorReply, StatusReport, Text
 
 
 @dataclass(frozen=True)
@@ -205,10 +207,35 @@ def collect_until_quiet(host: Host, since: int, quiet: float, timeout: float,
 
 
 def wait_until_booted(host: Host, quiet: float = 2.0, timeout: float = 60.0,
-                      cancel: threading.Event | None = None) -> int:
-    """Wait for the boot texts of a freshly started cluster to end: until no
-    event arrived for ``quiet`` seconds (a fast simulator may have booted
-    before the port opened: then this is just ``quiet``). Commands sent
-    while modules boot are lost (their UARTs are not listening yet).
-    Returns the number of events seen."""
-    return len(collect_until_quiet(host, 0, quiet, timeout, cancel))
+                      cancel: threading.Event | None = None,
+                      expected: Collection[int] | None = None) -> int:
+    """Wait for the boot texts of a freshly started cluster to end. With
+    ``expected`` module ids (an embedded simulator knows them), until each
+    has said ``COMM. LISTENING ID=nn`` — the firmware staggers those texts in
+    per-id slots, so silence alone can end too early when ids leave gaps.
+    Otherwise until no event arrived for ``quiet`` seconds (a fast simulator
+    may have booted before the port opened: then this is just ``quiet``).
+    Commands sent while modules boot are lost (their UARTs are not
+    listening yet). Returns the number of events seen."""
+    if not expected:
+        return len(collect_until_quiet(host, 0, quiet, timeout, cancel))
+    missing = set(expected)
+    deadline = time.monotonic() + timeout
+    seen = 0
+    while missing and time.monotonic() < deadline:
+        if cancel is not None and cancel.is_set():
+            break
+        events = host.since(0)
+        seen = len(events)
+        missing -= {ident for obs in events if (ident := _listening_id(obs.event)) is not None}
+        time.sleep(0.05)
+    return seen
+
+
+def _listening_id(event: object) -> int | None:
+    """The module id of a ``COMM. LISTENING ID=nn ...`` boot text."""
+    if isinstance(event, Text) and event.phrase == "COMM. LISTENING":
+        m = re.search(r"\bID=(\d+)", event.tail)
+        if m:
+            return int(m.group(1))
+    return None

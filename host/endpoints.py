@@ -110,3 +110,8 @@ def _scenario_cells(name: str) -> dict[int, tuple[tuple[int, int], int]]:
 
     sc = load_scenario(name)
     return {m.id: ((m.position[0], m.position[1]), m.orientation) for m in sc.modules}
+
+
+def scenario_module_ids(name: str) -> set[int]:
+    """The module ids of a simulator scenario (to know when all have booted)."""
+    return set(_scenario_cells(name))

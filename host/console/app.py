@@ -29,7 +29,7 @@ from hexbot.host.console.messages import Parsed, PortState, SimEvent, Traffic
 from hexbot.host.console.modules_view import ModulesView
 from hexbot.host.console.palette import ConsoleCommands
 from hexbot.host.console.terminal import Entry, Terminal
-from hexbot.host.endpoints import Endpoints
+from hexbot.host.endpoints import Endpoints, scenario_module_ids
 from hexbot.host.host import DEBUG, IR, Host
 from hexbot.host.link import LinkState, PortSettings
 from hexbot.protocol import frames, wire
@@ -185,7 +185,9 @@ class HexBotConsole(App[None]):
         if endpoints is not None and endpoints.sim is not None:
             # Frames sent while the simulated modules boot are lost.
             def boot(cancel: threading.Event) -> str:
-                n = commands.wait_until_booted(host, self.boot_quiet, 60.0, cancel)
+                n = commands.wait_until_booted(
+                    host, self.boot_quiet, 60.0, cancel,
+                    expected=scenario_module_ids(endpoints.sim.scenario))
                 return f"{n} boot events"
             boot.__name__ = "modules booting"
             self.start_operation("Simulator", [boot])
