@@ -12,8 +12,10 @@ order (:func:`fillable`); goal modules that wall a void in step aside
 stuck (or exceeds its budget, :func:`direct_budget`), the same search runs
 from the goal back to the start and the moves are reversed (every rotation
 is undone by the opposite one over the same cells); if that fails too, the
-plan goes through a canonical strip (:mod:`hexbot.planning.canonical`),
-which does not stall on notched goals.
+plan goes through a compact middle ball (:mod:`hexbot.planning.middle`:
+initial -> ball -> goal, both halves direct; plans a few times the distance
+bound) and, when that stalls as well, through a canonical strip
+(:mod:`hexbot.planning.canonical`), which does not stall on notched goals.
 
 Parallel schedule. The serial moves are list-scheduled into time steps: a
 move runs as soon as no earlier pending move touches its cells (start,
@@ -247,17 +249,19 @@ def serial_moves(
     max_moves: int,
     fixed: Cell | None = None,
     budget: int | None = None,
+    aside_limit: int | None = -1,
 ) -> list[Move]:
     """The serial core; raises :class:`PlanningFailure` when stuck, or after
-    ``budget`` journey searches that found nothing. The module on ``fixed``
-    (fixed to the base) never moves.
+    ``budget`` journey searches that found nothing, or when more than
+    ``aside_limit`` goal modules must step aside at the start (-1: ``budget``).
+    The module on ``fixed`` (fixed to the base) never moves.
 
     Movers are the electrons plus goal modules that must step aside
     (:func:`must_move`, or promoted when the electrons alone are stuck);
     each journey ends in a void, so the loop ends.
     """
     state = _State(set(initial.cells), {c: m.id for c, m in initial.items()}, goal, budget)
-    aside = must_move(goal, state.voids(), fixed, budget)
+    aside = must_move(goal, state.voids(), fixed, budget if aside_limit == -1 else aside_limit)
     if aside is None:
         raise PlanningFailure("some goal cell can never be entered, even with modules stepping "
                               "aside (fewer than three consecutive free sides)")
@@ -498,6 +502,11 @@ def check_inputs(initial: Configuration, goal: frozenset[Cell], fixed: Cell | No
 BACKWARD_LIMIT = 300
 
 
+#: Above this many modules the middle-ball detour is skipped: its direct searches stall
+#: there and each failed try costs seconds (measured: 6-9 s at 1,000 modules).
+MIDDLE_LIMIT = 300
+
+
 def direct_budget(count: int) -> int:
     """Fruitless journey searches the direct method may make before the planner
     moves on (successful direct plans make almost none; failing ones thousands)."""
@@ -514,10 +523,13 @@ def plan_robust(
     """Plan a connected, collision-free reconfiguration (see the module docstring).
 
     Methods, in order: the direct one forward, the direct one from the goal
-    backwards (both with a search budget), then through a canonical strip
-    (:mod:`hexbot.planning.canonical`). ``plan.method`` says which one planned.
+    backwards (both with a search budget), through a compact middle ball
+    (:mod:`hexbot.planning.middle`, up to ``MIDDLE_LIMIT`` modules), then
+    through a canonical strip (:mod:`hexbot.planning.canonical`). ``plan.method``
+    says which one planned.
     """
     from hexbot.planning.canonical import replay, via_strip
+    from hexbot.planning.middle import via_middle
 
     goal = frozenset(goal)
     plan = Plan(mode="robust", initial=initial, goal=goal)
@@ -540,6 +552,12 @@ def plan_robust(
             plan.method = "direct, backwards"
         except PlanningFailure as exc:
             failures.append(f"backwards: {exc}")
+    if serial is None and len(initial) <= MIDDLE_LIMIT:
+        try:
+            serial = via_middle(initial, goal, max_moves, fixed, budget)
+            plan.method = "middle ball"
+        except PlanningFailure as exc:
+            failures.append(f"middle: {exc}")
     if serial is None:
         try:
             serial = via_strip(initial, goal, max_moves, fixed=fixed)
@@ -576,12 +594,13 @@ def reversed_plan(
     max_moves: int,
     fixed: Cell | None,
     budget: int | None = None,
+    aside_limit: int | None = -1,
 ) -> list[Move]:
     """Serial moves from ``initial`` to ``goal`` found by planning from the goal back."""
     from hexbot.planning.canonical import replay
 
     start = Configuration.from_cells(goal, first_id=1000)  # provisional ids
-    backward = serial_moves(start, initial.cells, max_moves, fixed, budget)
+    backward = serial_moves(start, initial.cells, max_moves, fixed, budget, aside_limit)
     config = replay(start, backward)
     real = {config[c].id: initial[c].id for c in config}
     return [
