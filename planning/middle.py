@@ -98,7 +98,8 @@ def via_middle(initial: Configuration, goal: frozenset[Cell], max_moves: int,
 def _via(initial: Configuration, goal: frozenset[Cell], middle: frozenset[Cell],
          max_moves: int, fixed: Cell | None, budget: int | None) -> list[Move]:
     if fixed is not None and fixed not in middle:
-        raise PlanningFailure(f"the middle shape does not hold the fixed module at {fixed}")
+        # the fixed module would have to move into the ball
+        raise PlanningFailure(f"the middle ball does not hold the fixed module at {fixed}")
     first = serial_moves(initial, middle, max_moves, fixed, budget, aside_limit=None)
     at_middle = replay(initial, first)
     last = reversed_plan(at_middle, goal, max_moves - len(first), fixed, budget,
