@@ -369,31 +369,41 @@ def _footprint(move: Move) -> set[Cell]:
     return move.footprint()
 
 
-#: How many pending serial moves the scheduler looks at, at least and at most (keeps it
-#: linear in plan length; long plans get a wider window: their journeys are longer).
-WINDOW = (120, 400)
+#: How many pending serial moves the scheduler looks at (at least, at most), and how
+#: far past the last move it chose in a step it keeps looking. Plans whose journeys
+#: interleave (the direct method) find movers deep in the window; sequential ones
+#: find none past the first few, and the gap stops their scan early. Very long plans
+#: (strip routes, 100,000+ moves) get the narrow window so that scheduling stays
+#: about linear: ``SCAN_WORK / len(plan)`` (measured in docs/planning.md).
+WINDOW = (400, 4000)
+GAP = 300
+SCAN_WORK = 40_000_000
 
 
 def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] | None:
     """List-schedule the serial moves into time steps (None if it gets stuck).
 
-    Only the first few hundred pending moves (``WINDOW``) are candidates; a candidate's
-    earlier pending moves are all inside the window, so the check is exact.
+    Only the first ``WINDOW`` pending moves are candidates, and the scan of a
+    step stops ``GAP`` moves after the last one it chose; a candidate's earlier
+    pending moves have all been scanned, so the check is exact.
     """
-    width = min(WINDOW[1], max(WINDOW[0], len(serial) // 50))
+    width = min(WINDOW[1], max(WINDOW[0], SCAN_WORK // max(1, len(serial))))
     prints = [_footprint(m) for m in serial]
     occupied = set(initial.cells)
     steps: list[Step] = []
     pending = deque(range(len(serial)))
     while pending:
-        window = [pending.popleft() for _ in range(min(width, len(pending)))]
         blocked: set[Cell] = set()  # cells of earlier pending moves and of chosen ones
         blocked_subs: set[Cell] = set()
         busy: set[int] = set()
         static = occupied  # shrinks to the modules that stay put (no copy: it is hot)
         chosen: list[int] = []
         rest: list[int] = []
-        for k in window:
+        last = 0
+        for scanned in range(min(width, len(pending))):
+            if scanned - last > GAP:
+                break
+            k = pending.popleft()
             move, fp = serial[k], prints[k]
             ready = (
                 move.module not in busy
@@ -404,6 +414,7 @@ def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] 
             if ready and not is_cut(static, move.src):
                 static.discard(move.src)
                 chosen.append(k)
+                last = scanned
             else:
                 rest.append(k)
             busy.add(move.module)
