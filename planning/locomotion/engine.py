@@ -28,6 +28,8 @@ from hexbot.errors import ScenarioError
 from hexbot.planning.locomotion import connectivity
 from hexbot.planning.locomotion.rules import (
     EMPTY,
+    LOOP_RADIUS,
+    LOOPED,
     MODULE,
     OBSTACLE,
     SIMPLE,
@@ -297,6 +299,10 @@ class Engine:
 
     def _expr(self, e: Expr) -> Check:
         flat, h = self.world.flat, self.world.height
+        if isinstance(e, Atom) and LOOPED in e.classes:
+            looped, negated = self._looped, e.negated
+            at = e.offset[0] * h + e.offset[1]
+            return lambda p: ~looped(p + at) if negated else looped(p + at)
         if isinstance(e, Atom) and SIMPLE in e.classes:
             ring = connectivity.ring_offsets(h)
             weights = (1 << np.arange(8)).astype(np.int64)
@@ -331,6 +337,36 @@ class Engine:
                 out |= f(p)
             return out
         return disj
+
+    def _looped(self, p: np.ndarray) -> np.ndarray:
+        """`looped`: the module's edge neighbours stay joined without it, through
+        resting (not active) modules within LOOP_RADIUS: it lies on a cycle that
+        does not rely on a module about to walk away. A search per candidate:
+        the rules put it last, after rare states and local tests."""
+        flat, h = self.world.flat, self.world.height
+        rest = np.zeros(MODULE_BASE + self.nstates, dtype=bool)
+        rest[MODULE_BASE:] = self.resting_lut
+        edges = (h, 1, -h, -1)
+        out = np.zeros(p.size, dtype=bool)
+        for i, c in enumerate(p.tolist()):
+            cx, cy = divmod(c, h)
+            ends = [c + d for d in edges if flat[c + d] >= MODULE_BASE]
+            if not rest[flat[c]] or len(ends) < 2 or not all(rest[flat[n]] for n in ends):
+                continue
+            seen, todo = {c, ends[0]}, [ends[0]]
+            while todo:
+                q = todo.pop()
+                for d in edges:
+                    r = q + d
+                    if r in seen or not rest[flat[r]]:
+                        continue
+                    rx, ry = divmod(r, h)
+                    if abs(rx - cx) > LOOP_RADIUS or abs(ry - cy) > LOOP_RADIUS:
+                        continue
+                    seen.add(r)
+                    todo.append(r)
+            out[i] = all(n in seen for n in ends[1:])
+        return out
 
     def _compile(self) -> None:
         """Per state, the variants that apply to it, as lists of filters.

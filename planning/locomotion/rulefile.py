@@ -41,6 +41,7 @@ from hexbot.errors import ScenarioError
 from hexbot.planning.locomotion.rules import (
     BUILTIN_CLASSES,
     DIRECTIONS,
+    LOOPED,
     SIMPLE,
     SYMMETRIES,
     And,
@@ -142,6 +143,9 @@ class _ExprParser:
         if tok == "simple":
             self.take()
             return Atom((0, 0), frozenset({SIMPLE}))
+        if tok == "looped":
+            self.take()
+            return Atom((0, 0), frozenset({LOOPED}))
         return self.atom()
 
     def atom(self) -> Atom:
@@ -157,6 +161,11 @@ class _ExprParser:
             if offset == (0, 0):
                 raise _Error("write 'simple' for the module itself")
             return Atom(offset, frozenset({SIMPLE}), negated)
+        if self.peek() == "looped":  # the cycle test, about a neighbour
+            self.take()
+            if offset == (0, 0):
+                raise _Error("write 'looped' for the module itself")
+            return Atom(offset, frozenset({LOOPED}), negated)
         names = [self.cls()]
         while self.peek() == "|":
             self.take()
@@ -355,7 +364,7 @@ def _finish(d: _Draft, default_sym: str) -> Rule:
         raise _Error(f"rule {d.ident}: four 'become' states need 'symmetry rotations'")
     for c in d.conditions:
         for a in atoms_of(c):
-            if a.offset == (0, 0) and SIMPLE not in a.classes:
+            if a.offset == (0, 0) and not a.classes & {SIMPLE, LOOPED}:
                 raise _Error(f"rule {d.ident}: use 'state' for the module itself, not (0,0)")
     return Rule(
         ident=d.ident,

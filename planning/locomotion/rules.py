@@ -29,6 +29,8 @@ EMPTY = "empty"
 OBSTACLE = "obstacle"
 MODULE = "module"  # a module in any state
 SIMPLE = "@simple"  # pseudo-class of the `simple` test on the module's own ring
+LOOPED = "@looped"  # pseudo-class of the `looped` test (the module lies on a cycle)
+LOOP_RADIUS = 3  # how far (Chebyshev) the `looped` test looks for the other way round
 BUILTIN_CLASSES = (EMPTY, OBSTACLE, MODULE)
 
 SYMMETRIES = ("none", "rotations", "rotations+reflections")
@@ -73,8 +75,9 @@ class Atom:
         return Atom(transform(self.offset, quarter_turns, mirrored), self.classes, self.negated)
 
     def __str__(self) -> str:
-        if SIMPLE in self.classes:
-            test = "not simple" if self.negated else "simple"
+        if self.classes & {SIMPLE, LOOPED}:
+            test = "simple" if SIMPLE in self.classes else "looped"
+            test = f"not {test}" if self.negated else test
             return test if self.offset == (0, 0) else f"{offset_name(self.offset)} is {test}"
         cls = "|".join(sorted(self.classes))
         return f"{offset_name(self.offset)} is {'not ' if self.negated else ''}{cls}"
@@ -227,5 +230,6 @@ class RuleSet:
             for c in r.conditions:
                 for a in atoms_of(c):
                     ring = 1 if SIMPLE in a.classes else 0  # the test reads the cell's ring
+                    ring = LOOP_RADIUS + 1 if LOOPED in a.classes else ring
                     far = max(far, abs(a.offset[0]) + ring, abs(a.offset[1]) + ring)
         return far

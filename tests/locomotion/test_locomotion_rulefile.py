@@ -124,3 +124,42 @@ def test_simple_of_the_module_itself_is_written_plain():
     with pytest.raises(ScenarioError, match="write 'simple' for the module itself"):
         loads(HEADER + "rule X\n priority 1\n state active\n require (0,0) is simple\n"
               " become static\n", "x.rules")
+
+
+def _looped_after(states_of: dict) -> dict:
+    rs = loads("ruleset t\nstates a b c\nresting a b\n"
+               "rule X\n priority 1\n state a\n require looped\n become b\n")
+    assert str(rs.rules[0].conditions[0]) == "looped"
+    cells = list(states_of)
+    world = World([], cells, rs.states, module_states=[states_of[c] for c in cells],
+                  extend_axis=None)
+    result = Engine(rs, world).run(1, Goal())
+    return dict(zip(result.positions, result.states, strict=True))
+
+
+RING = [(0, 0), (1, 0), (2, 0), (2, 1), (2, 2), (1, 2), (0, 2), (0, 1)]
+
+
+def test_looped_means_on_a_cycle_of_resting_modules():
+    # A ring round one empty cell with an arm: the ring modules may leave (the
+    # ring joins their neighbours the other way round), the joint of the arm
+    # and the arm may not.
+    after = _looped_after({c: "a" for c in [*RING, (3, 0), (4, 0)]})
+    assert [c for c, s in after.items() if s == "b"] == [c for c in RING if c != (2, 0)]
+
+
+def test_looped_does_not_count_on_modules_that_may_walk_away():
+    # The same ring closed by a module in a state that is not resting: no module
+    # is on a cycle of resting modules any more.
+    states = {c: "a" for c in [*RING, (3, 0), (4, 0)]}
+    states[(1, 2)] = "c"
+    assert "b" not in _looped_after(states).values()
+
+
+def test_looped_about_a_neighbour_and_not_for_the_module_itself():
+    rs = loads(HEADER + "rule X\n priority 1\n state active\n require S is not looped\n"
+               " become static\n")
+    assert str(rs.rules[0].conditions[0]) == "S is not looped"
+    with pytest.raises(ScenarioError, match="write 'looped' for the module itself"):
+        loads(HEADER + "rule X\n priority 1\n state active\n require (0,0) is looped\n"
+              " become static\n", "x.rules")

@@ -56,7 +56,9 @@ def test_rule_12_reconstruction_lower_left():
 @pytest.mark.parametrize(
     "scenario", ["pyramid", "histogram-1", "wide-cavity-right", "wide-diagonal", "maze",
                  # these need R19/R20 and the CARRIER reading (salvador.rules)
-                 "histogram-2", "wide-cavity-middle"]
+                 "histogram-2", "wide-cavity-middle",
+                 # this one needs LOOPED openers and TURNS_ROUND_US
+                 "histogram-3"]
 )
 @pytest.mark.parametrize("n", [5, 20])
 def test_obstacle_rules_pass_these_scenarios(scenario, n):
@@ -66,7 +68,7 @@ def test_obstacle_rules_pass_these_scenarios(scenario, n):
 
 @pytest.mark.parametrize(
     ("scenario", "n"),
-    [("cavity-simple", 20), ("cavity-double", 20), ("histogram-3", 20),
+    [("cavity-simple", 20), ("cavity-double", 20),
      ("irregular-right", 15)],  # the last one: two corks collided before NO_STOPPER_*
 )
 def test_obstacle_rules_stall_safely_where_the_reconstruction_falls_short(scenario, n):
@@ -143,3 +145,25 @@ def test_a_stopper_left_hanging_as_a_leaf_is_static_again(state):
                   rs.states, module_states=[state, "static", "static"], extend_axis=None)
     result = Engine(rs, world).run(1, Goal())
     assert result.states[0] == "static" and result.violation is None
+
+
+def _without_looped(text: str) -> str:
+    """salvador.rules with openers moving only when 'simple' (no LOOPED)."""
+    out = []
+    for line in text.splitlines():
+        if line.rstrip().endswith("# LOOPED"):
+            line = "  require simple"
+        out.append(line.replace(" and S is not looped", "").replace(" and SE is not looped", ""))
+    return "\n".join(out)
+
+
+def test_openers_on_a_cycle_move_and_that_passes_histogram_3():
+    # An opener on a cycle is never 'simple'; 'looped' lets it open the cycle.
+    # Without it the run ends in a deadlock with the robot stuck in the pit.
+    text = _data("rulesets", ".rules")["salvador"].read_text()
+    plain = _without_looped(text)
+    assert "looped" not in plain
+    ours = simulate(loads(text), load_scenario("histogram-3", 20), rounds=3000)
+    assert ours.status == "reached", ours.violation or ours.deadlock
+    old = simulate(loads(plain), load_scenario("histogram-3", 20), rounds=3000)
+    assert old.status == "deadlock" and old.violation is None
