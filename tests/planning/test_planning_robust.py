@@ -83,6 +83,14 @@ def test_parallelogram_to_parallelogram_is_planned_and_parallel():
     assert plan.time_steps < plan.move_count  # some steps move several modules
 
 
+def test_long_direct_plans_run_many_journeys_at_once():
+    # the scheduler looks far ahead: 1,608 moves in 201 steps (269 with a 400-move window)
+    plan = plan_robust(Configuration.from_cells(parallelogram(10, 10)), parallelogram(20, 5))
+    assert plan.reached and plan.method == "direct"
+    assert_legal(plan)
+    assert plan.time_steps * 7 < plan.move_count
+
+
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(size=st.integers(3, 14), seed_a=st.integers(0, 10**6), seed_b=st.integers(0, 10**6))
 def test_random_connected_configurations_give_legal_plans_or_reasons(size, seed_a, seed_b):
