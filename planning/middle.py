@@ -61,7 +61,7 @@ def middle_center(initial: frozenset[Cell], goal: frozenset[Cell]) -> Cell:
 
 #: How many middle shapes to try before giving up (each failed try costs a budgeted
 #: direct search; the strip fallback follows).
-TRIES = 2
+TRIES = 1
 
 
 def middles(initial: frozenset[Cell], goal: frozenset[Cell]) -> list[frozenset[Cell]]:
