@@ -167,3 +167,13 @@ def test_openers_on_a_cycle_move_and_that_passes_histogram_3():
     assert ours.status == "reached", ours.violation or ours.deadlock
     old = simulate(loads(plain), load_scenario("histogram-3", 20), rounds=3000)
     assert old.status == "deadlock" and old.violation is None
+
+
+def test_a_stopper_waits_only_for_a_cork_on_top_that_can_turn_round_it():
+    # Waiting for any cork or opener on top (the old NO_STOPPER_SLIDE) kept an
+    # opener under a cork that had nothing on its left for ever.
+    text = _data("rulesets", ".rules")["salvador"].read_text()
+    assert text.count("or TURNS_ROUND_US)") == 1
+    old = text.replace("or TURNS_ROUND_US)", "or (0,1) is cork|opener)")
+    result = simulate(loads(old), load_scenario("histogram-3", 20), rounds=3000)
+    assert result.status == "deadlock" and result.violation is None
