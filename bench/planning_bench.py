@@ -16,7 +16,7 @@ Families (deterministic, no randomness outside the given seeds):
   compactness (the property test's generator); prints how many each method
   planned and every failure.
 
-Columns: ``method`` (robust mode: direct, direct backwards, canonical strip),
+Columns: ``method`` (robust mode: direct, direct backwards, middle ball, canonical strip),
 moves and time steps with their lower bounds and the ratio plan / bound.
 """
 
