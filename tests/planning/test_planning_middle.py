@@ -10,9 +10,15 @@ from hexbot.planning.canonical import replay
 from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.generate import random_blob
 from hexbot.planning.hexlattice import distance
-from hexbot.planning.middle import ball, middles, ring, via_middle
+from hexbot.planning.middle import _via, ball, middles, ring, via_middle
 from hexbot.planning.plan import Step, check_step
-from hexbot.planning.robust import PlanningFailure, fillable, is_immobile, plan_robust
+from hexbot.planning.robust import (
+    PlanningFailure,
+    direct_budget,
+    fillable,
+    is_immobile,
+    plan_robust,
+)
 from tests.planning.test_planning_robust import assert_legal
 
 
@@ -83,3 +89,15 @@ def test_middle_route_is_legal_move_by_move_or_fails_cleanly(size, seed_a, seed_
         config = replay(config, [move])
         assert is_connected(config.cells)
     assert config.cells == b
+
+
+def test_small_pair_the_centred_ball_misses_goes_through_a_nudged_ball():
+    # scan pair 24 of bench/planning_bench.py --scan (25 modules)
+    a = random_blob(25, 401458, compact=random.Random(401458).random())
+    b = random_blob(25, 880593, compact=0.6)
+    with pytest.raises(PlanningFailure):
+        _via(Configuration.from_cells(a), b, middles(a, b)[0], 10**6, None, direct_budget(25))
+    plan = plan_robust(Configuration.from_cells(a), b)
+    assert plan.reached and plan.method == "middle ball"
+    assert_legal(plan)
+    assert plan.final.cells == b
