@@ -11,7 +11,9 @@ centre of both configurations it is close to both, so:
 2. **ball -> goal** by the direct method run from the goal to the ball and
    reversed (every rotation is undone by the opposite one over the same cells).
 
-Both halves keep the direct method's guarantees (connected, collision-free,
+Several balls are tried (:func:`middles`): seven for small configurations,
+one for large ones, where each failed try costs seconds. Both halves keep
+the direct method's guarantees (connected, collision-free,
 Table 4-3). Nothing here is complete: any :class:`PlanningFailure` sends the
 caller on to the canonical strip, which stays the complete fallback.
 """
