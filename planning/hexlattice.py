@@ -1,10 +1,11 @@
 """Geometry of the hexagonal lattice in the thesis' axial coordinates.
 
-Table 4-1 of the thesis: a cell is ``(x, y)``; its six sides are numbered
-1..6 clockwise starting at the upper left, and side ``s`` touches the
-neighbour ``(x, y) + SIDE_OFFSETS[s]``. Joint ``j`` (a vertex) sits between
-sides ``j-1`` and ``j``. The hexagons are flat-topped: x grows to the right
-(and half a cell up), y grows straight up (see :func:`cartesian`).
+Table 4-1 of the thesis (defined once in :mod:`hexbot.protocol.lattice`): a
+cell is ``(x, y)``; its six sides are numbered 1..6 clockwise starting at the
+upper left, and side ``s`` touches the neighbour ``(x, y) + SIDE_OFFSETS[s]``.
+Joint ``j`` (a vertex) sits between sides ``j-1`` and ``j``. The hexagons
+are flat-topped: x grows to the right (and half a cell up), y grows straight
+up (see :func:`cartesian`).
 
 The rotation move set is Table 4-3, kept here literally (letters A..L of
 Fig. 4-30) and turned into :class:`RotationRule` objects; a test checks the
@@ -22,37 +23,20 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from typing import Literal
 
-Cell = tuple[int, int]
+from hexbot.protocol.lattice import (  # noqa: F401 - the planner's public vocabulary
+    SIDE_OFFSETS,
+    SIDES,
+    Cell,
+    distance,
+    neighbor,
+    side_towards,
+    wrap,
+)
+from hexbot.protocol.lattice import facing as facing_side  # noqa: F401
+
 Direction = Literal["CW", "CCW"]
 
-SIDES = (1, 2, 3, 4, 5, 6)
 JOINTS = SIDES
-
-#: Table 4-1: neighbour offset for each side.
-SIDE_OFFSETS: dict[int, Cell] = {
-    1: (-1, 1),
-    2: (0, 1),
-    3: (1, 0),
-    4: (1, -1),
-    5: (0, -1),
-    6: (-1, 0),
-}
-_OFFSET_TO_SIDE = {off: s for s, off in SIDE_OFFSETS.items()}
-
-
-def wrap(index: int) -> int:
-    """Side or joint number modulo 6, in 1..6."""
-    return (index - 1) % 6 + 1
-
-
-def facing_side(side: int) -> int:
-    """The side of the neighbour that touches ``side`` (Table 4-1: s + 3 mod 6)."""
-    return wrap(side + 3)
-
-
-def neighbor(cell: Cell, side: int) -> Cell:
-    dx, dy = SIDE_OFFSETS[wrap(side)]
-    return (cell[0] + dx, cell[1] + dy)
 
 
 def neighbors(cell: Cell) -> list[Cell]:
@@ -61,23 +45,12 @@ def neighbors(cell: Cell) -> list[Cell]:
     return [(x + dx, y + dy) for dx, dy in SIDE_OFFSETS.values()]
 
 
-def side_towards(a: Cell, b: Cell) -> int | None:
-    """The side of ``a`` that touches ``b``, or None when they are not adjacent."""
-    return _OFFSET_TO_SIDE.get((b[0] - a[0], b[1] - a[1]))
-
-
 def ring_cell(cell: Cell, side: int) -> Cell:
     """The second-ring cell between the neighbours on ``side`` and ``side + 1``.
 
     These are G..L of Fig. 4-30: G between A and B, ..., L between F and A.
     """
     return neighbor(neighbor(cell, side), side + 1)
-
-
-def distance(a: Cell, b: Cell) -> int:
-    """Lattice distance: the fewest neighbour steps from ``a`` to ``b``."""
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    return (abs(dx) + abs(dy) + abs(dx + dy)) // 2
 
 
 def rotate_cell(cell: Cell, steps: int, center: Cell = (0, 0)) -> Cell:
