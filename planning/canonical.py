@@ -40,6 +40,7 @@ from hexbot.planning.robust import (
     is_cut,
     reverse_move,
     serial_moves,
+    unwind,
 )
 
 #: Largest shift (cells) of one strip -> strip hop of the direct planner.
@@ -92,13 +93,7 @@ def _path_to(occupied: set[Cell], start: Cell, target: Cell) -> list | None:
                 continue
             parent[goal] = (cell, rule, sub)
             if goal == target:
-                path = []
-                node = goal
-                while parent[node] is not None:
-                    prev, r, s = parent[node]  # type: ignore[misc]
-                    path.append((prev, node, r, s))
-                    node = prev
-                return path[::-1]
+                return unwind(parent, goal)
             queue.append(goal)
     return None
 

@@ -159,6 +159,17 @@ def _allowed(goal: frozenset[Cell], void: Cell, pending: set[Cell]) -> bool:
     return not fillable(goal, pending - {void})
 
 
+def unwind(parent: dict, node: Cell) -> list:
+    """The hops of a breadth-first search from its start to ``node``:
+    ``parent`` maps a cell to (previous cell, rule, substrate) or None."""
+    path = []
+    while parent[node] is not None:
+        prev, rule, sub = parent[node]
+        path.append((prev, node, rule, sub))
+        node = prev
+    return path[::-1]
+
+
 def _journey(state: _State, electron: Cell, accept: Callable[[Cell], bool]) -> list | None:
     """Shortest rotation path of ``electron`` to an empty cell ``accept`` takes."""
     parent: dict[Cell, tuple[Cell, object, Cell] | None] = {electron: None}
@@ -170,13 +181,7 @@ def _journey(state: _State, electron: Cell, accept: Callable[[Cell], bool]) -> l
                 continue
             parent[goal] = (cell, rule, sub)
             if accept(goal):
-                path = []
-                node = goal
-                while parent[node] is not None:
-                    prev, r, s = parent[node]  # type: ignore[misc]
-                    path.append((prev, node, r, s))
-                    node = prev
-                return path[::-1]
+                return unwind(parent, goal)
             queue.append(goal)
     if state.budget is not None:
         state.budget -= 1
