@@ -58,7 +58,9 @@ def test_rule_12_reconstruction_lower_left():
                  # these need R19/R20 and the CARRIER reading (salvador.rules)
                  "histogram-2", "wide-cavity-middle",
                  # this one needs LOOPED openers and TURNS_ROUND_US
-                 "histogram-3"]
+                 "histogram-3",
+                 # these need CARRIER_LEADS and BEHIND_MAY_LEAVE (with n = 20)
+                 "cavity-simple", "cavity-double"]
 )
 @pytest.mark.parametrize("n", [5, 20])
 def test_obstacle_rules_pass_these_scenarios(scenario, n):
@@ -68,7 +70,7 @@ def test_obstacle_rules_pass_these_scenarios(scenario, n):
 
 @pytest.mark.parametrize(
     ("scenario", "n"),
-    [("cavity-simple", 20), ("cavity-double", 20),
+    [("irregular-right", 20),
      ("irregular-right", 15)],  # the last one: two corks collided before NO_STOPPER_*
 )
 def test_obstacle_rules_stall_safely_where_the_reconstruction_falls_short(scenario, n):
@@ -177,3 +179,27 @@ def test_a_stopper_waits_only_for_a_cork_on_top_that_can_turn_round_it():
     old = text.replace("or TURNS_ROUND_US)", "or (0,1) is cork|opener)")
     result = simulate(loads(old), load_scenario("histogram-3", 20), rounds=3000)
     assert result.status == "deadlock" and result.violation is None
+
+
+def _without(text: str, tag: str) -> str:
+    """salvador.rules with every 'require' line marked '# TAG' left out."""
+    lines = [ln for ln in text.splitlines() if not ln.rstrip().endswith(f"# {tag}")]
+    assert len(lines) < len(text.splitlines())
+    return "\n".join(lines)
+
+
+@pytest.mark.parametrize("scenario", ["cavity-simple", "cavity-double"])
+def test_the_module_ahead_activates_first_and_stoppers_back_to_back_take_turns(scenario):
+    # Without PRECEDENCE (a static module waits while its carrier can move on
+    # along its own wall) a module and the one it stands on activate together
+    # in the filled dead end, neither can move, both deactivate: a livelock.
+    # Without SPLIT (a stopper lets a stopper behind it leave first) the front
+    # one then moves and two corks back to back leave together: the robot splits.
+    text = _data("rulesets", ".rules")["salvador"].read_text()
+    ours = simulate(loads(text), load_scenario(scenario, 20), rounds=3000)
+    assert ours.status == "reached", ours.violation or ours.deadlock
+    livelock = simulate(loads(_without(text, "PRECEDENCE")), load_scenario(scenario, 20),
+                        rounds=3000)
+    assert livelock.status == "deadlock" and "livelock" in livelock.deadlock.message
+    split = simulate(loads(_without(text, "SPLIT")), load_scenario(scenario, 20), rounds=3000)
+    assert split.violation is not None and split.violation.kind == "disconnected"
