@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from functools import partial
 from typing import Any
 
+from hexbot.errors import FlashingError
 from hexbot.hil_sim.isp.chip import Atmega162Isp
 from hexbot.hil_sim.isp.memory import EEPROM_SIZE, FLASH_SIZE, Atmega162Memory
 from hexbot.hil_sim.isp.pty_server import IspPtyServer
@@ -31,7 +32,8 @@ CLUSTER_METHODS = ("read_flash", "write_flash", "read_eeprom", "write_eeprom",
 
 
 def missing_cluster_methods(cluster: Any) -> list[str]:
-    """The ISP methods of SIM_API.md this Cluster does not have (yet)."""
+    """The ISP methods of SIM_API.md that this Cluster object lacks (an
+    out-of-date build of the extension, or another object passed by mistake)."""
     return [name for name in CLUSTER_METHODS if not callable(getattr(cluster, name, None))]
 
 
@@ -44,8 +46,9 @@ class ClusterBoardBackend:
                  on_reset: Callable[[], None] | None = None) -> None:
         missing = missing_cluster_methods(cluster)
         if missing:
-            raise NotImplementedError(
-                f"the simulator's Cluster lacks ISP methods: {', '.join(missing)}")
+            raise FlashingError(
+                f"the simulator's Cluster lacks ISP methods: {', '.join(missing)}; "
+                "rebuild the extension with `pip install -e .`")
         self.cluster = cluster
         self.mcu = mcu
         self.lock_bits = 0xFF

@@ -6,7 +6,12 @@ from __future__ import annotations
 import pytest
 from conftest import needs_avrdude
 
-from hexbot.hil_sim.isp.cluster import missing_cluster_methods, open_cluster_isp
+from hexbot.errors import FlashingError
+from hexbot.hil_sim.isp.cluster import (
+    ClusterBoardBackend,
+    missing_cluster_methods,
+    open_cluster_isp,
+)
 
 _avr = pytest.importorskip("hexbot.hil_sim._avr", reason="simulator extension not built")
 pytestmark = needs_avrdude
@@ -53,3 +58,8 @@ def test_simulated_board_with_another_signature_is_refused(board, images, hexbot
     result = hexbot_flash("--image", str(new_hex), "--port", port)
     assert result.code == 1 and "signature 1E 95 02" in result.err
     assert "HELLO old" in debug_text(cluster, mcu)  # nothing was written
+
+
+def test_an_object_without_the_isp_methods_is_refused_clearly():
+    with pytest.raises(FlashingError, match="lacks ISP methods: read_flash"):
+        ClusterBoardBackend(object(), 0)
