@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from hexbot.errors import FrameError
 from hexbot.host.describe import describe_event
 from hexbot.host.host import IR, Host, Observed
-from hexbot.protocol import frames
+from hexbot.protocol import frames, rotation
 from hexbot.protocol.codes import lookup
 from hexbot.protocol.frames import Command
 from hexbot.protocol.parser import Ack, ErrorReply, StatusReport, Text
@@ -36,36 +36,28 @@ class Timing:
     t3: int
 
 
-# Table 3-1 in ticks. 45 ms and 95 ms are not whole ticks: rounded half up
-# (5 and 10), so each step lasts at least as long as the thesis measured.
+# Table 3-1 in ticks, from the protocol: direction -> (substrate, mobile).
 THESIS_TIMINGS: dict[str, tuple[Timing, Timing]] = {
-    # direction: (substrate, mobile)
-    "cw": (Timing(8, 4, 10), Timing(8, 5, 9)),
-    "ccw": (Timing(8, 5, 9), Timing(8, 4, 10)),
+    d.lower(): (Timing(*rotation.THESIS_TIMINGS[(d, "substrate")]),
+                Timing(*rotation.THESIS_TIMINGS[(d, "mobile")]))
+    for d in ("CW", "CCW")
 }
 
 
 def body_joint(global_joint: int, orientation: int) -> int:
     """Body-frame index of a global joint for a module with this Yref."""
-    if not 1 <= global_joint <= 6:
-        raise FrameError(f"joint must be 1..6, got {global_joint}")
-    if not 0 <= orientation <= 5:
-        raise FrameError(f"orientation (Yref) must be 0..5, got {orientation}")
-    return (global_joint - 1 - orientation) % 6 + 1
+    return rotation.body_index(global_joint, orientation)
 
 
 def rotate(direction: str, global_joint: int, mobile_orientation: int,
            substrate_orientation: int, timings: tuple[Timing, Timing] | None = None) -> Command:
     """Code 67 (cw) or 68 (ccw) for a rotation of the mobile module about
     ``global_joint`` (lattice frame)."""
-    direction = direction.lower()
-    if direction not in THESIS_TIMINGS:
-        raise FrameError(f"direction must be cw or ccw, got {direction!r}")
-    sub, mob = timings or THESIS_TIMINGS[direction]
-    si = body_joint(global_joint, substrate_orientation)
-    mi = body_joint(global_joint, mobile_orientation)
-    return frames.make("CW" if direction == "cw" else "CCW",
-                       si, sub.t1, sub.t2, sub.t3, mi, mob.t1, mob.t2, mob.t3)
+    sub, mob = timings or (None, None)
+    return rotation.combined_rotation(
+        direction, global_joint, mobile_orientation, substrate_orientation,
+        substrate=(sub.t1, sub.t2, sub.t3) if sub else None,
+        mobile=(mob.t1, mob.t2, mob.t3) if mob else None)
 
 
 def select(*ids: int) -> Command:

@@ -3,7 +3,7 @@
 Frame convention (see docs/planning.md, "Firmware commands"):
 
 * Joint numbers in commands are in the receiving module's **body frame**;
-  :func:`body_index` is the only conversion. A module's orientation is the
+  :func:`hexbot.protocol.rotation.body_index` is the only conversion. A module's orientation is the
   firmware's ``Yref`` (clockwise sixth-turns of its body from the global
   frame): ``body = ((global - 1 - Yref) mod 6) + 1``.
 * Both halves of a rotation carry the pivot joint as Table 4-3 numbers it,
@@ -28,10 +28,16 @@ from dataclasses import dataclass
 from typing import Literal
 
 from hexbot.planning.configuration import Configuration
-from hexbot.planning.hexlattice import Direction
 from hexbot.planning.moves import Move
 from hexbot.planning.plan import Plan, apply_step
 from hexbot.protocol.frames import Command, encode_pc, make, select
+from hexbot.protocol.lattice import to_global
+from hexbot.protocol.rotation import (  # noqa: F401 - body_index is part of this module's API
+    THESIS_TIMINGS,
+    body_index,
+    combined_rotation,
+    single_rotation,
+)
 
 Style = Literal["combined", "single"]
 
@@ -39,22 +45,12 @@ ROLE_MOBILE = 1
 ROLE_SUBSTRATE = 2
 
 #: Table 3-1 delays (t1, t2, t3) in 10 ms ticks, per direction and role.
-TIMINGS: dict[tuple[Direction, str], tuple[int, int, int]] = {
-    ("CW", "mobile"): (8, 5, 9),  # 80, 45, 90 ms
-    ("CW", "substrate"): (8, 4, 10),  # 80, 40, 95 ms
-    ("CCW", "mobile"): (8, 4, 10),  # 80, 40, 95 ms
-    ("CCW", "substrate"): (8, 5, 9),  # 80, 45, 90 ms
-}
-
-
-def body_index(global_index: int, orientation: int) -> int:
-    """A joint or side number of the global frame in a module's body frame."""
-    return (global_index - 1 - orientation) % 6 + 1
+TIMINGS = THESIS_TIMINGS
 
 
 def global_index(body: int, orientation: int) -> int:
     """Inverse of :func:`body_index`."""
-    return (body - 1 + orientation) % 6 + 1
+    return to_global(body, orientation)
 
 
 @dataclass(frozen=True)
@@ -77,22 +73,20 @@ def move_commands(
 ) -> list[Command]:
     """Commands for one move. ``roles`` (module id -> role last set) is updated
     so that ``SetRole`` is only sent when a module's role changes."""
-    mi = body_index(move.joint, mobile_orientation)
-    si = body_index(move.joint, substrate_orientation)
-    mt = TIMINGS[(move.direction, "mobile")]
-    st = TIMINGS[(move.direction, "substrate")]
     m, s = move.module, move.substrate_module
     if style == "single":
-        sub_name = "SCW" if move.direction == "CW" else "SCCW"
-        mob_name = "MCW" if move.direction == "CW" else "MCCW"
-        return [select([s]), make(sub_name, si, *st), select([m]), make(mob_name, mi, *mt)]
+        return [select([s]),
+                single_rotation(move.direction, "substrate", move.joint, substrate_orientation),
+                select([m]),
+                single_rotation(move.direction, "mobile", move.joint, mobile_orientation)]
     roles = {} if roles is None else roles
     out: list[Command] = []
     for module_id, role in ((m, ROLE_MOBILE), (s, ROLE_SUBSTRATE)):
         if roles.get(module_id) != role:
             out += [select([module_id]), make("SetRole", role)]
             roles[module_id] = role
-    out += [select([m, s]), make(move.direction, si, *st, mi, *mt)]
+    out += [select([m, s]), combined_rotation(move.direction, move.joint, mobile_orientation,
+                                              substrate_orientation)]
     return out
 
 
