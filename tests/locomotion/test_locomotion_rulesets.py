@@ -9,6 +9,7 @@ from hexbot.planning.locomotion import (
     load_ruleset,
     load_scenario,
     loads,
+    scenario_names,
     simulate,
 )
 from hexbot.planning.locomotion.engine import Goal
@@ -203,3 +204,27 @@ def test_the_module_ahead_activates_first_and_stoppers_back_to_back_take_turns(s
     assert livelock.status == "deadlock" and "livelock" in livelock.deadlock.message
     split = simulate(loads(_without(text, "SPLIT")), load_scenario(scenario, 20), rounds=3000)
     assert split.violation is not None and split.violation.kind == "disconnected"
+
+
+@pytest.mark.parametrize(("scenario", "n"), [("wide-cavity-middle", 25), ("cavity-double", 30)])
+def test_a_module_carrying_an_active_one_stays_static(scenario, n):
+    # Without CARRYING a static module activates while an active neighbour is
+    # moving onto it; the mover lands, the carrier walks away the next round
+    # and leaves it behind: the robot splits. With it these runs reach the goal.
+    text = _data("rulesets", ".rules")["salvador"].read_text()
+    ours = simulate(loads(text), load_scenario(scenario, n), rounds=3000)
+    assert ours.status == "reached", ours.violation or ours.deadlock
+    split = simulate(loads(_without(text, "CARRYING")), load_scenario(scenario, n), rounds=3000)
+    assert split.violation is not None and split.violation.kind == "disconnected"
+
+
+BANK_MAPS = [m for m in scenario_names(with_directions=False) if m != "flat"]
+
+
+@pytest.mark.parametrize("scenario", BANK_MAPS)
+def test_salvador_never_breaks_an_invariant_beyond_the_bank_sizes(scenario):
+    # The bank runs n = 5, 10, 20; the robot used to split at n = 25-50.
+    for n in (30, 50):
+        result = simulate(load_ruleset("salvador"), load_scenario(scenario, n), rounds=3000)
+        assert result.violation is None, (n, result.violation)
+        assert result.status in ("reached", "deadlock"), (n, result.status)
