@@ -40,10 +40,20 @@ from hexbot.planning.locomotion.rules import (
     Or,
     RuleSet,
     Variant,
+    rotate,
 )
 
 Cell = tuple[int, int]
 EMPTY_CODE, OBSTACLE_CODE, MODULE_BASE = 0, 1, 2
+# How a `looped` path may pass a module (Engine._loop_through).
+LOOP_NEVER, LOOP_ALWAYS, LOOP_UNLESS_SIMPLE, LOOP_AHEAD = 0, 1, 2, 3
+
+
+def _needs_simple(v: Variant) -> bool:
+    """Whether the variant asks `simple` of the module itself, unconditionally."""
+    parts = [a for c in v.conditions for a in (c.args if isinstance(c, And) else (c,))]
+    return any(isinstance(a, Atom) and SIMPLE in a.classes and not a.negated
+               and a.offset == (0, 0) for a in parts)
 
 
 @dataclass
@@ -252,6 +262,8 @@ class Engine:
         if world.state_names != ruleset.states:
             raise ScenarioError("world and rule set disagree on the states")
         self.variants: list[Variant] = ruleset.ordered_variants(frame)
+        self.flow = rotate((1, 0), frame)  # the scenario's direction of travel
+        self.loop_through = self._loop_through()
         self.reach = ruleset.reach()
         self.round = 0
         self.moves = np.zeros(world.pos.size, dtype=np.int64)
@@ -338,30 +350,70 @@ class Engine:
             return out
         return disj
 
+    def _loop_through(self) -> np.ndarray:
+        """Per cell code, how a `looped` path may use a module in that state:
+        ALWAYS (resting, never moves), UNLESS_SIMPLE (resting, every move of
+        the state needs `simple`), AHEAD (resting and may leave on a cycle:
+        only a module ahead of us in the flow), or NEVER (not resting)."""
+        use = np.full(MODULE_BASE + self.nstates, LOOP_NEVER, dtype=np.int8)
+        for s, name in enumerate(self.rs.states):
+            if name not in self.rs.resting:
+                continue
+            moves = [v for v in self.variants if v.rule.state == name and v.move is not None]
+            if not moves:
+                use[MODULE_BASE + s] = LOOP_ALWAYS
+            elif all(_needs_simple(v) for v in moves):
+                use[MODULE_BASE + s] = LOOP_UNLESS_SIMPLE
+            else:
+                use[MODULE_BASE + s] = LOOP_AHEAD
+        return use
+
     def _looped(self, p: np.ndarray) -> np.ndarray:
-        """`looped`: the module's edge neighbours stay joined without it, through
-        resting (not active) modules within LOOP_RADIUS: it lies on a cycle that
-        does not rely on a module about to walk away. A search per candidate:
-        the rules put it last, after rare states and local tests."""
+        """`looped`: the module's edge neighbours stay joined without it, within
+        LOOP_RADIUS, through modules that cannot leave in this round: modules
+        that never move, stoppers that move only when `simple` and are not, and
+        stoppers that may leave on a cycle only when they are *ahead* of us in
+        the flow (the scenario's direction, then its left). So of two stoppers
+        on one cycle only the one ahead leaves, and the cycle is opened once
+        (without the order three openers of one ring left together and split
+        it). A search per candidate: the rules put it last."""
         flat, h = self.world.flat, self.world.height
-        rest = np.zeros(MODULE_BASE + self.nstates, dtype=bool)
-        rest[MODULE_BASE:] = self.resting_lut
+        use = self.loop_through
+        ring = connectivity.ring_offsets(h)
+        weights = (1 << np.arange(8)).astype(np.int64)
+        fx, fy = self.flow
         edges = (h, 1, -h, -1)
         out = np.zeros(p.size, dtype=bool)
         for i, c in enumerate(p.tolist()):
             cx, cy = divmod(c, h)
+            key = (fx * cx + fy * cy, -fy * cx + fx * cy)
+
+            def usable(r: int, key: tuple[int, int] = key) -> bool:
+                how = use[flat[r]]
+                if how == LOOP_ALWAYS:
+                    return True
+                if how == LOOP_NEVER:
+                    return False
+                if how == LOOP_UNLESS_SIMPLE:  # pinned unless `simple`
+                    return not connectivity.SIMPLE[
+                        int((flat[r + ring] >= MODULE_BASE) @ weights)]
+                rx, ry = divmod(r, h)
+                return (fx * rx + fy * ry, -fy * rx + fx * ry) > key
+
             ends = [c + d for d in edges if flat[c + d] >= MODULE_BASE]
-            if not rest[flat[c]] or len(ends) < 2 or not all(rest[flat[n]] for n in ends):
+            if use[flat[c]] == LOOP_NEVER or len(ends) < 2 or not all(map(usable, ends)):
                 continue
             seen, todo = {c, ends[0]}, [ends[0]]
             while todo:
                 q = todo.pop()
                 for d in edges:
                     r = q + d
-                    if r in seen or not rest[flat[r]]:
+                    if r in seen or flat[r] < MODULE_BASE:
                         continue
                     rx, ry = divmod(r, h)
                     if abs(rx - cx) > LOOP_RADIUS or abs(ry - cy) > LOOP_RADIUS:
+                        continue
+                    if not usable(r):
                         continue
                     seen.add(r)
                     todo.append(r)
