@@ -373,10 +373,10 @@ class Engine:
         LOOP_RADIUS, through modules that cannot leave in this round: modules
         that never move, stoppers that move only when `simple` and are not, and
         stoppers that may leave on a cycle only when they are *ahead* of us in
-        the flow (the scenario's direction, then its left). So of two stoppers
-        on one cycle only the one ahead leaves, and the cycle is opened once
-        (without the order three openers of one ring left together and split
-        it). A search per candidate: the rules put it last."""
+        the flow (the scenario's direction, then its left). Of two openers on
+        one cycle only the one behind, which may count the other, leaves: the
+        cycle is opened once (without the order three openers of one ring left
+        together and split it). A search per candidate: the rules put it last."""
         flat, h = self.world.flat, self.world.height
         use = self.loop_through
         ring = connectivity.ring_offsets(h)

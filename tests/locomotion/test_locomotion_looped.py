@@ -37,7 +37,7 @@ def _world(picture: str, turns: int) -> World:
 @pytest.mark.parametrize("turns", [0, 1, 2, 3])
 def test_of_three_openers_on_one_ring_only_one_leaves(turns):
     # Each opener alone is `looped`; counted together they are the cycle. With
-    # the flow order only the one ahead leaves; before, all three left in
+    # the flow order only the one behind the others leaves; before, all three left in
     # round 2 and the ring fell apart (`disconnected`).
     engine = Engine(SALVADOR, _world(RING, turns), frame=turns)
     result = engine.run(1, Goal())
