@@ -73,3 +73,52 @@ def test_the_hole_rule_brings_wide_cavity_right_n50_home():
     old = simulate(loads(_without_rule(TEXT, "U5")), load_scenario("wide-cavity-right", 50),
                    rounds=3000)
     assert old.status == "deadlock" and old.violation is None
+
+
+# The exit of wide-cavity-middle (n = 50): the cycle round the cavity's middle
+# row is closed, its inside is filled with confined pivots; the T module (0, 0)
+# has a pivot on its cycle side and the gap of the cycle under the junction.
+#   # . s #
+#   s s s s
+#   P P . P
+#   s s s s
+FILLED_T = {(0, 0): "STOPA", (-1, 0): "STOPA", (1, 0): "STOPA", (1, 1): "STOPA",
+            (2, 0): "STOPA", (0, -1): "PIVOT", (-1, -1): "PIVOT", (2, -1): "PIVOT",
+            (-1, -2): "STOPA", (0, -2): "STOPA", (1, -2): "STOPA", (2, -2): "STOPA"}
+FILLED_WALLS = [(-1, 1), (2, 1), (-1, 2), (2, 2)]
+STRAIGHT = ["NCYCL", "WCYCL", "SCYCL", "ECYCL"]
+
+
+@ALL_TURNS
+def test_the_t_of_a_filled_cycle_leaves_towards_the_obstacle(turns):
+    after = run(OTERO, FILLED_T, FILLED_WALLS, turns=turns)
+    assert after[(0, 0)] == STRAIGHT[turns]
+    after = run(OTERO, FILLED_T, FILLED_WALLS, rounds=2, turns=turns)
+    assert after.get((0, 1)) == "ACTIV" and (0, 0) not in after
+
+
+def test_the_listing_ts_do_not_see_a_filled_cycle():
+    text = _without_rule(_without_rule(TEXT, "T5"), "T6")
+    after = run(loads(text), FILLED_T, FILLED_WALLS, rounds=2)
+    assert after.get((0, 0)) == "STOPA" and (0, 1) not in after
+
+
+def test_a_filled_t_without_its_gap_is_no_t():
+    # With the cell under the junction taken there is no gap: not a T.
+    after = run(OTERO, {**FILLED_T, (1, -1): "PIVOT"}, FILLED_WALLS)
+    assert after[(0, 0)] not in STRAIGHT
+
+
+def test_the_filled_t_brings_wide_cavity_middle_n50_home():
+    # FILLED: without T5/T6 the run deadlocks (round 261) with the cavity's
+    # middle row full of confined pivots.
+    ours = simulate(OTERO, load_scenario("wide-cavity-middle", 50), rounds=3000)
+    assert ours.status == "reached", ours.violation or ours.deadlock
+    text = _without_rule(_without_rule(TEXT, "T5"), "T6")
+    old = simulate(loads(text), load_scenario("wide-cavity-middle", 50), rounds=3000)
+    assert old.status == "deadlock" and old.violation is None
+
+
+def test_a_pivot_in_the_t_of_a_filled_cycle_is_the_breaker_too():
+    after = run(OTERO, {**FILLED_T, (0, 0): "PIVOT"}, FILLED_WALLS)
+    assert after[(0, 0)] == "NCYCL"
