@@ -30,7 +30,7 @@ OBSTACLE = "obstacle"
 MODULE = "module"  # a module in any state
 SIMPLE = "@simple"  # pseudo-class of the `simple` test on the module's own ring
 LOOPED = "@looped"  # pseudo-class of the `looped` test (the module lies on a cycle)
-LOOP_RADIUS = 3  # how far (Chebyshev) the `looped` test looks for the other way round
+LOOP_RADIUS = 4  # how far (Chebyshev) the `looped` test looks for the other way round
 BUILTIN_CLASSES = (EMPTY, OBSTACLE, MODULE)
 
 SYMMETRIES = ("none", "rotations", "rotations+reflections")
