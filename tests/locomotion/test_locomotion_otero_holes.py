@@ -122,3 +122,10 @@ def test_the_filled_t_brings_wide_cavity_middle_n50_home():
 def test_a_pivot_in_the_t_of_a_filled_cycle_is_the_breaker_too():
     after = run(OTERO, {**FILLED_T, (0, 0): "PIVOT"}, FILLED_WALLS)
     assert after[(0, 0)] == "NCYCL"
+
+
+def test_a_confined_pivot_held_only_by_the_t_module_keeps_it():
+    # The breaker would carry the pivot's only link away.
+    lone = {c: s for c, s in FILLED_T.items() if c not in [(-1, -1), (0, -2), (-1, -2)]}
+    after = run(OTERO, lone, FILLED_WALLS)
+    assert after[(0, 0)] not in STRAIGHT
