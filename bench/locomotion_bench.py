@@ -3,9 +3,10 @@
     python bench/locomotion_bench.py            # the 10,000 x 10,000 case and smaller ones
     python bench/locomotion_bench.py --quick    # small cases only
 
-Each case runs a rule set on a flat strip of n modules for R rounds
-(connectivity check on, as in every normal run) and reports the wall time,
-rounds per second and module-rounds per second.
+Each case runs a rule set on a flat strip of n modules for R rounds, or on a
+map of the bank until the goal (at most R rounds), with the connectivity
+check on as in every normal run, and reports the wall time, rounds per
+second and module-rounds per second.
 """
 
 from __future__ import annotations
@@ -16,17 +17,18 @@ import platform
 import sys
 import time
 
-from hexbot.planning.locomotion import flat_scenario, load_ruleset, simulate
+from hexbot.planning.locomotion import flat_scenario, load_ruleset, load_scenario, simulate
 
 
-def case(ruleset: str, n: int, rounds: int) -> dict:
+def case(ruleset: str, n: int, rounds: int, scenario: str = "flat") -> dict:
     rs = load_ruleset(ruleset)
-    sc = flat_scenario(n)
+    sc = flat_scenario(n) if scenario == "flat" else load_scenario(scenario, n)
     start = time.perf_counter()
     result = simulate(rs, sc, rounds=rounds)
     seconds = time.perf_counter() - start
     return {
         "ruleset": ruleset,
+        "scenario": scenario,
         "n": n,
         "rounds": result.rounds,
         "status": result.status,
@@ -42,7 +44,10 @@ def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--quick", action="store_true", help="skip the 10,000 x 10,000 case")
     args = ap.parse_args()
-    cases = [("salvador-free", 100, 2000), ("salvador-pyramids", 1000, 2000)]
+    cases = [("salvador-free", 100, 2000), ("salvador-pyramids", 1000, 2000),
+             # obstacles: corks, openers and the `looped` search at work, to the goal
+             ("salvador", 90, 3000, "histogram-3"), ("salvador", 90, 3000, "maze"),
+             ("otero", 90, 3000, "wide-cavity-middle"), ("otero", 90, 3000, "maze")]
     if not args.quick:
         cases += [
             ("salvador-free", 10_000, 10_000),
