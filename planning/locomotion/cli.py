@@ -3,6 +3,7 @@
     hexbot locomotion run salvador-free flat --n 20 --until-advance 5 --json
     hexbot locomotion run salvador histogram-1 --n 10 --render run.gif
     hexbot locomotion list
+    hexbot locomotion random salvador --seeds 0:300 --json
 """
 
 from __future__ import annotations
@@ -47,6 +48,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     bank.add_argument("--directions", action="store_true",
                       help="also run the north, west and south versions of every map")
     bank.add_argument("--json", action="store_true", help="JSON instead of a Markdown table")
+    rnd = sub.add_parser("random", help="run a rule set on random obstacle maps; report "
+                         "every broken invariant (replay one with: run RULESET random-SEED)")
+    rnd.add_argument("ruleset", help="salvador, otero, ... or a file")
+    rnd.add_argument("--seeds", default="0:100", help="seed range FIRST:END (0:100)")
+    rnd.add_argument("--n", default="5,12,20", help="comma-separated strip sizes (5,12,20)")
+    rnd.add_argument("--rounds", type=int, default=2500, help="round limit per run (2500)")
+    rnd.add_argument("--json", action="store_true", help="print one JSON object")
     tables = sub.add_parser("tables", help="our rounds next to Tables 1-5 of Salvador's thesis")
     tables.add_argument("--only", default=None, help="comma-separated: table1,...,table5")
     tables.add_argument("--json", action="store_true", help="JSON instead of Markdown")
@@ -61,6 +69,8 @@ def run(args: argparse.Namespace) -> int:
         return _bank(args)
     if args.action == "tables":
         return _tables(args)
+    if args.action == "random":
+        return _random(args)
     if args.rounds < 0:
         raise ScenarioError("--rounds must not be negative")
     if args.until_advance is not None and args.until_advance < 1:
@@ -119,6 +129,32 @@ def _bank(args: argparse.Namespace) -> int:
     else:
         print(bank.bank_markdown(rows))
     return 0
+
+
+def _seed_range(text: str) -> range:
+    first, sep, end = text.partition(":")
+    if not sep or not first.strip().isdigit() or not end.strip().isdigit():
+        raise ScenarioError(f"--seeds: expected FIRST:END (e.g. 0:100), not {text!r}")
+    if int(end) <= int(first):
+        raise ScenarioError(f"--seeds: {text!r} is empty (END must be above FIRST)")
+    return range(int(first), int(end))
+
+
+def _random(args: argparse.Namespace) -> int:
+    from hexbot.planning.locomotion import randommaps
+
+    seeds = _seed_range(args.seeds)
+    rs = load_ruleset(args.ruleset)
+    report = randommaps.sweep(rs, seeds, _int_list(args.n, "--n"), args.rounds)
+    if args.json:
+        print(json.dumps({"ruleset": rs.name, "seeds": args.seeds, **report.to_dict()}))
+    else:
+        counts = ", ".join(f"{k} {v}" for k, v in sorted(report.outcomes.items()))
+        print(f"rule set {rs.name}, random maps {args.seeds}: {report.runs} runs: {counts}")
+        for v in report.violations:
+            print(f"  random-{v['seed']} n = {v['n']}: {v['kind']} in round {v['round']} "
+                  f"at {[tuple(c) for c in v['cells'][:3]]} ({'; '.join(v['rules'])})")
+    return 3 if report.violations else 0
 
 
 def _tables(args: argparse.Namespace) -> int:

@@ -168,7 +168,8 @@ def scenario_names(with_directions: bool = True) -> list[str]:
 
 
 def load_scenario(name: str, n: int | None = None) -> Scenario:
-    """``flat``, a shipped map (optionally ``-north`` etc.), or a path to a .map file."""
+    """``flat``, a shipped map, ``random-SEED`` (optionally ``-north`` etc.), or a
+    path to a .map file."""
     base, turns, suffix = name, 0, ""
     for d, q in DIRECTION_TURNS.items():
         if name.endswith(f"-{d}"):
@@ -179,11 +180,17 @@ def load_scenario(name: str, n: int | None = None) -> Scenario:
         maps = _data("maps", ".map")
         if base in maps:
             sc = parse_map(maps[base].read_text(encoding="utf-8"), base, f"{base}.map", n)
+        elif base.startswith("random-") and base[len("random-"):].isdigit():
+            from hexbot.planning.locomotion.randommaps import random_map  # imports us
+
+            seed = int(base[len("random-"):])
+            sc = parse_map(random_map(seed), base, f"random seed {seed}", n)
         elif Path(name).is_file():
             return parse_map(Path(name).read_text(encoding="utf-8"), Path(name).stem, name, n)
         else:
             raise ScenarioError(
                 f"unknown scenario {name!r} (try: flat, {', '.join(sorted(maps))}; "
+                "random-SEED for a random map; "
                 "add -north, -west or -south for the rotated versions)"
             )
     if suffix and suffix not in sc.directions:

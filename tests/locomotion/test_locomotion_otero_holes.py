@@ -3,6 +3,7 @@ each fires where it should, in every orientation, and each fixes a bank run
 that deadlocks without it."""
 
 import pytest
+from ruletext import without_rule, without_tag
 
 from hexbot.planning.locomotion import Engine, World, load_scenario, loads, simulate
 from hexbot.planning.locomotion.engine import Goal
@@ -11,20 +12,6 @@ from hexbot.planning.locomotion.scenarios import _data
 
 TEXT = _data("rulesets", ".rules")["otero"].read_text()
 OTERO = loads(TEXT)
-
-
-def _without_rule(text: str, name: str) -> str:
-    """otero.rules without the rule NAME (its block, up to the next blank line)."""
-    out, skip = [], False
-    for line in text.splitlines():
-        if line.startswith(f"rule {name} "):
-            skip = True
-        elif skip and not line.strip():
-            skip = False
-        if not skip:
-            out.append(line)
-    assert len(out) < len(text.splitlines())
-    return "\n".join(out)
 
 
 def run(rules, modules: dict, obstacles=(), rounds=1, turns=0):
@@ -61,16 +48,21 @@ def test_a_hole_open_below_is_no_wall_deadlock():
 
 
 def test_without_the_hole_rule_the_bridge_stays():
-    after = run(loads(_without_rule(TEXT, "U5")), BRIDGE, FLOOR)
+    after = run(loads(without_rule(TEXT, "U5")), BRIDGE, FLOOR)
     assert after.get((0, 0)) == "PIVOT"
 
 
 def test_the_hole_rule_brings_wide_cavity_right_n50_home():
     # HOLE: without U5 the tail of the robot is left as a U round a closed
     # hole at the far end of the cavity and the run deadlocks (round 380).
+    # SUPER_CLEAR, added later, changes the timing so that this hole no longer
+    # forms in the bank: the case is shown on the rules before it.
     ours = simulate(OTERO, load_scenario("wide-cavity-right", 50), rounds=3000)
     assert ours.status == "reached", ours.violation or ours.deadlock
-    old = simulate(loads(_without_rule(TEXT, "U5")), load_scenario("wide-cavity-right", 50),
+    before = without_tag(TEXT, "SUPER_CLEAR")
+    with_u5 = simulate(loads(before), load_scenario("wide-cavity-right", 50), rounds=3000)
+    assert with_u5.status == "reached", with_u5.violation or with_u5.deadlock
+    old = simulate(loads(without_rule(before, "U5")), load_scenario("wide-cavity-right", 50),
                    rounds=3000)
     assert old.status == "deadlock" and old.violation is None
 
@@ -98,7 +90,7 @@ def test_the_t_of_a_filled_cycle_leaves_towards_the_obstacle(turns):
 
 
 def test_the_listing_ts_do_not_see_a_filled_cycle():
-    text = _without_rule(_without_rule(TEXT, "T5"), "T6")
+    text = without_rule(without_rule(TEXT, "T5"), "T6")
     after = run(loads(text), FILLED_T, FILLED_WALLS, rounds=2)
     assert after.get((0, 0)) == "STOPA" and (0, 1) not in after
 
@@ -114,7 +106,7 @@ def test_the_filled_t_brings_wide_cavity_middle_n50_home():
     # middle row full of confined pivots.
     ours = simulate(OTERO, load_scenario("wide-cavity-middle", 50), rounds=3000)
     assert ours.status == "reached", ours.violation or ours.deadlock
-    text = _without_rule(_without_rule(TEXT, "T5"), "T6")
+    text = without_rule(without_rule(TEXT, "T5"), "T6")
     old = simulate(loads(text), load_scenario("wide-cavity-middle", 50), rounds=3000)
     assert old.status == "deadlock" and old.violation is None
 
