@@ -316,17 +316,9 @@ class Engine:
             at = e.offset[0] * h + e.offset[1]
             return lambda p: ~looped(p + at) if negated else looped(p + at)
         if isinstance(e, Atom) and SIMPLE in e.classes:
-            ring = connectivity.ring_offsets(h)
-            weights = (1 << np.arange(8)).astype(np.int64)
-            simple, negated = connectivity.SIMPLE, e.negated
-
+            simple, negated = self._simple, e.negated
             at = e.offset[0] * h + e.offset[1]
-
-            def is_simple(p: np.ndarray) -> np.ndarray:
-                occupied = flat[(p + at)[:, None] + ring[None, :]] >= MODULE_BASE
-                out = simple[occupied.astype(np.int64) @ weights]
-                return ~out if negated else out
-            return is_simple
+            return lambda p: ~simple(p + at) if negated else simple(p + at)
         if isinstance(e, Atom):
             lut, off = self._atom_lut(e), e.offset[0] * h + e.offset[1]
             return lambda p: lut[flat[p + off]]
@@ -349,6 +341,14 @@ class Engine:
                 out |= f(p)
             return out
         return disj
+
+    def _simple(self, cells: np.ndarray) -> np.ndarray:
+        """`simple` at each cell: its occupied ring cells form one run holding
+        all its edge neighbours (a module there can leave without a local cut)."""
+        h = self.world.height
+        occupied = self.world.flat[cells[:, None] + connectivity.ring_offsets(h)[None, :]]
+        weights = (1 << np.arange(8)).astype(np.int64)
+        return connectivity.SIMPLE[(occupied >= MODULE_BASE).astype(np.int64) @ weights]
 
     def _loop_through(self) -> np.ndarray:
         """Per cell code, how a `looped` path may use a module in that state:
@@ -379,8 +379,6 @@ class Engine:
         together and split it). A search per candidate: the rules put it last."""
         flat, h = self.world.flat, self.world.height
         use = self.loop_through
-        ring = connectivity.ring_offsets(h)
-        weights = (1 << np.arange(8)).astype(np.int64)
         fx, fy = self.flow
         edges = (h, 1, -h, -1)
         out = np.zeros(p.size, dtype=bool)
@@ -395,8 +393,7 @@ class Engine:
                 if how == LOOP_NEVER:
                     return False
                 if how == LOOP_UNLESS_SIMPLE:  # pinned unless `simple`
-                    return not connectivity.SIMPLE[
-                        int((flat[r + ring] >= MODULE_BASE) @ weights)]
+                    return not self._simple(np.array([r]))[0]
                 rx, ry = divmod(r, h)
                 return (fx * rx + fy * ry, -fy * rx + fx * ry) > key
 
