@@ -10,7 +10,7 @@ from __future__ import annotations
 import hashlib
 from pathlib import Path
 
-from hexbot.protocol import wire
+from hexbot.protocol import timing, wire
 from hexbot.protocol.codes import CODES, ErrorCode, Role, Status
 
 HEADER_PATH = Path(__file__).resolve().parent.parent / "firmware" / "include" / "hexbot_codes.h"
@@ -48,9 +48,9 @@ def render() -> str:
         f"#define HB_BAUD_IR          {wire.BAUD_IR}UL",
         f"#define HB_BAUD_BOARD       {wire.BAUD_BOARD}UL",
         f"#define HB_BAUD_DEBUG       {wire.BAUD_DEBUG}UL",
-        f"#define HB_CONTROL_ACK_TIMEOUT_TICKS {wire.CONTROL_ACK_TIMEOUT_TICKS}",
-        f"#define HB_SUBSTRATE_ACK_DELAY_TICKS {wire.SUBSTRATE_ACK_DELAY_TICKS}",
-        f"#define HB_ACK_SLOT_TICKS   {wire.ACK_SLOT_TICKS}",
+        f"#define HB_CONTROL_ACK_TIMEOUT_TICKS {timing.CONTROL_ACK_TIMEOUT_TICKS}",
+        f"#define HB_SUBSTRATE_ACK_DELAY_TICKS {timing.SUBSTRATE_ACK_DELAY_TICKS}",
+        f"#define HB_ACK_SLOT_TICKS   {timing.ACK_SLOT_TICKS}",
         f"#define HB_MAX_MODULE_ID    {wire.MAX_MODULE_ID}",
         f"#define HB_LOC_COORD_LIMIT  {wire.LOC_COORD_LIMIT}",
         "",

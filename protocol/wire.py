@@ -1,8 +1,8 @@
 """Byte-level constants of the HexBot links (Table 3-8, Appendix A/B).
 
-Timing: every delay argument is in ticks of 10 ms (Timer0, prescaler 64 at
-1 MHz). Baud rates: IR link (comm UART1) 300, board-to-board (UART0) 4800,
-control board debug port (UART1) 4800; all 8N1.
+Baud rates: IR link (comm UART1) 300, board-to-board (UART0) 4800, control
+board debug port (UART1) 4800; all 8N1. Ticks, slots and time-outs are in
+``timing.py``.
 """
 
 START = ord("*")  # first byte of every message
@@ -22,11 +22,20 @@ EOL = b"\n\r"  # the firmware ends lines LF CR, as the thesis does
 BAUD_IR = 300
 BAUD_BOARD = 4800
 BAUD_DEBUG = 4800
-TICK_S = 0.010
 
-CONTROL_ACK_TIMEOUT_TICKS = 250  # 2.5 s for the control board's echo
-SUBSTRATE_ACK_DELAY_TICKS = 100  # thesis: the substrate waits 1 s (legacy mode)
-ACK_SLOT_TICKS = 60  # addressed mode: rank r answers after r slots (ERR 'M03: ' = 16 B = 0.53 s)
+# Handshake between the two boards of a module (UART0), each byte followed
+# by the module id: the control board sends READY until the comm board
+# answers READY, then LISTENING (thesis, Appendix A).
+LINK_READY = ord("R")
+LINK_LISTENING = ord("L")
+
+# Boot texts, in the order a module sends them (the PC's parser knows them).
+TEXT_COMM_READY = "COMM. BOARD READY"
+TEXT_CTR_READY = "CTR. BOARD READY"
+TEXT_CTR_LISTENING = "CTR. LISTENING"
+TEXT_COMM_LISTENING = "COMM. LISTENING"
+BOOT_ID_TAIL = " ID="  # + two digits
+BOOT_FW_TAIL = " FW="  # + the firmware version
 
 MAX_MODULE_ID = 63  # DIP switches PC0..PC5; PC6, PC7 must be off
 LOC_COORD_LIMIT = 99  # MSG1 carries two decimal digits per coordinate
@@ -36,8 +45,3 @@ FUSE_HIGH = 0xD9  # JTAG off, SPIEN on, BOOTSZ=00
 FUSE_EXTENDED = 0xFF  # BOD off
 SIGNATURE = bytes((0x1E, 0x94, 0x04))  # ATmega162
 F_CPU = 1_000_000
-
-
-def byte_seconds(baud: int, bits: int = 10) -> float:
-    """Time on the wire of one 8N1 byte (start + 8 data + stop)."""
-    return bits / baud

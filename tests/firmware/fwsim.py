@@ -13,24 +13,12 @@ from pathlib import Path
 
 from hexbot.hil_sim import Simulator, load_scenario
 from hexbot.protocol import frames, parser, wire
+from hexbot.protocol.timing import boot_seconds  # noqa: F401 - the tests import it from here
 
 ROOT = Path(__file__).resolve().parents[2]
 FIRMWARE = ROOT / "firmware"
 BUILD = FIRMWARE / "build"
 
-#: Boot schedule of firmware/comm/main.c (docs/firmware.md, "Boot slots"): the
-#: texts that carry the id go out in slot (id - 1) mod 8, the first at 2.0 s,
-#: each 2.64 s long (VERSION 0.1.0; 0.034 s more per extra version character).
-BOOT_FIRST_SLOT_S = 2.0
-BOOT_SLOT_S = 2.64
-BOOT_SLOTS = 8
-
-
-def boot_seconds(ids, version: str = "0.1.0") -> float:
-    """Simulated time until every module in ``ids`` is listening, with 0.5 s margin."""
-    slot = BOOT_SLOT_S + 0.034 * (len(version) - 5)
-    rank = max((i - 1) % BOOT_SLOTS for i in ids)
-    return BOOT_FIRST_SLOT_S + (rank + 1) * slot + 0.5
 REPLY_KINDS = (parser.Ack, parser.ErrorReply, parser.StatusReport)
 
 

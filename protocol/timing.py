@@ -1,0 +1,244 @@
+"""Timing of the HexBot protocol: the tick, reply slots, boot slots, the
+localization window, and the bounds a PC derives from them.
+
+The firmware is built from these numbers (``hexbot gen-header`` writes them
+into ``firmware/include/hexbot_codes.h``) and the simulator and the host
+import them, so a bound computed here is a bound on what the real images do.
+
+Units: the firmware counts in ticks of Timer0 (prescaler 64, reload 0x64 at
+1 MHz: 156 counts of 64 us = 9.984 ms, the thesis' "10 ms"). Bounds convert
+ticks with the nominal ``TICK_S`` = 10 ms, which is longer than the real
+tick, so they stay upper bounds. Where the firmware computes with integer
+ticks (reply slots, boot slots), the functions below use the same integer
+arithmetic as the generated C macros, not a float estimate of it.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterable, Sequence
+
+from hexbot.protocol import wire
+from hexbot.protocol.codes import CODES, Board
+from hexbot.protocol.wire import BAUD_BOARD, BAUD_DEBUG, BAUD_IR, F_CPU
+
+__all__ = [
+    "ACK_SLOT_S", "ACK_SLOT_TICKS", "BAUD_BOARD", "BAUD_DEBUG", "BAUD_IR", "F_CPU",
+    "LOCALIZE_WINDOW_S", "TICK_S", "boot_seconds", "reply_timeout_s",
+]
+
+# --- the tick -----------------------------------------------------------------
+
+TIMER0_PRESCALER = 64
+TIMER0_RELOAD = 0x64  # thesis listings: TCNT0 reloaded with 0x64 on every overflow
+TICK_TRUE_S = TIMER0_PRESCALER * (256 - TIMER0_RELOAD) / F_CPU  # 9.984 ms
+TICK_S = 0.010  # nominal tick; every delay argument counts in it
+TICKS_PER_S = 100
+
+#: The modules run on the internal RC oscillator (Table 3-6), not a crystal.
+#: Their 300-baud link to the PC only works while their clock is within the
+#: few per cent an 8N1 receiver tolerates, so a module that answers at all
+#: runs at most this much slower than nominal; bounds on hardware allow it.
+CLOCK_TOLERANCE = 0.05
+
+# --- bytes on the air -----------------------------------------------------------
+
+BYTE_BITS = 10  # 8N1: start, 8 data, stop
+#: Ticks one IR byte occupies, x10 and rounded up (3.33 ticks -> 3.4).
+IR_BYTE_TICKS_X10 = -(-BYTE_BITS * 10 * TICKS_PER_S // BAUD_IR)
+
+
+def ir_ticks(nbytes: int) -> int:
+    """Ticks that ``nbytes`` back-to-back bytes occupy on the IR link, rounded
+    up (the firmware's ``HB_IR_TICKS``)."""
+    return (nbytes * IR_BYTE_TICKS_X10 + 9) // 10
+
+
+def wire_seconds(nbytes: int, baud: int) -> float:
+    """Time on the wire of ``nbytes`` 8N1 bytes at ``baud``."""
+    return nbytes * BYTE_BITS / baud
+
+
+# --- replies to the PC and their slots ------------------------------------------
+
+CONTROL_ACK_TIMEOUT_TICKS = 250  # 2.5 s for the control board's echo (thesis)
+SUBSTRATE_ACK_DELAY_TICKS = 100  # thesis: the substrate waits 1 s (legacy mode)
+ACK_SLOT_TICKS = 60  # addressed mode: rank r answers r slots after rank 0
+ACK_SLOT_S = ACK_SLOT_TICKS * TICK_S
+
+ADDRESSED_PREFIX = b"M03: "  # longest prefix: role letter, two-digit id
+ACK_BODY = b"ACK" + bytes([0]) + wire.EOL
+ERR_BODY = b"ERR" + bytes([0, 0]) + wire.EOL
+STATUS_FIELDS = 7  # id, role, localized, x, y, yref, last error
+SCHEMA_DIGITS = 8  # the schema hash as hex text (docs/protocol.md, "Status")
+STATUS_BODY_BYTES = len(b"STA") + STATUS_FIELDS + SCHEMA_DIGITS + len(wire.EOL)
+#: What a module that localized itself reports (comm/main.c, localize()).
+LOCALIZE_REPORT = wire.PREAMBLE + b"LOCALIZED\n\rSide: 1\n\rYref: 0\n\rPos: +00+00\n\r"
+
+_HEAD = len(wire.PREAMBLE) + len(ADDRESSED_PREFIX)
+REPLY_BYTES_ACK = _HEAD + len(ACK_BODY)
+REPLY_BYTES_ERR = _HEAD + len(ERR_BODY)
+REPLY_BYTES_STATUS = _HEAD + STATUS_BODY_BYTES
+REPLY_BYTES_LOCALIZE = len(LOCALIZE_REPORT) + REPLY_BYTES_ACK
+
+
+def reply_slots(nbytes: int) -> int:
+    """ACK slots a reply of ``nbytes`` needs (the firmware's ``HB_REPLY_SLOTS``)."""
+    return -(-ir_ticks(nbytes) // ACK_SLOT_TICKS)
+
+
+SLOTS_ACK = reply_slots(REPLY_BYTES_ERR)  # an ACK or an ERR: the longer of the two
+SLOTS_STATUS = reply_slots(REPLY_BYTES_STATUS)
+SLOTS_LOCALIZE = reply_slots(REPLY_BYTES_LOCALIZE)
+
+# --- boot --------------------------------------------------------------------------
+
+#: Every module of a cluster boots at once; the boot texts that carry the id
+#: go out in slot (id - 1) mod BOOT_SLOTS, the first BOOT_FIRST_SLOT_TICKS
+#: after reset (the handshake and the LED shows are over by 1.7 s), each as
+#: long as its text at 300 baud plus a guard.
+BOOT_SLOTS = 8
+BOOT_FIRST_SLOT_TICKS = 200
+BOOT_GUARD_TICKS = 5
+#: Bytes of the slot text (preamble, CTR. BOARD READY ID=nn, CTR. LISTENING,
+#: COMM. LISTENING ID=nn FW=) without the version string.
+BOOT_TEXT_FIXED_BYTES = len(
+    wire.PREAMBLE
+    + f"{wire.TEXT_CTR_READY}{wire.BOOT_ID_TAIL}nn".encode() + wire.EOL
+    + wire.TEXT_CTR_LISTENING.encode() + wire.EOL
+    + f"{wire.TEXT_COMM_LISTENING}{wire.BOOT_ID_TAIL}nn{wire.BOOT_FW_TAIL}".encode() + wire.EOL
+)
+
+
+def boot_rank(module_id: int) -> int:
+    """The boot slot of a module (id 0, no handshake id, takes slot 0)."""
+    return (module_id - 1) % BOOT_SLOTS if module_id else 0
+
+
+def boot_slot_ticks(version: str = "0.1.0") -> int:
+    """Length of one boot slot for firmware built with ``VERSION=version``."""
+    return ir_ticks(BOOT_TEXT_FIXED_BYTES + len(version)) + BOOT_GUARD_TICKS
+
+
+def boot_seconds(ids: Iterable[int], version: str = "0.1.0") -> float:
+    """Simulated time from reset until every module in ``ids`` has sent its
+    ``COMM. LISTENING`` boot text (both boards present): the end of the last
+    boot slot any of them uses."""
+    ranks = [boot_rank(i) for i in ids]
+    if not ranks:
+        raise ValueError("boot_seconds needs at least one module id")
+    ticks = BOOT_FIRST_SLOT_TICKS + (max(ranks) + 1) * boot_slot_ticks(version)
+    return ticks * TICK_S
+
+
+# --- localization (code 66) --------------------------------------------------------
+
+#: A listener stays LISTEN ticks on each side waiting for any byte (one byte
+#: time plus the teacher's gap between messages, plus one tick of rounding);
+#: when one comes it stays up to CATCH ticks to collect eight consecutive
+#: bytes, which hold one whole MSG1 in some rotation. A teacher repeats MSG1
+#: on each side for DWELL ticks: a listener may need a full cycle of its six
+#: sides to come round, then CATCH ticks.
+LOC_LISTEN_TICKS = 6
+LOC_CATCH_TICKS = 40
+LOC_DWELL_TICKS = 6 * LOC_LISTEN_TICKS + LOC_CATCH_TICKS + 4
+LOC_SWEEP_TICKS = 6 * LOC_DWELL_TICKS
+#: The flood runs for a fixed window from the end of the 66 frame, long
+#: enough for LOC_HOPS hops from a localized module (the thesis' Fig. 5-8
+#: cluster is 4 hops deep from its base); then every module reports in its slot.
+LOC_HOPS = 4
+LOC_WINDOW_TICKS = LOC_HOPS * (LOC_SWEEP_TICKS + 6 * LOC_LISTEN_TICKS) + 20
+LOCALIZE_WINDOW_S = LOC_WINDOW_TICKS * TICK_S
+
+# --- other firmware time-outs the PC can see -----------------------------------
+
+PC_BYTE_TIMEOUT_TICKS = 34  # a PC frame with a gap of 10 byte times is dropped
+IRSEL_HOLD_TICKS = 1000  # IrSel falls back to the centre after 10 s of silence
+
+# --- how long a function keeps the comm board before it replies ---------------
+
+
+def _walk(steps_per_round: int):
+    # seq_walk / flash1: n rounds of steps_per_round outputs, each on t then off t.
+    return lambda a: a[0] * steps_per_round * 2 * a[1]
+
+
+def _rotation(a: Sequence[int]) -> int:
+    return a[1] + a[2] + a[3]  # t1 + t2 + t3 (Table 3-1)
+
+
+#: Ticks each function runs before its reply, from its arguments (firmware:
+#: common/sequence.c, comm/leds.c). Control functions count too: the comm
+#: board mirrors them on its LEDs after the echo and only then replies.
+_RUN_TICKS = {
+    5: _walk(6), 15: _walk(6), 16: _walk(6),  # JTest, SPTest, SNTest
+    21: _rotation, 22: _rotation, 23: _rotation, 24: _rotation,  # MCW..SCCW
+    36: _walk(6), 37: _walk(6), 43: _walk(6),  # SidePTest, SideNTest, JointTest
+    46: _walk(18), 47: _walk(3), 48: _walk(1), 49: _walk(1),  # LCircle, LColor, LFlash1/2
+    50: lambda a: 20,  # LYref: two 10-tick blinks
+    56: _rotation, 57: _rotation, 58: _rotation, 59: _rotation,  # LMCW..LSCCW
+    65: lambda a: 3 * 20,  # Ref: LYref three times
+    67: lambda a: max(_rotation(a[0:4]), _rotation(a[4:8])),  # CW: the longer half
+    68: lambda a: max(_rotation(a[0:4]), _rotation(a[4:8])),  # CCW
+}
+
+
+def run_ticks(code: int, args: Sequence[int] = ()) -> int:
+    """Ticks function ``code`` runs before its module replies. Without
+    ``args`` every argument is taken at the top of its range (a bound for
+    any arguments)."""
+    fn = CODES[code]
+    if not args:
+        args = [a.hi for a in fn.args]
+    run = _RUN_TICKS.get(code)
+    return run(list(args) + [0] * 8) if run else 0
+
+
+def reply_timeout_s(code: int, replies: int, args: Sequence[int] = (),
+                    last_rank: int | None = None) -> float:
+    """Upper bound, in seconds, from the end of a PC frame until the last of
+    ``replies`` addressed replies to function ``code`` has arrived at the PC.
+
+    The sum of, in firmware ticks:
+
+    - dispatch: 2 ticks (the frame completes between two ticks, the main
+      loop wakes on the next interrupt);
+    - forward (control functions, and 67/68 which forward their half): the
+      board frame at 4800 baud plus the control board's echo, bounded by its
+      2.5 s time-out (after which the comm board answers ``~`` at once);
+    - run: what the function does before the reply (``run_ticks``): walks
+      take count x steps x 2 x delay, rotations t1 + t2 + t3; for 67/68 the
+      longer half; without ``args`` the top of every argument range;
+      Localize (66) runs the whole localization window instead;
+    - turn: the reply slot; rank r answers r x slots x ACK_SLOT_TICKS after
+      rank 0 (addressed mode; ``last_rank`` defaults to ``replies - 1``, the
+      rank of the last of a Select list; after Select(0) ranks are id - 1, so
+      pass the highest id - 1), and a legacy-mode substrate waits 1 s (or
+      its slots) -- the larger of the two;
+    - air: the longest reply of that kind (ACK/ERR 1 slot, Status 2,
+      Localize: the LOCALIZED report plus its ACK, 4) at 300 baud.
+
+    The total allows CLOCK_TOLERANCE for a slow RC oscillator. With
+    ``replies`` 0 nothing is awaited and the bound is 0.
+    """
+    if replies < 0:
+        raise ValueError(f"replies must be >= 0, got {replies}")
+    if replies == 0:
+        return 0.0
+    fn = CODES[code]
+    rank = replies - 1 if last_rank is None else last_rank
+    dispatch = 2
+    forward = 0
+    if fn.board is Board.CONTROL or code in (67, 68):
+        frame_and_echo = wire_seconds(wire.BOARD_FRAME_LEN + 1, BAUD_BOARD)
+        forward = math.ceil(frame_and_echo / TICK_S) + CONTROL_ACK_TIMEOUT_TICKS
+    if code == 66:
+        run, slots, nbytes = LOC_WINDOW_TICKS, SLOTS_LOCALIZE, REPLY_BYTES_LOCALIZE
+    elif code == 70:
+        run, slots, nbytes = 0, SLOTS_STATUS, REPLY_BYTES_STATUS
+    else:
+        run, slots, nbytes = run_ticks(code, args), SLOTS_ACK, REPLY_BYTES_ERR
+    legacy_substrate = SUBSTRATE_ACK_DELAY_TICKS if slots == 1 else slots * ACK_SLOT_TICKS
+    turn = max(rank * slots * ACK_SLOT_TICKS, legacy_substrate)
+    ticks = dispatch + forward + run + turn + ir_ticks(nbytes)
+    return ticks * TICK_S * (1 + CLOCK_TOLERANCE)
