@@ -70,7 +70,7 @@ def main(argv: list[str] | None = None) -> int:
         return int(module.run(args) or 0)
     except HexBotError as exc:
         print(f"hexbot {name}: error: {exc}", file=sys.stderr)
-        return 1
+        return exc.exit_status
     except KeyboardInterrupt:
         return 130
     except BrokenPipeError:  # output piped into `head` and the like

@@ -1,20 +1,41 @@
 """The toolchain's exceptions: one base class and one subclass per cause.
 
-Library code raises these; only the CLI turns them into exit codes.
+Library code raises these; only the CLI turns them into exit codes
+(``exit_status``: 1 a refusal or failure, 3 a time-out, 4 a lost or
+missing port, 130 cancelled), so a script can tell "the module said no"
+from "nobody answered" from "the cable is out".
 """
 
 
 class HexBotError(Exception):
     """Base class of every error the toolchain raises on purpose."""
 
+    exit_status = 1
+
 
 class LinkUnavailableError(HexBotError):
     """A serial port or simulator link cannot be opened or was lost
     (unplugged adapter, missing pty, refused socket)."""
 
+    exit_status = 4
+
 
 class HexBotTimeoutError(HexBotError, TimeoutError):
     """An expected reply (ACK, boot text, event) did not arrive in time."""
+
+    exit_status = 3
+
+
+class CommandRefusedError(HexBotError):
+    """A module answered a command with ERR, the unused-code ACK ``N`` or the
+    control board's time-out ``~``; or a workflow's check refused to go on
+    (unknown orientation, a move the plant refused or that was not verified)."""
+
+
+class CancelledError(HexBotError):
+    """The user cancelled a running exchange or workflow."""
+
+    exit_status = 130
 
 
 class FrameError(HexBotError, ValueError):

@@ -27,6 +27,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
+from hexbot.protocol.simulation import RefusalReason
+
 from .geometry import (
     Cell,
     Pivot,
@@ -214,9 +216,7 @@ class Plant:
                 return
             refusals.append(verdict)
         # Report the most telling reason: a partner that tried beats nobody there.
-        order = ["fixed to base", "occupied cell", "latched joint", "no axle", "timing",
-                 "wrong polarity", "no substrate"]
-        refusals.sort(key=lambda r: order.index(r[0]))
+        refusals.sort(key=lambda r: RefusalReason(r[0]).rank)
         reason, detail, extra = refusals[0] if refusals else (
             "no substrate", f"no module on either side of joint {body_joint}", {})
         self.emit(t, {"event": "refused", "module": body.id, "reason": reason,

@@ -59,6 +59,13 @@ class CaptureWriter:
     def elapsed(self) -> float:
         return self._clock() - self._t0
 
+    def use_clock(self, clock) -> None:
+        """Stamp with ``clock``, which counts from the session's start (the
+        session's clock: wall time, or a simulator's virtual time)."""
+        with self._lock:
+            self._t0 = 0.0
+            self._clock = clock
+
     def port(self, name: str, description: str) -> None:
         self._write(f"# port {name} {description}\n")
 

@@ -6,12 +6,11 @@ import argparse
 import json
 import queue
 import sys
-import time
 
 from hexbot.host.cli_common import session
 from hexbot.host.describe import describe_event, describe_tx, event_json
 from hexbot.host.endpoints import add_port_arguments
-from hexbot.host.host import Observed
+from hexbot.host.events import Direction, HostEvent, Observed, Traffic
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -35,24 +34,29 @@ def run(args: argparse.Namespace) -> int:
     lines: queue.Queue[str] = queue.Queue()
     fmt = format_json if args.json else format_line
 
-    def listener(kind: str, port: str, payload: object) -> None:
-        if kind == "event":
-            lines.put(fmt(payload))  # type: ignore[arg-type]
-        elif kind == "tx" and args.tx:
-            t, data = payload  # type: ignore[misc]
+    def listener(event: HostEvent) -> None:
+        if isinstance(event, Observed):
+            lines.put(fmt(event))
+        elif isinstance(event, Traffic) and event.direction is Direction.TX and args.tx:
+            t, port, data = event.t, event.port, event.data
             lines.put(json.dumps({"t": round(t, 3), "port": port, "kind": "tx",
                                   "raw": data.hex()}) if args.json
                       else f"{t:9.3f} {port:<5} > {describe_tx(data)}")
 
-    with session(args, wait_s=0.0, listener=listener, wait_boot=False):
-        end = None if args.duration is None else time.monotonic() + args.duration
-        while end is None or time.monotonic() < end:
-            try:
-                line = lines.get(timeout=0.1)
-            except queue.Empty:
-                continue
-            print(line, flush=True)
+    def flush() -> bool:
         while not lines.empty():
             print(lines.get_nowait(), flush=True)
+        return False
+
+    with session(args, wait_s=0.0, listener=listener, wait_boot=False,
+                 default_speed=1.0) as sess:
+        # The session's clock keeps time (virtual with --sim-speed 0); print
+        # as events come, at most a tenth of a second late.
+        end = None if args.duration is None else sess.now() + args.duration
+        while end is None or sess.now() < end:
+            sess.host.clock.wait(lambda: not lines.empty(),
+                                 0.1 if end is None else max(0.0, min(0.1, end - sess.now())))
+            flush()
+        flush()
     sys.stdout.flush()
     return 0

@@ -20,9 +20,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="after a broadcast, answers are over when the link was quiet "
                              "this long (default 1.5; less with a fast simulator)")
     add_port_arguments(parser)
-    # Scripts are regressions: on the embedded simulator run them 20x faster
-    # than real time (timeouts in a script are wall-clock seconds).
-    parser.set_defaults(sim_speed=20.0)
 
 
 _SCENARIO_PRAGMA = re.compile(r"^#\s*scenario:\s*(\S+)\s*$")
@@ -46,8 +43,10 @@ def run(args: argparse.Namespace) -> int:
         return 0
     if not args.port and not args.scenario:
         args.scenario = declared_scenario(args.script)
-    with session(args) as host:
-        runner = ScriptRunner(host, str(args.script), quiet=args.quiet)
+    # Scripts are regressions: on the embedded simulator they run in virtual
+    # time (default --sim-speed 0), where every time-out is simulated seconds.
+    with session(args) as sess:
+        runner = ScriptRunner(sess, str(args.script), quiet=args.quiet)
         try:
             runner.run(steps)
         except ScriptFailed as exc:

@@ -72,9 +72,6 @@ class ClusterModel:
     placements: dict[tuple[int, int], Placement] = field(default_factory=dict)
     acks: int = 0
     errors: int = 0
-    #: the embedded simulator's ground truth: id -> (cell, orientation)
-    truth: dict[int, tuple[tuple[int, int], int]] = field(default_factory=dict)
-    sim_log: list[str] = field(default_factory=list)
     _pending: dict[str, _PendingReport] = field(default_factory=dict)
     _unnamed: dict[str, tuple[int, int]] = field(default_factory=dict)
 
@@ -168,25 +165,20 @@ class ClusterModel:
         else:
             p.module_id, p.yref = module_id, yref
 
-    def seed_truth(self, cells: dict[int, tuple[tuple[int, int], int]]) -> None:
-        self.truth = dict(cells)
+    def moved(self, module_id: int) -> None:
+        """The module rotated: where it is and how it faces are stale until
+        it reports again (the firmware forgets its position too)."""
+        row = self.module(module_id)
+        if row is not None:
+            row.localized = False
 
-    def apply_sim(self, event: dict) -> bool:
-        """A simulator plant event: ``moved`` updates the truth; every event
-        is kept as one line for the lattice view."""
-        kind = event.get("event", "?")
-        module = event.get("module")
-        if kind == "moved" and isinstance(module, int):
-            to, orient = event.get("to"), event.get("orientation")
-            if isinstance(to, list) and len(to) == 2 and isinstance(orient, int):
-                self.truth[module] = ((int(to[0]), int(to[1])), orient)
-            self.sim_log.append(f"{event.get('t', 0):.2f}s module {module} moved "
-                                f"{tuple(event.get('from', ()))} -> {tuple(to or ())}")
-        else:
-            why = event.get("reason") or event.get("detail") or ""
-            self.sim_log.append(f"{event.get('t', 0):.2f}s {kind} module {module} {why}".strip())
-        del self.sim_log[:-20]
-        return True
+    def placed(self, module_id: int, cell: tuple[int, int], orientation: int) -> None:
+        """A check (the simulator's plant, or a localization) put the module here."""
+        row = self.module(module_id)
+        if row is None:
+            return
+        row.position, row.orientation, row.localized = cell, orientation, True
+        self._name_placement(cell[0], cell[1], orientation, module_id, row.last_seen)
 
     def cells(self) -> list[Placement]:
         """Every occupied lattice cell the host knows, sorted by position."""
@@ -197,7 +189,6 @@ class ClusterModel:
         self.placements.clear()
         self._pending.clear()
         self._unnamed.clear()
-        self.sim_log.clear()
         self.acks = self.errors = 0
 
 

@@ -1,23 +1,27 @@
 """Where the host connects: shared CLI options and the session they open.
 
 ``--port`` / ``--debug-port`` name hardware or any pyserial URL; without
-``--port`` the embedded simulator is started (``--scenario``) and its ptys
-are used. Every session writes its logs (see
+``--port`` the embedded simulator runs in this process behind a
+``hexbot-sim://`` URL (``--scenario``, ``--seed``, ``--sim-speed``), opened
+exactly like hardware. Every session writes its logs (see
 :mod:`hexbot.host.session_log`) unless ``--no-log``.
 """
 
 from __future__ import annotations
 
 import argparse
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from hexbot.errors import HexBotError
+from hexbot.host.events import Listener
 from hexbot.host.host import DEBUG, IR, Host
 from hexbot.host.link import PortSettings
 from hexbot.host.session_log import SessionLog, new_session_dir
-from hexbot.host.simproc import DEFAULT_SCENARIO, SimProcess
 from hexbot.protocol import wire
+
+DEFAULT_SCENARIO = "flower7"
 
 
 def add_port_arguments(parser: argparse.ArgumentParser, *, debug: bool = True) -> None:
@@ -38,8 +42,9 @@ def add_port_arguments(parser: argparse.ArgumentParser, *, debug: bool = True) -
     g.add_argument("--scenario", default=None,
                    help=f"simulator scenario when no --port is given (default {DEFAULT_SCENARIO})")
     g.add_argument("--seed", type=int, default=None, help="simulator seed")
-    g.add_argument("--sim-speed", type=float, default=1.0, metavar="X",
-                   help="simulator speed, times real time (default 1; 0 = flat out)")
+    g.add_argument("--sim-speed", type=float, default=None, metavar="X",
+                   help="simulator speed, times real time (0 = virtual time, as fast as it "
+                        "goes; default: 0 for send/run/plan, 1 for console/monitor)")
     g.add_argument("--retry", type=float, default=1.0, metavar="S",
                    help="seconds between reconnection attempts (default 1)")
     lg = parser.add_argument_group("session log")
@@ -53,65 +58,69 @@ def add_port_arguments(parser: argparse.ArgumentParser, *, debug: bool = True) -
 class Endpoints:
     ir: PortSettings | None
     debug: PortSettings | None = None
-    sim: SimProcess | None = None
+    scenario: str | None = None  # the embedded simulator's, when no --port
+    debug_module: int | None = None
     notes: list[str] = field(default_factory=list)
 
     def close(self) -> None:
-        if self.sim is not None:
-            self.sim.close()
+        """Nothing to stop: an embedded simulator closes with its port."""
 
 
-def resolve(args: argparse.Namespace) -> Endpoints:
-    """Port settings from the options, starting the simulator if needed."""
+def sim_url(scenario: str, seed: int | None = None, speed: float = 0.0) -> str:
+    """The ``hexbot-sim://`` URL of a scenario (a built-in name or a TOML file)."""
+    path = Path(scenario)
+    target = str(path.resolve()) if path.suffix == ".toml" or path.is_file() else scenario
+    query = [f"speed={speed:g}"] + ([f"seed={seed}"] if seed is not None else [])
+    return f"hexbot-sim://{target}?{'&'.join(query)}"
+
+
+def resolve(args: argparse.Namespace, default_speed: float = 1.0) -> Endpoints:
+    """Port settings from the options: hardware or a URL with ``--port``,
+    else the embedded simulator (a ``hexbot-sim://`` URL)."""
     frame = dict(parity=args.parity, data_bits=args.data_bits, stop_bits=args.stop_bits)
     debug_url = getattr(args, "debug_port", None)
     debug_baud = getattr(args, "debug_baud", wire.BAUD_DEBUG)
     if args.port and args.scenario:
         raise HexBotError("--scenario starts the simulator; it cannot be combined with --port")
+    debug = PortSettings(debug_url, debug_baud) if debug_url else None
     if args.port:
-        ir = PortSettings(args.port, args.baud, **frame)
-        debug = PortSettings(debug_url, debug_baud) if debug_url else None
-        return Endpoints(ir, debug)
+        return Endpoints(PortSettings(args.port, args.baud, **frame), debug)
     scenario = args.scenario or DEFAULT_SCENARIO
-    sim = SimProcess(scenario, seed=args.seed, speed=args.sim_speed)
-    ir = PortSettings(sim.ports.ir, args.baud, **frame)
-    debug = None
-    if debug_url:
-        debug = PortSettings(debug_url, debug_baud)
-    elif sim.ports.uart1 and hasattr(args, "debug_port"):
-        wanted = getattr(args, "debug_module", None)
-        ident = wanted if wanted in sim.ports.uart1 else min(sim.ports.uart1)
-        debug = PortSettings(sim.ports.uart1[ident], debug_baud)
-    return Endpoints(ir, debug, sim, [f"simulator scenario {scenario}"])
+    speed = args.sim_speed if args.sim_speed is not None else default_speed
+    ir = PortSettings(sim_url(scenario, args.seed, speed), args.baud, **frame)
+    return Endpoints(ir, debug, scenario, getattr(args, "debug_module", None),
+                     [f"simulator scenario {scenario}"])
 
 
-def open_host(args: argparse.Namespace, endpoints: Endpoints) -> Host:
+def open_host(args: argparse.Namespace, endpoints: Endpoints,
+              listeners: Iterable[Listener] = ()) -> Host:
+    """A host with the endpoints' ports, started, ``listeners`` attached
+    before the first byte. An embedded simulator's debug port (UART1 of
+    ``--debug-module``, default the lowest id) is added once its cluster
+    is open."""
     log = None
     if not args.no_log:
         log = SessionLog(new_session_dir(args.log_dir))
     host = Host(log)
-    if endpoints.sim is not None:
-        host.model.seed_truth(_scenario_cells(endpoints.sim.scenario))
-        endpoints.sim.on_event = host.sim_event
-    for note in endpoints.notes:
-        if log:
-            log.note("host", note)
-    if endpoints.ir is not None:
-        host.add_port(IR, endpoints.ir, args.retry)
-    if endpoints.debug is not None:
-        host.add_port(DEBUG, endpoints.debug, args.retry)
+    for listener in listeners:
+        host.add_listener(listener)
+    try:
+        for note in endpoints.notes:
+            if log:
+                log.note("host", note)
+        if endpoints.ir is not None:
+            host.add_port(IR, endpoints.ir, args.retry)
+        if endpoints.debug is not None:
+            host.add_port(DEBUG, endpoints.debug, args.retry)
+        host.start()
+        sim = host.simulator
+        if sim is not None and endpoints.debug is None and hasattr(args, "debug_port"):
+            ids = sim.module_ids()
+            ident = endpoints.debug_module if endpoints.debug_module in ids else min(ids)
+            host.add_port(DEBUG, PortSettings(sim.uart1_url(ident),
+                                              getattr(args, "debug_baud", wire.BAUD_DEBUG)),
+                          args.retry).link.start()
+    except BaseException:
+        host.close()
+        raise
     return host
-
-
-def _scenario_cells(name: str) -> dict[int, tuple[tuple[int, int], int]]:
-    """Where the simulator starts each module: the lattice's ground truth
-    until plant events move them."""
-    from hexbot.hil_sim.scenario import load_scenario
-
-    sc = load_scenario(name)
-    return {m.id: ((m.position[0], m.position[1]), m.orientation) for m in sc.modules}
-
-
-def scenario_module_ids(name: str) -> set[int]:
-    """The module ids of a simulator scenario (to know when all have booted)."""
-    return set(_scenario_cells(name))

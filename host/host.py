@@ -1,49 +1,49 @@
-"""The host side of a session: ports, parser, logs, cluster model, waiting.
+"""The host side of a session: ports, parser, logs, cluster model, clock.
 
 One :class:`Channel` per port joins a :class:`~hexbot.host.link.Link`
 (bytes), a :class:`~hexbot.protocol.parser.ReplyParser` (events) and the
 session log. :class:`Host` holds the channels, keeps a journal of every
-event for code that waits for replies (CLI, scripts, console workers) and
-feeds the :class:`~hexbot.host.cluster.ClusterModel`. Listeners (the
-console) are called from the reader threads and must hand work over to
-their own thread.
+event for code that waits for replies (through
+:class:`~hexbot.host.session.Session`, the one send-and-wait layer), feeds
+the :class:`~hexbot.host.cluster.ClusterModel` and tells listeners
+(:mod:`hexbot.host.events`). Listeners are called from reader threads and
+must hand work over to their own thread.
+
+The clock is chosen when the ports start: a stepped simulated port makes
+time virtual (:class:`~hexbot.host.clock.SteppedClock`), anything else is
+the wall clock.
 """
 
 from __future__ import annotations
 
-import json
 import threading
-import time
-from collections.abc import Callable, Iterable
-from dataclasses import dataclass
-from typing import Any
+from collections.abc import Iterable
 
 from hexbot.errors import LinkUnavailableError
 from hexbot.host.capture import Record
+from hexbot.host.clock import Clock, SteppedClock, WallClock
 from hexbot.host.cluster import ClusterModel
+from hexbot.host.events import (
+    Direction,
+    HostEvent,
+    Listener,
+    Observed,
+    PortChanged,
+    SimVerdict,
+    Traffic,
+)
 from hexbot.host.link import Link, LinkState, PortSettings
 from hexbot.host.session_log import SessionLog
 from hexbot.protocol import frames
 from hexbot.protocol.frames import Command
 from hexbot.protocol.parser import Event, ReplyParser
+from hexbot.protocol.simulation import PlantVerdict, SimulatorAccess
 
 #: Port names: the central IR transceiver and one control board's UART1.
 IR, DEBUG = "ir", "debug"
-QUIET_FLUSH_S = 1.0
-SIM_PLANT_EVENTS = ("moved", "refused")  # a half reply older than this becomes garbage
+QUIET_FLUSH_S = 1.0  # a half reply older than this becomes garbage
 
-
-@dataclass(frozen=True)
-class Observed:
-    seq: int
-    t: float
-    port: str
-    event: Event
-
-
-#: (kind, port, payload): "tx"/"rx" -> (t, bytes); "event" -> Observed;
-#: "state" -> (LinkState, detail, t); "sim" -> the simulator's event dict
-Listener = Callable[[str, str, Any], None]
+__all__ = ["DEBUG", "IR", "Host", "Listener", "Observed"]
 
 
 class Channel:
@@ -60,18 +60,18 @@ class Channel:
         return self.link.settings
 
     def _on_data(self, data: bytes) -> None:
-        self._last_rx = time.monotonic()
-        self._unflushed = True
         t = self.host.received(self.name, data)
+        self._last_rx = t
+        self._unflushed = True
         for ev in self.parser.feed(data):
             self.host.observe(t, self.name, ev)
 
     def _on_idle(self) -> None:
         # The parser holds a half reply (and garbage, until the next reply)
         # back: after a quiet second, nothing more is coming to complete it.
-        if self._unflushed and time.monotonic() - self._last_rx > QUIET_FLUSH_S:
+        t = self.host.elapsed()
+        if self._unflushed and t - self._last_rx > QUIET_FLUSH_S:
             self._unflushed = False
-            t = self.host.elapsed()
             for ev in self.parser.flush():
                 self.host.observe(t, self.name, ev)
 
@@ -89,10 +89,12 @@ class Host:
         self.channels: dict[str, Channel] = {}
         self.model = ClusterModel()
         self.lock = threading.RLock()  # guards model and journal
-        self._changed = threading.Condition(self.lock)
+        self.changed = threading.Condition(self.lock)
         self._journal: list[Observed] = []
         self._listeners: list[Listener] = []
-        self._t0 = time.monotonic()
+        self.clock: Clock = WallClock(self.changed)
+        if log is not None:
+            log.capture.use_clock(lambda: self.clock.now())
 
     # --- set-up -----------------------------------------------------------
 
@@ -106,14 +108,37 @@ class Host:
         return ch
 
     def start(self, wait_s: float = 0.0) -> Host:
-        """Start every port; with ``wait_s`` raise LinkUnavailableError if a
-        port is not connected by then."""
+        """Start every port and choose the clock; with ``wait_s`` raise
+        LinkUnavailableError if a port is not connected by then."""
         for ch in self.channels.values():
             ch.link.start()
         if wait_s:
             for ch in self.channels.values():
                 ch.link.start(wait_s)
+        self._choose_clock()
         return self
+
+    def _choose_clock(self) -> None:
+        sim = self.simulator
+        if sim is None or isinstance(self.clock, SteppedClock) or (
+                isinstance(self.clock, WallClock) and self.clock.scale != 1.0):
+            return
+        if sim.stepped:
+            self.clock = SteppedClock(sim, self.pump)
+        else:
+            self.clock = WallClock(self.changed, sim.now, 1.0 / sim.speed)
+        sim.subscribe(self._verdict)
+
+    @property
+    def simulator(self) -> SimulatorAccess | None:
+        """The simulator behind the IR port, when it is one (``hexbot-sim://``)."""
+        ch = self.channels.get(IR)
+        return ch.link.simulator if ch is not None else None
+
+    def pump(self) -> None:
+        """Stepped ports: move what they received into the session."""
+        for ch in self.channels.values():
+            ch.link.pump()
 
     def add_listener(self, listener: Listener) -> None:
         self._listeners.append(listener)
@@ -133,9 +158,7 @@ class Host:
     # --- time and journal ---------------------------------------------------
 
     def elapsed(self) -> float:
-        if self.log:
-            return self.log.capture.elapsed()
-        return time.monotonic() - self._t0
+        return self.clock.now()
 
     def mark(self) -> int:
         """A position in the journal; wait/collect from here on."""
@@ -146,65 +169,43 @@ class Host:
         with self.lock:
             return self._journal[mark:]
 
-    def wait_for(self, pred: Callable[[Observed], bool], since: int,
-                 timeout: float) -> Observed | None:
-        """The first observed event at or after ``since`` satisfying ``pred``,
-        waiting up to ``timeout`` seconds; None on time-out."""
-        deadline = time.monotonic() + timeout
-        checked = since
-        with self._changed:
-            while True:
-                for obs in self._journal[checked:]:
-                    if pred(obs):
-                        return obs
-                checked = len(self._journal)
-                left = deadline - time.monotonic()
-                if left <= 0:
-                    return None
-                self._changed.wait(left)
-
     # --- traffic (called by channels, from reader threads) -----------------
 
     def received(self, port: str, data: bytes) -> float:
         t = self.log.received(port, data) if self.log else self.elapsed()
-        self._notify("rx", port, (t, data))
+        self._notify(Traffic(port, Direction.RX, t, data))
         return t
 
     def sent(self, port: str, data: bytes) -> float:
         t = self.log.sent(port, data) if self.log else self.elapsed()
-        self._notify("tx", port, (t, data))
+        self._notify(Traffic(port, Direction.TX, t, data))
         return t
 
     def observe(self, t: float, port: str, ev: Event) -> None:
-        with self._changed:
+        with self.changed:
             obs = Observed(len(self._journal), t, port, ev)
             self._journal.append(obs)
             self.model.apply(port, ev, t)
-            self._changed.notify_all()
+            self.changed.notify_all()
         if self.log:
             self.log.event(t, port, ev)
-        self._notify("event", port, obs)
+        self._notify(obs)
 
-    def sim_event(self, event: dict) -> None:
-        """An event of the embedded simulator (called from its own thread).
-        Only plant events (moved, refused) are kept: the bus events (one
-        per collided byte) would drown them."""
-        if event.get("event") not in SIM_PLANT_EVENTS:
-            return
-        with self.lock:
-            self.model.apply_sim(event)
+    def _verdict(self, verdict: PlantVerdict) -> None:
         if self.log:
-            self.log.note("sim", json.dumps(event, sort_keys=True))
-        self._notify("sim", "sim", event)
+            self.log.note("sim", verdict.describe())
+        self._notify(SimVerdict(verdict))
 
     def link_state(self, port: str, state: LinkState, detail: str) -> None:
         text = f"{state.value} {detail}".strip()
         t = self.log.state(port, text) if self.log else self.elapsed()
-        self._notify("state", port, (state, detail, t))
+        with self.changed:
+            self.changed.notify_all()  # a waiter may be waiting on this port
+        self._notify(PortChanged(port, state, detail, t))
 
-    def _notify(self, kind: str, port: str, payload: Any) -> None:
+    def _notify(self, event: HostEvent) -> None:
         for listener in list(self._listeners):
-            listener(kind, port, payload)
+            listener(event)
 
     # --- replay ----------------------------------------------------------------
 
@@ -214,28 +215,31 @@ class Host:
         their recorded time stamps (the console's ``--replay``): received
         bytes go through a parser, sent bytes and state changes to the
         listeners. Nothing is written to a port. Returns records played."""
+        import time
+
         parsers: dict[str, ReplyParser] = {}
         start, n, last = time.monotonic(), 0, 0.0
+        stop = cancel or threading.Event()
         for rec in records:
-            if cancel is not None and cancel.is_set():
+            if stop.is_set():
                 break
-            if realtime:
-                time.sleep(max(0.0, rec.t - (time.monotonic() - start)))
+            if realtime and stop.wait(max(0.0, rec.t - (time.monotonic() - start))):
+                break
             last = rec.t
             n += 1
             if rec.kind == "rx":
-                self._notify("rx", rec.port, (rec.t, rec.data))
+                self._notify(Traffic(rec.port, Direction.RX, rec.t, rec.data))
                 for ev in parsers.setdefault(rec.port, ReplyParser()).feed(rec.data):
                     self.observe(rec.t, rec.port, ev)
             elif rec.kind == "tx":
-                self._notify("tx", rec.port, (rec.t, rec.data))
+                self._notify(Traffic(rec.port, Direction.TX, rec.t, rec.data))
             elif rec.kind == "state":
                 word, _, detail = rec.text.partition(" ")
                 try:
                     state = LinkState(word)
                 except ValueError:
                     continue
-                self._notify("state", rec.port, (state, detail, rec.t))
+                self._notify(PortChanged(rec.port, state, detail, rec.t))
         for port, parser in parsers.items():
             for ev in parser.flush():
                 self.observe(last, port, ev)

@@ -1,25 +1,32 @@
 """A serial link that survives its port: open, read in a thread, reconnect.
 
 Any pyserial URL or device works the same (``/dev/ttyUSB0``, a pty path,
-``socket://host:port``, ``rfc2217://``, ``loop://``): the link calls
-``serial.serial_for_url``. Like ``serial.threaded.ReaderThread`` the
-thread only moves bytes; what they mean is the business of the callback
-(see :mod:`hexbot.host.channel`). When the port fails the link reports
-``LOST``, keeps retrying every ``retry_s`` seconds and reports ``CONNECTED``
-again when the port is back; nothing else in the host has to care.
+``socket://host:port``, ``rfc2217://``, ``loop://``, and the embedded
+simulator's ``hexbot-sim://``): the link calls ``serial.serial_for_url``.
+Like ``serial.threaded.ReaderThread`` the thread only moves bytes; what
+they mean is the business of the callback (the host's channel: parser,
+journal, logs). When the port fails the link reports ``LOST``, keeps
+retrying every ``retry_s`` seconds and reports ``CONNECTED`` again when the
+port is back; nothing else in the host has to care.
+
+A *stepped* simulated port (``hexbot-sim://...?speed=0``) has no time of its
+own: virtual time moves only when someone waits. Such a link reads no thread
+at all; the session's clock advances the simulator and calls :meth:`Link.pump`,
+so the same session gives the same trace.
 """
 
 from __future__ import annotations
 
 import enum
 import threading
-import time
 from collections.abc import Callable
 from dataclasses import dataclass
 
 import serial
 
 from hexbot.errors import LinkUnavailableError
+from hexbot.hil_sim import urlhandler
+from hexbot.protocol.simulation import SimulatorAccess
 
 _PARITY = {"N": serial.PARITY_NONE, "E": serial.PARITY_EVEN, "O": serial.PARITY_ODD,
            "M": serial.PARITY_MARK, "S": serial.PARITY_SPACE}
@@ -61,6 +68,7 @@ class PortSettings:
 
     def open(self, timeout: float) -> serial.SerialBase:
         """Open the port; LinkUnavailableError (with the cause) if it cannot."""
+        urlhandler.register()
         try:
             return serial.serial_for_url(
                 self.url, baudrate=self.baud, parity=_PARITY[self.parity],
@@ -103,6 +111,7 @@ class Link:
         self._lock = threading.Lock()  # guards _port for writers
         self._stop = threading.Event()
         self._thread: threading.Thread | None = None
+        self._state_changed = threading.Condition()
         self.state = LinkState.CLOSED
         self.detail = ""
         self.bytes_in = 0
@@ -112,19 +121,66 @@ class Link:
 
     def start(self, wait_s: float = 0.0) -> Link:
         """Start the reader thread; optionally wait until connected (raises
-        LinkUnavailableError with the last failure if it does not happen)."""
+        LinkUnavailableError with the last failure if it does not happen).
+        A stepped simulated port is opened here, at once, and gets no thread."""
+        if self._port is not None and self.stepped:
+            return self
+        if self._port is None and self.settings.url.startswith(urlhandler.SCHEME + "://"):
+            self._open_now()  # in-process: there or not, no point in retrying
+            if self.stepped:
+                return self
         if self._thread is None or not self._thread.is_alive():
             self._stop.clear()
             self._thread = threading.Thread(target=self._run, name=f"link {self.settings.url}",
                                             daemon=True)
             self._thread.start()
         if wait_s > 0:
-            deadline = time.monotonic() + wait_s
-            while self.state is not LinkState.CONNECTED and time.monotonic() < deadline:
-                time.sleep(0.01)
+            with self._state_changed:
+                self._state_changed.wait_for(lambda: self.state is LinkState.CONNECTED, wait_s)
             if self.state is not LinkState.CONNECTED:
                 raise LinkUnavailableError(self.detail or f"cannot open {self.settings.url}")
         return self
+
+    def _open_now(self) -> None:
+        self._set_state(LinkState.CONNECTING, self.settings.describe())
+        try:
+            port = self.settings.open(0)
+        except LinkUnavailableError as exc:
+            self._set_state(LinkState.LOST, str(exc))
+            raise
+        with self._lock:
+            self._port = port
+        self._set_state(LinkState.CONNECTED, self.settings.describe())
+
+    @property
+    def simulator(self) -> SimulatorAccess | None:
+        """The simulator-only interface of the open port, if it has one."""
+        access = getattr(self._port, "hexbot_sim", None)
+        return access if isinstance(access, SimulatorAccess) else None
+
+    @property
+    def stepped(self) -> bool:
+        """True for a port whose virtual time moves only when pumped."""
+        access = self.simulator
+        return access is not None and access.stepped
+
+    def pump(self) -> None:
+        """Stepped ports: hand what the port holds to the data callback."""
+        with self._lock:
+            port = self._port
+            if port is None:
+                return
+            try:
+                waiting = port.in_waiting
+                data = port.read(waiting) if waiting else b""
+            except (serial.SerialException, OSError) as exc:
+                self._drop_locked(f"read failed: {exc}")
+                return
+        if data:
+            self.bytes_in += len(data)
+            self._on_data(data)
+        else:
+            self._on_idle()
 
     @property
     def connected(self) -> bool:
@@ -167,7 +223,9 @@ class Link:
     def _set_state(self, state: LinkState, detail: str) -> None:
         if state is self.state and detail == self.detail:
             return
-        self.state, self.detail = state, detail
+        with self._state_changed:
+            self.state, self.detail = state, detail
+            self._state_changed.notify_all()
         self._on_state(state, detail)
 
     def _drop_locked(self, why: str | None) -> None:
@@ -182,17 +240,21 @@ class Link:
 
     def _run(self) -> None:
         while not self._stop.is_set():
-            if self.state is not LinkState.LOST:
-                self._set_state(LinkState.CONNECTING, self.settings.describe())
-            try:
-                port = self.settings.open(self.poll_s)
-            except LinkUnavailableError as exc:
-                self._set_state(LinkState.LOST, str(exc))
-                self._stop.wait(self.retry_s)
-                continue
             with self._lock:
-                self._port = port
-            self._set_state(LinkState.CONNECTED, self.settings.describe())
+                port = self._port  # opened by start() already
+            if port is None:
+                if self.state is not LinkState.LOST:
+                    self._set_state(LinkState.CONNECTING, self.settings.describe())
+                try:
+                    port = self.settings.open(self.poll_s)
+                except LinkUnavailableError as exc:
+                    self._set_state(LinkState.LOST, str(exc))
+                    self._stop.wait(self.retry_s)
+                    continue
+                with self._lock:
+                    self._port = port
+                self._set_state(LinkState.CONNECTED, self.settings.describe())
+            port.timeout = self.poll_s
             self._read_until_failure(port)
             if not self._stop.is_set():
                 self._stop.wait(self.retry_s)

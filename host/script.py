@@ -5,7 +5,10 @@ spaces. The whole file is checked before anything is sent, so a typo on
 line 40 does not leave the cluster half-configured. Execution stops at the
 first failed step. Grammar (``[...]`` optional, ``ID...`` one or more)::
 
-    timeout S                      default wait for the following steps (5 s)
+    timeout S                      wait S for the following steps' replies and
+                                   expectations (default: replies as long as the
+                                   protocol says each function takes, 5 s for
+                                   expectations)
     select ID...                   Select(ids) (0 = all); expects their ACKs
     FUNCTION [ARG...]              send a function by name or code and expect
                                    its ACK from every selected module
@@ -14,8 +17,10 @@ first failed step. Grammar (``[...]`` optional, ``ID...`` one or more)::
     post FUNCTION [ARG...]         send without waiting for anything
     status                         Status(); expects a STA from each selected module
     rotate cw|ccw JOINT mobile ID substrate ID
-                                   67/68 about a lattice joint; body indices from
-                                   each module's last status, thesis timings
+                                   67/68 about a lattice joint: sets the roles,
+                                   body indices from each module's last status,
+                                   thesis timings; verified (plant on the
+                                   simulator, re-localization elsewhere)
     wait S                         let S seconds pass (replies keep arriving)
     expect ack CODE [from ID...] [within S]
     expect err CODE [REASON] [from ID...] [within S]
@@ -31,16 +36,17 @@ a reply that arrived during a ``wait`` still counts.
 
 from __future__ import annotations
 
-import threading
-import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
 from hexbot.errors import FrameError, HexBotError, ScenarioError
-from hexbot.host import commands
+from hexbot.host import workflows
+from hexbot.host.commands import parse_command
 from hexbot.host.describe import describe_event
-from hexbot.host.host import IR, Host, Observed
+from hexbot.host.events import Observed
+from hexbot.host.host import IR
+from hexbot.host.session import Session, select
 from hexbot.protocol.codes import ErrorCode, lookup
 from hexbot.protocol.frames import Command
 from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
@@ -136,14 +142,14 @@ def _parse_line(line: str, where: str, number: int) -> Step:  # noqa: C901 - one
         elif verb == "select":
             if not rest:
                 raise ScenarioError(f"{where}: select needs at least one module id (0 = all)")
-            cmd = commands.select(*[_int(w, "module id", where) for w in rest])
+            cmd = select(*[_int(w, "module id", where) for w in rest])
         elif verb in ("send", "post"):
-            cmd = commands.parse_command(rest)
+            cmd = parse_command(rest)
         elif verb == "status":
             if rest:
                 raise ScenarioError(f"{where}: status takes no arguments "
                                     "(use 'expect status ID ...' to check one)")
-            cmd = commands.status()
+            cmd = parse_command(["Status"])
         elif verb == "rotate":
             _parse_rotate(rest, where)
         elif verb == "expect":
@@ -151,7 +157,7 @@ def _parse_line(line: str, where: str, number: int) -> Step:  # noqa: C901 - one
         elif verb == "echo":
             pass
         else:
-            cmd = commands.parse_command(words)
+            cmd = parse_command(words)
             verb, rest = "send", words
     except FrameError as exc:
         raise ScenarioError(f"{where}: {exc}") from None
@@ -277,22 +283,27 @@ Printer = Callable[[str], None]
 
 
 class ScriptRunner:
-    def __init__(self, host: Host, name: str = "<script>", out: Printer = print,
-                 cancel: threading.Event | None = None, quiet: float = ALL_QUIET_S) -> None:
-        self.host = host
+    """Runs parsed steps over a :class:`~hexbot.host.session.Session`. Waits
+    for replies last as long as the protocol says each function takes,
+    unless the script set ``timeout S``; expectations wait ``within`` or
+    that time-out (5 s by default)."""
+
+    def __init__(self, session: Session, name: str = "<script>", out: Printer = print,
+                 quiet: float = ALL_QUIET_S) -> None:
+        self.session = session
+        self.host = session.host
         self.quiet = quiet
         self.name = name
         self.out = out
-        self.cancel = cancel
         self.timeout = DEFAULT_TIMEOUT
-        self.selection: list[int] | None = None  # None = legacy/all
-        self.mark = host.mark()
+        self.reply_timeout: float | None = None  # None: the protocol's bound per function
+        self.mark = self.host.mark()
         self.steps_done = 0
 
     def run(self, steps: list[Step]) -> None:
         """Run every step; ScriptFailed at the first failure."""
         for step in steps:
-            if self.cancel is not None and self.cancel.is_set():
+            if self.session.cancel.is_set():
                 raise ScriptFailed(f"{self.name}:{step.line}: cancelled")
             try:
                 result = self._step(step)
@@ -306,77 +317,52 @@ class ScriptRunner:
     def _fail(self, step: Step, why: str) -> ScriptFailed:
         return ScriptFailed(f"{self.name}:{step.line}: {step.text}: {why}")
 
-    def _step(self, step: Step) -> str:  # noqa: C901 - one branch a verb
+    def _step(self, step: Step) -> str:
         w = list(step.words)
         where = f"{self.name}:{step.line}"
         if step.verb == "timeout":
-            self.timeout = float(w[0])
+            self.timeout = self.reply_timeout = float(w[0])
             return ""
         if step.verb == "wait":
-            self._sleep(float(w[0]))
+            self.session.sleep(float(w[0]))
             return ""
         if step.verb == "echo":
             return " ".join(w)
         if step.verb == "post":
             assert step.command is not None
-            self.mark = self.host.send(step.command)
+            self.mark = self.session.send(step.command)
             return f"sent {step.command}"
-        if step.verb == "select":
-            ids = [int(x, 0) for x in w]
-            self.selection = None if ids == [0] else ids
-            return self._exchange(step, step.command)
-        if step.verb in ("send", "status"):
+        if step.verb in ("select", "send", "status"):
             return self._exchange(step, step.command)
         if step.verb == "rotate":
             direction, joint, mobile, substrate = _parse_rotate(w, where)
-            orient = {}
-            for ident in (mobile, substrate):
-                row = self.host.model.module(ident)
-                if row is None or row.orientation is None:
-                    raise self._fail(step, f"orientation of module {ident} unknown "
-                                           "(run 'status' after localizing)")
-                orient[ident] = row.orientation
-            cmd = commands.rotate(direction, joint, orient[mobile], orient[substrate])
-            self.selection = [substrate, mobile]
-            self._exchange(step, commands.select(substrate, mobile))
-            return self._exchange(step, cmd)
+            self.mark = self.host.mark()
+            return workflows.rotate(self.session, direction, joint, mobile,
+                                    substrate).describe()
         if step.verb == "expect":
             return self._expect(step, w, where)
         raise self._fail(step, f"unknown verb {step.verb}")  # parse_script prevents this
 
-    def _sleep(self, seconds: float) -> None:
-        end = time.monotonic() + seconds
-        while time.monotonic() < end:
-            if self.cancel is not None and self.cancel.is_set():
-                return
-            time.sleep(min(0.05, max(0.0, end - time.monotonic())))
-
     def _exchange(self, step: Step, cmd: Command | None) -> str:
         assert cmd is not None
         before = self.host.mark()
-        outcome = commands.exchange(self.host, cmd, modules=self.selection, count=1,
-                                    timeout=self.timeout, cancel=self.cancel)
+        broadcast = self.session.expected_replies(cmd) is None
+        outcome = self.session.exchange(cmd, timeout=self.reply_timeout)
         self.mark = before
-        if self.selection is None and outcome.ok:
-            # A broadcast: more modules may still answer; let them finish.
-            commands.collect_until_quiet(self.host, before, self.quiet, self.timeout,
-                                         self.cancel)
+        if broadcast and outcome.ok:
+            # Legacy mode: any number of modules may answer; let them finish.
+            self.session.collect(before, self.quiet, self.timeout)
             extra = [o for o in self.host.since(before) if o.port == IR
                      and isinstance(o.event, ErrorReply) and o.event.code == cmd.code]
             if extra:
                 raise self._fail(step, "; ".join(describe_event(o.event) for o in extra))
         if not outcome.ok:
-            raise self._fail(step, outcome.message)
+            raise self._fail(step, outcome.reason)
         return ", ".join(outcome.lines())
 
     def _wait(self, pred: Callable[[Observed], bool], within: float | None) -> Observed | None:
-        deadline = time.monotonic() + (self.timeout if within is None else within)
-        seen = self.mark
-        while True:
-            left = deadline - time.monotonic()
-            obs = self.host.wait_for(pred, seen, max(0.0, min(left, 0.1)))
-            if obs is not None or left <= 0 or (self.cancel and self.cancel.is_set()):
-                return obs
+        return self.session.wait_for(pred, self.mark,
+                                     self.timeout if within is None else within)
 
     def _expect(self, step: Step, w: list[str], where: str) -> str:  # noqa: C901
         kind, args = w[0].lower(), w[1:]
@@ -452,9 +438,8 @@ class ScriptRunner:
             n = int(args[0], 0)
             opts = _options(args[1:], where, _EXPECT_OPTIONS["placements"])
             within = float(opts["within"][0]) if "within" in opts else self.timeout
-            deadline = time.monotonic() + within
-            while len(self.host.model.placements) < n and time.monotonic() < deadline:
-                self._sleep(0.05)
+            self.session.clock.wait(lambda: len(self.host.model.placements) >= n
+                                    or self.session.cancel.is_set(), within)
             have = len(self.host.model.placements)
             if have < n:
                 raise self._fail(step, f"{have} of {n} modules reported a position "
@@ -462,7 +447,7 @@ class ScriptRunner:
             return f"{have} placed"
         if kind == "quiet":
             start = self.host.mark()
-            self._sleep(float(args[0]))
+            self.session.sleep(float(args[0]))
             bad = [o for o in self.host.since(start)
                    if isinstance(o.event, (ErrorReply, Garbage))]
             if bad:

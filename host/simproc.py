@@ -1,10 +1,12 @@
-"""The embedded simulator, run as a child process with pty ports.
+"""The simulator in another process, behind pty ports: the hardware path.
 
 ``hexbot sim SCENARIO --pty`` prints one JSON line
 ``{"ir": "/dev/pts/N", "uart1": {"3": "/dev/pts/M", ...}}`` and serves those
-ptys until it is stopped. Running it as a process (not a thread) keeps the
-console's event loop free of simulation work and lets the host open the
-simulator exactly like hardware, through pyserial.
+ptys until it is stopped. :class:`SimProcess` starts it and reads that
+line; the host then opens the ptys as it would open an RS232 converter and
+knows nothing else about the simulator (no plant verdicts, no truth): what
+works here works on real modules. The in-process simulator is the
+``hexbot-sim://`` URL instead.
 """
 
 from __future__ import annotations
@@ -19,14 +21,9 @@ import sys
 import tempfile
 import threading
 import time
-from collections.abc import Callable
 from dataclasses import dataclass
-from pathlib import Path
 
 from hexbot.errors import LinkUnavailableError
-
-DEFAULT_SCENARIO = "flower7"
-
 
 # Looked up before any fork: the child must not load libraries (another
 # thread of the console may hold the import or malloc lock at fork time).
@@ -48,19 +45,12 @@ class SimPorts:
 
 
 class SimProcess:
-    def __init__(self, scenario: str = DEFAULT_SCENARIO, seed: int | None = None,
-                 speed: float = 1.0, start_timeout: float = 60.0,
-                 on_event: Callable[[dict], None] | None = None) -> None:
+    def __init__(self, scenario: str = "flower7", seed: int | None = None,
+                 speed: float = 1.0, start_timeout: float = 60.0) -> None:
         self.scenario = scenario
         self.speed = speed
-        # Plant events ("moved", "refused", ...) come through a JSON-lines
-        # file the child appends to; a thread follows it (like tail -f).
-        self._events_dir = tempfile.TemporaryDirectory(prefix="hexbot-sim-")
-        self.events_path = Path(self._events_dir.name) / "events.jsonl"
-        self.on_event = on_event
-        self._closed = threading.Event()
         cmd = [sys.executable, "-m", "hexbot.cli", "sim", scenario, "--pty",
-               "--speed", f"{speed:g}", "--events", str(self.events_path)]
+               "--speed", f"{speed:g}"]
         if seed is not None:
             cmd += ["--seed", str(seed)]
         self.command = cmd
@@ -74,33 +64,6 @@ class SimProcess:
             self.close()
             raise
         threading.Thread(target=self._drain, daemon=True, name="sim stdout").start()
-        threading.Thread(target=self._follow_events, daemon=True, name="sim events").start()
-
-    def _follow_events(self) -> None:
-        pending = b""
-        handle = None
-        while not self._closed.is_set():
-            if handle is None:
-                try:
-                    handle = self.events_path.open("rb")
-                except OSError:
-                    self._closed.wait(0.1)
-                    continue
-            chunk = handle.read()
-            if not chunk:
-                self._closed.wait(0.05)
-                continue
-            pending += chunk
-            *lines, pending = pending.split(b"\n")
-            for line in lines:
-                try:
-                    event = json.loads(line)
-                except ValueError:
-                    continue  # the simulator's file, not ours: skip what we cannot read
-                if self.on_event is not None and isinstance(event, dict):
-                    self.on_event(event)
-        if handle is not None:
-            handle.close()
 
     def _spawn(self, cmd: list[str]) -> subprocess.Popen:
         """Start the child from a thread that lives until close(): Linux
@@ -189,8 +152,6 @@ class SimProcess:
             self._proc.stdout.close()
         self._stderr.close()
         self._release.set()
-        self._closed.set()
-        self._events_dir.cleanup()
 
     def __enter__(self) -> SimProcess:
         return self

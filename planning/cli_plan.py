@@ -12,6 +12,8 @@ import sys
 from typing import Any
 
 from hexbot.errors import ScenarioError
+from hexbot.host.endpoints import add_port_arguments
+from hexbot.host.workflows import Verify
 from hexbot.planning.commands import command_json, plan_to_commands
 from hexbot.planning.config_io import load_configuration
 from hexbot.planning.configuration import Configuration
@@ -38,14 +40,19 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="robust mode: the module fixed to the base, which never moves")
     parser.add_argument("--max-steps", type=int, default=200,
                         help="faithful modes: give up after this many time steps (default 200)")
-    hil = parser.add_argument_group("execution on the simulated cluster")
+    hil = parser.add_argument_group(
+        "execution (on the embedded simulator by default, or on --port: real modules or a pty)")
     hil.add_argument("--execute", action="store_true",
-                     help="localize the simulated cluster, send the plan's commands through "
-                          "the PC IR port and check every move against the plant")
-    hil.add_argument("--scenario", metavar="NAME_OR_FILE",
-                     help="simulator scenario for --execute; its module ids, orientations "
-                          "and base module are used, its cells must match INITIAL")
-    hil.add_argument("--seed", type=int, default=None, help="simulator seed (default: scenario's)")
+                     help="localize the cluster, check it is INITIAL, plan from it and send "
+                          "the plan's rotations through the port, verifying every move")
+    hil.add_argument("--reference", type=int, metavar="ID",
+                     help="the module that becomes (0,0) and never moves (default: the "
+                          "scenario's base module, else the lowest id)")
+    hil.add_argument("--verify", choices=[v.value for v in Verify], default="auto",
+                     help="how each move is checked: plant (simulator only), localize (any "
+                          "port), status (quick, blind to refused mechanics); default auto: "
+                          "plant on the embedded simulator, localize elsewhere")
+    add_port_arguments(parser, debug=False)
 
 
 def _cell(text: str) -> Cell:
@@ -140,43 +147,46 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-BOOT_S = 24.0  # firmware boot: id texts in 8 slots of 2.64 s from 2 s (docs/firmware.md)
-
-
 def run_execute(args: argparse.Namespace) -> int:
-    """Plan from the scenario's cluster, then execute on the simulator."""
-    from hexbot.hil_sim import Simulator, load_scenario
+    """Localize the cluster behind the port, plan from it, execute the plan."""
+    from hexbot.host.cli_common import session
+    from hexbot.host.workflows import localize
     from hexbot.planning.execute import configuration_of, execute
 
-    if not args.scenario:
-        raise ScenarioError("--execute needs --scenario NAME (the simulated cluster)")
-    sim = Simulator(load_scenario(args.scenario), seed=args.seed)
-    initial = configuration_of(sim)
     wanted = load_configuration(args.initial).cells
-    if wanted != initial.cells:
-        raise ScenarioError(
-            f"{args.initial} does not describe scenario {args.scenario}: cells "
-            f"{sorted(wanted)} vs {sorted(initial.cells)}")
-    base = sim.scenario.base
-    if args.mode == "robust" and base is not None:
-        args.fixed = sim.modules[base].position
-    plan = make_plan(args, initial)
-    if not plan.reached:
-        print(plan_text(plan, args.style))
-        print(f"hexbot plan: goal not reached, nothing executed: {plan.reason}",
-              file=sys.stderr)
-        return 1
-    if not args.json:
-        print(plan_text(plan, args.style))
-        print(f"executing on scenario {args.scenario}: boot, localize, then move by move")
-    sim.run(BOOT_S)
-    report = execute(plan, sim, log=None if args.json else print)
+    with session(args) as sess:
+        sim = sess.host.simulator
+        reference = args.reference
+        if reference is None:
+            reference = (sim.base if sim is not None and sim.base is not None
+                         else min(sess.learn() or {1}))
+        poses = localize(sess, reference)
+        initial = configuration_of(poses)
+        if wanted != initial.cells:
+            where = f"scenario {args.scenario}" if args.scenario else "the cluster"
+            raise ScenarioError(
+                f"{args.initial} does not describe {where}: cells "
+                f"{sorted(wanted)} vs localized {sorted(initial.cells)}")
+        if args.mode == "robust":
+            args.fixed = poses[reference].cell  # localization needs the reference to stay
+        plan = make_plan(args, initial)
+        if not plan.reached:
+            print(plan_text(plan, args.style))
+            print(f"hexbot plan: goal not reached, nothing executed: {plan.reason}",
+                  file=sys.stderr)
+            return 1
+        if not args.json:
+            print(plan_text(plan, args.style))
+            print(f"executing through {sess.host.channel().settings.url}: move by move, "
+                  f"verify {args.verify}")
+        report = execute(plan, sess, reference, verify=Verify(args.verify), poses=poses,
+                         log=None if args.json else print)
     if args.json:
         print(json.dumps({**plan_json(plan, args.style), "execution": report.as_json()}))
     else:
         done = sum(m.ok for m in report.moves)
-        print(f"executed {done}/{plan.move_count} moves in {report.sim_seconds:.1f} s of "
-              f"simulated time; goal {'reached' if report.reached else 'NOT reached'}")
+        print(f"executed {done}/{plan.move_count} moves in {report.seconds:.1f} s; "
+              f"goal {'reached' if report.reached else 'NOT reached'} (localized)")
     if not report.reached:
         print(f"hexbot plan: execution stopped: {report.failure}", file=sys.stderr)
         return 1

@@ -1,0 +1,315 @@
+"""The embedded simulator as a pyserial port.
+
+    serial.serial_for_url("hexbot-sim://flower7?seed=3&speed=0")
+
+opens a simulated cluster in this process and returns a port on the PC's
+IR transceiver, exactly as ``/dev/ttyUSB0`` would be on hardware (register
+the URL scheme first: :func:`hexbot.hil_sim.urlhandler.register`). URL forms:
+
+``hexbot-sim://SCENARIO[?seed=N][&speed=X]``
+    a new cluster of a built-in scenario or a TOML file
+    (``hexbot-sim:///abs/path.toml``). ``speed=0`` is *stepped*: virtual
+    time advances only while someone waits for bytes (``read`` with a
+    time-out, counted in simulated seconds) or calls ``hexbot_sim.advance``,
+    so the same calls give the same trace. ``speed=N`` (default 1) runs the
+    cluster on its own thread at N times real time.
+``hexbot-sim://@INSTANCE/uart1/ID``
+    module ID's control-board debug port (UART1, 4800 baud) on a cluster
+    this process already opened (``hexbot_sim.uart1_url(ID)`` makes it).
+
+Line settings are accepted and ignored, as on a pty: the simulated
+transceiver speaks 300 baud 8N1. What only a simulator knows (plant
+verdicts, true positions, actuators) is offered through ``port.hexbot_sim``
+(:class:`~hexbot.protocol.simulation.SimulatorAccess`); nothing else about
+this port differs from hardware. The cluster is not thread-safe: every
+access goes through one lock.
+"""
+
+from __future__ import annotations
+
+import itertools
+import threading
+import time
+import weakref
+from collections.abc import Callable
+from urllib.parse import parse_qs, urlsplit
+
+from serial.serialutil import PortNotOpenError, SerialBase, SerialException
+
+from hexbot.errors import HexBotError
+from hexbot.hil_sim.urlhandler import SCHEME
+from hexbot.protocol.simulation import Placement, PlantVerdict, verdict_from_record
+
+SLICE_S = 0.01  # simulated time per step: well under one 300-baud byte (33 ms)
+_instances: dict[int, weakref.ref[SimCluster]] = {}
+_numbers = itertools.count(1)
+
+
+class SimCluster:
+    """One simulated cluster shared by the ports opened on it; implements
+    :class:`~hexbot.protocol.simulation.SimulatorAccess`."""
+
+    def __init__(self, scenario: str, seed: int | None, speed: float) -> None:
+        from hexbot.hil_sim import Simulator, load_scenario
+
+        if speed < 0:
+            raise HexBotError(f"speed must be 0 or more, not {speed:g}")
+        self.simulator = Simulator(load_scenario(scenario), seed)
+        self.scenario = scenario
+        self.seed = self.simulator.seed
+        self.base = self.simulator.scenario.base
+        self.speed = speed
+        self.number = next(_numbers)
+        _instances[self.number] = weakref.ref(self)
+        self._lock = threading.RLock()
+        self.changed = threading.Condition(self._lock)
+        self._ir = bytearray()
+        self._uart1: dict[int, bytearray] = {m: bytearray() for m in self.simulator.modules}
+        self._verdicts: list[PlantVerdict] = []
+        self._records_seen = 0
+        self._subscribers: list[Callable[[PlantVerdict], None]] = []
+        self._closed = threading.Event()
+        self._thread: threading.Thread | None = None
+        if speed > 0:
+            self._thread = threading.Thread(target=self._pace, daemon=True,
+                                            name=f"{SCHEME} {scenario}")
+            self._thread.start()
+
+    # --- SimulatorAccess ---------------------------------------------------
+
+    @property
+    def stepped(self) -> bool:
+        return self.speed == 0
+
+    def now(self) -> float:
+        with self._lock:
+            return self.simulator.time
+
+    def advance(self, seconds: float) -> None:
+        if not self.stepped:
+            raise HexBotError("advance() is for stepped clusters (speed=0); this one "
+                              f"runs on its own at {self.speed:g}x real time")
+        self._run(seconds)
+
+    def module_ids(self) -> list[int]:
+        return sorted(self.simulator.modules)
+
+    def placements(self) -> dict[int, Placement]:
+        with self._lock:
+            return {m: Placement(mod.position, mod.orientation)
+                    for m, mod in self.simulator.modules.items()}
+
+    def verdicts(self, since: int = 0) -> list[PlantVerdict]:
+        with self._lock:
+            return self._verdicts[since:]
+
+    def subscribe(self, callback: Callable[[PlantVerdict], None]) -> None:
+        self._subscribers.append(callback)
+
+    def actuators(self, module_id: int) -> dict[str, list[int]]:
+        with self._lock:
+            return self.simulator.actuators(module_id)
+
+    def uart1_url(self, module_id: int) -> str:
+        if module_id not in self._uart1:
+            raise HexBotError(f"scenario {self.scenario} has no module {module_id} "
+                              f"(modules {self.module_ids()})")
+        return f"{SCHEME}://@{self.number}/uart1/{module_id}"
+
+    # --- the ports' side ---------------------------------------------------
+
+    def buffer(self, uart1: int | None) -> bytearray:
+        return self._ir if uart1 is None else self._uart1[uart1]
+
+    def write(self, uart1: int | None, data: bytes) -> None:
+        with self._lock:
+            if uart1 is None:
+                self.simulator.pc_write(data)
+            else:
+                self.simulator.debug_write(uart1, data)
+
+    def take(self, uart1: int | None, size: int) -> bytes:
+        with self._lock:
+            buf = self.buffer(uart1)
+            data = bytes(buf[:size])
+            del buf[:size]
+            return data
+
+    def wait_bytes(self, uart1: int | None, size: int, timeout: float | None) -> None:
+        """Until ``size`` bytes wait in the buffer or ``timeout`` passed:
+        simulated seconds when stepped, wall seconds when paced."""
+        buf = self.buffer(uart1)
+        if self.stepped:
+            if timeout is None:
+                while len(buf) < size and not self._closed.is_set():
+                    self._run(SLICE_S)
+                return
+            end = self.now() + timeout
+            while len(buf) < size and (left := end - self.now()) > 1e-9:
+                self._run(min(SLICE_S, left))
+            return
+        with self.changed:
+            self.changed.wait_for(lambda: len(buf) >= size or self._closed.is_set(), timeout)
+
+    def close(self) -> None:
+        if self._closed.is_set():
+            return
+        self._closed.set()
+        if self._thread is not None and self._thread is not threading.current_thread():
+            self._thread.join(timeout=5.0)
+        with self.changed:
+            self.changed.notify_all()
+        _instances.pop(self.number, None)
+
+    # --- running -------------------------------------------------------------
+
+    def _run(self, seconds: float) -> None:
+        with self._lock:
+            self.simulator.run(seconds)
+            fresh = self._collect()
+            self.changed.notify_all()
+        for verdict in fresh:
+            for callback in list(self._subscribers):
+                callback(verdict)
+
+    def _collect(self) -> list[PlantVerdict]:
+        sim = self.simulator
+        self._ir += sim.pc_read()
+        for module_id, buf in self._uart1.items():
+            buf += sim.debug_read(module_id)
+        fresh = [v for record in sim.events[self._records_seen:]
+                 if (v := verdict_from_record(record)) is not None]
+        self._records_seen = len(sim.events)
+        self._verdicts += fresh
+        return fresh
+
+    def _pace(self) -> None:
+        wall0, sim0 = time.monotonic(), self.now()
+        while not self._closed.is_set():
+            self._run(SLICE_S)
+            ahead = (self.now() - sim0) / self.speed - (time.monotonic() - wall0)
+            if ahead > 0:
+                self._closed.wait(ahead)
+
+
+def _attach(url: str) -> tuple[SimCluster, int | None, bool]:
+    """(cluster, UART1 module id or None for the IR port, whether this port owns it)."""
+    parts = urlsplit(url)
+    if parts.scheme != SCHEME:
+        raise SerialException(f"expected a {SCHEME}:// URL, got {url!r}")
+    target = parts.netloc + parts.path
+    if target.startswith("@"):
+        try:
+            number, kind, ident = target[1:].split("/")
+            if kind != "uart1":
+                raise ValueError(kind)
+            cluster = _instances[int(number)]()
+            module_id = int(ident)
+        except (ValueError, KeyError) as exc:
+            raise SerialException(f"{url}: no such simulated port in this process "
+                                  f"(expected {SCHEME}://@N/uart1/ID of an open cluster)") from exc
+        if cluster is None:
+            raise SerialException(f"{url}: the simulated cluster was closed")
+        if module_id not in cluster.module_ids():
+            raise SerialException(f"{url}: no module {module_id} in this cluster")
+        return cluster, module_id, False
+    if not target:
+        raise SerialException(f"{url}: name a scenario, e.g. {SCHEME}://flower7?speed=0")
+    options = {k: v[-1] for k, v in parse_qs(parts.query, keep_blank_values=True).items()}
+    unknown = set(options) - {"seed", "speed"}
+    if unknown:
+        raise SerialException(f"{url}: unknown option(s) {', '.join(sorted(unknown))} "
+                              "(seed, speed)")
+    try:
+        seed = int(options["seed"]) if "seed" in options else None
+        speed = float(options.get("speed", "1"))
+    except ValueError as exc:
+        raise SerialException(f"{url}: seed must be an integer and speed a number") from exc
+    try:
+        return SimCluster(target, seed, speed), None, True
+    except HexBotError as exc:  # bad scenario, missing firmware or C extension
+        raise SerialException(f"{url}: {exc}") from exc
+
+
+class Serial(SerialBase):
+    """A pyserial port on a simulated cluster (see the module docstring)."""
+
+    hexbot_sim: SimCluster
+
+    def open(self) -> None:
+        if self.is_open:
+            raise SerialException("port is already open")
+        if self._port is None:
+            raise SerialException("port must be configured before it can be used")
+        self.hexbot_sim, self._uart1, self._owner = _attach(self._port)
+        self.is_open = True
+
+    def close(self) -> None:
+        if not self.is_open:
+            return
+        self.is_open = False
+        if self._owner:
+            self.hexbot_sim.close()
+
+    def _reconfigure_port(self, force_update: bool = False) -> None:
+        pass  # a simulated wire has no line settings to change (as a pty)
+
+    @property
+    def in_waiting(self) -> int:
+        self._check_open()
+        return len(self.hexbot_sim.buffer(self._uart1))
+
+    def read(self, size: int = 1) -> bytes:
+        self._check_open()
+        if size <= 0:
+            return b""
+        self.hexbot_sim.wait_bytes(self._uart1, size, self._timeout)
+        return self.hexbot_sim.take(self._uart1, size)
+
+    def write(self, data: bytes) -> int:
+        self._check_open()
+        data = bytes(data)
+        self.hexbot_sim.write(self._uart1, data)
+        return len(data)
+
+    def flush(self) -> None:
+        self._check_open()
+
+    def reset_input_buffer(self) -> None:
+        self._check_open()
+        self.hexbot_sim.take(self._uart1, len(self.hexbot_sim.buffer(self._uart1)))
+
+    def reset_output_buffer(self) -> None:
+        self._check_open()
+
+    # Modem lines: nothing is wired to them on HexBot's RS232 converter.
+    def _update_rts_state(self) -> None:
+        pass
+
+    def _update_dtr_state(self) -> None:
+        pass
+
+    def _update_break_state(self) -> None:
+        pass
+
+    @property
+    def cts(self) -> bool:
+        return True
+
+    @property
+    def dsr(self) -> bool:
+        return True
+
+    @property
+    def ri(self) -> bool:
+        return False
+
+    @property
+    def cd(self) -> bool:
+        return True
+
+    def _check_open(self) -> None:
+        if not self.is_open:
+            raise PortNotOpenError()
+        if self.hexbot_sim._closed.is_set():
+            raise SerialException("the simulated cluster was closed")

@@ -1,0 +1,415 @@
+"""The one send-and-wait layer: a frame out, the replies it implies, a typed outcome.
+
+Everything that talks to modules goes through :class:`Session`: the
+console, ``hexbot send/monitor/run``, plan execution, the pytest plugin and
+the firmware tests. It works the same over hardware, a pty and the
+embedded simulator, on the wall clock or the simulator's virtual time (the
+host's :mod:`~hexbot.host.clock` decides); it waits on conditions, never in
+sleep loops.
+
+Which replies a command implies follows the addressing of the protocol
+(docs/protocol.md): after ``Select(ids)`` every selected module answers
+once, in the order of the list; after ``Select(0)`` every module of the
+cluster answers (so the session must know the cluster's ids: from the boot
+texts, from status replies, or from the caller); before any ``Select`` the
+modules speak the thesis' legacy dialect without ids and one reply is
+awaited. How long to wait comes from the protocol's timing
+(:func:`hexbot.protocol.timing.reply_timeout_s`), not from the caller.
+
+An :class:`Outcome` says what happened: acknowledged, refused (an ERR, the
+unused-code ACK ``N``, the control board's time-out ``~``), timed out
+(naming the modules that did not answer), port lost, or cancelled.
+"""
+
+from __future__ import annotations
+
+import enum
+import re
+import threading
+from collections.abc import Callable, Collection, Iterable
+from dataclasses import dataclass, field
+
+from hexbot.errors import (
+    CancelledError,
+    CommandRefusedError,
+    HexBotTimeoutError,
+    LinkUnavailableError,
+)
+from hexbot.host.describe import describe_event
+from hexbot.host.events import Observed
+from hexbot.host.host import IR, Host
+from hexbot.host.link import LinkState
+from hexbot.protocol import frames, timing, wire
+from hexbot.protocol.codes import CODES, ErrorCode, lookup
+from hexbot.protocol.frames import Command
+from hexbot.protocol.parser import Ack, ErrorReply, StatusReport, Text
+
+SELECT = lookup("Select").code
+STATUS = lookup("Status").code
+#: Before the first Select nobody has an id on the air: one reply is awaited.
+LEGACY = None
+#: Listen this long after a broadcast whose answers cannot be counted.
+QUIET_S = 1.5
+#: After the last reply, listen this long for replies nobody asked for.
+SETTLE_S = 0.0
+
+
+class OutcomeKind(enum.Enum):
+    ACKNOWLEDGED = "acknowledged"
+    REFUSED = "refused"
+    TIMED_OUT = "timed out"
+    PORT_LOST = "port lost"
+    CANCELLED = "cancelled"
+
+
+class RefusalCause(enum.Enum):
+    ERROR = "error reply"  # ERR code reason
+    UNUSED_CODE = "unused code"  # ACK 'N': the module knows no such function
+    CONTROL_TIMEOUT = "control board time-out"  # ACK '~'
+
+
+@dataclass(frozen=True)
+class Refusal:
+    module: int | None
+    cause: RefusalCause
+    error: ErrorCode | None = None
+
+    def describe(self) -> str:
+        who = f"module {self.module}" if self.module is not None else "a module"
+        if self.cause is RefusalCause.ERROR:
+            name = self.error.name if self.error is not None else "?"
+            return f"{who}: ERR {name}"
+        return f"{who}: {self.cause.value}"
+
+
+@dataclass(frozen=True)
+class Outcome:
+    command: Command
+    kind: OutcomeKind
+    replies: tuple[Observed, ...] = ()
+    missing: tuple[int, ...] = ()  # modules that did not answer in time
+    refusals: tuple[Refusal, ...] = ()
+    waited: float = 0.0  # session seconds from sending to the verdict
+    detail: str = ""  # port lost: why
+
+    @property
+    def ok(self) -> bool:
+        return self.kind is OutcomeKind.ACKNOWLEDGED
+
+    @property
+    def reason(self) -> str:
+        """One line: what happened."""
+        name = CODES[self.command.code].name if self.command.code in CODES else "?"
+        head = f"{name} ({self.command.code})"
+        n = len(self.replies)
+        if self.kind is OutcomeKind.ACKNOWLEDGED:
+            return f"{head}: {n} repl{'y' if n == 1 else 'ies'}, acknowledged"
+        if self.kind is OutcomeKind.REFUSED:
+            return f"{head}: refused: " + "; ".join(r.describe() for r in self.refusals)
+        if self.kind is OutcomeKind.TIMED_OUT:
+            who = (f"no reply from module{'s' if len(self.missing) > 1 else ''} "
+                   f"{', '.join(map(str, self.missing))}" if self.missing else "no reply")
+            return f"{head}: {who} within {self.waited:.1f} s ({n} received)"
+        if self.kind is OutcomeKind.PORT_LOST:
+            return f"{head}: port lost ({self.detail})" if self.detail else f"{head}: port lost"
+        return f"{head}: cancelled"
+
+    def lines(self) -> list[str]:
+        return [describe_event(r.event) for r in self.replies]
+
+    def raise_for_status(self) -> Outcome:
+        """The outcome if acknowledged; otherwise the matching error."""
+        if self.kind is OutcomeKind.ACKNOWLEDGED:
+            return self
+        if self.kind is OutcomeKind.REFUSED:
+            raise CommandRefusedError(self.reason)
+        if self.kind is OutcomeKind.TIMED_OUT:
+            raise HexBotTimeoutError(self.reason)
+        if self.kind is OutcomeKind.PORT_LOST:
+            raise LinkUnavailableError(self.reason)
+        raise CancelledError(self.reason)
+
+
+@dataclass
+class _Collector:
+    """The replies to one command, as they arrive."""
+
+    code: int
+    wanted: set[int] | None  # module ids still to answer; None = count only
+    need: int
+    port: str
+    replies: list[Observed] = field(default_factory=list)
+    extra: list[Observed] = field(default_factory=list)
+    checked: int = 0
+
+    def take(self, journal: list[Observed]) -> None:
+        for obs in journal[self.checked:]:
+            if self._is_reply(obs):
+                ident = _module_of(obs.event)
+                if self.wanted is not None and ident not in self.wanted:
+                    self.extra.append(obs)
+                    continue
+                if self.wanted is not None:
+                    self.wanted.discard(ident)  # type: ignore[arg-type]
+                if len(self.replies) < self.need:
+                    self.replies.append(obs)
+                else:
+                    self.extra.append(obs)
+        self.checked = len(journal)
+
+    @property
+    def complete(self) -> bool:
+        return len(self.replies) >= self.need
+
+    def _is_reply(self, obs: Observed) -> bool:
+        if obs.port != self.port:  # a control board's debug port echoes too
+            return False
+        ev = obs.event
+        if isinstance(ev, Ack):
+            return ev.code in (self.code, wire.UNUSED, wire.TIMEOUT)
+        if isinstance(ev, ErrorReply):
+            return ev.code == self.code
+        return isinstance(ev, StatusReport) and self.code == STATUS
+
+
+def _module_of(event: object) -> int | None:
+    if isinstance(event, StatusReport):
+        return event.module_id
+    return getattr(event, "module", None)
+
+
+def _refusal(obs: Observed) -> Refusal | None:
+    ev = obs.event
+    if isinstance(ev, ErrorReply):
+        try:
+            error = ErrorCode(ev.reason)
+        except ValueError:
+            error = None
+        return Refusal(ev.module, RefusalCause.ERROR, error)
+    if isinstance(ev, Ack) and ev.code == wire.UNUSED:
+        return Refusal(ev.module, RefusalCause.UNUSED_CODE)
+    if isinstance(ev, Ack) and ev.code == wire.TIMEOUT:
+        return Refusal(ev.module, RefusalCause.CONTROL_TIMEOUT)
+    return None
+
+
+class Session:
+    """Send and wait over a started :class:`~hexbot.host.host.Host`.
+
+    ``modules`` are the cluster's ids when the caller knows them (a
+    scenario, a previous run); the session also learns them from boot
+    texts and replies.
+    """
+
+    def __init__(self, host: Host, modules: Iterable[int] = ()) -> None:
+        self.host = host
+        self.known: set[int] = set(modules)
+        #: after Select: the ids that answer, in rank order (ALL -> every known id)
+        self.selection: tuple[int, ...] | None = LEGACY
+        self.cancel = threading.Event()
+
+    # --- time ----------------------------------------------------------------
+
+    @property
+    def clock(self):
+        return self.host.clock
+
+    def now(self) -> float:
+        return self.host.clock.now()
+
+    def sleep(self, seconds: float) -> None:
+        """Let ``seconds`` pass (replies keep arriving); returns early on cancel."""
+        self.host.clock.wait(self.cancel.is_set, seconds)
+
+    def wait_for(self, predicate: Callable[[Observed], bool], since: int,
+                 timeout: float) -> Observed | None:
+        """The first journal event from ``since`` on that satisfies ``predicate``."""
+        found: list[Observed] = []
+        checked = since
+
+        def ready() -> bool:
+            nonlocal checked
+            for obs in self.host.since(checked):
+                checked = obs.seq + 1
+                if predicate(obs):
+                    found.append(obs)
+                    return True
+            return self.cancel.is_set() or self._lost(IR) is not None
+
+        self.host.clock.wait(ready, timeout)
+        return found[0] if found else None
+
+    def collect(self, since: int, quiet: float = QUIET_S, timeout: float = 60.0) -> list[Observed]:
+        """Events from ``since`` until none arrived for ``quiet`` seconds (or
+        ``timeout`` passed): for answers whose number nobody can know."""
+        end = self.now() + timeout
+        seen = [self.host.mark()]
+
+        def news() -> bool:
+            return self.host.mark() != seen[0] or self.cancel.is_set()
+
+        while self.now() < end and not self.cancel.is_set():
+            if not self.host.clock.wait(news, min(quiet, end - self.now())):
+                break  # quiet
+            seen[0] = self.host.mark()
+        return self.host.since(since)
+
+    def wake(self) -> None:
+        """Cancel the current wait (the console's Escape)."""
+        self.cancel.set()
+        self.host.clock.wake()
+
+    # --- the cluster's ids -----------------------------------------------------
+
+    def learn(self) -> set[int]:
+        """Add the ids the replies so far revealed to ``known``."""
+        for obs in self.host.since(0):
+            ident = _module_of(obs.event) or listening_id(obs.event)
+            if ident:
+                self.known.add(ident)
+        return self.known
+
+    def wait_booted(self, expected: Collection[int] | None = None,
+                    timeout: float | None = None, quiet: float = 2.0) -> set[int]:
+        """Wait for a freshly started cluster's boot texts. With ``expected``
+        ids, until each has said ``COMM. LISTENING ID=nn`` (the firmware
+        staggers those texts in per-id slots, so silence alone can end too
+        early when ids leave gaps); otherwise until ``quiet`` seconds pass
+        without an event. Commands sent while modules boot are lost. Returns
+        the ids heard."""
+        heard: set[int] = set()
+        if not expected:
+            self.collect(0, quiet, timeout or 60.0)
+        else:
+            missing = set(expected)
+            checked = 0
+
+            def ready() -> bool:
+                nonlocal checked
+                for obs in self.host.since(checked):
+                    checked = obs.seq + 1
+                    ident = listening_id(obs.event)
+                    if ident is not None:
+                        heard.add(ident)
+                        missing.discard(ident)
+                return not missing or self.cancel.is_set()
+
+            limit = timeout if timeout is not None else timing.boot_seconds(expected) + 5.0
+            self.host.clock.wait(ready, limit)
+        self.known |= heard | set(expected or ())
+        return heard
+
+    # --- send and wait -----------------------------------------------------------
+
+    def expected_replies(self, command: Command) -> tuple[int, ...] | None:
+        """The ids that answer ``command`` (rank order); None: legacy mode, one reply."""
+        if command.code == SELECT:
+            ids = [a for a in command.args if a != wire.UNUSED]
+            if ids[:1] == [0]:
+                return tuple(sorted(self.known))
+            return tuple(ids)
+        return self.selection
+
+    def exchange(self, command: Command, *, modules: Iterable[int] | None = None,
+                 count: int | None = None, timeout: float | None = None,
+                 settle: float = SETTLE_S, strict: bool = True, port: str = IR) -> Outcome:
+        """Send ``command`` and wait for the replies its addressing implies
+        (or one from each of ``modules``, or ``count`` of any module)."""
+        if modules is not None:
+            ids: tuple[int, ...] | None = tuple(modules)
+        elif count is not None:
+            ids = None
+        else:
+            ids = self.expected_replies(command)
+        need = len(ids) if ids is not None else (count or 1)
+        if ids is not None and not ids:
+            raise CommandRefusedError(
+                f"{command}: no module would answer (Select(0) with no known module ids: "
+                "wait for the boot texts or name the modules)")
+        if timeout is None:
+            timeout = self.reply_timeout(command, ids, need)
+        self.cancel.clear()
+        started = self.now()
+        try:
+            mark = self.host.send(command, port, strict=strict)
+        except LinkUnavailableError as exc:
+            return Outcome(command, OutcomeKind.PORT_LOST, detail=str(exc))
+        got = _Collector(command.code, set(ids) if ids is not None else None, need, port,
+                         checked=mark)
+
+        def ready() -> bool:
+            with self.host.lock:
+                got.take(self.host.since(0))
+            return got.complete or self.cancel.is_set() or self._lost(port) is not None
+
+        self.host.clock.wait(ready, timeout)
+        if got.complete and settle > 0 and not self.cancel.is_set():
+            self.host.clock.wait(lambda: self.cancel.is_set() or self._lost(port) is not None,
+                                 settle)
+            with self.host.lock:
+                got.take(self.host.since(0))
+        outcome = self._judge(command, got, ids, started, port)
+        if outcome.ok and command.code == SELECT:
+            self.selection = ids
+        return outcome
+
+    def request(self, command: Command, **kwargs) -> Outcome:
+        """:meth:`exchange`, raising the outcome's error unless acknowledged."""
+        return self.exchange(command, **kwargs).raise_for_status()
+
+    def send(self, command: Command | bytes, *, strict: bool = True, port: str = IR) -> int:
+        """Send without waiting (the composer's Send, a script's ``post``);
+        returns the journal mark taken just before."""
+        return self.host.send(command, port, strict=strict)
+
+    def reply_timeout(self, command: Command, ids: tuple[int, ...] | None, need: int) -> float:
+        """Transmission of the frame plus the protocol's bound for its replies."""
+        frame = timing.wire_seconds(wire.PC_FRAME_LEN, timing.BAUD_IR)
+        code = command.code if command.code in CODES else STATUS
+        if ids is not None and command.code != SELECT and self.selection == tuple(
+                sorted(self.known)) and ids:
+            last_rank = max(ids) - 1  # after Select(0) a module's rank is its id - 1
+        else:
+            last_rank = None
+        return frame + timing.reply_timeout_s(code, max(need, 1), command.args,
+                                              last_rank=last_rank)
+
+    def _lost(self, port: str) -> str | None:
+        ch = self.host.channels.get(port)
+        if ch is None:
+            return f"no {port} port"
+        if ch.link.state in (LinkState.LOST, LinkState.CLOSED):
+            return ch.link.detail or ch.link.state.value
+        return None
+
+    def _judge(self, command: Command, got: _Collector, ids: tuple[int, ...] | None,
+               started: float, port: str) -> Outcome:
+        waited = self.now() - started
+        replies = tuple(got.replies)
+        refusals = tuple(r for obs in replies if (r := _refusal(obs)) is not None)
+        if refusals:
+            return Outcome(command, OutcomeKind.REFUSED, replies, refusals=refusals,
+                           waited=waited)
+        if got.complete:
+            return Outcome(command, OutcomeKind.ACKNOWLEDGED, replies, waited=waited)
+        missing = tuple(sorted(got.wanted)) if got.wanted else ()
+        if self.cancel.is_set():
+            return Outcome(command, OutcomeKind.CANCELLED, replies, missing, waited=waited)
+        lost = self._lost(port)
+        if lost is not None:
+            return Outcome(command, OutcomeKind.PORT_LOST, replies, missing, waited=waited,
+                           detail=lost)
+        return Outcome(command, OutcomeKind.TIMED_OUT, replies, missing, waited=waited)
+
+
+def listening_id(event: object) -> int | None:
+    """The module id of a ``COMM. LISTENING ID=nn ...`` boot text."""
+    if isinstance(event, Text) and event.phrase == wire.TEXT_COMM_LISTENING.rstrip():
+        m = re.search(r"\bID=(\d+)", event.tail)
+        if m and int(m.group(1)):
+            return int(m.group(1))
+    return None
+
+
+def select(*ids: int) -> Command:
+    return frames.select(list(ids))

@@ -1,0 +1,200 @@
+"""The thesis' workflows, written once: localize, set roles, rotate and verify.
+
+The console, ``hexbot run`` scripts and plan execution call these; each
+step goes through the :class:`~hexbot.host.session.Session` and a step that
+is not acknowledged stops the workflow with its typed error.
+
+Rotation (codes 67/68) moves a *mobile* module 120 degrees about a joint it
+shares with a *substrate*: both must have their role (SetRole), both must
+be selected, and each needs the pivot joint in its own body frame, which
+needs its orientation. So a rotation refuses to start when either
+orientation is unknown, or stale (the module moved since it last reported
+it); and it is not "done" when the modules acknowledge, only when it is
+verified:
+
+- ``plant``: on the embedded simulator, the plant's verdict (moved where,
+  facing where; or refused, and why);
+- ``localize``: on any port, localize the cluster again and compare where
+  the mobile module says it is with where the rotation takes it; the only
+  check a PC has on real modules (costs one localization window);
+- ``status``: on any port, a status query of the mobile module: it must say
+  it moved (unlocalized, no error). Quick, but blind to a rotation the
+  mechanics refused; a later localization catches that.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass
+
+from hexbot.errors import CommandRefusedError, HexBotTimeoutError
+from hexbot.host.session import Session, select
+from hexbot.protocol import frames
+from hexbot.protocol.codes import ErrorCode, Role
+from hexbot.protocol.parser import StatusReport
+from hexbot.protocol.rotation import combined_rotation, direction_of
+from hexbot.protocol.rotation_geometry import Rotation
+from hexbot.protocol.simulation import Moved, Refused
+
+Cell = tuple[int, int]
+#: The plant resolves a rotation once both halves' magnets are off:
+#: Table 3-1's 220 ms plus the comm board's reply; this bounds the wait.
+VERDICT_WAIT_S = 3.0
+
+
+@dataclass(frozen=True)
+class Pose:
+    cell: Cell
+    orientation: int  # Yref 0..5
+
+
+class Verify(enum.Enum):
+    AUTO = "auto"  # plant on a simulator, localize elsewhere
+    PLANT = "plant"
+    LOCALIZE = "localize"
+    STATUS = "status"
+
+
+@dataclass(frozen=True)
+class RotationResult:
+    mobile: int
+    substrate: int
+    expected: Pose
+    verified_by: Verify
+    got: Pose | None  # where the check found the module (None: status check)
+
+    def describe(self) -> str:
+        where = (f" at {self.got.cell} facing {self.got.orientation}" if self.got else "")
+        return f"module {self.mobile} moved{where} (verified by {self.verified_by.value})"
+
+
+# --- localization -----------------------------------------------------------
+
+
+def localize(session: Session, reference: int) -> dict[int, Pose]:
+    """Make ``reference`` the origin, localize the whole cluster with one
+    code 66, read everyone's status; returns every module's pose. Fails
+    when a module answers NOT_HEARD or is not localized afterwards."""
+    session.request(select(reference))
+    session.request(frames.make("Ref"))
+    session.request(select(0))
+    session.request(frames.make("Localize"))
+    return poses(session)
+
+
+def poses(session: Session) -> dict[int, Pose]:
+    """Status of every selected module (Select(0) first); their poses."""
+    out = session.request(frames.make("Status"))
+    found: dict[int, Pose] = {}
+    lost: list[int] = []
+    for obs in out.replies:
+        ev = obs.event
+        assert isinstance(ev, StatusReport)
+        if ev.localized:
+            found[ev.module_id] = Pose((ev.x, ev.y), ev.yref)
+        else:
+            lost.append(ev.module_id)
+    if lost:
+        raise CommandRefusedError(f"not localized after Localize: module(s) "
+                                  f"{', '.join(map(str, sorted(lost)))}")
+    return found
+
+
+# --- roles and rotation ----------------------------------------------------------
+
+
+def set_role(session: Session, module: int, role: Role) -> None:
+    """Give ``module`` a role (code 71), unless its last reply showed it."""
+    row = session.host.model.module(module)
+    if row is not None and row.role == role.letter:
+        return
+    session.request(select(module))
+    session.request(frames.make("SetRole", int(role)))
+
+
+def known_pose(session: Session, module: int) -> Pose:
+    """The module's pose as the replies last showed it; refuses when it is
+    unknown or stale (moved since)."""
+    row = session.host.model.module(module)
+    if row is None or row.position is None or row.orientation is None:
+        raise CommandRefusedError(f"orientation of module {module} unknown: localize first")
+    if not row.localized:
+        raise CommandRefusedError(f"orientation of module {module} is stale (it moved since "
+                                  "it was localized): localize again first")
+    return Pose(row.position, row.orientation)
+
+
+def rotate(session: Session, direction: str, joint: int, mobile: int, substrate: int, *,
+           verify: Verify = Verify.AUTO, reference: int | None = None) -> RotationResult:
+    """Rotate ``mobile`` about global ``joint`` on ``substrate`` and verify it.
+
+    Raises CommandRefusedError before sending anything when an orientation
+    is unknown or stale or the substrate is not where the rotation needs
+    it; and after, when the plant refused or the check disagrees."""
+    d = direction_of(direction)
+    mob, sub = known_pose(session, mobile), known_pose(session, substrate)
+    rotation = Rotation(joint, d)
+    if rotation.substrate_cell(mob.cell) != sub.cell:
+        raise CommandRefusedError(
+            f"{d} about joint {joint}: module {mobile} at {mob.cell} needs its substrate at "
+            f"{rotation.substrate_cell(mob.cell)}, module {substrate} is at {sub.cell}")
+    expected = Pose(rotation.goal_cell(mob.cell), (mob.orientation + rotation.turn) % 6)
+    command = combined_rotation(d, joint, mob.orientation, sub.orientation)
+    how = verify
+    simulator = session.host.simulator
+    if how is Verify.AUTO:
+        how = Verify.PLANT if simulator is not None else Verify.LOCALIZE
+    if how is Verify.PLANT and simulator is None:
+        raise CommandRefusedError("verify=plant needs the embedded simulator's port "
+                                  "(hexbot-sim://)")
+    set_role(session, mobile, Role.MOBILE)
+    set_role(session, substrate, Role.SUBSTRATE)
+    session.request(select(substrate, mobile))
+    verdicts_before = len(simulator.verdicts()) if simulator is not None else 0
+    session.request(command)
+    session.host.model.moved(mobile)  # its orientation is stale until checked
+    if how is Verify.PLANT:
+        got = _plant_verdict(session, mobile, verdicts_before)
+    elif how is Verify.LOCALIZE:
+        got = localize(session, reference if reference is not None else substrate).get(mobile)
+    else:
+        _status_after_move(session, mobile)
+        got = None
+    if got is not None and got != expected:
+        raise CommandRefusedError(
+            f"module {mobile} should be at {expected.cell} facing {expected.orientation} "
+            f"after {d} about joint {joint}, {how.value} check finds it at {got.cell} "
+            f"facing {got.orientation}")
+    if how is Verify.PLANT:
+        session.host.model.placed(mobile, expected.cell, expected.orientation)
+    return RotationResult(mobile, substrate, expected, how, got)
+
+
+def _plant_verdict(session: Session, mobile: int, since: int) -> Pose:
+    simulator = session.host.simulator
+    assert simulator is not None
+    found: list[Moved | Refused] = []
+
+    def ready() -> bool:
+        found[:] = [v for v in simulator.verdicts(since) if v.module == mobile]
+        return bool(found)
+
+    if not session.host.clock.wait(ready, VERDICT_WAIT_S):
+        raise HexBotTimeoutError(f"the plant reported no motion of module {mobile} within "
+                                 f"{VERDICT_WAIT_S:g} s")
+    verdict = found[0]
+    if isinstance(verdict, Refused):
+        raise CommandRefusedError(f"the plant refused: module {mobile} "
+                                  f"{verdict.reason.value} ({verdict.detail})")
+    return Pose(verdict.dst, verdict.orientation)
+
+
+def _status_after_move(session: Session, mobile: int) -> None:
+    session.request(select(mobile))
+    (obs,) = session.request(frames.make("Status")).replies
+    ev = obs.event
+    assert isinstance(ev, StatusReport)
+    if ev.localized or ev.error != ErrorCode.NONE:
+        raise CommandRefusedError(
+            f"module {mobile} does not report a move (status: "
+            f"{'localized' if ev.localized else 'unlocalized'}, last error {ev.error})")
