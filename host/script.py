@@ -16,7 +16,7 @@ first failed step. Grammar (``[...]`` optional, ``ID...`` one or more)::
     send FUNCTION [ARG...]         the same, spelled out
     post FUNCTION [ARG...]         send without waiting for anything
     status                         Status(); expects a STA from each selected module
-    rotate cw|ccw JOINT mobile ID substrate ID
+    rotate cw|ccw JOINT mobile ID substrate ID [verify auto|plant|localize|status]
                                    67/68 about a lattice joint: sets the roles,
                                    body indices from each module's last status,
                                    thesis timings; verified (plant on the
@@ -164,17 +164,26 @@ def _parse_line(line: str, where: str, number: int) -> Step:  # noqa: C901 - one
     return Step(number, line, verb, tuple(rest), cmd)
 
 
-def _parse_rotate(rest: list[str], where: str) -> tuple[str, int, int, int]:
+def _parse_rotate(rest: list[str], where: str) -> tuple[str, int, int, int, workflows.Verify]:
+    verify = workflows.Verify.AUTO
+    if len(rest) == 8 and rest[6] == "verify":
+        try:
+            verify = workflows.Verify(rest[7].lower())
+        except ValueError:
+            raise ScenarioError(f"{where}: verify must be one of "
+                                f"{', '.join(v.value for v in workflows.Verify)}") from None
+        rest = rest[:6]
     if len(rest) != 6 or rest[2] != "mobile" or rest[4] != "substrate":
-        raise ScenarioError(f"{where}: expected 'rotate cw|ccw JOINT mobile ID substrate ID'")
+        raise ScenarioError(f"{where}: expected 'rotate cw|ccw JOINT mobile ID substrate ID "
+                            "[verify auto|plant|localize|status]'")
     direction = rest[0].lower()
     if direction not in ("cw", "ccw"):
         raise ScenarioError(f"{where}: direction must be cw or ccw, got {rest[0]!r}")
     joint = _int(rest[1], "joint", where)
     if not 1 <= joint <= 6:
         raise ScenarioError(f"{where}: joint must be 1..6, got {joint}")
-    return direction, joint, _int(rest[3], "mobile id", where), _int(rest[5], "substrate id",
-                                                                     where)
+    return (direction, joint, _int(rest[3], "mobile id", where),
+            _int(rest[5], "substrate id", where), verify)
 
 
 _EXPECT_OPTIONS = {
@@ -335,10 +344,10 @@ class ScriptRunner:
         if step.verb in ("select", "send", "status"):
             return self._exchange(step, step.command)
         if step.verb == "rotate":
-            direction, joint, mobile, substrate = _parse_rotate(w, where)
+            direction, joint, mobile, substrate, verify = _parse_rotate(w, where)
             self.mark = self.host.mark()
-            return workflows.rotate(self.session, direction, joint, mobile,
-                                    substrate).describe()
+            return workflows.rotate(self.session, direction, joint, mobile, substrate,
+                                    verify=verify).describe()
         if step.verb == "expect":
             return self._expect(step, w, where)
         raise self._fail(step, f"unknown verb {step.verb}")  # parse_script prevents this

@@ -306,7 +306,7 @@ class Session:
         if command.code == SELECT:
             ids = [a for a in command.args if a != wire.UNUSED]
             if ids[:1] == [0]:
-                return tuple(sorted(self.known))
+                return tuple(sorted(self.known)) if self.learn() else None
             return tuple(ids)
         return self.selection
 
@@ -323,9 +323,9 @@ class Session:
             ids = self.expected_replies(command)
         need = len(ids) if ids is not None else (count or 1)
         if ids is not None and not ids:
-            raise CommandRefusedError(
-                f"{command}: no module would answer (Select(0) with no known module ids: "
-                "wait for the boot texts or name the modules)")
+            raise CommandRefusedError(f"{command}: no module would answer")
+        # Select(0) to a cluster of unknown ids: every answer counts, until quiet.
+        roll_call = ids is None and count is None and command.code == SELECT
         if timeout is None:
             timeout = self.reply_timeout(command, ids, need)
         self.cancel.clear()
@@ -343,6 +343,15 @@ class Session:
             return got.complete or self.cancel.is_set() or self._lost(port) is not None
 
         self.host.clock.wait(ready, timeout)
+        if roll_call and got.complete:
+            self.collect(mark, QUIET_S, timeout)
+            got.replies, got.extra, got.checked = [], [], mark
+            got.need = wire.MAX_MODULE_ID
+            with self.host.lock:
+                got.take(self.host.since(0))
+            got.need = len(got.replies)
+            ids = tuple(sorted({i for r in got.replies if (i := _module_of(r.event))}))
+            self.known |= set(ids)
         if got.complete and settle > 0 and not self.cancel.is_set():
             self.host.clock.wait(lambda: self.cancel.is_set() or self._lost(port) is not None,
                                  settle)

@@ -1,6 +1,6 @@
 """A unit-test double for a small cluster behind a pty (never a product path).
 
-It answers PC frames the way PROTOCOL.md says modules do: Select switches
+It answers PC frames the way docs/protocol.md says modules do: Select switches
 to addressed mode and picks the listed modules, each selected module ACKs
 with its prefix (``M03: ``), Status answers STA, Localize makes every
 module print a localization report, an out-of-range argument gets
@@ -130,4 +130,6 @@ class PtyResponder:
                 continue
             if code == 71:
                 m.role = "M" if cmd.args[0] == 1 else "S"
+            if code in (67, 68) and m.role == "M":
+                m.localized = False  # as the firmware: a mobile module forgets its place
             self._reply(m, b"ACK" + bytes([code]))

@@ -44,8 +44,21 @@ def test_send_rejects_out_of_range_argument_before_sending(responder, log_dir, c
 def test_send_times_out_clearly(silent_responder, log_dir, capsys):
     rc = main(["send", "Status", "--timeout", "0.3", "--port", silent_responder.path])
     err = capsys.readouterr().err
-    assert rc == 1
-    assert "0 of 1 replies within 0.3 s" in err
+    assert rc == 3  # a time-out, not a refusal (1) nor a lost port (4)
+    assert "Status (70): no reply within 0.3 s (0 received)" in err
+
+
+def test_send_to_a_module_that_does_not_answer_names_it(silent_responder, log_dir, capsys):
+    rc = main(["send", "Status", "--module", "5", "--timeout", "0.3",
+               "--port", silent_responder.path])
+    assert rc == 3
+    assert "no reply from module 5 within 0.3 s" in capsys.readouterr().err
+
+
+def test_send_to_a_port_that_is_not_there_exits_4(log_dir, capsys):
+    rc = main(["send", "Status", "--port", "/nonexistent/ttyUSB9"])
+    assert rc == 4
+    assert "cannot open /nonexistent/ttyUSB9" in capsys.readouterr().err
 
 
 def test_send_json_lines(responder, log_dir, capsys):
@@ -115,12 +128,14 @@ def test_monitor_over_loop_url_sees_its_own_frames_as_garbage(log_dir, capsys):
     """loop:// echoes: a PC frame is no reply, so the parser calls it garbage."""
     from hexbot.host.host import IR, Host
     from hexbot.host.link import PortSettings
+    from hexbot.host.session import Session
     from hexbot.protocol import frames
 
     with Host() as host:
         host.add_port(IR, PortSettings("loop://"), retry_s=0.1)
         host.start(wait_s=2)
-        mark = host.send(frames.make("Ref"))
-        obs = host.wait_for(lambda o: True, mark, 3.0)
+        session = Session(host)
+        mark = session.send(frames.make("Ref"))
+        obs = session.wait_for(lambda o: True, mark, 3.0)
     assert obs is not None and type(obs.event).__name__ == "Garbage"
     assert obs.event.raw == b"*ANNNNNNNN#"

@@ -9,6 +9,7 @@ import time
 import pytest
 
 from hexbot.errors import LinkUnavailableError
+from hexbot.host.events import PortChanged
 from hexbot.host.host import IR, Host
 from hexbot.host.link import Link, LinkState, PortSettings
 from hexbot.protocol import parser, wire
@@ -80,7 +81,7 @@ def test_host_reconnects_and_keeps_state():
     server = _Server()
     states: list[LinkState] = []
     host = Host()
-    host.add_listener(lambda kind, port, p: states.append(p[0]) if kind == "state" else None)
+    host.add_listener(lambda e: states.append(e.state) if isinstance(e, PortChanged) else None)
     host.add_port(IR, PortSettings(f"socket://127.0.0.1:{server.port}"), retry_s=0.1)
     host.start(wait_s=3)
     try:
@@ -104,8 +105,8 @@ def test_host_reconnects_and_keeps_state():
 def test_pty_that_goes_away_is_reported_lost(responder):
     host = Host()
     lost = threading.Event()
-    host.add_listener(lambda kind, port, p: lost.set()
-                      if kind == "state" and p[0] is LinkState.LOST else None)
+    host.add_listener(lambda e: lost.set()
+                      if isinstance(e, PortChanged) and e.state is LinkState.LOST else None)
     host.add_port(IR, PortSettings(responder.path), retry_s=0.1)
     host.start(wait_s=3)
     try:

@@ -4,8 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from hexbot.errors import FrameError, ScenarioError
-from hexbot.host import commands
+from hexbot.errors import ScenarioError
 from hexbot.host.capture import CaptureWriter, read_capture
 from hexbot.host.cluster import ClusterModel
 from hexbot.protocol import parser, wire
@@ -14,19 +13,6 @@ from hexbot.protocol import parser, wire
 def _feed(model: ClusterModel, data: bytes) -> None:
     for ev in parser.parse_all(data):
         model.apply("ir", ev, 1.0)
-
-
-def test_body_joint_follows_orientation():
-    assert [commands.body_joint(1, o) for o in range(6)] == [1, 6, 5, 4, 3, 2]
-    assert commands.body_joint(4, 3) == 1
-    with pytest.raises(FrameError):
-        commands.body_joint(0, 0)
-
-
-def test_rotate_builds_combined_frame_with_thesis_timings():
-    cmd = commands.rotate("ccw", 5, mobile_orientation=1, substrate_orientation=4)
-    assert cmd.code == 68
-    assert cmd.args == (1, 8, 5, 9, 4, 8, 4, 10)
 
 
 def test_model_tracks_acks_errors_status_and_localization():

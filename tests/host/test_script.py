@@ -84,16 +84,43 @@ def test_parse_errors_name_line_and_problem(line, problem):
 
 
 def test_rotation_uses_orientations_from_status(responder, log_dir, tmp_path, capsys):
-    text = ("select 0\nlocalize\nstatus\nwait 0.2\n"
-            "rotate cw 2 mobile 3 substrate 1\nexpect ack CW from 1 3\n")
+    text = ("select 0\nlocalize\nstatus\n"
+            "rotate cw 5 mobile 3 substrate 1 verify status\nexpect ack CW from 1 3\n")
     rc = main(["run", str(_write(tmp_path, text)), "--port", responder.path])
     assert rc == 0, capsys.readouterr().err
-    # responder: module 3 has Yref 2, module 1 Yref 0; global joint 2
-    rotation = responder.received[-1]
+    # responder: module 3 (at (0,1)) has Yref 2, module 1 (at (0,0), its side 5) Yref 0
+    sent = [f for f in responder.received if f[1] in (67, 71)]
+    # roles first, where the last status showed another: module 3 is M already
+    assert [(f[1], f[2]) for f in sent[:-1]] == [(71, 2)]
+    rotation = sent[-1]
     assert rotation[1] == 67
-    assert rotation[2] == 2  # substrate si: ((2-1-0) mod 6)+1
-    assert rotation[6] == 6  # mobile mi: ((2-1-2) mod 6)+1
+    assert rotation[2] == 5  # substrate si: ((5-1-0) mod 6)+1
+    assert rotation[6] == 3  # mobile mi: ((5-1-2) mod 6)+1
     assert list(rotation[3:6]) == [8, 4, 10] and list(rotation[7:10]) == [8, 5, 9]
+
+
+def test_rotation_is_refused_before_localizing(responder, log_dir, tmp_path, capsys):
+    text = "rotate cw 5 mobile 3 substrate 1\n"
+    assert main(["run", str(_write(tmp_path, text)), "--port", responder.path]) == 1
+    assert "orientation of module 3 unknown: localize first" in capsys.readouterr().err
+    assert responder.received == []
+
+
+def test_rotation_with_a_substrate_elsewhere_is_refused(responder, log_dir, tmp_path, capsys):
+    text = "select 0\nlocalize\nstatus\nrotate cw 2 mobile 3 substrate 1\n"
+    assert main(["run", str(_write(tmp_path, text)), "--port", responder.path]) == 1
+    assert "needs its substrate at (0, 2), module 1 is at (0, 0)" in capsys.readouterr().err
+
+
+def test_localize_verification_catches_a_move_that_did_not_happen(responder, log_dir,
+                                                                   tmp_path, capsys):
+    # The responder acknowledges rotations but nobody moves: localizing
+    # again finds module 3 where it was.
+    text = "select 0\nlocalize\nstatus\nrotate cw 5 mobile 3 substrate 1 verify localize\n"
+    assert main(["run", str(_write(tmp_path, text)), "--port", responder.path]) == 1
+    err = capsys.readouterr().err
+    assert "module 3 should be at (1, 0) facing 4 after CW about joint 5" in err
+    assert "localize check finds it at (0, 1) facing 2" in err
 
 
 @pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.hbs")), ids=lambda p: p.name)
