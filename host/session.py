@@ -141,10 +141,13 @@ class _Collector:
     replies: list[Observed] = field(default_factory=list)
     extra: list[Observed] = field(default_factory=list)
     checked: int = 0
+    roll_call: bool = False  # every module's answer counts
 
     def take(self, journal: list[Observed]) -> None:
         for obs in journal[self.checked:]:
-            if self._is_reply(obs):
+            if self.roll_call and self._is_reply(obs):
+                self.replies.append(obs)
+            elif self._is_reply(obs):
                 ident = _module_of(obs.event)
                 if self.wanted is not None and ident not in self.wanted:
                     self.extra.append(obs)
@@ -203,9 +206,13 @@ class Session:
 
     def __init__(self, host: Host, modules: Iterable[int] = ()) -> None:
         self.host = host
+        #: the cluster's ids for sure (given, or every expected boot text heard)
+        self.cluster: frozenset[int] = frozenset(modules)
+        #: ids seen in replies and boot texts: a hint, there may be more
         self.known: set[int] = set(modules)
         #: after Select: the ids that answer, in rank order (ALL -> every known id)
         self.selection: tuple[int, ...] | None = LEGACY
+        self.all_selected = False  # the last Select was Select(0): ranks are id - 1
         self.cancel = threading.Event()
 
     # --- time ----------------------------------------------------------------
@@ -296,7 +303,9 @@ class Session:
 
             limit = timeout if timeout is not None else timing.boot_seconds(expected) + 5.0
             self.host.clock.wait(ready, limit)
-        self.known |= heard | set(expected or ())
+        self.known |= heard
+        if expected and heard >= set(expected):
+            self.cluster = frozenset(expected)
         return heard
 
     # --- send and wait -----------------------------------------------------------
@@ -306,7 +315,7 @@ class Session:
         if command.code == SELECT:
             ids = [a for a in command.args if a != wire.UNUSED]
             if ids[:1] == [0]:
-                return tuple(sorted(self.known)) if self.learn() else None
+                return tuple(sorted(self.cluster)) if self.cluster else None
             return tuple(ids)
         return self.selection
 
@@ -324,8 +333,12 @@ class Session:
         need = len(ids) if ids is not None else (count or 1)
         if ids is not None and not ids:
             raise CommandRefusedError(f"{command}: no module would answer")
-        # Select(0) to a cluster of unknown ids: every answer counts, until quiet.
+        # Select(0) to a cluster of unknown ids: every answer counts; wait for
+        # the ids seen so far, then until the link is quiet.
         roll_call = ids is None and count is None and command.code == SELECT
+        if roll_call:
+            self.learn()
+            need = max(1, len(self.known))
         if timeout is None:
             timeout = self.reply_timeout(command, ids, need)
         self.cancel.clear()
@@ -335,7 +348,7 @@ class Session:
         except LinkUnavailableError as exc:
             return Outcome(command, OutcomeKind.PORT_LOST, detail=str(exc))
         got = _Collector(command.code, set(ids) if ids is not None else None, need, port,
-                         checked=mark)
+                         checked=mark, roll_call=roll_call)
 
         def ready() -> bool:
             with self.host.lock:
@@ -343,10 +356,8 @@ class Session:
             return got.complete or self.cancel.is_set() or self._lost(port) is not None
 
         self.host.clock.wait(ready, timeout)
-        if roll_call and got.complete:
-            self.collect(mark, QUIET_S, timeout)
-            got.replies, got.extra, got.checked = [], [], mark
-            got.need = wire.MAX_MODULE_ID
+        if roll_call and got.replies:
+            self.collect(mark, max(QUIET_S, 2 * timing.ACK_SLOT_S), timeout)
             with self.host.lock:
                 got.take(self.host.since(0))
             got.need = len(got.replies)
@@ -360,6 +371,7 @@ class Session:
         outcome = self._judge(command, got, ids, started, port)
         if outcome.ok and command.code == SELECT:
             self.selection = ids
+            self.all_selected = command.args[0] == 0
         return outcome
 
     def request(self, command: Command, **kwargs) -> Outcome:
@@ -375,8 +387,7 @@ class Session:
         """Transmission of the frame plus the protocol's bound for its replies."""
         frame = timing.wire_seconds(wire.PC_FRAME_LEN, timing.BAUD_IR)
         code = command.code if command.code in CODES else STATUS
-        if ids is not None and command.code != SELECT and self.selection == tuple(
-                sorted(self.known)) and ids:
+        if ids and command.code != SELECT and self.all_selected:
             last_rank = max(ids) - 1  # after Select(0) a module's rank is its id - 1
         else:
             last_rank = None

@@ -1,6 +1,7 @@
-"""Plans executed on the simulated cluster (real firmware on the simulator):
-localization from the PC, then the plan's commands, checked move by move
-against the plant."""
+"""Plans executed through the session layer on the real firmware: on the
+embedded simulator's URL (verified by the plant) and on the ptys of a
+simulator in another process (the hardware path: verified by localizing
+again). Both must do the same moves and reach the same verdicts."""
 
 from __future__ import annotations
 
@@ -10,55 +11,110 @@ from pathlib import Path
 import pytest
 
 from hexbot.cli import main
-from hexbot.planning.execute import configuration_of, execute
+from hexbot.host.host import IR, Host
+from hexbot.host.link import PortSettings
+from hexbot.host.session import Session
+from hexbot.host.simproc import SimProcess
+from hexbot.host.workflows import Verify
+from hexbot.planning.configuration import Configuration, Module
+from hexbot.planning.execute import execute
 from hexbot.planning.moves import Move
 from hexbot.planning.plan import Plan, Step
 
 pytest.importorskip("hexbot.hil_sim._avr")
-from hexbot.hil_sim import Simulator, load_scenario  # noqa: E402
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "planning" / "examples"
 FIRMWARE = Path(__file__).resolve().parents[2] / "firmware" / "build"
 pytestmark = pytest.mark.skipif(not (FIRMWARE / "comm.elf").exists(),
                                 reason="firmware not built (make -C firmware)")
 
+# The pair rig: module 2 on side 1 of the base module 1; CW about its joint 4
+# lands it on (0, 1) (scenario pair.toml, Table 3-1's example).
+PAIR_INITIAL = "cells = [[0, 0], [-1, 1]]\n"
+PAIR_GOAL = "cells = [[0, 0], [0, 1]]\n"
+
+
+def _run_json(capsys, *argv) -> tuple[int, dict]:
+    status = main(["plan", *argv, "--execute", "--json", "--no-log"])
+    captured = capsys.readouterr()
+    assert captured.out, captured.err
+    return status, json.loads(captured.out)
+
+
+def _moves(out: dict) -> list[tuple]:
+    return [(m["module"], tuple(m["to"]), m["orientation"], m["ok"])
+            for m in out["execution"]["moves"]]
+
 
 def test_cli_executes_a_plan_on_thesis_fig5_8(capsys):
-    status = main(["plan", str(EXAMPLES / "test_all_p01_initial.txt"),
-                   str(EXAMPLES / "block6_goal.txt"), "--execute",
-                   "--scenario", "thesis-fig5-8", "--json"])
-    out = json.loads(capsys.readouterr().out)
+    status, out = _run_json(capsys, str(EXAMPLES / "test_all_p01_initial.txt"),
+                            str(EXAMPLES / "block6_goal.txt"), "--scenario", "thesis-fig5-8")
     assert status == 0
     run = out["execution"]
     assert run["reached"] and run["localized"] == 6
     planned = [(m["module"], m["to"]) for s in out["steps"] for m in s["moves"]]
-    executed = [(m["module"], m["to"]) for m in run["moves"]]
-    assert executed == planned and all(m["ok"] for m in run["moves"])
-    # The plant agrees: every executed move ended where the plan put it.
-    assert all(m["plant"]["event"] == "moved" for m in run["moves"])
+    assert [(m["module"], m["to"]) for m in run["moves"]] == planned
+    # the plant agrees: every executed move ended where the plan put it
+    assert all(m["ok"] and m["verified_by"] == "plant" for m in run["moves"])
 
 
-def test_divergence_stops_with_a_report():
-    # Module 1 is fixed to the base in the pair scenario: a plan that rotates
-    # it must stop at that move, with the plant's reason.
-    sim = Simulator(load_scenario("pair"), seed=1)
-    sim.run(24.0)  # every module booted (boot-text slots, docs/firmware.md)
-    initial = configuration_of(sim)
-    # CW about joint 1: substrate on side 1 (module 2), goal on side 6 (Table 4-3).
-    bad = Move(module=1, src=(0, 0), dst=(-1, 0), joint=1, direction="CW",
-               substrate=(-1, 1), substrate_module=2)
-    plan = Plan("robust", initial, frozenset({(-1, 0), (-1, 1)}), [Step([bad])], reached=True)
-    report = execute(plan, sim)
+def test_the_same_plan_on_a_pty_and_on_the_url_does_the_same(tmp_path, capsys):
+    initial, goal = tmp_path / "initial.toml", tmp_path / "goal.toml"
+    initial.write_text(PAIR_INITIAL)
+    goal.write_text(PAIR_GOAL)
+    status, on_url = _run_json(capsys, str(initial), str(goal), "--scenario", "pair")
+    assert status == 0, on_url["execution"]["failure"]
+    with SimProcess("pair", speed=0) as sim:  # another process: the hardware path
+        _wait_booted(sim.ports.ir, {1, 2})
+        status, on_pty = _run_json(capsys, str(initial), str(goal), "--port", sim.ports.ir,
+                                   "--reference", "1")
+    assert status == 0, on_pty["execution"]["failure"]
+    assert _moves(on_pty) == _moves(on_url) == [(2, (0, 1), 2, True)]
+    assert [m["verified_by"] for m in on_pty["execution"]["moves"]] == ["localize"]
+    assert on_pty["execution"]["moves"][0]["got"] == {"to": [0, 1], "orientation": 2}
+
+
+def _wait_booted(port: str, ids: set[int]) -> None:
+    """As a user waits for the modules' boot texts before the first command."""
+    with Host() as host:
+        host.add_port(IR, PortSettings(port))
+        host.start(5.0)
+        assert Session(host).wait_booted(ids, timeout=30.0) == ids
+
+
+def _fixed_base_plan() -> Plan:
+    # Module 1 is fixed to the base: CW about its joint 1 (substrate module 2
+    # on its side 1, goal on side 6, Table 4-3) must be refused by the plant.
+    # Module 2 is the reference (the one that moves cannot be): it is (0, 0).
+    initial = Configuration({(1, -1): Module(1, 0), (0, 0): Module(2, 0)})
+    bad = Move(module=1, src=(1, -1), dst=(0, -1), joint=1, direction="CW",
+               substrate=(0, 0), substrate_module=2)
+    return Plan("robust", initial, frozenset({(0, -1), (0, 0)}), [Step([bad])], reached=True)
+
+
+def test_a_refused_move_stops_with_the_plants_reason(open_session):
+    session = open_session("pair")
+    report = execute(_fixed_base_plan(), session, reference=2)
     assert not report.reached
     assert "step 1: module 1" in report.failure
-    assert "refused (fixed to base)" in report.failure
+    assert "the plant refused: module 1 fixed to base" in report.failure
     assert len(report.moves) == 1 and not report.moves[0].ok
 
 
-def test_initial_must_match_the_scenario(tmp_path, capsys):
+def test_on_a_pty_the_refused_move_is_caught_by_localizing(open_session):
+    with SimProcess("pair", speed=0) as sim:
+        session = open_session(sim.ports.ir, boot=False)
+        session.wait_booted({1, 2})
+        report = execute(_fixed_base_plan(), session, reference=2, verify=Verify.LOCALIZE)
+    assert not report.reached
+    assert ("module 1 should be at (0, -1) facing 2 after CW about joint 1, "
+            "localize check finds it at (1, -1) facing 0") in report.failure
+
+
+def test_initial_must_match_the_cluster(tmp_path, capsys):
     other = tmp_path / "initial.txt"
     other.write_text("1 1\n")
     status = main(["plan", str(other), str(EXAMPLES / "block6_goal.txt"), "--execute",
-                   "--scenario", "thesis-fig5-8"])
+                   "--scenario", "thesis-fig5-8", "--no-log"])
     assert status == 1
     assert "does not describe scenario thesis-fig5-8" in capsys.readouterr().err
