@@ -23,12 +23,13 @@ from collections.abc import Callable
 from pathlib import Path
 
 from hexbot.errors import HexBotError
+from hexbot.protocol.timing import BOOT_SLOTS, boot_seconds
 
 from .geometry import Cell, neighbor
 from .scenario import ModuleSpec, Scenario, load_scenario
 from .simulator import Simulator, _load_core
 
-BOOT_S = 24.0  # simulated seconds of boot (8 boot-text slots, docs/firmware.md) excluded
+BOOT_S = boot_seconds(range(1, BOOT_SLOTS + 1))  # simulated boot (every boot slot), excluded
 AVR_TESTS = Path(__file__).resolve().parent.parent / "tests" / "hil_sim" / "avr"
 
 

@@ -35,6 +35,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Protocol
 
+from hexbot.protocol.timing import BAUD_IR
+
 from .geometry import CENTRE, Cell, facing, neighbor
 from .scenario import PC, Faults
 
@@ -58,7 +60,7 @@ class Frame:
         return (self.data_bits, self.parity) == (other.data_bits, other.parity)
 
 
-PC_FRAME = Frame(300.0)
+PC_FRAME = Frame(float(BAUD_IR))
 
 
 @dataclass(frozen=True)

@@ -11,10 +11,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from hexbot.hil_sim._avr import Cluster, raw_simavr_run
+from hexbot.protocol.timing import F_CPU
 
 __all__ = ["Cluster", "Mcu", "UartByte", "cycles_to_seconds", "raw_simavr_run", "seconds_to_cycles"]
 
-DEFAULT_FREQUENCY = 1_000_000
+DEFAULT_FREQUENCY = F_CPU
 
 
 def cycles_to_seconds(cycles: int, frequency: int = DEFAULT_FREQUENCY) -> float:

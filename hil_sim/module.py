@@ -1,8 +1,9 @@
 """One HexBot module: its two MCUs and the board pin maps the simulator reads.
 
 A module is a communication MCU and a control MCU joined UART0 to UART0, with
-its id on the control board's DIP switches (port C). The pin maps below are
-the only place that knows which pin is which (Tables 3-3, 3-4, 3-5).
+its id on the control board's DIP switches (port C). It reads actuators,
+LEDs and the IR selector at the pins of :mod:`hexbot.protocol.pins`, the
+same map the firmware is built from (Tables 3-3, 3-4, 3-5).
 """
 
 from __future__ import annotations
@@ -11,31 +12,19 @@ import bisect
 from dataclasses import dataclass, field
 from typing import Any
 
+from hexbot.protocol.pins import (  # noqa: F401 - the simulator's view of the boards
+    COMM_PORTS,
+    CONTROL_PORTS,
+    JOINT_PINS,
+    LED_PINS,
+    MAGNET_NEG_PINS,
+    MAGNET_POS_PINS,
+    SELECTOR_PINS,
+    Pin,
+)
+
 from .geometry import CHANNEL_SIDE, Cell
 from .plant import NEG, OFF, POS, SHORT, Body, Joints, Magnets
-
-Pin = tuple[str, int]  # (port letter, bit)
-
-# Control board (Table 3-4).
-JOINT_PINS: tuple[Pin, ...] = (("A", 2), ("A", 3), ("A", 5), ("A", 4), ("A", 0), ("A", 1))
-MAGNET_POS_PINS: tuple[Pin, ...] = (("B", 0), ("D", 3), ("B", 6), ("D", 4), ("B", 1), ("B", 7))
-MAGNET_NEG_PINS: tuple[Pin, ...] = (("D", 6), ("D", 5), ("D", 7), ("B", 4), ("B", 5), ("D", 2))
-CONTROL_PORTS = ("A", "B", "D")
-
-# Communication board (Tables 3-3 and 3-5): selector lines A, B, C. The listing's
-# IrSel() writes Y1 (side 6) as PA2 alone and Y4 (side 5) as PA0 alone, so A = PA2,
-# B = PA1, C = PA0 (SIM_API.md said PA0 = A; the listing, the notes and the firmware
-# agree on this order, and the firmware is what drives the pins).
-SELECTOR_PINS: tuple[Pin, ...] = (("A", 2), ("A", 1), ("A", 0))
-#: Status LEDs (active low): name -> pin.
-LED_PINS: dict[str, Pin] = {
-    "led_j1": ("D", 7), "led_j2": ("A", 7), "led_j3": ("E", 2),
-    "led_j4": ("C", 5), "led_j5": ("C", 2), "led_j6": ("D", 4),
-    "led_s1a": ("A", 6), "led_s1b": ("A", 5), "led_s2a": ("E", 1), "led_s2b": ("E", 0),
-    "led_s3a": ("C", 6), "led_s3b": ("C", 7), "led_s4a": ("C", 3), "led_s4b": ("C", 4),
-    "led_s5a": ("C", 1), "led_s5b": ("C", 0), "led_s6a": ("D", 6), "led_s6b": ("D", 5),
-}
-COMM_PORTS = ("A", "C", "D", "E")
 
 
 def _bit(ports: dict[str, int], pin: Pin) -> bool:

@@ -31,7 +31,7 @@ from hexbot.protocol.simulation import RefusalReason
 
 from .geometry import (
     Cell,
-    Pivot,
+    Rotation,
     facing,
     joint_between,
     neighbor,
@@ -207,7 +207,7 @@ class Plant:
         t = _end(pulse, now)
         refusals: list[tuple[str, str, dict]] = []
         for direction in ("CW", "CCW"):
-            pivot = Pivot(global_joint, direction)  # type: ignore[arg-type]
+            pivot = Rotation(global_joint, direction)  # type: ignore[arg-type]
             verdict = self._judge(body, pulse, pivot, body_joint, now)
             if verdict is None:
                 continue
@@ -223,15 +223,15 @@ class Plant:
                       "detail": detail, "joint": body_joint, **extra})
 
     def _judge(
-        self, body: Body, pulse: Pulse, pivot: Pivot, body_joint: int, now: int
+        self, body: Body, pulse: Pulse, pivot: Rotation, body_joint: int, now: int
     ) -> tuple[str, str, dict] | None:
         """("moved", "", info) if the rotation happens, else (reason, detail, info)."""
-        substrate_id = self.cells.get(pivot.substrate(body.cell))
+        substrate_id = self.cells.get(pivot.substrate_cell(body.cell))
         name = pivot.direction
         if substrate_id is None:
             return ("no substrate", f"{name}: no module on side {pivot.substrate_side}", {})
         sub = self.bodies[substrate_id]
-        goal = pivot.goal(body.cell)
+        goal = pivot.goal_cell(body.cell)
         face_m = to_body(facing(pivot.substrate_side), sub.orientation)
         face_goal_global = side_towards(sub.cell, goal)
         assert face_goal_global is not None
@@ -286,16 +286,16 @@ class Plant:
                 or sub.joint_closed_at(sub_pivot, pulse.start)):
             return ("no axle", f"{name}: both pivot joints (J{body_joint} of {body.id}, "
                     f"J{sub_pivot} of {sub.id}) are open", info)
-        blocked = [c for c in (goal, *pivot.swept(body.cell)) if c in self.cells]
+        blocked = [c for c in (goal, *pivot.swept_cells(body.cell)) if c in self.cells]
         if blocked:
             return ("occupied cell",
                     f"{name}: cells {[list(c) for c in blocked]} must be empty",
                     {**info, "cells": [list(c) for c in blocked]})
         return ("moved", "", info)
 
-    def _move(self, body: Body, pivot: Pivot, info: dict, t: int, body_joint: int) -> None:
+    def _move(self, body: Body, pivot: Rotation, info: dict, t: int, body_joint: int) -> None:
         source = body.cell
-        target = pivot.goal(source)
+        target = pivot.goal_cell(source)
         del self.cells[source]
         self.cells[target] = body.id
         body.cell = target

@@ -37,10 +37,11 @@ from pathlib import Path
 from typing import Any
 
 from hexbot.errors import ScenarioError
+from hexbot.protocol.wire import MAX_MODULE_ID
 
 from .geometry import Cell
 
-MAX_ID = 63
+MAX_ID = MAX_MODULE_ID
 COORD_LIMIT = 99  # MSG1 carries two decimal digits per coordinate
 PC = "pc"
 

@@ -16,16 +16,15 @@ from collections.abc import Callable
 from typing import Any
 
 from hexbot.errors import HexBotError, HexBotTimeoutError, ScenarioError
+from hexbot.protocol.pins import DIP_PORT
+from hexbot.protocol.timing import BAUD_DEBUG, BAUD_IR, F_CPU
 
 from .geometry import CENTRE, Cell, to_global
-from .ir_bus import AirByte, Frame, IrMedium
+from .ir_bus import PC_FRAME, AirByte, Frame, IrMedium
 from .module import Mcu, Module, decode_actuators
 from .plant import Plant, Timing
 from .scenario import PC, Scenario, load_scenario
 
-F_CPU = 1_000_000
-BAUD_IR = 300
-BAUD_DEBUG = 4800
 DEBUG_FRAME = Frame(float(BAUD_DEBUG))
 HISTORY_S = 2.0  # selector history kept, far more than one 300-baud byte
 
@@ -88,7 +87,7 @@ class Simulator:
             self.cluster.connect_uart(comm, 0, control, 0)
             self.cluster.watch_uart(comm, 1)
             self.cluster.watch_uart(control, 1)
-            self.cluster.set_input(control, "C", 0xFF, spec.id)  # DIP switches
+            self.cluster.set_input(control, DIP_PORT, 0xFF, spec.id)  # DIP switches
             self.plant.add(spec.id, spec.position, spec.orientation, spec.id == scenario.base)
             module = Module(
                 spec.id,
@@ -296,7 +295,7 @@ class Simulator:
                 self._debug_received(module, debug)
         while self._pc_tx and self._pc_tx[0][1] <= now:
             start, end, value = self._pc_tx.popleft()
-            air.append(AirByte(PC, start, end, value, Frame(float(BAUD_IR))))
+            air.append(AirByte(PC, start, end, value, PC_FRAME))
         air.sort(key=lambda b: (b.end, b.start, str(b.sender)))
         for byte in air:
             self.medium.transmit(byte)

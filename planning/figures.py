@@ -26,7 +26,7 @@ from hexbot.planning.configuration import (  # noqa: E402
 from hexbot.planning.generate import parallelogram, random_blob  # noqa: E402
 from hexbot.planning.hexlattice import (  # noqa: E402
     LETTER_CELLS,
-    RULE_BY_KEY,
+    ROTATION_BY_KEY,
     cartesian,
     neighbor,
     vertices,
@@ -65,7 +65,7 @@ def fig_lattice(out: Path) -> Path:
                  fontsize=9)
     frame(ax, LETTER_CELLS.values(), 0.3)
     ax = axes[1]
-    rule = RULE_BY_KEY[(1, "CW")]
+    rule = ROTATION_BY_KEY[(1, "CW")]
     sub, goal, swept = rule.at(centre)
     draw_cells(ax, LETTER_CELLS.values(), "#ffffff", lw=0.3)
     draw_cells(ax, [centre], COLORS["mover"])

@@ -7,9 +7,9 @@ Joint ``j`` (a vertex) sits between sides ``j-1`` and ``j``. The hexagons
 are flat-topped: x grows to the right (and half a cell up), y grows straight
 up (see :func:`cartesian`).
 
-The rotation move set is Table 4-3, kept here literally (letters A..L of
-Fig. 4-30) and turned into :class:`RotationRule` objects; a test checks the
-literal table against its rotational symmetry.
+The rotation move set of Table 4-3 is :mod:`hexbot.protocol.rotation_geometry`
+(re-exported here); ``LETTER_CELLS`` names the cells around a mobile module
+with the letters of Fig. 4-30, as the thesis' figures and table do.
 
 The MATLAB listings store a configuration as a 0/1 matrix, row 1 on top:
 the cell in row ``r``, column ``c`` of an ``R``-row matrix is the axial cell
@@ -19,9 +19,7 @@ the cell in row ``r``, column ``c`` of an ``R``-row matrix is the axial cell
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Iterator
-from dataclasses import dataclass
-from typing import Literal
+from collections.abc import Iterable
 
 from hexbot.protocol.lattice import (  # noqa: F401 - the planner's public vocabulary
     SIDE_OFFSETS,
@@ -33,8 +31,13 @@ from hexbot.protocol.lattice import (  # noqa: F401 - the planner's public vocab
     wrap,
 )
 from hexbot.protocol.lattice import facing as facing_side  # noqa: F401
-
-Direction = Literal["CW", "CCW"]
+from hexbot.protocol.rotation_geometry import (  # noqa: F401 - Table 4-3
+    ROTATION_BY_KEY,
+    ROTATIONS,
+    Direction,
+    Rotation,
+    rotations_to,
+)
 
 JOINTS = SIDES
 
@@ -128,7 +131,7 @@ def column_major_key(cell: Cell) -> tuple[int, int]:
     return (cell[0], -cell[1])
 
 
-# --- Table 4-3: the rotation move set ----------------------------------------
+# --- Fig. 4-30: the cells around a mobile module ---------------------------
 
 #: Fig. 4-30 letters as positions around the mobile module at (0, 0):
 #: A..F are the neighbours on sides 1..6, G..L the second-ring cells between
@@ -137,79 +140,3 @@ LETTER_CELLS: dict[str, Cell] = {
     **{letter: SIDE_OFFSETS[s] for letter, s in zip("ABCDEF", SIDES, strict=True)},
     **{letter: ring_cell((0, 0), s) for letter, s in zip("GHIJKL", SIDES, strict=True)},
 }
-
-#: Table 4-3 verbatim: (joint, direction, substrate, swept (empty) cells, goal).
-TABLE_4_3: tuple[tuple[int, Direction, str, str, str], ...] = (
-    (1, "CW", "A", "DEK", "F"),
-    (2, "CW", "B", "EFL", "A"),
-    (3, "CW", "C", "FAG", "B"),
-    (4, "CW", "D", "ABH", "C"),
-    (5, "CW", "E", "BCI", "D"),
-    (6, "CW", "F", "CDJ", "E"),
-    (1, "CCW", "F", "CBG", "A"),
-    (2, "CCW", "A", "DCH", "B"),
-    (3, "CCW", "B", "EDI", "C"),
-    (4, "CCW", "C", "FEJ", "D"),
-    (5, "CCW", "D", "AFK", "E"),
-    (6, "CCW", "E", "BAL", "F"),
-)
-
-
-@dataclass(frozen=True)
-class RotationRule:
-    """One row of Table 4-3, relative to the mobile module at (0, 0)."""
-
-    joint: int
-    direction: Direction
-    substrate_side: int
-    goal_side: int
-    swept: tuple[Cell, Cell, Cell]
-
-    @property
-    def substrate(self) -> Cell:
-        return SIDE_OFFSETS[self.substrate_side]
-
-    @property
-    def goal(self) -> Cell:
-        return SIDE_OFFSETS[self.goal_side]
-
-    def at(self, cell: Cell) -> tuple[Cell, Cell, tuple[Cell, ...]]:
-        """(substrate cell, goal cell, swept cells) for a mobile module at ``cell``."""
-        x, y = cell
-        sx, sy = self.substrate
-        gx, gy = self.goal
-        return (
-            (x + sx, y + sy),
-            (x + gx, y + gy),
-            tuple((x + dx, y + dy) for dx, dy in self.swept),
-        )
-
-
-def _rules_from_table() -> tuple[RotationRule, ...]:
-    side_of = {letter: s for letter, s in zip("ABCDEF", SIDES, strict=True)}
-    rules = []
-    for joint, direction, sub, swept, goal in TABLE_4_3:
-        rules.append(
-            RotationRule(
-                joint=joint,
-                direction=direction,
-                substrate_side=side_of[sub],
-                goal_side=side_of[goal],
-                swept=tuple(LETTER_CELLS[letter] for letter in swept),  # type: ignore[arg-type]
-            )
-        )
-    return tuple(rules)
-
-
-#: The twelve rotations in the order of Table 4-3 (and of ``HexActuate``).
-ROTATIONS: tuple[RotationRule, ...] = _rules_from_table()
-RULE_BY_KEY: dict[tuple[int, str], RotationRule] = {(r.joint, r.direction): r for r in ROTATIONS}
-
-
-def rules_to(goal_side: int) -> list[RotationRule]:
-    """The two rotations that end on ``goal_side`` (CW about joint s+1, CCW about s)."""
-    return [r for r in ROTATIONS if r.goal_side == wrap(goal_side)]
-
-
-def iter_rules() -> Iterator[RotationRule]:
-    return iter(ROTATIONS)

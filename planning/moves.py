@@ -13,7 +13,7 @@ from __future__ import annotations
 from collections.abc import Container
 from dataclasses import dataclass
 
-from hexbot.planning.hexlattice import ROTATIONS, Cell, Direction, RotationRule, wrap
+from hexbot.planning.hexlattice import ROTATIONS, Cell, Direction, Rotation, wrap
 
 
 @dataclass(frozen=True)
@@ -38,7 +38,7 @@ class Move:
         return {self.src, self.dst, *self.swept()}
 
 
-def rule_of(move: Move) -> RotationRule:
+def rule_of(move: Move) -> Rotation:
     for rule in ROTATIONS:
         if rule.joint == move.joint and rule.direction == move.direction:
             return rule
@@ -47,7 +47,7 @@ def rule_of(move: Move) -> RotationRule:
 
 def legal_rotations(
     cell: Cell, occupied: Container[Cell], substrates: Container[Cell] | None = None
-) -> list[tuple[RotationRule, Cell, Cell]]:
+) -> list[tuple[Rotation, Cell, Cell]]:
     """Rotations (rule, substrate, goal) open to a module at ``cell``.
 
     ``occupied`` decides what is empty (goal and swept cells must not be in it);

@@ -1,18 +1,11 @@
-"""The function-code table of docs/protocol.md, generated from ``CODES``.
-
-The document keeps its prose by hand; only the part between the markers is
-rewritten by ``hexbot gen-header`` (and a test fails when it is stale).
-"""
+"""Tables of the docs generated from the protocol (``generated.py`` splices
+them between their markers): the function codes of docs/protocol.md, the
+pin map and the timing of docs/firmware.md."""
 
 from __future__ import annotations
 
-from pathlib import Path
-
+from hexbot.protocol import pins, timing, wire
 from hexbot.protocol.codes import CODES, Status
-
-DOC_PATH = Path(__file__).resolve().parent.parent / "docs" / "protocol.md"
-BEGIN = "<!-- BEGIN GENERATED: function-table (hexbot gen-header) -->"
-END = "<!-- END GENERATED: function-table -->"
 
 
 def _args(fn) -> str:
@@ -41,19 +34,43 @@ def render_table() -> str:
     return "\n".join(rows)
 
 
-def splice(text: str) -> str:
-    if BEGIN not in text or END not in text:
-        raise ValueError(f"{DOC_PATH} lacks the generated-table markers")
-    head, rest = text.split(BEGIN, 1)
-    _, tail = rest.split(END, 1)
-    return f"{head}{BEGIN}\n{render_table()}\n{END}{tail}"
+def render_pin_table() -> str:
+    rows = ["| board | signal | 1 | 2 | 3 | 4 | 5 | 6 |", "|---|---|---|---|---|---|---|---|"]
+    for board, signal, _cname, table in pins.TABLES:
+        rows.append(f"| {board} | {signal} | " + " | ".join(pins.name(p) for p in table) + " |")
+    return "\n".join(rows)
 
 
-def is_stale(path: Path = DOC_PATH) -> bool:
-    text = path.read_text()
-    return splice(text) != text
+def _ticks(n: int) -> str:
+    return f"{n} ticks ({n * timing.TICK_S:g} s)"
 
 
-def write(path: Path = DOC_PATH) -> Path:
-    path.write_text(splice(path.read_text()))
-    return path
+def render_timing_table() -> str:
+    t = timing
+    slot = t.boot_slot_ticks()
+    rows = [
+        "| what | value |",
+        "|---|---|",
+        f"| tick | Timer0 overflow, prescaler {t.TIMER0_PRESCALER}, reload "
+        f"0x{t.TIMER0_RELOAD:02X}: {256 - t.TIMER0_RELOAD} × 64 µs = {t.TICK_TRUE_S * 1e3:g} ms |",
+        f"| IR link (comm UART1) | {wire.BAUD_IR} baud 8N1; one byte "
+        f"{t.wire_seconds(1, wire.BAUD_IR) * 1e3:.1f} ms, counted as "
+        f"{t.IR_BYTE_TICKS_X10 / 10:g} ticks |",
+        f"| board link (UART0) | {wire.BAUD_BOARD} baud 8N1 |",
+        f"| debug port (control UART1) | {wire.BAUD_DEBUG} baud 8N1 |",
+        f"| PC frame inter-byte time-out | {t.PC_BYTE_TIMEOUT_TICKS} ticks (10 byte times) |",
+        f"| control echo time-out | {_ticks(t.CONTROL_ACK_TIMEOUT_TICKS)} → `ACK ~` |",
+        f"| handshake bytes | `{chr(wire.LINK_READY)}` id (ready), "
+        f"`{chr(wire.LINK_LISTENING)}` id (listening) |",
+        f"| boot slot | rank (id − 1) mod {t.BOOT_SLOTS}; slot k starts "
+        f"{t.BOOT_FIRST_SLOT_TICKS} + k × {slot} ticks after reset (VERSION 0.1.0; "
+        f"{t.IR_BYTE_TICKS_X10 / 10:g} ticks more per extra version character) |",
+        f"| `IrSel(side)` hold | back on the centre after {_ticks(t.IRSEL_HOLD_TICKS)} "
+        "without an IR byte |",
+        f"| ACK slot | {_ticks(t.ACK_SLOT_TICKS)}; ACK/ERR {t.SLOTS_ACK} slot, status "
+        f"{t.SLOTS_STATUS}, localization report {t.SLOTS_LOCALIZE} |",
+        f"| legacy substrate delay | {_ticks(t.SUBSTRATE_ACK_DELAY_TICKS)} (thesis) |",
+        f"| localization window | {_ticks(t.LOC_WINDOW_TICKS)} ({t.LOC_HOPS} hops), "
+        "then the answer slots |",
+    ]
+    return "\n".join(rows)

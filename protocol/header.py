@@ -1,31 +1,92 @@
-"""Generate ``firmware/include/hexbot_codes.h`` from the protocol table.
+"""Generate ``firmware/include/hexbot_codes.h`` from the protocol.
 
 The firmware includes only this header for codes, argument ranges, wire
-constants, error reasons and fuse values; a test fails when the checked-in
+constants, timing, Table 4-1, error reasons and fuse values (pins come from
+``hexbot_pins.h``, see ``pins_header.py``); a test fails when a checked-in
 copy is stale (regenerate with ``hexbot gen-header``).
+
+The schema hash covers every value of both headers: the comm firmware
+reports it in its Status reply, so the PC can tell firmware built from
+another protocol (``schema_mismatch``).
 """
 
 from __future__ import annotations
 
 import hashlib
+import re
 from pathlib import Path
 
-from hexbot.protocol import timing, wire
+from hexbot.protocol import lattice, pins_header, timing, wire
 from hexbot.protocol.codes import CODES, ErrorCode, Role, Status
 
 HEADER_PATH = Path(__file__).resolve().parent.parent / "firmware" / "include" / "hexbot_codes.h"
+SCHEMA_LINE = "@SCHEMA@"
 
 
-def schema_hash() -> str:
-    """Short hash of everything the header encodes, to catch mismatched peers."""
-    h = hashlib.sha256()
-    for fn in CODES.values():
-        h.update(repr((fn.code, fn.name, fn.board.value, fn.status.value,
-                       [(a.name, a.lo, a.hi) for a in fn.args])).encode())
-    return h.hexdigest()[:8]
+def _c_string(text: str) -> str:
+    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
 
 
-def render() -> str:
+def _offsets() -> list[lattice.Cell]:
+    return [lattice.SIDE_OFFSETS[s] for s in lattice.SIDES]
+
+
+def _timing() -> list[str]:
+    t = timing
+    return [
+        "/* Timing (protocol/timing.py). A tick is Timer0 at F_CPU / 64 reloaded with",
+        " * HB_TICK_RELOAD: 156 x 64 us = 9.984 ms, the thesis' 10 ms. */",
+        f"#define HB_F_CPU            {wire.F_CPU}UL",
+        f"#define HB_TICK_RELOAD      0x{t.TIMER0_RELOAD:02X}u",
+        "/* Ticks of one 300-baud byte, x10 and rounded up */",
+        f"#define HB_IR_BYTE_TICKS_X10 {t.IR_BYTE_TICKS_X10}u",
+        "#define HB_IR_TICKS(bytes)  (((bytes) * HB_IR_BYTE_TICKS_X10 + 9u) / 10u)",
+        f"#define HB_CONTROL_ACK_TIMEOUT_TICKS {t.CONTROL_ACK_TIMEOUT_TICKS}u",
+        f"#define HB_SUBSTRATE_ACK_DELAY_TICKS {t.SUBSTRATE_ACK_DELAY_TICKS}u",
+        f"#define HB_ACK_SLOT_TICKS   {t.ACK_SLOT_TICKS}u",
+        f"#define HB_PC_BYTE_TIMEOUT_TICKS {t.PC_BYTE_TIMEOUT_TICKS}u",
+        f"#define HB_IRSEL_HOLD_TICKS {t.IRSEL_HOLD_TICKS}u",
+        "/* Longest replies in addressed mode (preamble, 'M03: ', body) and their slots */",
+        f"#define HB_REPLY_BYTES_ACK  {t.REPLY_BYTES_ACK}u",
+        f"#define HB_REPLY_BYTES_ERR  {t.REPLY_BYTES_ERR}u",
+        f"#define HB_REPLY_BYTES_STATUS {t.REPLY_BYTES_STATUS}u",
+        f"#define HB_REPLY_BYTES_LOCALIZE {t.REPLY_BYTES_LOCALIZE}u",
+        f"#define HB_SLOTS_ACK        {t.SLOTS_ACK}u",
+        f"#define HB_SLOTS_STATUS     {t.SLOTS_STATUS}u",
+        f"#define HB_SLOTS_LOCALIZE   {t.SLOTS_LOCALIZE}u",
+        "/* Boot slots: rank (id - 1) mod HB_BOOT_SLOTS; the slot text is",
+        " * HB_BOOT_TEXT_FIXED_BYTES + the length of the version string. */",
+        f"#define HB_BOOT_SLOTS       {t.BOOT_SLOTS}u",
+        f"#define HB_BOOT_FIRST_SLOT_TICKS {t.BOOT_FIRST_SLOT_TICKS}u",
+        f"#define HB_BOOT_GUARD_TICKS {t.BOOT_GUARD_TICKS}u",
+        f"#define HB_BOOT_TEXT_FIXED_BYTES {t.BOOT_TEXT_FIXED_BYTES}u",
+        "#define HB_BOOT_SLOT_TICKS(text_bytes) (HB_IR_TICKS(text_bytes) + HB_BOOT_GUARD_TICKS)",
+        "/* Localization (code 66) */",
+        f"#define HB_LOC_LISTEN_TICKS {t.LOC_LISTEN_TICKS}u",
+        f"#define HB_LOC_CATCH_TICKS  {t.LOC_CATCH_TICKS}u",
+        f"#define HB_LOC_DWELL_TICKS  {t.LOC_DWELL_TICKS}u",
+        f"#define HB_LOC_HOPS         {t.LOC_HOPS}u",
+        f"#define HB_LOC_WINDOW_TICKS {t.LOC_WINDOW_TICKS}u",
+        "",
+        "/* Handshake between the boards, each byte followed by the module id */",
+        f"#define HB_LINK_READY       {wire.LINK_READY}  /* '{chr(wire.LINK_READY)}' */",
+        f"#define HB_LINK_LISTENING   {wire.LINK_LISTENING}  /* '{chr(wire.LINK_LISTENING)}' */",
+        "/* Boot texts */",
+        f"#define HB_TEXT_COMM_READY  {_c_string(wire.TEXT_COMM_READY)}",
+        f"#define HB_TEXT_CTR_READY   {_c_string(wire.TEXT_CTR_READY)}",
+        f"#define HB_TEXT_CTR_LISTENING {_c_string(wire.TEXT_CTR_LISTENING)}",
+        f"#define HB_TEXT_COMM_LISTENING {_c_string(wire.TEXT_COMM_LISTENING)}",
+        f"#define HB_TEXT_ID_TAIL     {_c_string(wire.BOOT_ID_TAIL)}",
+        f"#define HB_TEXT_FW_TAIL     {_c_string(wire.BOOT_FW_TAIL)}",
+        "",
+        "/* Table 4-1: neighbour offset of global side 1..6 (index side - 1) */",
+        f"#define HB_SIDE_DX {{{', '.join(str(dx) for dx, _ in _offsets())}}}",
+        f"#define HB_SIDE_DY {{{', '.join(str(dy) for _, dy in _offsets())}}}",
+        "",
+    ]
+
+
+def _render(schema: str) -> str:
     lines = [
         "/* hexbot_codes.h - GENERATED by `hexbot gen-header` from protocol/codes.py.",
         " * Do not edit: change the table and regenerate (a test checks this file).",
@@ -33,7 +94,7 @@ def render() -> str:
         "#ifndef HEXBOT_CODES_H",
         "#define HEXBOT_CODES_H",
         "",
-        f"#define HB_SCHEMA_HASH 0x{schema_hash()}UL",
+        schema,
         "",
         "/* Wire constants (Table 3-8, Appendix A) */",
         f"#define HB_START            {wire.START}  /* '*' */",
@@ -48,9 +109,6 @@ def render() -> str:
         f"#define HB_BAUD_IR          {wire.BAUD_IR}UL",
         f"#define HB_BAUD_BOARD       {wire.BAUD_BOARD}UL",
         f"#define HB_BAUD_DEBUG       {wire.BAUD_DEBUG}UL",
-        f"#define HB_CONTROL_ACK_TIMEOUT_TICKS {timing.CONTROL_ACK_TIMEOUT_TICKS}",
-        f"#define HB_SUBSTRATE_ACK_DELAY_TICKS {timing.SUBSTRATE_ACK_DELAY_TICKS}",
-        f"#define HB_ACK_SLOT_TICKS   {timing.ACK_SLOT_TICKS}",
         f"#define HB_MAX_MODULE_ID    {wire.MAX_MODULE_ID}",
         f"#define HB_LOC_COORD_LIMIT  {wire.LOC_COORD_LIMIT}",
         "",
@@ -59,6 +117,7 @@ def render() -> str:
         f"#define HB_FUSE_HIGH     0x{wire.FUSE_HIGH:02X}",
         f"#define HB_FUSE_EXTENDED 0x{wire.FUSE_EXTENDED:02X}",
         "",
+        *_timing(),
         "/* Function codes (Table 3-7 and extensions) */",
     ]
     for fn in CODES.values():
@@ -114,11 +173,39 @@ def render() -> str:
     return "\n".join(lines)
 
 
-def write(path: Path = HEADER_PATH) -> Path:
-    path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(render())
-    return path
+def _values(text: str) -> list[str]:
+    """A header without comments or spacing: what the firmware is built
+    from, not how the file is laid out."""
+    code = re.sub(r"/\*.*?\*/", "", text, flags=re.S)
+    return [" ".join(line.split()) for line in code.splitlines() if line.strip()]
 
 
-def is_stale(path: Path = HEADER_PATH) -> bool:
-    return not path.exists() or path.read_text() != render()
+def schema_hash() -> str:
+    """Eight hex digits over every value of hexbot_codes.h and hexbot_pins.h."""
+    h = hashlib.sha256()
+    for line in _values(_render(SCHEMA_LINE)) + _values(pins_header.render()):
+        h.update(line.encode() + b"\n")
+    return h.hexdigest()[:8]
+
+
+#: The schema of this host's protocol, as the firmware reports it in Status.
+SCHEMA_HASH = int(schema_hash(), 16)
+
+
+def schema_mismatch(reported: int | None) -> str | None:
+    """A one-line warning when a module's firmware was built from another
+    protocol than this host's; None when the schemas agree. ``reported`` is
+    ``StatusReport.schema`` (None: firmware too old to report one)."""
+    if reported is None:
+        return (f"module firmware reports no protocol schema (older build); this host "
+                f"speaks schema {SCHEMA_HASH:08x}: rebuild and flash the firmware")
+    if reported != SCHEMA_HASH:
+        return (f"module firmware speaks protocol schema {reported:08x}, this host "
+                f"{SCHEMA_HASH:08x}: rebuild and flash the firmware, or update the host")
+    return None
+
+
+def render() -> str:
+    h = schema_hash()
+    return _render(f"#define HB_SCHEMA_HASH 0x{h}UL\n#define HB_SCHEMA_HASH_TEXT \"{h}\"")
+

@@ -13,7 +13,8 @@ Reply grammar (``\\n\\r`` = LF CR, as the firmware ends its lines)::
     ack        'ACK' code LF CR                   code 'N' = did nothing,
                                                   '~' = control board time-out
     error      'ERR' code reason LF CR
-    status     'STA' id role localized x y yref error LF CR   (x, y signed bytes)
+    status     'STA' id role localized x y yref error [schema] LF CR
+               (x, y signed bytes; schema: 8 hex digits, absent before it existed)
     msg        'MSG' code a1 a2 a3 a4 LF CR       (control board debug port)
     side       'Side: ' digit LF CR               (localization report)
     yref       'Yref: ' digit LF CR
@@ -38,10 +39,10 @@ EOL = wire.EOL
 #: Phrases that start a text line; the firmware may append a short tail
 #: such as `` ID=03 FW=0.1.0``.
 KNOWN_TEXTS = (
-    "COMM. BOARD READY",
-    "CTR. BOARD READY",
-    "CTR. LISTENING",
-    "COMM. LISTENING",
+    wire.TEXT_COMM_READY,
+    wire.TEXT_CTR_READY,
+    wire.TEXT_CTR_LISTENING,
+    wire.TEXT_COMM_LISTENING,
     "LOCALIZED",
     "NOT LOCALIZED",
     "RECEIVED",
@@ -104,6 +105,7 @@ class StatusReport(Event):
     yref: int = 0
     error: int = 0
     prefix_role: str | None = None
+    schema: int | None = None  # protocol schema hash; None from firmware that predates it
 
 
 @dataclass(frozen=True)
@@ -145,6 +147,9 @@ class Garbage(Event):
 # buffer is a proper prefix of a possible match, or None. -----------------
 
 PARTIAL = "partial"
+_STATUS_FIELDS = 7  # id, role, localized, x, y, yref, last error
+_SCHEMA_DIGITS = 8
+_HEX = re.compile(rb"[0-9a-f]{8}")
 _PREFIX = re.compile(rb"([MS])(\d\d)?: ")
 
 
@@ -284,17 +289,32 @@ class ReplyParser:
         return 7, ev
 
     def _m_status(self, buf: bytes):
-        body = _fixed(buf, b"STA", 7)
-        if body is None or body == PARTIAL:
-            return body
-        ident, role, loc, x, y, yref, err = body
+        # Seven fields, then either LF CR (firmware before the schema) or the
+        # schema's hex digits and LF CR: a hex digit is never LF, so the byte
+        # after the fields tells the two apart.
+        fields = 3 + _STATUS_FIELDS
+        if len(buf) > fields and buf[fields] != EOL[0]:
+            body = _fixed(buf, b"STA", _STATUS_FIELDS + _SCHEMA_DIGITS)
+            if body is None or body == PARTIAL:
+                return body
+            digits = bytes(body[_STATUS_FIELDS:])
+            if not _HEX.fullmatch(digits):
+                return None
+            schema: int | None = int(digits, 16)
+        else:
+            body = _fixed(buf, b"STA", _STATUS_FIELDS)
+            if body is None or body == PARTIAL:
+                return body
+            schema = None
+        ident, role, loc, x, y, yref, err = body[:_STATUS_FIELDS]
         if chr(role) not in "MS-" or loc > 1 or yref > 5 or ident > wire.MAX_MODULE_ID:
             return None
-        ev = StatusReport(raw=buf[:12], module_id=ident, role=chr(role), localized=bool(loc),
+        end = 3 + len(body) + len(EOL)
+        ev = StatusReport(raw=buf[:end], module_id=ident, role=chr(role), localized=bool(loc),
                           x=_signed(x), y=_signed(y), yref=yref, error=err,
-                          prefix_role=self._role)
+                          prefix_role=self._role, schema=schema)
         self._role = self._module = None
-        return 12, ev
+        return end, ev
 
     def _m_msg(self, buf: bytes):
         body = _fixed(buf, b"MSG", 5)
@@ -365,15 +385,14 @@ def reply_error(code: int, reason: int, role: str | None = None,
 
 
 def reply_status(module_id: int, role: str, localized: bool, x: int, y: int, yref: int,
-                 error: int, prefix_role: str | None = None) -> bytes:
+                 error: int, prefix_role: str | None = None,
+                 schema: int | None = None) -> bytes:
+    """A STA reply; ``schema`` None gives the format of firmware before the schema."""
     body = bytes([module_id, ord(role), int(localized), x & 0xFF, y & 0xFF, yref, error])
+    if schema is not None:
+        body += f"{schema:08x}".encode()
     return wire.PREAMBLE + _prefix(prefix_role, module_id if prefix_role else None) + b"STA" + \
         body + EOL
-
-
-def reply_msg(code: int, args: Iterable[int]) -> bytes:
-    args = list(args)
-    return b"MSG" + bytes([code, *args]) + EOL
 
 
 def _prefix(role: str | None, module: int | None) -> bytes:

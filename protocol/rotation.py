@@ -16,8 +16,8 @@ from typing import Literal
 from hexbot.errors import FrameError
 from hexbot.protocol.frames import Command, make
 from hexbot.protocol.lattice import to_body
+from hexbot.protocol.rotation_geometry import Direction
 
-Direction = Literal["CW", "CCW"]
 RoleName = Literal["mobile", "substrate"]
 Timing = tuple[int, int, int]  # t1, t2, t3 in ticks
 

@@ -1,8 +1,6 @@
-/* comm_board.c - pin map of the communication board.
- *
- * Table 3-3 (LEDs) and Table 3-5 (IR channel selector); the listing's
- * IrSel() agrees with the table: selector A = PA2, B = PA1, C = PA0, and
- * channel Yk is selected by k = 4C + 2B + A.
+/* comm_board.c - the communication board's LEDs (Table 3-3) and IR
+ * channel selector (Table 3-5), with the pins of the generated
+ * hexbot_pins.h (protocol/pins.py): channel Yk is selected by k = 4C + 2B + A.
  */
 #include "comm_board.h"
 
@@ -13,37 +11,30 @@
 #include "uart.h"
 
 /* Side LEDs "(1)" = positive, "(2)" = negative; index = side - 1. */
-static const uint8_t led_side_p[6] PROGMEM = {
-    PIN(PORT_A, 6), PIN(PORT_E, 1), PIN(PORT_C, 6),
-    PIN(PORT_C, 3), PIN(PORT_C, 1), PIN(PORT_D, 6),
-};
-static const uint8_t led_side_n[6] PROGMEM = {
-    PIN(PORT_A, 5), PIN(PORT_E, 0), PIN(PORT_C, 7),
-    PIN(PORT_C, 4), PIN(PORT_C, 0), PIN(PORT_D, 5),
-};
-static const uint8_t led_joint[6] PROGMEM = {
-    PIN(PORT_D, 7), PIN(PORT_A, 7), PIN(PORT_E, 2),
-    PIN(PORT_C, 5), PIN(PORT_C, 2), PIN(PORT_D, 4),
-};
+static const uint8_t led_side_p[6] PROGMEM = HB_LED_SIDE_P_PINS;
+static const uint8_t led_side_n[6] PROGMEM = HB_LED_SIDE_N_PINS;
+static const uint8_t led_joint[6] PROGMEM = HB_LED_JOINT_PINS;
 
-/* Selector lines on PORTA. */
-#define SEL_A PA2
-#define SEL_B PA1
-#define SEL_C PA0
+#ifndef HB_SEL_PORT_A
+#error "comm_ir_select() writes the selector lines on PORTA"
+#endif
+#define SEL_A HB_SEL_A_BIT
+#define SEL_B HB_SEL_B_BIT
+#define SEL_C HB_SEL_C_BIT
 #define SEL_MASK ((1 << SEL_A) | (1 << SEL_B) | (1 << SEL_C))
 
 /* Table 3-5: channel (0 centre, side 1..6) -> multiplexer input Yk. */
-static const uint8_t channel_y[7] PROGMEM = {2, 0, 3, 5, 6, 4, 1};
+static const uint8_t channel_y[7] PROGMEM = HB_IR_CHANNEL_Y;
 
 static uint8_t ir_channel;
 
 void comm_board_init(void)
 {
     /* LEDs off = outputs high; selector on the centre; unused pins low. */
-    PORTA = 0xE0;
-    PORTC = 0xFF;
-    PORTD = 0xF0 | (1 << PD0);          /* pull-up on RX0 */
-    PORTE = 0x07;
+    PORTA = HB_LED_MASK_A;
+    PORTC = HB_LED_MASK_C;
+    PORTD = HB_LED_MASK_D | (1 << PD0); /* pull-up on RX0 */
+    PORTE = HB_LED_MASK_E;
     PORTB = (1 << PB2);                 /* pull-up on RX1 */
     DDRA = 0xFF;
     DDRB = (uint8_t)~(1 << PB2);        /* PB2 = RX1 (IR receive) */

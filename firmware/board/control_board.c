@@ -1,4 +1,5 @@
-/* control_board.c - pin map of the control board (Table 3-4). */
+/* control_board.c - joints, magnets and DIP switches of the control board
+ * (Table 3-4), with the pins of the generated hexbot_pins.h (protocol/pins.py). */
 #include "control_board.h"
 
 #include <avr/io.h>
@@ -6,23 +7,17 @@
 
 #include "pins.h"
 
-static const uint8_t joint_pin[6] PROGMEM = {
-    PIN(PORT_A, 2), PIN(PORT_A, 3), PIN(PORT_A, 5),
-    PIN(PORT_A, 4), PIN(PORT_A, 0), PIN(PORT_A, 1),
-};
+static const uint8_t joint_pin[6] PROGMEM = HB_JOINT_PINS;
 /* Side i "(1)" line = positive, "(2)" line = negative. */
-static const uint8_t magnet_p[6] PROGMEM = {
-    PIN(PORT_B, 0), PIN(PORT_D, 3), PIN(PORT_B, 6),
-    PIN(PORT_D, 4), PIN(PORT_B, 1), PIN(PORT_B, 7),
-};
-static const uint8_t magnet_n[6] PROGMEM = {
-    PIN(PORT_D, 6), PIN(PORT_D, 5), PIN(PORT_D, 7),
-    PIN(PORT_B, 4), PIN(PORT_B, 5), PIN(PORT_D, 2),
-};
+static const uint8_t magnet_p[6] PROGMEM = HB_MAGNET_P_PINS;
+static const uint8_t magnet_n[6] PROGMEM = HB_MAGNET_N_PINS;
 
-#define JOINT_MASK 0x3Fu              /* PA0..PA5 */
-#define MAGNET_MASK_B 0xF3u           /* PB0, PB1, PB4..PB7 */
-#define MAGNET_MASK_D 0xFCu           /* PD2..PD7 */
+#ifndef HB_JOINT_PORT_A
+#error "control_joints_all() writes the joints on PORTA"
+#endif
+#if defined(HB_MAGNET_MASK_A) || defined(HB_MAGNET_MASK_C) || defined(HB_MAGNET_MASK_E)
+#error "control_magnets_all_off() clears the magnet lines on PORTB and PORTD only"
+#endif
 
 void control_board_init(void)
 {
@@ -46,9 +41,9 @@ void control_joint(uint8_t joint, uint8_t open)
 void control_joints_all(uint8_t open)
 {
     if (open)
-        PORTA |= JOINT_MASK;
+        PORTA |= HB_JOINT_MASK_A;
     else
-        PORTA &= (uint8_t)~JOINT_MASK;
+        PORTA &= (uint8_t)~HB_JOINT_MASK_A;
 }
 
 void control_magnet_on(uint8_t side, uint8_t pole)
@@ -68,14 +63,14 @@ void control_magnet_off(uint8_t side)
 
 void control_magnets_all_off(void)
 {
-    PORTB &= (uint8_t)~MAGNET_MASK_B;
-    PORTD &= (uint8_t)~MAGNET_MASK_D;
+    PORTB &= (uint8_t)~HB_MAGNET_MASK_B;
+    PORTD &= (uint8_t)~HB_MAGNET_MASK_D;
 }
 
 uint8_t control_module_id(void)
 {
     uint8_t dip = PINC;
-    if (dip & 0xC0u)
+    if (dip & (uint8_t)~HB_DIP_ID_MASK)
         return 0;
-    return dip & 0x3Fu;
+    return dip & HB_DIP_ID_MASK;
 }

@@ -1,5 +1,6 @@
-/* pins.h - a pin as one byte (port index << 3 | bit) and its accessors.
- * Only the board files use it; nothing else in the firmware names a pin. */
+/* pins.h - accessors for a pin as one byte (HB_PIN of the generated
+ * hexbot_pins.h: port index << 3 | bit). Only the board files use it;
+ * nothing else in the firmware names a pin. */
 #ifndef PINS_H
 #define PINS_H
 
@@ -7,17 +8,15 @@
 #include <avr/pgmspace.h>
 #include <stdint.h>
 
-enum { PORT_A = 0, PORT_B, PORT_C, PORT_D, PORT_E };
-
-#define PIN(port, bit) ((uint8_t)(((port) << 3) | (bit)))
+#include "hexbot_pins.h"
 
 static inline volatile uint8_t *pin_port_reg(uint8_t pin)
 {
     switch (pin >> 3) {
-    case PORT_A: return &PORTA;
-    case PORT_B: return &PORTB;
-    case PORT_C: return &PORTC;
-    case PORT_D: return &PORTD;
+    case HB_PORT_A: return &PORTA;
+    case HB_PORT_B: return &PORTB;
+    case HB_PORT_C: return &PORTC;
+    case HB_PORT_D: return &PORTD;
     default: return &PORTE;
     }
 }

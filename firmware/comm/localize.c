@@ -2,7 +2,7 @@
  *
  * Every module that hears the 66 frame starts the flood at the same moment.
  * A localized module (the reference, or one localized before) teaches: on
- * each body side b in turn it repeats MSG1 for LOC_DWELL_TICKS, carrying the
+ * each body side b in turn it repeats MSG1 for HB_LOC_DWELL_TICKS, carrying the
  * cell of the neighbour behind global side g = b + yref (Table 4-1) and the
  * global side S = g + 3 through which that neighbour hears it. A module that
  * is not localized listens on its sides in turn; on hearing a valid MSG1 on
@@ -23,8 +23,8 @@
 #define MSG_BYTE_TICKS 10u /* 3 byte times between the bytes of one MSG1 */
 
 /* Table 4-1: neighbour offset per global side 1..6. */
-static const int8_t dx[6] = {-1, 0, 1, 1, 0, -1};
-static const int8_t dy[6] = {1, 1, 0, -1, -1, 0};
+static const int8_t dx[6] = HB_SIDE_DX;
+static const int8_t dy[6] = HB_SIDE_DY;
 
 static uint8_t wrap6(int8_t v) /* any small integer onto 1..6 */
 {
@@ -37,7 +37,7 @@ static uint8_t wrap6(int8_t v) /* any small integer onto 1..6 */
 
 static uint8_t deadline_passed(tick_t started)
 {
-    return tick_since(started) >= LOC_WINDOW_TICKS;
+    return tick_since(started) >= HB_LOC_WINDOW_TICKS;
 }
 
 static void put_coord(int8_t v)
@@ -80,7 +80,7 @@ static uint8_t catch_msg1(uint8_t *m, int16_t b, tick_t started)
     uint8_t ring[HB_LOC_FRAME_LEN];
     uint8_t n = 0;
     tick_t t0 = tick_now();
-    while (tick_since(t0) < LOC_CATCH_TICKS && !deadline_passed(started)) {
+    while (tick_since(t0) < HB_LOC_CATCH_TICKS && !deadline_passed(started)) {
         if (b < 0) {
             n = 0;
         } else {
@@ -113,7 +113,7 @@ static uint8_t listen(tick_t started)
         for (uint8_t j = 1; j <= 6 && !deadline_passed(started); j++) {
             comm_ir_select(j);
             comm_led_side(j, POLE_N, 1);
-            int16_t b = uart_getc_wait(IR, LOC_LISTEN_TICKS);
+            int16_t b = uart_getc_wait(IR, HB_LOC_LISTEN_TICKS);
             uint8_t got = b >= 0 && catch_msg1(m, b, started);
             comm_led_side(j, POLE_N, 0);
             if (got) {
@@ -146,7 +146,7 @@ static void teach(tick_t started, uint8_t skip)
         comm_led_side(b, POLE_P, 1);
         comm_led_side(b, POLE_N, 1);
         tick_t t0 = tick_now();
-        while (tick_since(t0) < LOC_DWELL_TICKS && !deadline_passed(started)) {
+        while (tick_since(t0) < HB_LOC_DWELL_TICKS && !deadline_passed(started)) {
             uart_putc(IR, HB_START);
             put_coord((int8_t)nx);
             put_coord((int8_t)ny);

@@ -25,23 +25,16 @@
 #define IR UART1
 #define CTRL UART0
 
-#define LINK_READY 'R'
-#define LINK_LISTENING 'L'
 #define HANDSHAKE_TICKS 300u       /* wait this long for the control board at boot */
 #define HANDSHAKE_RETRY_TICKS 10u  /* resend 'R' every 100 ms (thesis) */
 #define LINK_ID_TICKS 3u           /* the id byte follows 'R'/'L' at once */
-#define PC_BYTE_TIMEOUT_TICKS 34u  /* 10 byte times at 300 baud */
-#define IRSEL_HOLD_TICKS 1000u     /* a side channel falls back to the centre after 10 s of silence */
 
 /* Boot slots: every module of a cluster boots at once and the PC hears them
  * all on one IR medium, so the texts that carry the id go out in the
- * module's own slot: rank (id - 1) mod BOOT_SLOTS, the first slot at
- * BOOT_FIRST_SLOT_TICKS after reset (the handshake and LFlash1/2 are over
+ * module's own slot: rank (id - 1) mod HB_BOOT_SLOTS, the first slot at
+ * HB_BOOT_FIRST_SLOT_TICKS after reset (the handshake and LFlash1/2 are over
  * by 1.7 s), each slot as long as the slot text at 300 baud plus a guard. */
-#define BOOT_SLOTS 8u
-#define BOOT_FIRST_SLOT_TICKS 200u
-#define BOOT_GUARD_TICKS 5u
-#define BOOT_SLOT_TICKS ((REPLY_BYTES_BOOT * IR_BYTE_TICKS_X10 + 9u) / 10u + BOOT_GUARD_TICKS)
+#define BOOT_SLOT_TICKS HB_BOOT_SLOT_TICKS(REPLY_BYTES_BOOT)
 _Static_assert(REPLY_BYTES_BOOT < 200u, "version string too long for the boot text");
 
 module_state_t g_state;
@@ -59,15 +52,15 @@ static uint8_t boot_left;
 /* 'R' id or 'L' id from the control board, outside command exchanges. */
 static void link_byte(uint8_t b)
 {
-    if (b != LINK_READY && b != LINK_LISTENING)
+    if (b != HB_LINK_READY && b != HB_LINK_LISTENING)
         return;
     int16_t id = uart_getc_wait(CTRL, LINK_ID_TICKS);
     if (id >= 0 && id <= HB_MAX_MODULE_ID)
         g_state.id = (uint8_t)id;
-    if (b == LINK_READY) {
+    if (b == HB_LINK_READY) {
         control_ready = 1;
         g_state.control_up = 0;
-        uart_putc(CTRL, LINK_READY);
+        uart_putc(CTRL, HB_LINK_READY);
     } else {
         g_state.control_up = 1;
     }
@@ -135,7 +128,7 @@ static uint8_t forward(uint8_t code, const uint8_t *a)
         }
         if (b == code)
             return code;
-        if (b == LINK_READY || b == LINK_LISTENING) {
+        if (b == HB_LINK_READY || b == HB_LINK_LISTENING) {
             link_byte((uint8_t)b); /* the control board restarted meanwhile */
             continue;
         }
@@ -194,7 +187,7 @@ static void combined_rotation(uint8_t code, const uint8_t *a)
 static void localize(uint8_t code, tick_t started)
 {
     loc_result_t r = localize_run(started);
-    reply_wait_turn(SLOTS_LOCALIZE);
+    reply_wait_turn(HB_SLOTS_LOCALIZE);
     if (r == LOC_NOT_HEARD) {
         reply_err_now(code, HB_ERR_NOT_HEARD);
         return;
@@ -328,7 +321,7 @@ static uint8_t handshake(void)
         tick_t last = start;
         while (!g_state.control_up && tick_since(start) < HANDSHAKE_TICKS) {
             if (tick_since(last) >= HANDSHAKE_RETRY_TICKS) {
-                uart_putc(CTRL, LINK_READY);
+                uart_putc(CTRL, HB_LINK_READY);
                 last = tick_now();
             }
             poll_inputs();
@@ -351,8 +344,8 @@ static void __attribute__((noinline)) boot(void)
     uint8_t text[REPLY_BYTES_BOOT];
     uart_write(IR, text, reply_boot_text(text, BOOT_COMM_READY));
     uint8_t texts = handshake();
-    uint8_t rank = g_state.id ? (uint8_t)((g_state.id - 1u) % BOOT_SLOTS) : 0u;
-    tick_t at = BOOT_FIRST_SLOT_TICKS + (tick_t)rank * BOOT_SLOT_TICKS;
+    uint8_t rank = g_state.id ? (uint8_t)((g_state.id - 1u) % HB_BOOT_SLOTS) : 0u;
+    tick_t at = HB_BOOT_FIRST_SLOT_TICKS + (tick_t)rank * BOOT_SLOT_TICKS;
     while ((int16_t)(tick_now() - at) < 0) { /* ticks count from reset */
         poll_inputs();
         sys_idle();
@@ -375,7 +368,7 @@ int main(void)
     sys_init();
     uart_init(CTRL, HB_BAUD_BOARD);
     uart_init(IR, HB_BAUD_IR);
-    frame_init(&pc_rx, HB_PC_FRAME_LEN, PC_BYTE_TIMEOUT_TICKS);
+    frame_init(&pc_rx, HB_PC_FRAME_LEN, HB_PC_BYTE_TIMEOUT_TICKS);
     g_state.role = HB_ROLE_MOBILE;
     leds_init(wait_or_abort);
     reply_init(poll_inputs);
@@ -390,7 +383,7 @@ int main(void)
             memcpy(frame, pending, sizeof frame);
             handle_frame(frame, tick_now());
         } else {
-            if (comm_ir_channel() != IR_CENTRE && tick_since(last_ir_byte) > IRSEL_HOLD_TICKS)
+            if (comm_ir_channel() != IR_CENTRE && tick_since(last_ir_byte) > HB_IRSEL_HOLD_TICKS)
                 comm_ir_select(IR_CENTRE);
             sys_idle();
         }

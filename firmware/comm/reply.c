@@ -79,7 +79,7 @@ static uint8_t *boot_line(uint8_t *p, const char *text, uint8_t with_id, uint8_t
 {
     p = text_P(p, text);
     if (with_id) {
-        p = text_P(p, PSTR(BOOT_ID_TAIL));
+        p = text_P(p, PSTR(HB_TEXT_ID_TAIL));
         *p++ = (uint8_t)('0' + (g_state.id / 10u) % 10u);
         *p++ = (uint8_t)('0' + g_state.id % 10u);
     }
@@ -94,13 +94,13 @@ uint8_t reply_boot_text(uint8_t *buf, uint8_t which)
 {
     uint8_t *p = text_P(buf, PSTR("\n\r\n\r"));
     if (which & BOOT_COMM_READY)
-        p = boot_line(p, PSTR(BOOT_TEXT_COMM_READY), 0, 1);
+        p = boot_line(p, PSTR(HB_TEXT_COMM_READY), 0, 1);
     if (which & BOOT_CTR_READY)
-        p = boot_line(p, PSTR(BOOT_TEXT_CTR_READY), 1, 0);
+        p = boot_line(p, PSTR(HB_TEXT_CTR_READY), 1, 0);
     if (which & BOOT_CTR_LISTENING)
-        p = boot_line(p, PSTR(BOOT_TEXT_CTR_LISTENING), 0, 0);
+        p = boot_line(p, PSTR(HB_TEXT_CTR_LISTENING), 0, 0);
     if (which & BOOT_COMM_LISTENING)
-        p = boot_line(p, PSTR(BOOT_TEXT_COMM_LISTENING), 1, 1);
+        p = boot_line(p, PSTR(HB_TEXT_COMM_LISTENING), 1, 1);
     return (uint8_t)(p - buf);
 }
 
@@ -124,20 +124,20 @@ void reply_err_now(uint8_t code, uint8_t reason)
 
 void reply_ack(uint8_t code)
 {
-    reply_wait_turn(SLOTS_ACK);
+    reply_wait_turn(HB_SLOTS_ACK);
     reply_ack_now(code);
 }
 
 void reply_err(uint8_t code, uint8_t reason)
 {
     g_state.last_error = reason;
-    reply_wait_turn(SLOTS_ACK);
+    reply_wait_turn(HB_SLOTS_ACK);
     reply_err_now(code, reason);
 }
 
 void reply_status(void)
 {
-    reply_wait_turn(SLOTS_STATUS);
+    reply_wait_turn(HB_SLOTS_STATUS);
     prefix();
     uart_puts_P(IR, PSTR("STA"));
     uart_putc(IR, g_state.id);
@@ -149,5 +149,6 @@ void reply_status(void)
     uart_putc(IR, (uint8_t)g_state.y);
     uart_putc(IR, g_state.yref);
     uart_putc(IR, g_state.last_error);
+    uart_puts_P(IR, PSTR(HB_SCHEMA_HASH_TEXT)); /* the protocol it was built from */
     eol();
 }

@@ -4,8 +4,8 @@
  * Schedule: legacy mode (no Select since boot) answers at once as mobile
  * and after 1 s as substrate (thesis). Addressed mode answers after
  * rank x slots x HB_ACK_SLOT_TICKS, where "slots" is how many slots the
- * reply kind needs on the 300-baud link (1 for ACK/ERR, more for status
- * and the localization report), so that replies of modules answering the
+ * reply kind needs on the 300-baud link (HB_SLOTS_ACK for ACK/ERR,
+ * HB_SLOTS_STATUS, HB_SLOTS_LOCALIZE), so that replies of modules answering the
  * same broadcast never overlap.
  */
 #ifndef REPLY_H
@@ -16,39 +16,21 @@
 #include "hexbot_codes.h"
 #include "version.h"
 
-/* Ticks one byte occupies at 300 baud, rounded up with margin (3.33 ms x 10). */
-#define IR_BYTE_TICKS_X10 34u
-#define REPLY_SLOTS(bytes) \
-    ((((bytes) * IR_BYTE_TICKS_X10 + 9u) / 10u + HB_ACK_SLOT_TICKS - 1u) / HB_ACK_SLOT_TICKS)
-
-/* Longest replies in addressed mode: preamble 4 + "M03: " 5 + body. */
-#define REPLY_BYTES_ACK (4u + 5u + 6u)
-#define REPLY_BYTES_ERR (4u + 5u + 7u)
-#define REPLY_BYTES_STATUS (4u + 5u + 12u)
-/* Localization: report (4 + 11 + 9 + 9 + 13) then the ACK. */
-#define REPLY_BYTES_LOCALIZE (46u + REPLY_BYTES_ACK)
-
 /* Boot texts (reply_boot_text), in the thesis' order; one bit each. */
 #define BOOT_COMM_READY 0x01u     /* "COMM. BOARD READY FW=x" */
 #define BOOT_CTR_READY 0x02u      /* "CTR. BOARD READY ID=nn" */
 #define BOOT_CTR_LISTENING 0x04u  /* "CTR. LISTENING" */
 #define BOOT_COMM_LISTENING 0x08u /* "COMM. LISTENING ID=nn FW=x" */
-#define BOOT_TEXT_COMM_READY "COMM. BOARD READY"
-#define BOOT_TEXT_CTR_READY "CTR. BOARD READY"
-#define BOOT_TEXT_CTR_LISTENING "CTR. LISTENING"
-#define BOOT_TEXT_COMM_LISTENING "COMM. LISTENING"
-#define BOOT_ID_TAIL " ID="
-#define BOOT_FW_TAIL " FW=" HB_FW_VERSION
+#define BOOT_FW_TAIL HB_TEXT_FW_TAIL HB_FW_VERSION
 #define TEXT_LEN(s) (sizeof(s) - 1u)
-/* What a module sends once its id is known: preamble, then three lines. */
-#define REPLY_BYTES_BOOT                                                              \
-    (4u + TEXT_LEN(BOOT_TEXT_CTR_READY BOOT_ID_TAIL "nn\n\r") +                        \
-     TEXT_LEN(BOOT_TEXT_CTR_LISTENING "\n\r") +                                        \
-     TEXT_LEN(BOOT_TEXT_COMM_LISTENING BOOT_ID_TAIL "nn" BOOT_FW_TAIL "\n\r"))
-
-#define SLOTS_ACK REPLY_SLOTS(REPLY_BYTES_ERR)
-#define SLOTS_STATUS REPLY_SLOTS(REPLY_BYTES_STATUS)
-#define SLOTS_LOCALIZE REPLY_SLOTS(REPLY_BYTES_LOCALIZE)
+/* What a module sends once its id is known: preamble, then three lines
+ * (the protocol counts them without the version: HB_BOOT_TEXT_FIXED_BYTES). */
+#define REPLY_BYTES_BOOT (HB_BOOT_TEXT_FIXED_BYTES + TEXT_LEN(HB_FW_VERSION))
+_Static_assert(REPLY_BYTES_BOOT ==
+                   4u + TEXT_LEN(HB_TEXT_CTR_READY HB_TEXT_ID_TAIL "nn\n\r") +
+                       TEXT_LEN(HB_TEXT_CTR_LISTENING "\n\r") +
+                       TEXT_LEN(HB_TEXT_COMM_LISTENING HB_TEXT_ID_TAIL "nn" BOOT_FW_TAIL "\n\r"),
+               "boot text and HB_BOOT_TEXT_FIXED_BYTES disagree");
 
 typedef uint8_t (*poll_fn)(void);
 

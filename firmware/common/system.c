@@ -7,7 +7,11 @@
 #include <avr/wdt.h>
 #include <util/atomic.h>
 
-#define TICK_RELOAD 0x64u /* 256 - 156 counts of 64 us = 9.984 ms */
+#include "hexbot_codes.h"
+
+/* The tick: 256 - HB_TICK_RELOAD counts of 64 us at the protocol's clock. */
+#define TICK_RELOAD HB_TICK_RELOAD
+_Static_assert(F_CPU == HB_F_CPU, "the Makefile's F_CPU is not the protocol's");
 
 static volatile tick_t ticks;
 

@@ -20,8 +20,6 @@
 #include "uart.h"
 #include "version.h"
 
-#define LINK_READY 'R'     /* handshake: "ready", followed by the module id */
-#define LINK_LISTENING 'L' /* handshake: "listening", followed by the module id */
 #define HANDSHAKE_RETRY_TICKS 10u
 #define HANDSHAKE_MAX_TRIES 50u
 #define BOARD_BYTE_TIMEOUT_TICKS 3u /* 6 byte times at 4800 baud */
@@ -59,8 +57,8 @@ static uint8_t poll_links(void)
     for (uint8_t src = 0; src < 2; src++) {
         int16_t b;
         while ((b = uart_getc(src)) >= 0) {
-            if (src == SRC_COMM && rx[src].len == 0 && b == LINK_READY) {
-                send_link(LINK_LISTENING); /* comm board (re)started */
+            if (src == SRC_COMM && rx[src].len == 0 && b == HB_LINK_READY) {
+                send_link(HB_LINK_LISTENING); /* comm board (re)started */
                 continue;
             }
             frame_result_t r = frame_push(&rx[src], (uint8_t)b);
@@ -109,11 +107,11 @@ static void run_pending(void)
 static uint8_t handshake(void)
 {
     for (uint8_t tries = 0; tries < HANDSHAKE_MAX_TRIES; tries++) {
-        send_link(LINK_READY);
+        send_link(HB_LINK_READY);
         tick_t start = tick_now();
         while (tick_since(start) < HANDSHAKE_RETRY_TICKS) {
             int16_t b = uart_getc(SRC_COMM);
-            if (b == LINK_READY)
+            if (b == HB_LINK_READY)
                 return 1;
             if (b < 0)
                 sys_idle();
@@ -156,7 +154,7 @@ int main(void)
     uart_puts_P(SRC_DEBUG, PSTR("\n\r"));
     if (handshake())
         debug_line_P(PSTR("COMM. BOARD READY"));
-    send_link(LINK_LISTENING);
+    send_link(HB_LINK_LISTENING);
     debug_line_P(PSTR("CTR. LISTENING"));
 
     for (;;) {

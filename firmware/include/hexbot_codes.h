@@ -4,7 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0xd2fbafccUL
+#define HB_SCHEMA_HASH 0xd39fc01bUL
+#define HB_SCHEMA_HASH_TEXT "d39fc01b"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */
@@ -19,9 +20,6 @@
 #define HB_BAUD_IR          300UL
 #define HB_BAUD_BOARD       4800UL
 #define HB_BAUD_DEBUG       4800UL
-#define HB_CONTROL_ACK_TIMEOUT_TICKS 250
-#define HB_SUBSTRATE_ACK_DELAY_TICKS 100
-#define HB_ACK_SLOT_TICKS   60
 #define HB_MAX_MODULE_ID    63
 #define HB_LOC_COORD_LIMIT  99
 
@@ -29,6 +27,55 @@
 #define HB_FUSE_LOW      0x62
 #define HB_FUSE_HIGH     0xD9
 #define HB_FUSE_EXTENDED 0xFF
+
+/* Timing (protocol/timing.py). A tick is Timer0 at F_CPU / 64 reloaded with
+ * HB_TICK_RELOAD: 156 x 64 us = 9.984 ms, the thesis' 10 ms. */
+#define HB_F_CPU            1000000UL
+#define HB_TICK_RELOAD      0x64u
+/* Ticks of one 300-baud byte, x10 and rounded up */
+#define HB_IR_BYTE_TICKS_X10 34u
+#define HB_IR_TICKS(bytes)  (((bytes) * HB_IR_BYTE_TICKS_X10 + 9u) / 10u)
+#define HB_CONTROL_ACK_TIMEOUT_TICKS 250u
+#define HB_SUBSTRATE_ACK_DELAY_TICKS 100u
+#define HB_ACK_SLOT_TICKS   60u
+#define HB_PC_BYTE_TIMEOUT_TICKS 34u
+#define HB_IRSEL_HOLD_TICKS 1000u
+/* Longest replies in addressed mode (preamble, 'M03: ', body) and their slots */
+#define HB_REPLY_BYTES_ACK  15u
+#define HB_REPLY_BYTES_ERR  16u
+#define HB_REPLY_BYTES_STATUS 29u
+#define HB_REPLY_BYTES_LOCALIZE 61u
+#define HB_SLOTS_ACK        1u
+#define HB_SLOTS_STATUS     2u
+#define HB_SLOTS_LOCALIZE   4u
+/* Boot slots: rank (id - 1) mod HB_BOOT_SLOTS; the slot text is
+ * HB_BOOT_TEXT_FIXED_BYTES + the length of the version string. */
+#define HB_BOOT_SLOTS       8u
+#define HB_BOOT_FIRST_SLOT_TICKS 200u
+#define HB_BOOT_GUARD_TICKS 5u
+#define HB_BOOT_TEXT_FIXED_BYTES 71u
+#define HB_BOOT_SLOT_TICKS(text_bytes) (HB_IR_TICKS(text_bytes) + HB_BOOT_GUARD_TICKS)
+/* Localization (code 66) */
+#define HB_LOC_LISTEN_TICKS 6u
+#define HB_LOC_CATCH_TICKS  40u
+#define HB_LOC_DWELL_TICKS  80u
+#define HB_LOC_HOPS         4u
+#define HB_LOC_WINDOW_TICKS 2084u
+
+/* Handshake between the boards, each byte followed by the module id */
+#define HB_LINK_READY       82  /* 'R' */
+#define HB_LINK_LISTENING   76  /* 'L' */
+/* Boot texts */
+#define HB_TEXT_COMM_READY  "COMM. BOARD READY"
+#define HB_TEXT_CTR_READY   "CTR. BOARD READY"
+#define HB_TEXT_CTR_LISTENING "CTR. LISTENING"
+#define HB_TEXT_COMM_LISTENING "COMM. LISTENING"
+#define HB_TEXT_ID_TAIL     " ID="
+#define HB_TEXT_FW_TAIL     " FW="
+
+/* Table 4-1: neighbour offset of global side 1..6 (index side - 1) */
+#define HB_SIDE_DX {-1, 0, 1, 1, 0, -1}
+#define HB_SIDE_DY {1, 1, 0, -1, -1, 0}
 
 /* Function codes (Table 3-7 and extensions) */
 #define HB_FN_JX_OPEN            1  /* Open a solenoid; i 1..6 */

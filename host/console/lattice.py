@@ -16,11 +16,11 @@ from rich.text import Text
 from textual.widgets import Static
 
 from hexbot.host.cluster import ClusterModel
+from hexbot.protocol.lattice import SIDE_OFFSETS
 
 CELL_W = 5
 ARROWS = {1: "\u2196", 2: "\u2191", 3: "\u2197", 4: "\u2198", 5: "\u2193", 6: "\u2199"}
 STYLE = {"S": "bold cyan", "M": "bold green"}
-NEIGHBOURS = ((-1, 1), (0, 1), (1, 0), (1, -1), (0, -1), (-1, 0))
 
 
 def lattice_cells(model: ClusterModel) -> dict[tuple[int, int], tuple[str, str, int | None]]:
@@ -57,7 +57,7 @@ def draw_lattice(model: ClusterModel) -> Text:
     if not cells and not ghosts:
         return Text("no positions yet: localize the cluster (key l)", style="dim")
     occupied = set(cells) | set(ghosts)
-    empty = {(x + dx, y + dy) for (x, y) in occupied for dx, dy in NEIGHBOURS} - occupied
+    empty = {(x + dx, y + dy) for (x, y) in occupied for dx, dy in SIDE_OFFSETS.values()} - occupied
     every = occupied | empty
     rows = [-(x + 2 * y) for x, y in every]
     cols = [x * CELL_W for x, y in every]

@@ -10,12 +10,12 @@ substrate (even one that moves in the same parallel step).
 
 from __future__ import annotations
 
-from hexbot.planning.hexlattice import ROTATIONS, Cell, RotationRule
+from hexbot.planning.hexlattice import ROTATIONS, Cell, Rotation
 
 
 def hex_actuate(
     src: Cell, dst: Cell, occupied: frozenset[Cell]
-) -> tuple[RotationRule, Cell] | None:
+) -> tuple[Rotation, Cell] | None:
     """(rule, substrate cell) to go from ``src`` to ``dst``, or None."""
     chosen = None
     for rule in ROTATIONS:

@@ -11,6 +11,7 @@ from hexbot.hil_sim.module import LED_PINS, decode_actuators
 from hexbot.hil_sim.plant import NEG, OFF, POS
 from hexbot.protocol import codes, frames, parser
 from hexbot.protocol.codes import Board, ErrorCode
+from hexbot.protocol.header import SCHEMA_HASH, schema_mismatch
 
 
 def sample_args(fn: codes.FunctionCode) -> list[int]:
@@ -46,6 +47,8 @@ def test_every_function_code_is_acknowledged(single: Bench, fn: codes.FunctionCo
         (sta,) = replies
         assert isinstance(sta, parser.StatusReport)
         assert (sta.module_id, sta.role, sta.localized) == (1, "M", False)
+        assert sta.schema == SCHEMA_HASH  # built from this protocol
+        assert schema_mismatch(sta.schema) is None
         return
     ack = single_ack(replies, fn.code)
     if fn.code == 69:

@@ -7,12 +7,15 @@ from __future__ import annotations
 from fwsim import Bench, scenario_file
 
 from hexbot.hil_sim.geometry import neighbor
-from hexbot.protocol import parser
+from hexbot.protocol import parser, timing, wire
 
 
-#: Localize window (4 hops of 4.8 s sweeps, 20.8 s), then one 2.4 s report slot per module.
-def localize_s(modules: int) -> float:
-    return 20.8 + 2.4 * modules + 2.0
+def localize_s(bench: Bench) -> float:
+    """From sending a 66 to every report of a cluster addressed with Select(0)
+    (rank id - 1): the frame, then the protocol's bound."""
+    sim = bench.sim
+    frame = timing.wire_seconds(wire.PC_FRAME_LEN, wire.BAUD_IR)
+    return frame + timing.reply_timeout_s(66, len(sim.modules), last_rank=max(sim.modules) - 1)
 
 
 def reports(events: list[parser.Event]) -> dict[int, dict]:
@@ -56,7 +59,7 @@ def run_localization(bench: Bench, ref: int) -> dict[int, dict]:
     bench.sim.events.clear()
     bench.drain()
     bench.send(b"*B" + b"N" * 8 + b"#")  # 'B' = 66, Localize
-    bench.until(lambda b: len(b.replies()) >= n, localize_s(n))
+    bench.until(lambda b: len(b.replies()) >= n, localize_s(bench))
     bench.run(1.0)
     replies_heard = bench.events()
     bench.drain()
@@ -95,7 +98,7 @@ def test_oriented_cluster_with_the_reference_on_the_rim(images, tmp_path):
 def test_a_second_localize_keeps_positions(images):
     bench = Bench.boot("flower7")
     run_localization(bench, ref=1)
-    again = bench.command("Localize", replies=7, timeout=localize_s(7))
+    again = bench.command("Localize", replies=7, timeout=localize_s(bench))
     assert [(r.code, r.module) for r in again] == [(66, i) for i in range(1, 8)]
     check_cluster(bench, ref=1)
     # A mobile rotation moves the module: its position is no longer known.

@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 from hexbot.errors import FrameError
 from hexbot.protocol import frames, parser, wire
 from hexbot.protocol.codes import CODES, ErrorCode
+from hexbot.protocol.header import SCHEMA_HASH
 
 
 @dataclass
@@ -126,7 +127,8 @@ class PtyResponder:
                            + f"Pos: {x:+03d}{y:+03d}".encode() + wire.EOL)
             if code == 70:
                 self.write(parser.reply_status(m.ident, m.role, m.localized, *m.position,
-                                               m.yref, 0, prefix_role=m.role))
+                                               m.yref, 0, prefix_role=m.role,
+                                               schema=SCHEMA_HASH))
                 continue
             if code == 71:
                 m.role = "M" if cmd.args[0] == 1 else "S"

@@ -16,7 +16,7 @@ from hexbot.planning.hexlattice import (
     neighbor,
     ring_cell,
     rotate_cell,
-    rules_to,
+    rotations_to,
     side_towards,
     vertices,
     wrap,
@@ -87,7 +87,7 @@ def test_table_4_3_is_the_rotation_of_one_row_and_follows_the_substrate_goal_rul
 def test_every_rotation_can_be_undone_over_the_same_cells():
     for rule in ROTATIONS:
         sub, goal, swept = rule.at((0, 0))
-        back = [r for r in rules_to(side_towards(goal, (0, 0))) if r.at(goal)[0] == sub]
+        back = [r for r in rotations_to(side_towards(goal, (0, 0))) if r.at(goal)[0] == sub]
         assert len(back) == 1
         assert set(back[0].at(goal)[2]) == set(swept)
         assert back[0].direction != rule.direction
@@ -95,5 +95,5 @@ def test_every_rotation_can_be_undone_over_the_same_cells():
 
 def test_two_rotations_reach_each_neighbour():
     for side in range(1, 7):
-        joints = sorted((r.joint, r.direction) for r in rules_to(side))
+        joints = sorted((r.joint, r.direction) for r in rotations_to(side))
         assert joints == sorted([(wrap(side + 1), "CW"), (side, "CCW")])

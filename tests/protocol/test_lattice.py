@@ -33,3 +33,8 @@ def test_table_3_5_selector():
 def test_distance():
     assert L.distance((0, 0), (2, -1)) == 2
     assert L.distance((0, 0), (1, 1)) == 2
+
+
+def test_table_3_5_channels_as_printed():
+    # Y0 side 1, Y1 side 6, Y2 centre (PC), Y3 side 2, Y4 side 5, Y5 side 3, Y6 side 4.
+    assert L.CHANNEL_SIDE == {0: 1, 1: 6, 2: L.CENTRE, 3: 2, 4: 5, 5: 3, 6: 4, 7: None}

@@ -59,6 +59,25 @@ def test_status_and_error_replies():
     assert "ARG_RANGE" in err.describe()
 
 
+def test_status_carries_the_schema_and_older_firmware_none():
+    new = p.reply_status(5, "S", True, 1, -1, 2, 0, prefix_role="S", schema=0x0123ABCD)
+    old = p.reply_status(6, "M", False, 0, 0, 0, 0, prefix_role="M")
+    assert len(new) == len(old) + 8
+    first, second = parse_all(new + old)
+    assert (first.module_id, first.schema) == (5, 0x0123ABCD)
+    assert first.raw == new[new.index(b"STA"):]
+    assert (second.module_id, second.schema) == (6, None)
+    for data in (new, old):  # either format, a byte at a time
+        parser = ReplyParser()
+        events = [e for b in data for e in parser.feed(bytes([b]))] + parser.flush()
+        assert events == parse_all(data)
+
+
+def test_status_with_a_damaged_schema_is_not_a_status():
+    bad = p.reply_status(5, "S", True, 1, -1, 2, 0, schema=0x0123ABCD).replace(b"0123", b"01\x0023")
+    assert not any(isinstance(e, p.StatusReport) for e in parse_all(bad))
+
+
 def test_byte_at_a_time_equals_whole():
     data = THESIS_SUBSTRATE_ACK + b"\n\r\n\rLOCALIZED\n\rSide: 1\n\r"
     parser = ReplyParser()
@@ -94,6 +113,7 @@ VALID_REPLIES = [
     b"\n\r\n\rCOMM. BOARD READY\n\r",
     b"\n\r\n\rLOCALIZED\n\rSide: 3\n\rYref: 0\n\rPos: +02-01\n\r",
     p.reply_status(9, "S", False, 0, 0, 0, 2, prefix_role="S"),
+    p.reply_status(4, "M", True, -3, 2, 5, 0, prefix_role="M", schema=0xD39FC01B),
     p.reply_error(25, 1, "M", 3),
     b"\n\r\n\rACK\x05\n\rMSG\x05\x03\x0aNN\n\r",
 ]
