@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 
 from hexbot.host import endpoints
-from hexbot.host.events import HostEvent, Listener, PortChanged
+from hexbot.host.events import HostEvent, HostWarning, Listener, PortChanged
 from hexbot.host.link import LinkState
 from hexbot.host.session import Session
 
@@ -41,6 +41,8 @@ def session(args: argparse.Namespace, *, wait_s: float = 5.0, verbose_states: bo
 
 
 def _print_state(event: HostEvent) -> None:
-    if isinstance(event, PortChanged) and event.state in (LinkState.LOST, LinkState.CONNECTED):
+    if isinstance(event, HostWarning):
+        print(f"warning: {event.text}", file=sys.stderr, flush=True)
+    elif isinstance(event, PortChanged) and event.state in (LinkState.LOST, LinkState.CONNECTED):
         print(f"{event.port}: {event.state.value} {event.detail}".rstrip(),  # type: ignore[attr-defined]
               file=sys.stderr, flush=True)

@@ -57,5 +57,14 @@ class SimVerdict:
     verdict: PlantVerdict
 
 
-HostEvent = Traffic | Observed | PortChanged | SimVerdict
+@dataclass(frozen=True)
+class HostWarning:
+    """Something the user must know that is no error of one command (a
+    module's firmware speaks another protocol schema)."""
+
+    t: float
+    text: str
+
+
+HostEvent = Traffic | Observed | PortChanged | SimVerdict | HostWarning
 Listener = Callable[[HostEvent], None]

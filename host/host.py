@@ -26,6 +26,7 @@ from hexbot.host.cluster import ClusterModel
 from hexbot.host.events import (
     Direction,
     HostEvent,
+    HostWarning,
     Listener,
     Observed,
     PortChanged,
@@ -36,7 +37,8 @@ from hexbot.host.link import Link, LinkState, PortSettings
 from hexbot.host.session_log import SessionLog
 from hexbot.protocol import frames
 from hexbot.protocol.frames import Command
-from hexbot.protocol.parser import Event, ReplyParser
+from hexbot.protocol.header import schema_mismatch
+from hexbot.protocol.parser import Event, ReplyParser, StatusReport
 from hexbot.protocol.simulation import PlantVerdict, SimulatorAccess
 
 #: Port names: the central IR transceiver and one control board's UART1.
@@ -92,6 +94,8 @@ class Host:
         self.changed = threading.Condition(self.lock)
         self._journal: list[Observed] = []
         self._listeners: list[Listener] = []
+        self.warnings: list[str] = []
+        self._schema_checked: set[int] = set()
         self.clock: Clock = WallClock(self.changed)
         if log is not None:
             log.capture.use_clock(lambda: self.clock.now())
@@ -190,6 +194,18 @@ class Host:
         if self.log:
             self.log.event(t, port, ev)
         self._notify(obs)
+        if isinstance(ev, StatusReport) and ev.module_id not in self._schema_checked:
+            self._schema_checked.add(ev.module_id)
+            why = schema_mismatch(ev.schema)
+            if why is not None:
+                self.warn(t, f"module {ev.module_id}: {why}")
+
+    def warn(self, t: float, text: str) -> None:
+        """Tell the user once, in the log and to every listener."""
+        self.warnings.append(text)
+        if self.log:
+            self.log.note("host", f"warning: {text}")
+        self._notify(HostWarning(t, text))
 
     def _verdict(self, verdict: PlantVerdict) -> None:
         if self.log:

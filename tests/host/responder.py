@@ -39,6 +39,7 @@ class PtyResponder:
     modules: list[FakeModule] = field(default_factory=lambda: [
         FakeModule(i + 1, pos, yref=i % 6) for i, pos in enumerate(FLOWER)])
     silent: bool = False  # swallow everything (time-out tests)
+    schema: int = SCHEMA_HASH  # protocol schema the fake firmware reports in Status
 
     def __post_init__(self) -> None:
         self.master, self.slave = os.openpty()
@@ -128,7 +129,7 @@ class PtyResponder:
             if code == 70:
                 self.write(parser.reply_status(m.ident, m.role, m.localized, *m.position,
                                                m.yref, 0, prefix_role=m.role,
-                                               schema=SCHEMA_HASH))
+                                               schema=self.schema))
                 continue
             if code == 71:
                 m.role = "M" if cmd.args[0] == 1 else "S"

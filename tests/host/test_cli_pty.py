@@ -139,3 +139,18 @@ def test_monitor_over_loop_url_sees_its_own_frames_as_garbage(log_dir, capsys):
         obs = session.wait_for(lambda o: True, mark, 3.0)
     assert obs is not None and type(obs.event).__name__ == "Garbage"
     assert obs.event.raw == b"*ANNNNNNNN#"
+
+
+def test_a_module_with_another_protocol_schema_is_warned_about(responder, log_dir, capsys):
+    from hexbot.protocol.header import SCHEMA_HASH
+
+    responder.schema = SCHEMA_HASH ^ 0xFFFF  # firmware built from another protocol table
+    assert main(["send", "Status", "--module", "2", "--port", responder.path]) == 0
+    err = capsys.readouterr().err
+    assert f"warning: module 2: module firmware speaks protocol schema {SCHEMA_HASH ^ 0xFFFF:08x}" \
+        in err
+
+
+def test_a_module_with_this_schema_gives_no_warning(responder, log_dir, capsys):
+    assert main(["send", "Status", "--module", "2", "--port", responder.path]) == 0
+    assert "warning" not in capsys.readouterr().err
