@@ -19,7 +19,7 @@ import math
 from collections.abc import Iterable, Sequence
 
 from hexbot.protocol import wire
-from hexbot.protocol.codes import CODES, Board
+from hexbot.protocol.codes import CODES, Board, lookup
 from hexbot.protocol.wire import BAUD_BOARD, BAUD_DEBUG, BAUD_IR, F_CPU
 
 __all__ = [
@@ -170,17 +170,20 @@ def _rotation(a: Sequence[int]) -> int:
 #: Ticks each function runs before its reply, from its arguments (firmware:
 #: common/sequence.c, comm/leds.c). Control functions count too: the comm
 #: board mirrors them on its LEDs after the echo and only then replies.
-_RUN_TICKS = {
-    5: _walk(6), 15: _walk(6), 16: _walk(6),  # JTest, SPTest, SNTest
-    21: _rotation, 22: _rotation, 23: _rotation, 24: _rotation,  # MCW..SCCW
-    36: _walk(6), 37: _walk(6), 43: _walk(6),  # SidePTest, SideNTest, JointTest
-    46: _walk(18), 47: _walk(3), 48: _walk(1), 49: _walk(1),  # LCircle, LColor, LFlash1/2
-    50: lambda a: 20,  # LYref: two 10-tick blinks
-    56: _rotation, 57: _rotation, 58: _rotation, 59: _rotation,  # LMCW..LSCCW
-    65: lambda a: 3 * 20,  # Ref: LYref three times
-    67: lambda a: max(_rotation(a[0:4]), _rotation(a[4:8])),  # CW: the longer half
-    68: lambda a: max(_rotation(a[0:4]), _rotation(a[4:8])),  # CCW
+_RUN_BY_NAME = {
+    "JTest": _walk(6), "SPTest": _walk(6), "SNTest": _walk(6),
+    "MCW": _rotation, "MCCW": _rotation, "SCW": _rotation, "SCCW": _rotation,
+    "SidePTest": _walk(6), "SideNTest": _walk(6), "JointTest": _walk(6),
+    "LCircle": _walk(18), "LColor": _walk(3), "LFlash1": _walk(1), "LFlash2": _walk(1),
+    "LYref": lambda a: 20,  # two 10-tick blinks
+    "LMCW": _rotation, "LMCCW": _rotation, "LSCW": _rotation, "LSCCW": _rotation,
+    "Ref": lambda a: 3 * 20,  # LYref three times
+    "CW": lambda a: max(_rotation(a[0:4]), _rotation(a[4:8])),  # the longer half
+    "CCW": lambda a: max(_rotation(a[0:4]), _rotation(a[4:8])),
 }
+_RUN_TICKS = {lookup(name).code: run for name, run in _RUN_BY_NAME.items()}
+_LOCALIZE, _STATUS = lookup("Localize").code, lookup("Status").code
+_FORWARDED = {lookup("CW").code, lookup("CCW").code}  # comm functions that forward a half
 
 
 def run_ticks(code: int, args: Sequence[int] = ()) -> int:
@@ -229,12 +232,12 @@ def reply_timeout_s(code: int, replies: int, args: Sequence[int] = (),
     rank = replies - 1 if last_rank is None else last_rank
     dispatch = 2
     forward = 0
-    if fn.board is Board.CONTROL or code in (67, 68):
+    if fn.board is Board.CONTROL or code in _FORWARDED:
         frame_and_echo = wire_seconds(wire.BOARD_FRAME_LEN + 1, BAUD_BOARD)
         forward = math.ceil(frame_and_echo / TICK_S) + CONTROL_ACK_TIMEOUT_TICKS
-    if code == 66:
+    if code == _LOCALIZE:
         run, slots, nbytes = LOC_WINDOW_TICKS, SLOTS_LOCALIZE, REPLY_BYTES_LOCALIZE
-    elif code == 70:
+    elif code == _STATUS:
         run, slots, nbytes = 0, SLOTS_STATUS, REPLY_BYTES_STATUS
     else:
         run, slots, nbytes = run_ticks(code, args), SLOTS_ACK, REPLY_BYTES_ERR
