@@ -27,6 +27,7 @@ import serial
 from hexbot.errors import LinkUnavailableError
 from hexbot.hil_sim import urlhandler
 from hexbot.protocol.simulation import SimulatorAccess
+from hexbot.protocol.timing import BAUD_IR
 
 _PARITY = {"N": serial.PARITY_NONE, "E": serial.PARITY_EVEN, "O": serial.PARITY_ODD,
            "M": serial.PARITY_MARK, "S": serial.PARITY_SPACE}
@@ -39,7 +40,7 @@ class PortSettings:
     parity, data bits, stop bits."""
 
     url: str
-    baud: int = 300
+    baud: int = BAUD_IR
     parity: str = "N"
     data_bits: int = 8
     stop_bits: float = 1
