@@ -1,6 +1,6 @@
 """A unit-test double for a small cluster behind a pty (never a product path).
 
-It answers PC frames the way PROTOCOL.md says modules do: Select switches
+It answers PC frames the way docs/protocol.md says modules do: Select switches
 to addressed mode and picks the listed modules, each selected module ACKs
 with its prefix (``M03: ``), Status answers STA, Localize makes every
 module print a localization report, an out-of-range argument gets
