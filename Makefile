@@ -3,7 +3,8 @@
 #   make run    set up, then open the console on the embedded simulated cluster
 #   make test   set up, then lint, check firmware budgets and run the test suite
 #
-# Sub-steps: deps (Debian packages), venv (.venv + pip install -e .[dev]),
+# Sub-steps: deps (Debian packages), venv (.venv + pip install -e .[dev]; dev
+# brings the test tools and the plot extra, so the drawing tests run),
 # firmware (avr-gcc images).
 
 SHELL := /bin/bash

@@ -1,6 +1,6 @@
 """Build script: maps the top-level folders onto the ``hexbot`` package.
 
-The folders (protocol/, host/, hil_sim/, planning/) show the architecture;
+The folders (protocol/, host/, hil_sim/, planning/, bench/) show the architecture;
 they import as ``hexbot.<folder>``. Package metadata lives in pyproject.toml.
 """
 
@@ -16,6 +16,7 @@ ROOTS = {
     "hexbot.host": "host",
     "hexbot.hil_sim": "hil_sim",
     "hexbot.planning": "planning",
+    "hexbot.bench": "bench",
 }
 
 

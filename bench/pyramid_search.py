@@ -1,6 +1,6 @@
 """How close can a symmetric staircase come to Table 2 of 001? Prints one JSON object.
 
-    python bench/pyramid_search.py --samples 2000 --seed 1
+    hexbot bench pyramid-search --samples 2000 --seed 1
 
 Figure 20 (the pyramid of Table 2) was lost in the OCR. This draws random
 symmetric staircases (1-7 steps up, each 1-6 cells wide and high, a top 1-8
@@ -47,11 +47,12 @@ def table_rows(steps: list[tuple[int, int]], top: int, rules) -> dict[int, int] 
     return {k: result.advance_rounds[k - 1] - N for k in THESIS}
 
 
-def main() -> None:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def add_arguments(ap: argparse.ArgumentParser) -> None:
     ap.add_argument("--samples", type=int, default=2000)
     ap.add_argument("--seed", type=int, default=1)
-    args = ap.parse_args()
+
+
+def run(args: argparse.Namespace) -> int:
     rng = random.Random(args.seed)
     rules = load_ruleset("salvador-pyramids")
     k50_all: Counter[int] = Counter()
@@ -77,7 +78,4 @@ def main() -> None:
         "k50_when_rows_1_to_10_exact": dict(sorted(k50_first_rows_exact.items())),
         "fastest": best,
     }, indent=1))
-
-
-if __name__ == "__main__":
-    main()
+    return 0

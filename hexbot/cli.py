@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
+from types import ModuleType
 
 from hexbot import __version__
 from hexbot.errors import HexBotError
@@ -23,7 +24,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "regenerate the firmware header and the docs table from the protocol table",
     ),
     "sim": ("hexbot.hil_sim.cli_sim", "run simulated modules behind pseudo-terminals (--pty)"),
-    "bench": ("hexbot.hil_sim.bench_sim", "measure simulator throughput (`bench sim --json`)"),
+    "bench": ("hexbot.bench.cli", "run a benchmark (`bench sim --json`; `bench --help`: the list)"),
     "console": ("hexbot.host.cli_console", "the Textual console (default: on the simulator)"),
     "send": ("hexbot.host.cli_send", "send one message and check its acknowledgement"),
     "monitor": ("hexbot.host.cli_monitor", "print decoded events from the ports"),
@@ -53,6 +54,16 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
+def load_command(
+    prog: str, module_name: str, help_text: str, argv: list[str]
+) -> tuple[ModuleType, argparse.Namespace]:
+    """Import a command's module and parse its arguments (exits on a usage error)."""
+    module = importlib.import_module(module_name)
+    parser = argparse.ArgumentParser(prog=prog, description=help_text)
+    module.add_arguments(parser)
+    return module, parser.parse_args(argv)
+
+
 def main(argv: list[str] | None = None) -> int:
     argv = list(sys.argv[1:] if argv is None else argv)
     parser = build_parser()
@@ -62,10 +73,7 @@ def main(argv: list[str] | None = None) -> int:
         return 2 if argv else 0
     name = argv[0]
     module_name, help_text = COMMANDS[name]
-    module = importlib.import_module(module_name)
-    sub = argparse.ArgumentParser(prog=f"hexbot {name}", description=help_text)
-    module.add_arguments(sub)
-    args = sub.parse_args(argv[1:])
+    module, args = load_command(f"hexbot {name}", module_name, help_text, argv[1:])
     try:
         return int(module.run(args) or 0)
     except HexBotError as exc:

@@ -51,3 +51,9 @@ class FlashingError(HexBotError):
 class ScenarioError(HexBotError, ValueError):
     """A scenario, configuration, rule or map file is invalid; the message
     names the file, the line and the problem."""
+
+
+class MissingExtraError(HexBotError, ImportError):
+    """An optional dependency is not installed: drawing plans or rendering
+    locomotion runs without the ``plot`` extra. The message names the
+    ``pip install`` that brings it; the ImportError is kept as the cause."""

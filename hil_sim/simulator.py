@@ -50,7 +50,7 @@ def frame_of(config: dict) -> Frame:
 
 
 class Simulator:
-    """A scenario running on simulated MCUs; see SIM_API.md for the contract."""
+    """A scenario running on simulated MCUs; see docs/simulator.md for the contract."""
 
     def __init__(
         self,

@@ -1,4 +1,4 @@
-"""VCD trace of actuator, selector and LED pins, for GTKWave.
+"""VCD trace of actuator, selector and LED pins, for GTKWave (written by pyvcd).
 
 One scope per module: ``sel`` (the selector index Y, 3 bits), the joints
 ``j1..j6`` (1 = solenoid energised), the magnet lines ``s1p..s6p`` and
@@ -10,7 +10,9 @@ runs of one scenario give byte-identical files.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import TextIO
+from typing import Any, TextIO
+
+from vcd import VCDWriter
 
 from .module import (
     JOINT_PINS,
@@ -25,21 +27,9 @@ from .simulator import Simulator
 
 @dataclass
 class _Signal:
-    code: str
-    name: str
-    width: int
+    var: Any  # a pyvcd variable
     board: str
     pin: Pin | None  # None: the selector vector
-    value: int = 0
-
-
-def _code(index: int) -> str:
-    chars = [chr(33 + index % 94)]
-    index //= 94
-    while index:
-        chars.append(chr(33 + index % 94))
-        index //= 94
-    return "".join(chars)
 
 
 @dataclass
@@ -48,54 +38,33 @@ class VcdWriter:
     out: TextIO
     signals: dict[int, list[_Signal]] = field(default_factory=dict)
     _ports: dict[tuple[int, str], dict[str, int]] = field(default_factory=dict)
-    _last_time: int = -1
 
     def __post_init__(self) -> None:
-        index = 0
+        # date="" leaves the date out: the file depends on the run alone
+        self._vcd = VCDWriter(self.out, timescale="1 us", date="", version="hexbot hil_sim")
+        top = self.sim.scenario.name.replace("-", "_")
         for module_id in sorted(self.sim.modules):
-            sigs = [_Signal(_code(index), "sel", 3, "comm", None)]
-            index += 1
-            named: list[tuple[str, str, Pin]] = []
+            scope = (top, f"module_{module_id}")
+            named: list[tuple[str, str, Pin | None]] = [("sel", "comm", None)]
             named += [(f"j{i}", "control", p) for i, p in enumerate(JOINT_PINS, 1)]
             named += [(f"s{i}p", "control", p) for i, p in enumerate(MAGNET_POS_PINS, 1)]
             named += [(f"s{i}n", "control", p) for i, p in enumerate(MAGNET_NEG_PINS, 1)]
             named += [(name, "comm", p) for name, p in LED_PINS.items()]
-            for name, board, pin in named:
-                sigs.append(_Signal(_code(index), name, 1, board, pin))
-                index += 1
-            self.signals[module_id] = sigs
+            self.signals[module_id] = [
+                _Signal(self._vcd.register_var(scope, name, "wire", 1 if pin else 3, init=0),
+                        board, pin)
+                for name, board, pin in named
+            ]
             self._ports[(module_id, "comm")] = {}
             self._ports[(module_id, "control")] = {}
-        self._header()
+        self._vcd.flush()  # the header and the initial values, before any change
         self.sim.pin_sinks.append(self.on_changes)
-
-    def _header(self) -> None:
-        w = self.out.write
-        w("$version hexbot hil_sim $end\n$timescale 1us $end\n")
-        w(f"$scope module {self.sim.scenario.name.replace('-', '_')} $end\n")
-        for module_id, sigs in self.signals.items():
-            w(f"$scope module module_{module_id} $end\n")
-            for s in sigs:
-                w(f"$var wire {s.width} {s.code} {s.name} $end\n")
-            w("$upscope $end\n")
-        w("$upscope $end\n$enddefinitions $end\n#0\n$dumpvars\n")
-        for sigs in self.signals.values():
-            for s in sigs:
-                w(self._value(s))
-        w("$end\n")
-        self._last_time = 0
-
-    @staticmethod
-    def _value(s: _Signal) -> str:
-        if s.width == 1:
-            return f"{s.value}{s.code}\n"
-        return f"b{s.value:b} {s.code}\n"
 
     def on_changes(self, changes: list[tuple[int, int, str, str, int]]) -> None:
         for cycle, module_id, board, port, value in changes:
             ports = self._ports[(module_id, board)]
             ports[port] = value
-            lines = []
+            t = round(cycle * 1_000_000 / self.sim.hz)
             for s in self.signals[module_id]:
                 if s.board != board:
                     continue
@@ -105,20 +74,11 @@ class VcdWriter:
                     continue
                 else:
                     new = value >> s.pin[1] & 1
-                if new != s.value:
-                    s.value = new
-                    lines.append(self._value(s))
-            if lines:
-                t = round(cycle * 1_000_000 / self.sim.hz)
-                if t != self._last_time:
-                    self.out.write(f"#{t}\n")
-                    self._last_time = t
-                self.out.write("".join(lines))
+                self._vcd.change(s.var, t, new)  # written only if the value changed
 
     def close(self) -> None:
         if self.on_changes in self.sim.pin_sinks:
             self.sim.pin_sinks.remove(self.on_changes)
-        end = round(self.sim.cycle * 1_000_000 / self.sim.hz)
-        if end > self._last_time:
-            self.out.write(f"#{end}\n")  # so viewers show the trace up to the end
+        # the end time, so that viewers show the trace up to the end
+        self._vcd.close(round(self.sim.cycle * 1_000_000 / self.sim.hz))
         self.out.flush()

@@ -31,8 +31,8 @@ from __future__ import annotations
 from collections import deque
 from dataclasses import replace
 
-from hexbot.planning.configuration import Configuration, Module
-from hexbot.planning.hexlattice import Cell, distance, neighbors, rotate_cell, wrap
+from hexbot.planning.configuration import Configuration, Module, contact_hops
+from hexbot.planning.hexlattice import Cell, distance, rotate_cell, wrap
 from hexbot.planning.moves import Move, orientation_after
 from hexbot.planning.robust import (
     PlanningFailure,
@@ -69,19 +69,6 @@ def strip_shape(anchor: Cell, count: int, width: int) -> frozenset[Cell]:
     return frozenset([anchor, *strip_cells(anchor, count, width)])
 
 
-def _hops_from(occupied: set[Cell], root: Cell) -> dict[Cell, int]:
-    """Contact hops from ``root`` to every module."""
-    hops = {root: 0}
-    queue = deque([root])
-    while queue:
-        cell = queue.popleft()
-        for n in neighbors(cell):
-            if n in occupied and n not in hops:
-                hops[n] = hops[cell] + 1
-                queue.append(n)
-    return hops
-
-
 def _path_to(occupied: set[Cell], start: Cell, target: Cell) -> list | None:
     """Shortest Table 4-3 path of the module at ``start`` to ``target``, others fixed."""
     parent: dict[Cell, tuple | None] = {start: None}
@@ -112,7 +99,7 @@ def to_strip(config: Configuration, width: int) -> list[Move]:
         if not order:
             # farthest first; taking a farthest module changes no other distance, so the
             # order is only recomputed when a nearer module had to go instead
-            hops = _hops_from(occupied, anchor)
+            hops = contact_hops(occupied, anchor)
             order = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
         path = None
         for k, mover in enumerate(order):

@@ -131,15 +131,3 @@ def load_configuration(path: str | Path) -> Configuration:
     if path.suffix.lower() == ".toml":
         return parse_toml(text, str(path))
     return parse_grid(text, str(path))
-
-
-def format_grid(cells: set[Cell] | frozenset[Cell]) -> str:
-    """Cells as grid text with the smallest bounding box (origin lost, shape kept)."""
-    xs = [x for x, _ in cells]
-    ys = [y for _, y in cells]
-    x0, y0 = min(xs), min(ys)
-    height, width = max(ys) - y0 + 1, max(xs) - x0 + 1
-    rows = [["0"] * width for _ in range(height)]
-    for x, y in cells:
-        rows[height - 1 - (y - y0)][x - x0] = "1"
-    return "\n".join(" ".join(r) for r in rows) + "\n"

@@ -6,18 +6,21 @@ body frame is turned clockwise from the global frame (0..5); see
 :func:`hexbot.planning.commands.body_index` for the one place that uses it.
 
 Connectivity is the thesis' connectivity graph (one node per module, one
-edge per pair of touching modules); articulation points come from networkx.
-The thesis' own criterion (number of zero Laplacian eigenvalues, Fig. 4-22)
-is :func:`laplacian_components`, used by the tests as a cross-check.
+edge per pair of touching modules), searched breadth-first by
+:func:`contact_hops`, the one search of that graph in the planner. The
+thesis' own criterion (number of zero Laplacian eigenvalues, Fig. 4-22) is
+:func:`laplacian_components`, used by the tests as a cross-check.
+
+networkx did this once; it was dropped: building its graph made each
+connectivity test 2.5 to 5 times slower than the search here, and the
+planner benchmark 6-8 % slower (docs/planning.md, Performance).
 """
 
 from __future__ import annotations
 
-from collections import deque
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Callable, Iterable, Iterator, Mapping
 from dataclasses import dataclass
 
-import networkx as nx
 import numpy as np
 
 from hexbot.planning.hexlattice import Cell, column_major_key, neighbors
@@ -103,37 +106,50 @@ def occupied_neighbors(cells: frozenset[Cell] | set[Cell], cell: Cell) -> int:
     return sum(1 for n in neighbors(cell) if n in cells)
 
 
-def connectivity_graph(cells: Iterable[Cell]) -> nx.Graph:
-    """The thesis' connectivity graph (Fig. 4-20): a node per module, an edge per contact."""
-    cells = set(cells)
-    graph = nx.Graph()
-    graph.add_nodes_from(cells)
-    for cell in cells:
-        for n in neighbors(cell):
-            if n in cells:
-                graph.add_edge(cell, n)
-    return graph
+def contact_hops(cells: set[Cell] | frozenset[Cell], root: Cell) -> dict[Cell, int]:
+    """Contact hops from the module at ``root`` to every module it reaches
+    (breadth-first over the connectivity graph of Fig. 4-20)."""
+    hops = {root: 0}
+    frontier = [root]
+    depth = 0
+    while frontier:
+        depth += 1
+        reached = []
+        for cell in frontier:
+            for n in neighbors(cell):
+                if n in cells and n not in hops:
+                    hops[n] = depth
+                    reached.append(n)
+        frontier = reached
+    return hops
 
 
 def is_connected(cells: Iterable[Cell]) -> bool:
-    """True when every module reaches every other through touching modules (BFS)."""
+    """True when every module reaches every other through touching modules."""
     cells = set(cells)
-    if len(cells) <= 1:
-        return True
-    start = next(iter(cells))
-    seen = {start}
-    queue = deque([start])
-    while queue:
-        for n in neighbors(queue.popleft()):
-            if n in cells and n not in seen:
-                seen.add(n)
-                queue.append(n)
-    return len(seen) == len(cells)
+    return len(cells) <= 1 or len(contact_hops(cells, next(iter(cells)))) == len(cells)
+
+
+def components(cells: Iterable[Cell]) -> int:
+    """Number of connected pieces."""
+    left = set(cells)
+    count = 0
+    while left:
+        left.difference_update(contact_hops(left, next(iter(left))))
+        count += 1
+    return count
+
+
+def _cut_vertices(cells: Iterable[Cell], count: Callable[[set[Cell]], int]) -> set[Cell]:
+    """Modules whose removal leaves more pieces, by the piece counter ``count``."""
+    cells = set(cells)
+    base = count(cells)
+    return {c for c in cells if count(cells - {c}) > base}
 
 
 def articulation_points(cells: Iterable[Cell]) -> set[Cell]:
-    """Modules whose removal disconnects the others (networkx, Tarjan's algorithm)."""
-    return set(nx.articulation_points(connectivity_graph(cells)))
+    """Modules whose removal disconnects the others (Fig. 4-21)."""
+    return _cut_vertices(cells, components)
 
 
 def laplacian_components(cells: Iterable[Cell], tol: float = 1e-9) -> int:
@@ -155,9 +171,7 @@ def laplacian_components(cells: Iterable[Cell], tol: float = 1e-9) -> int:
 
 def laplacian_articulation_points(cells: Iterable[Cell]) -> set[Cell]:
     """Articulation points by the thesis' method: remove a node, count components again."""
-    cells = set(cells)
-    base = laplacian_components(cells)
-    return {c for c in cells if laplacian_components(cells - {c}) > base}
+    return _cut_vertices(cells, laplacian_components)
 
 
 def linear_index(cell: Cell, height: int, origin: Cell = (0, 0)) -> int:

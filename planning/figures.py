@@ -12,9 +12,9 @@ import sys
 import time
 from pathlib import Path
 
-import matplotlib
+from hexbot.extras import require
 
-matplotlib.use("Agg")
+require("matplotlib", "plot", "drawing the planning figures").use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 from hexbot.planning.config_io import load_configuration  # noqa: E402

@@ -10,7 +10,6 @@ next one (towards the goal) positive.
 
 from __future__ import annotations
 
-from collections.abc import Container
 from dataclasses import dataclass
 
 from hexbot.planning.hexlattice import ROTATIONS, Cell, Direction, Rotation, wrap
@@ -43,29 +42,6 @@ def rule_of(move: Move) -> Rotation:
         if rule.joint == move.joint and rule.direction == move.direction:
             return rule
     raise ValueError(f"no rotation about joint {move.joint} {move.direction}")
-
-
-def legal_rotations(
-    cell: Cell, occupied: Container[Cell], substrates: Container[Cell] | None = None
-) -> list[tuple[Rotation, Cell, Cell]]:
-    """Rotations (rule, substrate, goal) open to a module at ``cell``.
-
-    ``occupied`` decides what is empty (goal and swept cells must not be in it);
-    ``substrates`` decides what can act as substrate (defaults to ``occupied``).
-    The module's own cell is never treated as an obstacle.
-    """
-    subs = occupied if substrates is None else substrates
-    out = []
-    for rule in ROTATIONS:
-        sub, goal, swept = rule.at(cell)
-        if sub not in subs or sub == cell:
-            continue
-        if goal in occupied and goal != cell:
-            continue
-        if any(s in occupied and s != cell for s in swept):
-            continue
-        out.append((rule, sub, goal))
-    return out
 
 
 @dataclass(frozen=True)

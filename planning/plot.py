@@ -1,4 +1,8 @@
-"""Drawings of configurations and plans (matplotlib, Agg backend, files only)."""
+"""Drawings of configurations and plans (matplotlib, Agg backend, files only).
+
+matplotlib is the optional ``plot`` extra: importing this module without it
+raises MissingExtraError.
+"""
 
 from __future__ import annotations
 
@@ -6,14 +10,13 @@ import math
 from collections.abc import Iterable
 from pathlib import Path
 
-import matplotlib
+from hexbot.extras import require
+from hexbot.planning.hexlattice import Cell, cartesian, vertices
+from hexbot.planning.plan import Plan
 
-matplotlib.use("Agg")
+require("matplotlib", "plot", "drawing plans").use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.patches import Polygon  # noqa: E402
-
-from hexbot.planning.hexlattice import Cell, cartesian, vertices  # noqa: E402
-from hexbot.planning.plan import Plan  # noqa: E402
 
 COLORS = {
     "module": "#f2d04b",  # the thesis' yellow

@@ -5,7 +5,6 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "cluster.h"
 
@@ -158,33 +157,4 @@ uint64_t cluster_run(cluster_t *c, uint64_t until)
 			break;
 	}
 	return c->cycle;
-}
-
-int raw_simavr_run(const char *elf_path, const char *core, uint64_t cycles,
-		uint64_t *cycles_done, double *seconds, char *err, size_t errlen)
-{
-	ensure_logger();
-	/* "atmega162": our core under simavr's stock loop (no scheduler) */
-	m162_t *m = strcmp(core, "atmega162") ? m162_make_stock(core) : m162_make();
-	if (!m) {
-		snprintf(err, errlen, "unknown MCU core '%s'", core);
-		return -1;
-	}
-	if (m162_load_elf(m, elf_path, err, errlen) != 0) {
-		m162_free(m);
-		return -1;
-	}
-	avr_t *avr = m->avr;
-	/* simavr's own loop, exactly as run_avr does it (minus wall-clock sleep) */
-	avr->run = avr_callback_run_raw;
-	struct timespec t0, t1;
-	clock_gettime(CLOCK_MONOTONIC, &t0);
-	int state = cpu_Running;
-	while (avr->cycle < cycles && (state == cpu_Running || state == cpu_Sleeping))
-		state = avr_run(avr);
-	clock_gettime(CLOCK_MONOTONIC, &t1);
-	*cycles_done = avr->cycle;
-	*seconds = (t1.tv_sec - t0.tv_sec) + (t1.tv_nsec - t0.tv_nsec) * 1e-9;
-	m162_free(m);
-	return 0;
 }

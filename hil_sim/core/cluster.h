@@ -42,8 +42,5 @@ void cluster_watch(cluster_t *c, int mcu, int uart);
 /* Advance to until (a multiple of nothing in particular); returns the cycle
  * reached, earlier if a watched USART finished a byte. */
 uint64_t cluster_run(cluster_t *c, uint64_t until);
-/* Raw simavr reference: stock run loop on one stock core, no scheduler. */
-int raw_simavr_run(const char *elf_path, const char *core, uint64_t cycles,
-		uint64_t *cycles_done, double *seconds, char *err, size_t errlen);
 
 #endif

@@ -575,37 +575,9 @@ static PyTypeObject ClusterType = {
 	.tp_getset = Cluster_getset,
 };
 
-static PyObject *mod_raw_simavr_run(PyObject *mod, PyObject *args)
-{
-	(void)mod;
-	PyObject *path_obj;
-	const char *core;
-	unsigned long long cycles;
-	if (!PyArg_ParseTuple(args, "O&sK", PyUnicode_FSConverter, &path_obj, &core, &cycles))
-		return NULL;
-	char err[512] = "";
-	uint64_t done = 0;
-	double secs = 0;
-	int rc = raw_simavr_run(PyBytes_AS_STRING(path_obj), core, cycles, &done, &secs, err,
-			sizeof err);
-	Py_DECREF(path_obj);
-	if (rc != 0) {
-		PyErr_SetString(PyExc_ValueError, err);
-		return NULL;
-	}
-	return Py_BuildValue("(Kd)", (unsigned long long)done, secs);
-}
-
-static PyMethodDef module_methods[] = {
-	{ "raw_simavr_run", mod_raw_simavr_run, METH_VARARGS,
-		"raw_simavr_run(elf, core, cycles) -> (cycles_done, seconds): simavr's stock run "
-		"loop on one stock core, as a speed reference" },
-	{ NULL, NULL, 0, NULL },
-};
-
 static struct PyModuleDef avr_module = {
 	PyModuleDef_HEAD_INIT, "_avr",
-	"ATmega162 simulation on libsimavr, several MCUs in lock-step.", -1, module_methods,
+	"ATmega162 simulation on libsimavr, several MCUs in lock-step.", -1, NULL,
 };
 
 PyMODINIT_FUNC PyInit__avr(void)

@@ -32,7 +32,7 @@ CLUSTER_METHODS = ("read_flash", "write_flash", "read_eeprom", "write_eeprom",
 
 
 def missing_cluster_methods(cluster: Any) -> list[str]:
-    """The ISP methods of SIM_API.md that this Cluster object lacks (an
+    """The ISP methods (memories, fuses, signature, reset) that this Cluster object lacks (an
     out-of-date build of the extension, or another object passed by mistake)."""
     return [name for name in CLUSTER_METHODS if not callable(getattr(cluster, name, None))]
 

@@ -8,6 +8,7 @@ from pathlib import Path
 import numpy as np
 
 from hexbot.errors import ScenarioError
+from hexbot.extras import require
 from hexbot.planning.locomotion.engine import Engine
 
 Cell = tuple[int, int]
@@ -83,10 +84,7 @@ def ascii_map(positions: list[Cell], states: list[str], obstacles: list[Cell]) -
 
 def save(path: str, rec: Recorder, obstacles: list[Cell], cell_px: int = 0) -> None:
     """PNG: the last frame. GIF: one frame per recorded round."""
-    try:
-        from PIL import Image
-    except ImportError as exc:  # pillow comes with matplotlib, a declared dependency
-        raise ScenarioError(f"rendering needs pillow: {exc}") from exc
+    Image = require("PIL.Image", "plot", "--render (PNG, GIF)")
     suffix = Path(path).suffix.lower()
     if suffix not in (".png", ".gif"):
         raise ScenarioError(f"--render: {path!r} must end in .png or .gif")

@@ -59,6 +59,13 @@ def test_hex_reads_data_and_extended_addresses(tmp_path):
         (":020000000102FB\n", "", "no end-of-file"),
         (":020000000102FB\n:00000001FF\n:020000000102FB\n", ":3:", "after the end-of-file"),
         (":024000000102BB\n:00000001FF\n", ":1:", "beyond the 16384-byte flash"),
+        (":0100100007E8\n:020000040001F9\n:020000000102FB\n:00000001FF\n", ":3:",
+         "0x10000 lies beyond the 16384-byte flash"),
+        (":020000000102FB\n\n:020000000102FB\n:00000001FF\n", ":3:", "written twice"),
+        (":020000060102F5\n:00000001FF\n", ":1:", "unsupported record type"),
+        (":0200000001ZZFB\n:00000001FF\n", ":1:", "hexadecimal digits"),
+        ("", "", "no end-of-file"),
+        (":00000001FF\n", "", "holds no data"),
     ],
 )
 def test_bad_hex_names_file_line_and_problem(tmp_path, text, where, problem):

@@ -110,14 +110,18 @@ def test_spi_transfer_takes_eight_sck_periods(traces):
 
 
 def test_watchdog_resets_after_its_timeout(traces):
+    """Ours at the timeout; simavr's own loop sleeps on to its next timer event
+    before it performs the reset (item 8 of docs/simulator-core.md)."""
+    delay = {}
     for core in ("atmega162", "atmega128"):
         c, m, pins, _ = traces[core]
         (armed,) = [t for t, v in events(pins) if v == 0x40]
         (rebooted,) = [t for t, v in events(pins) if v == 0xE0]
-        assert 16_000 <= rebooted - armed <= 16_000 + 150
         (cleared,) = [t for t, v in events(pins) if v == 0x00]
         assert armed + 16_000 <= cleared < rebooted
         assert c.state(m) == "done"  # the program ends sleeping with interrupts off
+        delay[core] = rebooted - armed
+    assert 16_000 <= delay["atmega162"] <= 16_000 + 150 < delay["atmega128"] <= 16_000 + 1_150
 
 
 def test_pure_cpu_loop_is_cycle_identical_on_all_cores():

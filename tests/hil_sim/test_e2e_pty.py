@@ -90,7 +90,7 @@ def test_rotation_over_the_ptys_writes_events_and_vcd(tmp_path):
     assert moved[0]["t"] > 0
     vcd = vcd_path.read_text()
     header, _, body = vcd.partition("$enddefinitions $end")
-    assert "$timescale 1us $end" in header and "$scope module module_2 $end" in header
+    assert "$timescale 1 us $end" in header and "$scope module module_2 $end" in header
     times = [int(line[1:]) for line in body.splitlines() if line.startswith("#")]
     assert times == sorted(times) and len(times) > 10
     # the mobile's magnet S4 negative line (PB4) went high and low again during the CW

@@ -92,7 +92,7 @@ def test_middle_route_is_legal_move_by_move_or_fails_cleanly(size, seed_a, seed_
 
 
 def test_small_pair_the_centred_ball_misses_goes_through_a_nudged_ball():
-    # scan pair 24 of bench/planning_bench.py --scan (25 modules)
+    # scan pair 24 of `hexbot bench planning --scan` (25 modules)
     a = random_blob(25, 401458, compact=random.Random(401458).random())
     b = random_blob(25, 880593, compact=0.6)
     with pytest.raises(PlanningFailure):

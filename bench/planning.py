@@ -1,7 +1,7 @@
 """Benchmark of the hex reconfiguration planners: planning time and moves vs module count.
 
-    .venv/bin/python bench/planning_bench.py            # table (markdown)
-    .venv/bin/python bench/planning_bench.py --json     # one JSON object per line
+    hexbot bench planning            # table (markdown)
+    hexbot bench planning --json     # one JSON object per line
 
 Families (deterministic, no randomness outside the given seeds):
 
@@ -127,8 +127,7 @@ def bench_thesis() -> list[dict]:
     return out
 
 
-def main() -> None:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--sizes", default="10,30,100,300,1000",
                         help="parallelogram sizes among " + ",".join(map(str, PARALLELOGRAMS)))
     parser.add_argument("--blob-sizes", default="10,30,100,1000", help="random blob sizes")
@@ -138,10 +137,12 @@ def main() -> None:
     parser.add_argument("--json", action="store_true", help="JSON lines instead of a table")
     parser.add_argument("--scan", type=int, metavar="N",
                         help="only: completion over N small random pairs")
-    args = parser.parse_args()
+
+
+def run(args: argparse.Namespace) -> int:
     if args.scan:
         scan(args.scan)
-        return
+        return 0
     sizes = [int(s) for s in args.sizes.split(",") if s]
     blob_sizes = [int(s) for s in args.blob_sizes.split(",") if s]
     apart_sizes = [int(s) for s in args.apart_sizes.split(",") if s]
@@ -150,7 +151,7 @@ def main() -> None:
     if args.json:
         for r in rows:
             print(json.dumps(r))
-        return
+        return 0
     print("| case | modules | method | reached | time (s) | moves | move bound | ratio "
           "| steps | step bound | ratio |")
     print("|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|")
@@ -163,11 +164,8 @@ def main() -> None:
     failed = [r for r in rows if not r["reached"] and "faithful" not in r["family"]]
     for r in failed:
         print(f"\n{r['family']} ({r['modules']}): {r['reason']}")
+    return 0
 
 
 def ratio(value: int, bound: int | None) -> str:
     return f"{value / bound:.1f}" if bound else "-"
-
-
-if __name__ == "__main__":
-    main()

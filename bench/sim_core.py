@@ -1,10 +1,11 @@
 """Speed of the simulator core (hexbot.hil_sim._avr), printed as JSON.
 
-    .venv/bin/python bench/sim_core_bench.py [--busy-cycles N] [--idle-seconds S] [--repeat N]
+    hexbot bench sim-core [--busy-cycles N] [--idle-seconds S] [--repeat N]
 
 Measures, in one run on this machine:
   raw_simavr      simavr's own run loop (avr_callback_run_raw) on its stock
-                  atmega128 core, one MCU in a CPU-bound loop: the reference.
+                  atmega128 core, one MCU in a CPU-bound loop: the reference
+                  (bench/raw_simavr.c, a program of its own).
   raw_loop_m162   the same stock loop on our ATmega162 core (no scheduler).
   busy_1, busy_14 our Cluster, 1 and 14 ATmega162s in the same CPU-bound loop.
   idle_7_modules  14 MCUs (7 modules) of idle firmware: a 10 ms timer tick,
@@ -24,23 +25,14 @@ import argparse
 import json
 import os
 import platform
-import subprocess
-import sys
 import time
 from pathlib import Path
 
-from hexbot.hil_sim._avr import SIMAVR_VERSION, Cluster, raw_simavr_run
+from hexbot.bench.raw import avr_program, raw_simavr_seconds
+from hexbot.hil_sim._avr import SIMAVR_VERSION, Cluster
 
-ROOT = Path(__file__).resolve().parent.parent
-AVR_DIR = ROOT / "tests" / "hil_sim" / "avr"
-FIRMWARE = ROOT / "firmware" / "build"
+FIRMWARE = Path(__file__).resolve().parent.parent / "firmware" / "build"
 F_CPU = 1_000_000
-
-
-def build(name: str, mcu: str) -> str:
-    target = f"build/{name}.{mcu}.elf"
-    subprocess.run(["make", "-s", "-C", str(AVR_DIR), target], check=True)
-    return str(AVR_DIR / target)
 
 
 def best_of(repeat: int, runs: dict) -> dict:
@@ -80,24 +72,23 @@ def time_firmware(pairs: int, cycles: int) -> float:
     return time.perf_counter() - t0
 
 
-def main(argv: list[str] | None = None) -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def add_arguments(ap: argparse.ArgumentParser) -> None:
     ap.add_argument("--busy-cycles", type=int, default=20_000_000,
                     help="cycles per MCU for the CPU-bound runs (busy_14: a quarter)")
     ap.add_argument("--idle-seconds", type=float, default=10.0,
                     help="simulated seconds for the idle clusters")
     ap.add_argument("--repeat", type=int, default=3)
-    args = ap.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> int:
     cycles = args.busy_cycles
 
-    busy162 = build("cpuloop", "atmega162")
-    busy128 = build("cpuloop", "atmega128")
-    idle = build("idle", "atmega162")
+    busy162 = avr_program("cpuloop", "atmega162")
+    busy128 = avr_program("cpuloop", "atmega128")
+    idle = avr_program("idle", "atmega162")
 
     def raw(elf: str, core: str) -> float:
-        done, secs = raw_simavr_run(elf, core, cycles)
-        assert done >= cycles
-        return secs
+        return raw_simavr_seconds(elf, core, cycles)
 
     idle_seconds = args.idle_seconds
     idle_cycles = int(idle_seconds * F_CPU)
@@ -118,7 +109,8 @@ def main(argv: list[str] | None = None) -> int:
 
     raw_rate = cycles / raw_s
     result = {
-        "command": " ".join(["python", "bench/sim_core_bench.py", *(argv or sys.argv[1:])]),
+        "command": f"hexbot bench sim-core --busy-cycles {cycles} "
+                   f"--idle-seconds {args.idle_seconds} --repeat {args.repeat}",
         "machine": {"python": platform.python_version(), "cpus": os.cpu_count(),
                     "simavr": SIMAVR_VERSION},
         "raw_simavr": {"mcus": 1, "cycles_per_s": round(raw_rate)},
@@ -141,7 +133,3 @@ def main(argv: list[str] | None = None) -> int:
     }
     print(json.dumps(result, indent=2))
     return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -1,6 +1,6 @@
 """Throughput of the STK500v2 engine and the ATmega162 ISP model, no I/O.
 
-    python -m hexbot.hil_sim.isp.bench [--repeat 5]
+    hexbot bench isp [--repeat 5]
 
 Programs and reads back the whole 16 KiB flash with the frames avrdude sends
 for an m162 (128-byte pages, 256-byte reads) and prints the best time.
@@ -31,10 +31,11 @@ def session_frames(image: bytes) -> list[bytes]:
     return [encode(i & 0xFF, body) for i, body in enumerate(bodies)]
 
 
-def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m hexbot.hil_sim.isp.bench")
+def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--repeat", type=int, default=5)
-    args = parser.parse_args(argv)
+
+
+def run(args: argparse.Namespace) -> int:
     image = bytes(random.Random(1).randrange(256) for _ in range(FLASH_SIZE))
     frames = session_frames(image)
     best = float("inf")
@@ -50,7 +51,3 @@ def main(argv: list[str] | None = None) -> int:
           f"({2 * FLASH_SIZE / best / 1024:.0f} KiB/s, {spi} SPI bytes, "
           f"{spi / best / 1e6:.2f} M SPI bytes/s)")
     return 0
-
-
-if __name__ == "__main__":
-    raise SystemExit(main())

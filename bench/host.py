@@ -1,7 +1,7 @@
 """Host throughput: capture writing, capture replay through parser and
 cluster model, and the console's terminal rendering.
 
-    .venv/bin/python bench/host_bench.py [--repeat N]
+    hexbot bench host [--repeat N]
 
 Prints one JSON object. For scale: the IR link carries 30 bytes/s
 (300 baud), a control board's debug port 480 bytes/s.
@@ -22,10 +22,11 @@ from hexbot.host.host import Host
 CAPTURE = Path(__file__).resolve().parents[1] / "tests" / "host" / "data" / "flower7_session.hbcap"
 
 
-def main() -> None:
-    ap = argparse.ArgumentParser()
+def add_arguments(ap: argparse.ArgumentParser) -> None:
     ap.add_argument("--repeat", type=int, default=50)
-    args = ap.parse_args()
+
+
+def run(args: argparse.Namespace) -> int:
     records = list(read_capture(CAPTURE))
     rx_bytes = sum(len(r.data) for r in records if r.kind == "rx")
 
@@ -63,7 +64,4 @@ def main() -> None:
         "terminal_lines_rendered_per_s": round(len(entries) * args.repeat / render_s),
         "capture": CAPTURE.name, "repeat": args.repeat,
     }, indent=1))
-
-
-if __name__ == "__main__":
-    main()
+    return 0

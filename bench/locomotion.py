@@ -1,7 +1,7 @@
 """Benchmark of the locomotion engine; prints one JSON object.
 
-    python bench/locomotion_bench.py            # the 10,000 x 10,000 case and smaller ones
-    python bench/locomotion_bench.py --quick    # small cases only
+    hexbot bench locomotion            # the 10,000 x 10,000 case and smaller ones
+    hexbot bench locomotion --quick    # small cases only
 
 Each case runs a rule set on a flat strip of n modules for R rounds, or on a
 map of the bank until the goal (at most R rounds), with the connectivity
@@ -40,10 +40,11 @@ def case(ruleset: str, n: int, rounds: int, scenario: str = "flat") -> dict:
     }
 
 
-def main() -> int:
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+def add_arguments(ap: argparse.ArgumentParser) -> None:
     ap.add_argument("--quick", action="store_true", help="skip the 10,000 x 10,000 case")
-    args = ap.parse_args()
+
+
+def run(args: argparse.Namespace) -> int:
     cases = [("salvador-free", 100, 2000), ("salvador-pyramids", 1000, 2000),
              # obstacles: corks, openers and the `looped` search at work, to the goal
              ("salvador", 90, 3000, "histogram-3"), ("salvador", 90, 3000, "maze"),
@@ -62,7 +63,3 @@ def main() -> int:
     }
     print(json.dumps(out, indent=2))
     return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -10,31 +10,27 @@ pin logs):
   busy-7   ``flower7`` while the PC runs a localization and rotation script
            (about 45 simulated seconds, whatever --seconds says).
 Reference: raw simavr (its own run loop, stock atmega128 core) on one MCU in
-a CPU-bound loop, measured in the same run through the same extension.
+a CPU-bound loop, measured in the same run (bench/raw_simavr.c).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
-import subprocess
 import time
 from collections.abc import Callable
-from pathlib import Path
 
+from hexbot.bench.raw import avr_program, raw_simavr_seconds
 from hexbot.errors import HexBotError
+from hexbot.hil_sim.geometry import Cell, neighbor
+from hexbot.hil_sim.scenario import ModuleSpec, Scenario, load_scenario
+from hexbot.hil_sim.simulator import Simulator
 from hexbot.protocol.timing import BOOT_SLOTS, boot_seconds
 
-from .geometry import Cell, neighbor
-from .scenario import ModuleSpec, Scenario, load_scenario
-from .simulator import Simulator, _load_core
-
 BOOT_S = boot_seconds(range(1, BOOT_SLOTS + 1))  # simulated boot (every boot slot), excluded
-AVR_TESTS = Path(__file__).resolve().parent.parent / "tests" / "hil_sim" / "avr"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("target", choices=["sim"], help="what to measure")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument(
         "--seconds", type=float, default=10.0, help="simulated seconds per idle case (default 10)"
@@ -103,19 +99,9 @@ def localize_and_rotate(sim: Simulator) -> None:
 
 
 def raw_reference(seconds: float, repeat: int = 3) -> int:
-    core = _load_core()
-    if not hasattr(core, "raw_simavr_run"):
-        raise HexBotError("this build of hexbot.hil_sim._avr has no raw_simavr_run reference")
-    target = "build/cpuloop.atmega128.elf"
-    try:
-        subprocess.run(["make", "-s", "-C", str(AVR_TESTS), target], check=True)
-    except (OSError, subprocess.CalledProcessError) as exc:
-        raise HexBotError(
-            f"cannot build the busy-loop reference {AVR_TESTS / target}: {exc}"
-        ) from exc
+    elf = avr_program("cpuloop", "atmega128")
     cycles = round(seconds * 1_000_000)
-    best = min(core.raw_simavr_run(str(AVR_TESTS / target), "atmega128", cycles)[1]
-               for _ in range(max(repeat, 1)))
+    best = min(raw_simavr_seconds(elf, "atmega128", cycles) for _ in range(max(repeat, 1)))
     return round(cycles / best)
 
 

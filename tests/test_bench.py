@@ -1,0 +1,49 @@
+"""``hexbot bench``: every benchmark in bench/ is registered and runs by name."""
+
+import importlib
+import json
+from pathlib import Path
+
+import pytest
+
+from hexbot.bench.cli import BENCHMARKS
+from hexbot.cli import main
+
+BENCH = Path(__file__).resolve().parent.parent / "bench"
+HELPERS = {"__init__", "cli", "raw"}
+
+
+def test_every_benchmark_module_is_registered_and_runnable():
+    modules = {p.stem for p in BENCH.glob("*.py")} - HELPERS
+    assert {m.rsplit(".", 1)[1] for m, _ in BENCHMARKS.values()} == modules
+    for module_name, _ in BENCHMARKS.values():
+        module = importlib.import_module(module_name)
+        assert callable(module.add_arguments) and callable(module.run)
+
+
+def test_help_lists_the_benchmarks(capsys):
+    with pytest.raises(SystemExit) as exit_:
+        main(["bench", "--help"])
+    assert exit_.value.code == 0
+    out = capsys.readouterr().out
+    assert all(name in out for name in BENCHMARKS)
+
+
+def test_unknown_benchmark_is_a_usage_error(capsys):
+    with pytest.raises(SystemExit) as exit_:
+        main(["bench", "no-such-bench"])
+    assert exit_.value.code == 2
+
+
+def test_isp_benchmark_runs(capsys):
+    assert main(["bench", "isp", "--repeat", "1"]) == 0
+    assert "write+read 16 KiB" in capsys.readouterr().out
+
+
+def test_core_benchmark_measures_raw_simavr_outside_the_extension(capsys):
+    assert main(["bench", "sim-core", "--busy-cycles", "200000", "--idle-seconds", "0.05",
+                 "--repeat", "1"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["raw_simavr"]["cycles_per_s"] > 0
+    assert result["raw_loop_m162"]["cycles_per_s"] > 0
+    assert not hasattr(importlib.import_module("hexbot.hil_sim._avr"), "raw_simavr_run")
