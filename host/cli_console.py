@@ -1,20 +1,28 @@
-"""``hexbot console``: the Textual console on hardware or the embedded simulator."""
+"""``hexbot console``: the Textual console on hardware or the embedded simulator.
+
+Without ``--port`` the embedded simulator runs in this process
+(``hexbot-sim://``), paced at real time unless ``--sim-speed`` says
+otherwise, so the console shows what the robot would do when it would.
+"""
 
 from __future__ import annotations
 
 import argparse
+from collections.abc import Iterable
 from pathlib import Path
 
 from hexbot.host import endpoints
 from hexbot.host.capture import read_capture
 from hexbot.host.endpoints import add_port_arguments
+from hexbot.host.events import Listener
 from hexbot.host.host import Host
 from hexbot.host.session_log import CAPTURE_NAME
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--timeout", type=float, default=5.0, metavar="S",
-                        help="seconds to wait for each reply in workflows (default 5)")
+    parser.add_argument("--timeout", type=float, default=None, metavar="S",
+                        help="seconds to wait for the replies to a single command "
+                             "(default: the protocol's bound for the function)")
     parser.add_argument("--replay", type=Path, metavar="CAPTURE",
                         help="show a recorded session (capture file or session folder) in "
                              "real time instead of opening ports")
@@ -27,14 +35,19 @@ def parse(argv: list[str]) -> argparse.Namespace:
     return parser.parse_args(argv)
 
 
-def make_opener(args: argparse.Namespace):
-    """What the console calls (in a worker thread) to open its session:
-    starting the simulator must not freeze the UI."""
+#: The console paces the embedded simulator at real time (``--sim-speed``).
+DEFAULT_SIM_SPEED = 1.0
 
-    def opener():
-        ends = endpoints.resolve(args)
+
+def make_opener(args: argparse.Namespace):
+    """What the console calls (in a worker thread) to open its ports:
+    starting the simulator must not freeze the UI. ``listeners`` are
+    attached before the first byte (the boot texts)."""
+
+    def opener(listeners: Iterable[Listener] = ()) -> tuple[Host, endpoints.Endpoints]:
+        ends = endpoints.resolve(args, default_speed=DEFAULT_SIM_SPEED)
         try:
-            return endpoints.open_host(args, ends), ends
+            return endpoints.open_host(args, ends, listeners), ends
         except BaseException:
             ends.close()
             raise

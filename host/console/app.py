@@ -2,41 +2,57 @@
 
 Serial I/O never runs on the UI thread: the host's reader threads post
 messages (``post_message`` is thread-safe), sends and multi-step workflows
-run in thread workers, and a workflow checks a cancel event between and
-during its steps.
+run in thread workers. Every exchange goes through one
+:class:`~hexbot.host.session.Session` (typed outcomes, the protocol's reply
+time-outs) and the thesis workflows are :mod:`hexbot.host.workflows`;
+cancelling wakes the session's wait.
 """
 
 from __future__ import annotations
 
+import copy
 import threading
 from collections.abc import Callable
 from pathlib import Path
 
+from rich.markup import escape
 from textual import on, work
 from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, ScrollableContainer, Vertical
 from textual.widgets import Footer, Header, ProgressBar, Static, TabbedContent, TabPane
 
-from hexbot.errors import HexBotError
-from hexbot.host import commands
+from hexbot.errors import CancelledError, HexBotError
+from hexbot.host import workflows
 from hexbot.host.capture import Record
 from hexbot.host.console.composer import Composer
 from hexbot.host.console.connection import PortPanel
 from hexbot.host.console.dialogs import HelpScreen, PromptScreen, RotateScreen
 from hexbot.host.console.lattice import LatticeLegend, LatticeView
-from hexbot.host.console.messages import Parsed, PortState, SimEvent, Traffic
+from hexbot.host.console.messages import Parsed, PortState, SimEvent
+from hexbot.host.console.messages import Traffic as TrafficMsg
 from hexbot.host.console.modules_view import ModulesView
 from hexbot.host.console.palette import ConsoleCommands
 from hexbot.host.console.terminal import Entry, Terminal
-from hexbot.host.endpoints import Endpoints, scenario_module_ids
+from hexbot.host.endpoints import Endpoints
+from hexbot.host.events import HostEvent, Listener, Observed, PortChanged, SimVerdict, Traffic
 from hexbot.host.host import DEBUG, IR, Host
 from hexbot.host.link import LinkState, PortSettings
+from hexbot.host.session import Outcome, Session, select
 from hexbot.protocol import frames, wire
 from hexbot.protocol.frames import Command
+from hexbot.protocol.simulation import PlantVerdict, Refused
 
-Opener = Callable[[], tuple[Host, Endpoints | None]]
-Step = Callable[[threading.Event], str]
+#: Opens the session's ports (in a worker thread); ``listeners`` see every
+#: event from the first byte on.
+Opener = Callable[[list[Listener]], tuple[Host, Endpoints | None]]
+#: One step of an operation: runs in the worker, returns a one-line result,
+#: raises HexBotError to end the operation as failed.
+Step = Callable[[], str]
+#: Plant verdicts listed under the lattice.
+SIM_LOG_LINES = 3
+#: Cluster views are redrawn at most this often (seconds).
+REFRESH_S = 0.05
 
 
 class HexBotConsole(App[None]):
@@ -84,24 +100,26 @@ class HexBotConsole(App[None]):
     ]
 
     def __init__(self, host: Host | None = None, *, opener: Opener | None = None,
-                 reply_timeout: float = 5.0, quiet_s: float = 1.5,
-                 localize_timeout: float = 120.0, boot_quiet: float = 2.0,
-                 start_ports: bool = True, replay: list[Record] | None = None) -> None:
+                 reply_timeout: float | None = None, start_ports: bool = True,
+                 replay: list[Record] | None = None) -> None:
+        """``host``: a host whose ports are configured (started here unless
+        ``start_ports`` is False); or ``opener``: opens one (a worker thread).
+        ``reply_timeout`` overrides the protocol's bound on replies for the
+        console's single commands (None: the protocol decides)."""
         super().__init__()
         self.host = host
+        self.session: Session | None = None
         self._opener = opener
         self.endpoints: Endpoints | None = None
         self.reply_timeout = reply_timeout
-        self.quiet_s = quiet_s
-        self.localize_timeout = localize_timeout
         self.start_ports = start_ports
-        self.boot_quiet = boot_quiet
         self.replay_records = replay
-        self.selection: list[int] | None = None
         self.cancel_event = threading.Event()
         self.busy = ""
         self.last_result = ""
         self.port_states: dict[str, tuple[LinkState, str]] = {}
+        self.sim_log: list[PlantVerdict] = []  # the plant's verdicts, newest last
+        self._refresh_pending = False
 
     # --- layout ---------------------------------------------------------------
 
@@ -132,14 +150,20 @@ class HexBotConsole(App[None]):
         yield Footer()
 
     def on_mount(self) -> None:
-        self.query_one("#progress", ProgressBar).display = False
+        self.main_query("#progress", ProgressBar).display = False
         self.on_resize()
         if self.host is not None:
-            self.attach(self.host, None)
+            self.attach(self.host, None, start=self.start_ports)
         elif self._opener is not None:
             self.busy = "starting"
             self._update_status()
             self._open_session()
+
+    def main_query(self, selector, expect_type=None):
+        """A widget of the main screen, also while a dialog is on top (the
+        app's own ``query_one`` looks at the active screen only)."""
+        screen = self.screen_stack[0] if self.screen_stack else self.screen
+        return screen.query_one(selector, expect_type)
 
     def on_resize(self, event: object = None) -> None:
         # Terminals side by side when there is room, stacked in 80 columns.
@@ -149,11 +173,12 @@ class HexBotConsole(App[None]):
     def _open_session(self) -> None:
         assert self._opener is not None
         try:
-            host, endpoints = self._opener()
+            # the listener from the first byte: the terminals show the boot texts
+            host, endpoints = self._opener([self._from_reader])
         except HexBotError as exc:
             self.call_from_thread(self._open_failed, str(exc))
             return
-        self.call_from_thread(self.attach, host, endpoints)
+        self.call_from_thread(self.attach, host, endpoints, start=False, listening=True)
 
     def _open_failed(self, why: str) -> None:
         self.busy = ""
@@ -161,40 +186,53 @@ class HexBotConsole(App[None]):
         self._update_status()
         self.notify(why, title="Session", severity="error", timeout=10)
 
-    def attach(self, host: Host, endpoints: Endpoints | None) -> None:
-        """Show this host's ports and follow its traffic."""
+    def attach(self, host: Host, endpoints: Endpoints | None, *, start: bool = True,
+               listening: bool = False) -> None:
+        """Show this host's ports, follow its traffic (unless ``listening``
+        already), start its ports (with ``start``) and open the session."""
         self.host, self.endpoints, self.busy = host, endpoints, ""
-        host.add_listener(self._from_reader)
+        if not listening:
+            host.add_listener(self._from_reader)
         for name in (IR, DEBUG):
-            panel = self.query_one(f"#port-{name}", PortPanel)
+            panel = self.main_query(f"#port-{name}", PortPanel)
             ch = host.channels.get(name)
             if ch is not None:
                 self._fill_panel(panel, ch.settings)
                 self.port_states[name] = (ch.link.state, ch.link.detail)
                 panel.show_state(ch.link.state, ch.link.detail)
+        if start:
+            host.start()
+        sim = host.simulator  # the embedded simulator's typed interface, or None
+        self.session = Session(host, sim.module_ids() if sim is not None else ())
         info = []
-        if endpoints is not None and endpoints.sim is not None:
-            info.append(f"simulator: scenario {endpoints.sim.scenario}")
+        if sim is not None:
+            scenario = endpoints.scenario if endpoints is not None else None
+            info.append(f"simulator: scenario {scenario or sim.scenario}, "
+                        f"{sim.speed:g}x real time")
         if host.log is not None:
             info.append(f"session log: {host.log.folder}")
-        self.query_one("#session-info", Static).update("\n".join(info))
-        if self.start_ports:
-            host.start()
+        self.main_query("#session-info", Static).update("\n".join(info))
         self._update_status()
         self.refresh_cluster()
-        if endpoints is not None and endpoints.sim is not None:
+        if sim is not None:
+            session, ids = self.session, sim.module_ids()
+
             # Frames sent while the simulated modules boot are lost.
-            def boot(cancel: threading.Event) -> str:
-                n = commands.wait_until_booted(
-                    host, self.boot_quiet, 60.0, cancel,
-                    expected=scenario_module_ids(endpoints.sim.scenario))
-                return f"{n} boot events"
+            def boot() -> str:
+                heard = session.wait_booted(ids)
+                if session.cancel.is_set():
+                    return "boot wait cancelled"
+                if not heard >= set(ids):
+                    raise HexBotError("no boot text from module(s) "
+                                      + ", ".join(map(str, sorted(set(ids) - heard))))
+                return f"{len(heard)} modules booted"
             boot.__name__ = "modules booting"
             self.start_operation("Simulator", [boot])
         if self.replay_records is not None:
             records = self.replay_records
+            cancel = self.session.cancel
 
-            def replay(cancel: threading.Event) -> str:
+            def replay() -> str:
                 return f"{host.replay(records, realtime=True, cancel=cancel)} records"
             replay.__name__ = f"{len(records)} records"
             self.start_operation("Replay", [replay])
@@ -210,52 +248,68 @@ class HexBotConsole(App[None]):
 
     # --- traffic from the reader threads ------------------------------------
 
-    def _from_reader(self, kind: str, port: str, payload: object) -> None:
-        if kind == "event":
-            self.post_message(Parsed(port, payload))  # type: ignore[arg-type]
-        elif kind in ("tx", "rx"):
-            t, data = payload  # type: ignore[misc]
-            self.post_message(Traffic(port, kind, t, data))
-        elif kind == "state":
-            state, detail, t = payload  # type: ignore[misc]
-            self.post_message(PortState(port, state, detail, t))
-        elif kind == "sim":
-            self.post_message(SimEvent(payload))  # type: ignore[arg-type]
+    def _from_reader(self, event: HostEvent) -> None:
+        """The host's listener (reader or simulating thread): one typed
+        event becomes one message for the UI thread."""
+        if isinstance(event, Observed):
+            self.post_message(Parsed(event.port, event))
+        elif isinstance(event, Traffic):
+            self.post_message(TrafficMsg(event.port, event.direction.value, event.t,
+                                         event.data))
+        elif isinstance(event, PortChanged):
+            self.post_message(PortState(event.port, event.state,  # type: ignore[arg-type]
+                                        event.detail, event.t))
+        elif isinstance(event, SimVerdict):
+            self.post_message(SimEvent(event.verdict))
 
     def terminal(self, port: str) -> Terminal:
-        return self.query_one("#ir-term" if port == IR else "#debug-term", Terminal)
+        return self.main_query("#ir-term" if port == IR else "#debug-term", Terminal)
 
-    def on_traffic(self, msg: Traffic) -> None:
+    def on_traffic(self, msg: TrafficMsg) -> None:
         self.terminal(msg.port).add(Entry(msg.t, msg.direction, data=msg.data))
 
     def on_parsed(self, msg: Parsed) -> None:
         obs = msg.observed
         self.terminal(msg.port).add(Entry(obs.t, "event", event=obs.event))
-        self.refresh_cluster()
+        self.refresh_soon()
 
     def on_sim_event(self, msg: SimEvent) -> None:
-        if msg.event.get("event") == "refused":
-            self.notify(f"module {msg.event.get('module')}: {msg.event.get('reason', '')}",
+        verdict = msg.verdict
+        self.sim_log = [*self.sim_log, verdict][-SIM_LOG_LINES:]
+        if isinstance(verdict, Refused):
+            who = f"module {verdict.module}" if verdict.module is not None else "no module"
+            self.notify(f"{who}: {verdict.reason.value} ({verdict.detail})",
                         title="Simulator: rotation refused", severity="warning")
-        self.refresh_cluster()
+        self.refresh_soon()
 
     def on_port_state(self, msg: PortState) -> None:
         self.port_states[msg.port] = (msg.state, msg.detail)
         self.terminal(msg.port).add(Entry(msg.t, "state",
                                           text=f"{msg.state.value} {msg.detail}"))
-        self.query_one(f"#port-{msg.port}", PortPanel).show_state(msg.state, msg.detail)
+        self.main_query(f"#port-{msg.port}", PortPanel).show_state(msg.state, msg.detail)
         if msg.state is LinkState.LOST:
             self.notify(f"{msg.port}: {msg.detail}; retrying", title="Port lost",
                         severity="warning")
         self._update_status()
 
+    def refresh_soon(self) -> None:
+        """Redraw the cluster views once for a burst of events (a localization
+        brings dozens): the UI thread's work competes with the readers."""
+        if not self._refresh_pending:
+            self._refresh_pending = True
+            self.set_timer(REFRESH_S, self.refresh_cluster)
+
     def refresh_cluster(self) -> None:
-        if self.host is None:
+        self._refresh_pending = False
+        if self.host is None or not self.screen_stack:
             return
-        with self.host.lock:
-            self.query_one(ModulesView).refresh_from(self.host.model)
-            self.query_one(LatticeView).refresh_from(self.host.model)
-            self.query_one(LatticeLegend).refresh_from(self.host.model)
+        sim = self.host.simulator
+        truth = sim.placements() if sim is not None else {}  # none on hardware
+        with self.host.lock:  # a copy: readers must not wait for the drawing
+            model = copy.deepcopy(self.host.model)
+        self.main_query(ModulesView).refresh_from(model)
+        self.main_query(LatticeView).refresh_from(model, truth)
+        self.main_query(LatticeLegend).refresh_from(model, truth, self.sim_log)
         self._update_status()
 
     def _update_status(self) -> None:
@@ -271,13 +325,12 @@ class HexBotConsole(App[None]):
         if self.host is not None:
             parts.append(f"{len(self.host.model.modules)} modules, "
                          f"{len(self.host.model.placements)} placed")
-        sel = "all" if self.selection is None else ",".join(map(str, self.selection))
-        parts.append(f"sel {sel}")
+        parts.append(f"sel {self.selection_text()}")
         if self.busy:
             parts.append(f"[b]{self.busy}[/] (esc cancels)")
         elif self.last_result:
             parts.append(self.last_result)
-        self.query_one("#status", Static).update(" | ".join(parts))
+        self.main_query("#status", Static).update(" | ".join(parts))
 
     # --- ports ---------------------------------------------------------------
 
@@ -300,16 +353,16 @@ class HexBotConsole(App[None]):
         self.send_command(msg.command)
 
     def send_command(self, command: Command) -> None:
-        self.query_one(Composer).remember(command)
+        self.main_query(Composer).remember(command)
         self._send_worker(command)
 
     @work(thread=True, group="send")
     def _send_worker(self, command: Command) -> None:
         # Writing at 300 baud takes ~0.4 s per frame: never on the UI thread.
         try:
-            if self.host is None:
+            if self.session is None:
                 raise HexBotError("no session yet")
-            self.host.send(command)
+            self.session.send(command)
         except HexBotError as exc:
             self.call_from_thread(self.notify, str(exc), title="Not sent", severity="error")
 
@@ -319,20 +372,20 @@ class HexBotConsole(App[None]):
         """Run ``action_<name>`` (for the command palette)."""
         getattr(self, f"action_{action}")()
 
-    def _exchange(self, command: Command, modules: list[int] | None,
-                  collect: bool = False, quiet: float | None = None,
-                  timeout: float | None = None) -> Step:
-        def step(cancel: threading.Event) -> str:
-            assert self.host is not None
-            mark = self.host.mark()
-            out = commands.exchange(self.host, command, modules=modules,
-                                    timeout=timeout or self.reply_timeout, cancel=cancel)
-            if not out.ok:
-                raise HexBotError(out.message)
-            if collect:
-                commands.collect_until_quiet(self.host, mark, quiet or self.quiet_s,
-                                             timeout or self.reply_timeout, cancel)
-            return out.message
+    def selection_text(self) -> str:
+        """Who the next command addresses, as the session knows it."""
+        s = self.session
+        if s is None or s.selection is None or s.all_selected:
+            return "all"
+        return ",".join(map(str, s.selection))
+
+    def _exchange(self, command: Command) -> Step:
+        """A step: ``command`` through the session, which waits for the
+        replies its addressing implies; anything but acknowledged fails."""
+        def step() -> str:
+            assert self.session is not None
+            out: Outcome = self.session.request(command, timeout=self.reply_timeout)
+            return out.reason
         step.__name__ = str(command)
         return step
 
@@ -340,12 +393,13 @@ class HexBotConsole(App[None]):
         if self.busy:
             self.notify(f"busy: {self.busy}", severity="warning")
             return
-        if self.host is None:
+        if self.session is None:
             self.notify("no session yet", severity="error")
             return
         self.cancel_event = threading.Event()
+        self.session.cancel.clear()
         self.busy = title
-        bar = self.query_one("#progress", ProgressBar)
+        bar = self.main_query("#progress", ProgressBar)
         bar.update(total=len(steps), progress=0)
         bar.display = True
         self._update_status()
@@ -353,40 +407,46 @@ class HexBotConsole(App[None]):
 
     @work(thread=True, exclusive=True, group="operation")
     def _operation(self, title: str, steps: list[Step], cancel: threading.Event) -> None:
-        result, ok = f"{title}: done", True
+        detail, ok = "", True
         for n, step in enumerate(steps):
             if cancel.is_set():
-                result, ok = f"{title}: cancelled", False
                 break
             self.call_from_thread(self._progress, n, f"{title}: {step.__name__}")
             try:
-                step(cancel)
-            except HexBotError as exc:
-                result, ok = f"{title}: {exc}", False
+                detail = step()
+            except CancelledError:
                 break
-            if cancel.is_set():
-                result, ok = f"{title}: cancelled", False
+            except HexBotError as exc:  # refused, timed out, port lost, not verified
+                detail, ok = str(exc), False
                 break
+        if cancel.is_set():
+            result, ok = f"{title}: cancelled", False
+        elif ok:
+            result = f"{title}: done" + (f": {detail}" if detail else "")
+        else:
+            result = f"{title}: {detail}"
         self.call_from_thread(self._finished, result, ok, len(steps))
 
     def _progress(self, n: int, label: str) -> None:
-        self.query_one("#progress", ProgressBar).update(progress=n)
+        self.main_query("#progress", ProgressBar).update(progress=n)
         self.busy = label
         self._update_status()
 
     def _finished(self, result: str, ok: bool, total: int) -> None:
         self.busy = ""
-        self.last_result = result if ok else f"[red]{result}[/]"
-        bar = self.query_one("#progress", ProgressBar)
+        self.last_result = escape(result) if ok else f"[red]{escape(result)}[/]"
+        bar = self.main_query("#progress", ProgressBar)
         bar.update(progress=total)
         bar.display = False
-        self.notify(result, title="Done" if ok else "Failed",
+        self.notify(escape(result), title="Done" if ok else "Failed",
                     severity="information" if ok else "error")
         self._update_status()
 
     def action_cancel(self) -> None:
         if self.busy:
             self.cancel_event.set()
+            if self.session is not None:
+                self.session.wake()  # ends the session's current wait at once
 
     def _ask(self, question: str, default: str, then: Callable[[list[int]], None]) -> None:
         def done(text: str | None) -> None:
@@ -403,33 +463,27 @@ class HexBotConsole(App[None]):
         self.push_screen(PromptScreen(question, default), done)
 
     def action_select(self) -> None:
-        default = "0" if self.selection is None else " ".join(map(str, self.selection))
-        self._ask("Select module ids (0 = all; answers come in this order)", default,
-                  self.select_modules)
+        sel = self.selection_text()
+        self._ask("Select module ids (0 = all; answers come in this order)",
+                  "0" if sel == "all" else sel.replace(",", " "), self.select_modules)
 
     def select_modules(self, ids: list[int]) -> None:
         try:
-            cmd = commands.select(*ids)
+            cmd = select(*ids)
         except HexBotError as exc:
             self.notify(str(exc), severity="error")
             return
-        modules = None if ids == [0] else ids
-        self.selection = modules
-        self.start_operation(f"Select {' '.join(map(str, ids))}",
-                             [self._exchange(cmd, modules, collect=modules is None)])
+        self.start_operation(f"Select {' '.join(map(str, ids))}", [self._exchange(cmd)])
 
     def action_ref(self) -> None:
-        self.start_operation("Ref", [self._exchange(commands.ref(), self.selection)])
+        self.start_operation("Ref", [self._exchange(frames.make("Ref"))])
 
     def action_status(self) -> None:
-        self.start_operation("Status", [self._exchange(commands.status(), self.selection,
-                                                       collect=self.selection is None)])
+        self.start_operation("Status", [self._exchange(frames.make("Status"))])
 
     def action_all_off(self) -> None:
-        self.selection = None
-        self.start_operation("All off", [
-            self._exchange(commands.select(0), None, collect=True),
-            self._exchange(commands.all_off(), None, collect=True)])
+        self.start_operation("All off", [self._exchange(select(0)),
+                                         self._exchange(frames.make("TurnOffAll"))])
 
     def action_set_role(self) -> None:
         def chosen(ids: list[int]) -> None:
@@ -438,59 +492,63 @@ class HexBotConsole(App[None]):
             except HexBotError as exc:
                 self.notify(str(exc), severity="error")
                 return
-            self.start_operation("SetRole", [self._exchange(cmd, self.selection,
-                                                            collect=self.selection is None)])
+            self.start_operation("SetRole", [self._exchange(cmd)])
         self._ask("Role for the selected modules: 1 mobile (M), 2 substrate (S)", "1", chosen)
 
     def action_clear_error(self) -> None:
-        self.start_operation("ClearError", [self._exchange(
-            frames.make("ClearError"), self.selection, collect=self.selection is None)])
+        self.start_operation("ClearError", [self._exchange(frames.make("ClearError"))])
 
     def action_localize(self) -> None:
-        default = str(self.selection[0]) if self.selection else "1"
+        sel = self.selection_text()
+        default = sel.split(",")[0] if sel != "all" else "1"
         self._ask("Reference module id (becomes (0,0))", default,
                   lambda ids: self.localize(ids[0]))
 
     def localize(self, ref_id: int) -> None:
-        self.selection = None
-        long = self.localize_timeout
-        self.start_operation("Localize", [
-            self._exchange(commands.select(ref_id), [ref_id]),
-            self._exchange(commands.ref(), [ref_id]),
-            self._exchange(commands.select(0), None, collect=True),
-            # reports come one slot apart (2.4 s at 300 baud): allow twice the usual quiet
-            self._exchange(commands.localize(), None, collect=True, quiet=2 * self.quiet_s,
-                           timeout=long),
-            self._exchange(commands.status(), None, collect=True),
-        ])
+        """The localization workflow: ``ref_id`` becomes (0,0), one code 66
+        for everyone, then everyone's status."""
+        def step() -> str:
+            assert self.session is not None
+            found = workflows.localize(self.session, ref_id)
+            return f"{len(found)} modules localized"
+        step.__name__ = f"Select({ref_id}), Ref, Select(0), Localize, Status"
+        self.start_operation("Localize", [step])
+
+    def known_ids(self) -> list[int]:
+        """Every module id the replies, the boot texts or the scenario named."""
+        ids: set[int] = set()
+        if self.host is not None:
+            ids |= {m.module_id for m in self.host.model.modules.values()
+                    if m.module_id is not None}
+        if self.session is not None:
+            ids |= self.session.known | self.session.cluster
+        return sorted(ids)
 
     def action_rotate(self) -> None:
         if self.host is None:
             return
-        ids = sorted(m.module_id for m in self.host.model.modules.values()
-                     if m.module_id is not None)
+        ids = self.known_ids()
         if len(ids) < 2:
             self.notify("need two known modules: localize first (l)", severity="warning")
             return
         self.push_screen(RotateScreen(ids), self._rotate_chosen)
 
     def _rotate_chosen(self, choice: tuple[str, int, int, int] | None) -> None:
-        if choice is None or self.host is None:
-            return
-        direction, joint, mobile, substrate = choice
-        rows = {i: self.host.model.module(i) for i in (mobile, substrate)}
-        missing = [i for i, r in rows.items() if r is None or r.orientation is None]
-        if missing:
-            self.notify(f"orientation of {missing} unknown: run status (t) after localizing",
-                        severity="error")
-            return
-        cmd = commands.rotate(direction, joint, rows[mobile].orientation,  # type: ignore
-                              rows[substrate].orientation)  # type: ignore[union-attr]
-        self.selection = [substrate, mobile]
-        self.start_operation(f"Rotate {direction} {joint}", [
-            self._exchange(commands.select(substrate, mobile), [substrate, mobile]),
-            self._exchange(cmd, [substrate, mobile], timeout=max(self.reply_timeout, 8.0)),
-        ])
+        if choice is not None:
+            self.rotate(*choice)
+
+    def rotate(self, direction: str, joint: int, mobile: int, substrate: int) -> None:
+        """The rotation workflow: roles, selection, 67/68, and the check that
+        the module is where it should be (the plant's verdict on the
+        simulator, a new localization elsewhere). Refused before sending when
+        an orientation is unknown or stale; a refused or unverified move
+        fails."""
+        def step() -> str:
+            assert self.session is not None
+            return workflows.rotate(self.session, direction, joint, mobile,
+                                    substrate).describe()
+        step.__name__ = f"module {mobile} on {substrate}, then verify"
+        self.start_operation(f"Rotate {direction} {joint}", [step])
 
     # --- views ---------------------------------------------------------------
 
@@ -498,11 +556,11 @@ class HexBotConsole(App[None]):
         self.show_tab(tab)
 
     def show_tab(self, tab: str) -> None:
-        self.query_one(TabbedContent).active = tab
+        self.main_query(TabbedContent).active = tab
 
     def compose_function(self, code: int) -> None:
         self.show_tab("compose")
-        self.query_one(Composer).choose(code, focus=True)
+        self.main_query(Composer).choose(code, focus=True)
 
     def action_cycle_mode(self) -> None:
         for port in (IR, DEBUG):
@@ -525,6 +583,8 @@ class HexBotConsole(App[None]):
         self.push_screen(HelpScreen(keys))
 
     def on_unmount(self) -> None:
+        if self.session is not None:
+            self.session.wake()  # a workflow still waiting gives up
         if self.host is not None:
             self.host.close()
         if self.endpoints is not None:

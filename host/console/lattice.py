@@ -1,7 +1,9 @@
 """The cluster drawn on the hexagonal lattice, from localization and status.
 
 With the embedded simulator, modules the replies have not placed (yet)
-are drawn dim where the simulator has them (its plant events).
+are drawn dim where the simulator's plant has them: the app passes the
+plant's placements (``SimulatorAccess.placements()``, protocol types only);
+on hardware there are none.
 
 Coordinates as in Table 4-1: +y is side 2 (up), +x is side 3 (up-right).
 Each module is two text rows: ``/id\\`` over ``\\role arrow/``; the arrow
@@ -12,21 +14,27 @@ rows apart, neighbours in x one row and five columns.
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
+
 from rich.text import Text
 from textual.widgets import Static
 
 from hexbot.host.cluster import ClusterModel
 from hexbot.protocol.lattice import SIDE_OFFSETS
+from hexbot.protocol.simulation import Placement, PlantVerdict
+
+Cells = dict[tuple[int, int], tuple[str, str, int | None]]
+Truth = Mapping[int, Placement]
 
 CELL_W = 5
 ARROWS = {1: "\u2196", 2: "\u2191", 3: "\u2197", 4: "\u2198", 5: "\u2193", 6: "\u2199"}
 STYLE = {"S": "bold cyan", "M": "bold green"}
 
 
-def lattice_cells(model: ClusterModel) -> dict[tuple[int, int], tuple[str, str, int | None]]:
+def lattice_cells(model: ClusterModel) -> Cells:
     """(x, y) -> (label, role, yref) for every module the host placed from
     localization and status replies."""
-    cells: dict[tuple[int, int], tuple[str, str, int | None]] = {}
+    cells: Cells = {}
     for p in model.cells():
         label = f"{p.module_id:02d}" if p.module_id is not None else "??"
         role = "-"
@@ -39,21 +47,22 @@ def lattice_cells(model: ClusterModel) -> dict[tuple[int, int], tuple[str, str, 
     return cells
 
 
-def sim_cells(model: ClusterModel) -> dict[tuple[int, int], tuple[str, str, int | None]]:
-    """Cells where the embedded simulator has a module the replies have not
-    (yet) placed there: drawn dim, so a wrong localization stands out."""
+def sim_cells(model: ClusterModel, truth: Truth) -> Cells:
+    """Cells where the simulator's plant (``truth``: id -> placement) has a
+    module the replies have not (yet) placed there: drawn dim, so a wrong
+    localization, or where a rotated module went, stands out."""
     known = lattice_cells(model)
-    out: dict[tuple[int, int], tuple[str, str, int | None]] = {}
-    for ident, (cell, orientation) in sorted(model.truth.items()):
-        if known.get(cell, ("",))[0] != f"{ident:02d}":
+    out: Cells = {}
+    for ident, placed in sorted(truth.items()):
+        if known.get(placed.cell, ("",))[0] != f"{ident:02d}":
             row = model.module(ident)
-            out[cell] = (f"{ident:02d}", row.role if row else "-", orientation)
+            out[placed.cell] = (f"{ident:02d}", row.role if row else "-", placed.orientation)
     return out
 
 
-def draw_lattice(model: ClusterModel) -> Text:
+def draw_lattice(model: ClusterModel, truth: Truth | None = None) -> Text:
     cells = lattice_cells(model)
-    ghosts = {c: v for c, v in sim_cells(model).items() if c not in cells}
+    ghosts = {c: v for c, v in sim_cells(model, truth or {}).items() if c not in cells}
     if not cells and not ghosts:
         return Text("no positions yet: localize the cluster (key l)", style="dim")
     occupied = set(cells) | set(ghosts)
@@ -92,16 +101,18 @@ def draw_lattice(model: ClusterModel) -> Text:
     return out
 
 
-def lattice_legend(model: ClusterModel) -> str:
+def lattice_legend(model: ClusterModel, truth: Truth | None = None,
+                   verdicts: Sequence[PlantVerdict] = ()) -> str:
+    """Positions in words, a note on the dim cells, the plant's last verdicts."""
     cells = lattice_cells(model)
     lines = []
     if cells:
         parts = [f"{label} ({x:+d},{y:+d}) yref {'?' if yref is None else yref}"
                  for (x, y), (label, _, yref) in sorted(cells.items(), key=lambda kv: kv[1][0])]
         lines.append(f"{len(cells)} placed: " + ", ".join(parts))
-    if model.truth:
+    if truth:
         lines.append("dim: where the simulator has a module the replies did not place")
-    lines.extend(f"sim {line}" for line in model.sim_log[-3:])
+    lines.extend(f"sim {v.t:.2f}s {v.describe()}" for v in verdicts[-3:])
     if lines:
         lines.append("+x = side 3 (up-right), +y = side 2 (up); arrow = body side 1")
     return "\n".join(lines)
@@ -110,12 +121,13 @@ def lattice_legend(model: ClusterModel) -> str:
 class LatticeView(Static):
     """The drawing (scrolls with its container for big clusters)."""
 
-    def refresh_from(self, model: ClusterModel) -> None:
-        self.update(draw_lattice(model))
+    def refresh_from(self, model: ClusterModel, truth: Truth | None = None) -> None:
+        self.update(draw_lattice(model, truth))
 
 
 class LatticeLegend(Static):
-    """Positions in words, the simulator's last plant events, the axes."""
+    """Positions in words, the plant's last verdicts, the axes."""
 
-    def refresh_from(self, model: ClusterModel) -> None:
-        self.update(Text(lattice_legend(model), style="dim"))
+    def refresh_from(self, model: ClusterModel, truth: Truth | None = None,
+                     verdicts: Sequence[PlantVerdict] = ()) -> None:
+        self.update(Text(lattice_legend(model, truth, verdicts), style="dim"))

@@ -1,11 +1,13 @@
-"""Messages the host's reader threads post to the console (thread-safe)."""
+"""Messages the console posts itself from the host's typed events
+(:mod:`hexbot.host.events`; ``post_message`` is thread-safe)."""
 
 from __future__ import annotations
 
 from textual.message import Message
 
-from hexbot.host.host import Observed
+from hexbot.host.events import Observed
 from hexbot.host.link import LinkState
+from hexbot.protocol.simulation import PlantVerdict
 
 
 class Traffic(Message):
@@ -31,8 +33,8 @@ class PortState(Message):
 
 
 class SimEvent(Message):
-    """A plant event of the embedded simulator (moved, refused, ...)."""
+    """The embedded simulator's plant judged a rotation: ``Moved`` or ``Refused``."""
 
-    def __init__(self, event: dict) -> None:
+    def __init__(self, verdict: PlantVerdict) -> None:
         super().__init__()
-        self.event = event
+        self.verdict = verdict

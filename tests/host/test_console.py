@@ -14,6 +14,7 @@ from hexbot.host.console.modules_view import ModulesView
 from hexbot.host.console.terminal import Terminal
 from hexbot.host.host import IR, Host
 from hexbot.host.link import LinkState, PortSettings
+from hexbot.protocol.simulation import Placement
 
 
 async def until(pilot, pred, timeout=20.0, step=0.05):
@@ -37,7 +38,7 @@ def modules_rows(app: HexBotConsole) -> list[list[str]]:
 def _app(responder, **kw) -> HexBotConsole:
     host = Host()
     host.add_port(IR, PortSettings(responder.path), retry_s=0.1)
-    return HexBotConsole(host, reply_timeout=2.0, quiet_s=0.3, **kw)
+    return HexBotConsole(host, **kw)
 
 
 @sync
@@ -115,8 +116,9 @@ async def test_localize_workflow_fills_modules_and_lattice(responder):
         assert "Localize: done" in app.last_result
         cells = lattice_cells(app.host.model)
         assert len(cells) == 7 and cells[(0, 0)][0] == "01"
-        lattice = str(app.query_one("#lattice-view").render())
-        assert all(f"/{i:02d}\\" in lattice for i in range(1, 8))
+        # the views redraw once per burst of replies
+        assert await until(pilot, lambda: all(
+            f"/{i:02d}\\" in str(app.query_one("#lattice-view").render()) for i in range(1, 8)))
         assert [r[0] for r in modules_rows(app)] == [f"{i:02d}" for i in range(1, 8)]
 
 
@@ -168,16 +170,20 @@ async def test_port_loss_is_shown_and_state_kept(responder):
 
 
 @pytest.fixture
+def pair_args(log_dir):
+    return cli_console.parse(["--scenario", "pair", "--sim-speed", "5"])
+
+
+@pytest.fixture
 def sim_args(log_dir):
-    return cli_console.parse(["--scenario", "flower7", "--sim-speed", "20", "--timeout", "3"])
+    return cli_console.parse(["--scenario", "flower7", "--sim-speed", "5"])
 
 
 @sync
 async def test_console_on_simulator_flower7(sim_args):
     """Connect, send Select(0) from the composer table, see the ACKs in the
     IR terminal and modules view, localize and see seven positions."""
-    app = HexBotConsole(opener=cli_console.make_opener(sim_args), reply_timeout=3.0,
-                        quiet_s=0.5, boot_quiet=1.0)
+    app = HexBotConsole(opener=cli_console.make_opener(sim_args))
     async with app.run_test(size=(120, 36)) as pilot:
         assert await until(pilot, lambda: app.host is not None, timeout=60)
         assert await until(pilot, lambda: app.port_states.get(IR, (None,))[0]
@@ -203,13 +209,11 @@ async def test_console_on_simulator_flower7(sim_args):
 
 
 @sync
-async def test_rotation_on_simulator_moves_module_in_lattice(log_dir):
+async def test_rotation_on_simulator_moves_module_in_lattice(pair_args):
     """Localize the pair, rotate module 2 CW about lattice joint 4 (Table
-    3-1's example) from the rotate dialog: both ACK 67, and the lattice shows
-    where the simulator's plant put it (dim until localized again)."""
-    args = cli_console.parse(["--scenario", "pair", "--sim-speed", "20"])
-    app = HexBotConsole(opener=cli_console.make_opener(args), reply_timeout=3.0,
-                        quiet_s=0.5, boot_quiet=1.0)
+    3-1's example) from the rotate dialog: both ACK 67, the plant's verdict
+    verifies the move, and the lattice shows where the plant put it."""
+    app = HexBotConsole(opener=cli_console.make_opener(pair_args))
     async with app.run_test(size=(100, 30)) as pilot:
         assert await until(pilot, lambda: app.host is not None, timeout=60)
         assert await until(pilot, lambda: not app.busy, timeout=60)
@@ -227,12 +231,50 @@ async def test_rotation_on_simulator_moves_module_in_lattice(log_dir):
         assert await until(pilot, lambda: not app.busy and "Rotate" in app.last_result,
                            timeout=30)
         assert "done" in app.last_result, app.last_result
+        assert "module 2 moved at (0, 1) facing 2 (verified by plant)" in app.last_result
         assert "S01 ACK 67 CW" in ir_text(app) and "M02 ACK 67 CW" in ir_text(app)
         sent = [line for line in ir_text(app).splitlines() if "> CW(" in line]
         assert sent and sent[-1].endswith("> CW(4, 8, 4, 10, 4, 8, 5, 9)")
-        assert await until(pilot, lambda: app.host.model.truth[2] == ((0, 1), 2), timeout=10)
-        legend = app.query_one("#lattice-legend").render()
-        assert "module 2 moved (-1, 1) -> (0, 1)" in str(legend)
+        assert app.host.simulator.placements()[2] == Placement((0, 1), 2)
+        assert app.host.model.module(2).position == (0, 1)  # the verdict placed it
+        assert await until(pilot, lambda: "module 2 moved (-1, 1) -> (0, 1)"
+                           in str(app.query_one("#lattice-legend").render()))
+
+
+@sync
+async def test_refused_and_unlocalized_rotations_fail_on_simulator(pair_args):
+    """Issue 12, item 3: a rotation before localizing is refused (the
+    orientations are unknown) and one the plant refuses (module 1 is the
+    pair's fixed base) fails in red with the plant's reason; neither is
+    ever "done"."""
+    app = HexBotConsole(opener=cli_console.make_opener(pair_args))
+    async with app.run_test(size=(100, 30)) as pilot:
+        assert await until(pilot, lambda: app.host is not None, timeout=60)
+        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        assert "Simulator: done" in app.last_result, app.last_result
+        app.rotate("cw", 4, 2, 1)
+        assert await until(pilot, lambda: not app.busy and "Rotate" in app.last_result)
+        assert app.last_result.startswith("[red]") and "done" not in app.last_result
+        assert "unknown: localize first" in app.last_result, app.last_result
+        assert "> CW(" not in ir_text(app)  # refused before sending anything
+        assert app._notifications and list(app._notifications)[-1].title == "Failed"
+
+        app.localize(1)
+        assert await until(pilot, lambda: not app.busy and "Localize" in app.last_result,
+                           timeout=120)
+        assert "Localize: done" in app.last_result, app.last_result
+        # module 1 as the mobile about lattice joint 1, module 2 (at (-1, 1)) the substrate
+        app.rotate("cw", 1, 1, 2)
+        assert await until(pilot, lambda: not app.busy and "Rotate" in app.last_result,
+                           timeout=30)
+        assert app.last_result.startswith("[red]") and "done" not in app.last_result
+        assert "the plant refused: module 1 fixed to base" in app.last_result, app.last_result
+        assert "M01 ACK 67 CW" in ir_text(app)  # the modules did what they were told
+        assert await until(pilot, lambda: "Simulator: rotation refused"
+                           in [n.title for n in app._notifications])
+        titles = [n.title for n in app._notifications if not n.title.startswith("Simulator")]
+        assert titles[-1] == "Failed", titles
+        assert app.host.simulator.placements()[1] == Placement((0, 0), 0)  # never moved
 
 
 @sync
@@ -242,7 +284,7 @@ async def test_console_reconnects_when_the_port_returns():
     server = _Server()
     host = Host()
     host.add_port(IR, PortSettings(f"socket://127.0.0.1:{server.port}"), retry_s=0.1)
-    app = HexBotConsole(host, reply_timeout=2.0, quiet_s=0.3)
+    app = HexBotConsole(host)
     try:
         async with app.run_test(size=(100, 30)) as pilot:
             assert await until(pilot, lambda: "S01 ACK 65 Ref" in ir_text(app), timeout=5)
@@ -274,3 +316,21 @@ async def test_set_role_from_the_palette(responder):
         assert await until(pilot, lambda: "S06 ACK 71 SetRole" in ir_text(app))
         assert responder.received[-1] == b"*G\x02NNNNNNN#"
         assert ["06", "S"] == modules_rows(app)[0][:2]
+
+
+@sync
+async def test_replay_shows_a_recorded_session_and_cancels():
+    """``hexbot console --replay``: the capture plays in real time into the
+    terminals; escape stops it."""
+    from pathlib import Path
+
+    from hexbot.host.capture import read_capture
+
+    records = list(read_capture(Path(__file__).parent / "data" / "flower7_session.hbcap"))
+    app = HexBotConsole(Host(), replay=records, start_ports=False)
+    async with app.run_test(size=(100, 30)) as pilot:
+        assert await until(pilot, lambda: "ACK" in ir_text(app))
+        assert app.busy.startswith("Replay")
+        await pilot.press("escape")
+        assert await until(pilot, lambda: not app.busy, timeout=5)
+        assert "Replay: cancelled" in app.last_result
