@@ -84,9 +84,10 @@ class Refusal:
 
 @dataclass(frozen=True)
 class Outcome:
-    command: Command
+    command: Command | bytes  # bytes: a raw frame, sent as it is (bad input on purpose)
     kind: OutcomeKind
     replies: tuple[Observed, ...] = ()
+    extra: tuple[Observed, ...] = ()  # replies nobody asked for (heard while settling)
     missing: tuple[int, ...] = ()  # modules that did not answer in time
     refusals: tuple[Refusal, ...] = ()
     waited: float = 0.0  # session seconds from sending to the verdict
@@ -99,8 +100,11 @@ class Outcome:
     @property
     def reason(self) -> str:
         """One line: what happened."""
-        name = CODES[self.command.code].name if self.command.code in CODES else "?"
-        head = f"{name} ({self.command.code})"
+        if isinstance(self.command, bytes):
+            head = f"frame {self.command!r}"
+        else:
+            name = CODES[self.command.code].name if self.command.code in CODES else "?"
+            head = f"{name} ({self.command.code})"
         n = len(self.replies)
         if self.kind is OutcomeKind.ACKNOWLEDGED:
             return f"{head}: {n} repl{'y' if n == 1 else 'ies'}, acknowledged"
@@ -134,7 +138,7 @@ class Outcome:
 class _Collector:
     """The replies to one command, as they arrive."""
 
-    code: int
+    code: int | None  # None: a raw frame, any ACK/ERR/STA is its reply
     wanted: set[int] | None  # module ids still to answer; None = count only
     need: int
     port: str
@@ -168,6 +172,8 @@ class _Collector:
         if obs.port != self.port:  # a control board's debug port echoes too
             return False
         ev = obs.event
+        if self.code is None:
+            return isinstance(ev, (Ack, ErrorReply, StatusReport))
         if isinstance(ev, Ack):
             return ev.code in (self.code, wire.UNUSED, wire.TIMEOUT)
         if isinstance(ev, ErrorReply):
@@ -319,23 +325,34 @@ class Session:
             return tuple(ids)
         return self.selection
 
-    def exchange(self, command: Command, *, modules: Iterable[int] | None = None,
+    def exchange(self, command: Command | bytes, *, modules: Iterable[int] | None = None,
                  count: int | None = None, timeout: float | None = None,
                  settle: float = SETTLE_S, strict: bool = True, port: str = IR) -> Outcome:
         """Send ``command`` and wait for the replies its addressing implies
-        (or one from each of ``modules``, or ``count`` of any module)."""
-        if modules is not None:
+        (or one from each of ``modules``, or ``count`` of any module).
+        ``command`` may be raw bytes (a corrupted frame on purpose): then any
+        ACK, ERR or STA is its reply and ``timeout`` must be given. With
+        ``settle``, listen that much longer for replies nobody asked for."""
+        if isinstance(command, bytes):
+            if timeout is None:
+                raise ValueError("a raw frame has no protocol time-out: give timeout=")
+            code: int | None = None
+            ids: tuple[int, ...] | None = tuple(modules) if modules is not None else None
+            count = count if count is not None or ids is not None else 1
+        elif modules is not None:
             ids: tuple[int, ...] | None = tuple(modules)
         elif count is not None:
             ids = None
         else:
             ids = self.expected_replies(command)
+        if not isinstance(command, bytes):
+            code = command.code
         need = len(ids) if ids is not None else (count or 1)
         if ids is not None and not ids:
             raise CommandRefusedError(f"{command}: no module would answer")
         # Select(0) to a cluster of unknown ids: every answer counts; wait for
         # the ids seen so far, then until the link is quiet.
-        roll_call = ids is None and count is None and command.code == SELECT
+        roll_call = ids is None and count is None and code == SELECT
         if roll_call:
             self.learn()
             need = max(1, len(self.known))
@@ -347,7 +364,7 @@ class Session:
             mark = self.host.send(command, port, strict=strict)
         except LinkUnavailableError as exc:
             return Outcome(command, OutcomeKind.PORT_LOST, detail=str(exc))
-        got = _Collector(command.code, set(ids) if ids is not None else None, need, port,
+        got = _Collector(code, set(ids) if ids is not None else None, need, port,
                          checked=mark, roll_call=roll_call)
 
         def ready() -> bool:
@@ -369,7 +386,7 @@ class Session:
             with self.host.lock:
                 got.take(self.host.since(0))
         outcome = self._judge(command, got, ids, started, port)
-        if outcome.ok and command.code == SELECT:
+        if outcome.ok and isinstance(command, Command) and command.code == SELECT:
             self.selection = ids
             self.all_selected = command.args[0] == 0
         return outcome
@@ -402,24 +419,24 @@ class Session:
             return ch.link.detail or ch.link.state.value
         return None
 
-    def _judge(self, command: Command, got: _Collector, ids: tuple[int, ...] | None,
+    def _judge(self, command: Command | bytes, got: _Collector, ids: tuple[int, ...] | None,
                started: float, port: str) -> Outcome:
         waited = self.now() - started
-        replies = tuple(got.replies)
+        replies, extra = tuple(got.replies), tuple(got.extra)
         refusals = tuple(r for obs in replies if (r := _refusal(obs)) is not None)
         if refusals:
-            return Outcome(command, OutcomeKind.REFUSED, replies, refusals=refusals,
+            return Outcome(command, OutcomeKind.REFUSED, replies, extra, refusals=refusals,
                            waited=waited)
         if got.complete:
-            return Outcome(command, OutcomeKind.ACKNOWLEDGED, replies, waited=waited)
+            return Outcome(command, OutcomeKind.ACKNOWLEDGED, replies, extra, waited=waited)
         missing = tuple(sorted(got.wanted)) if got.wanted else ()
         if self.cancel.is_set():
-            return Outcome(command, OutcomeKind.CANCELLED, replies, missing, waited=waited)
+            return Outcome(command, OutcomeKind.CANCELLED, replies, extra, missing, waited=waited)
         lost = self._lost(port)
         if lost is not None:
-            return Outcome(command, OutcomeKind.PORT_LOST, replies, missing, waited=waited,
-                           detail=lost)
-        return Outcome(command, OutcomeKind.TIMED_OUT, replies, missing, waited=waited)
+            return Outcome(command, OutcomeKind.PORT_LOST, replies, extra, missing,
+                           waited=waited, detail=lost)
+        return Outcome(command, OutcomeKind.TIMED_OUT, replies, extra, missing, waited=waited)
 
 
 def listening_id(event: object) -> int | None:

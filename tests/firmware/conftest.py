@@ -4,7 +4,7 @@ IR link. The images are built once per session by firmware/Makefile."""
 from __future__ import annotations
 
 import pytest
-from fwsim import BUILD, Bench, build_firmware
+from fwsim import BUILD, Bench, build_firmware, close_all
 
 
 @pytest.fixture(scope="session")
@@ -17,5 +17,11 @@ def single(images) -> Bench:
     """One module (id 1) booted and listening."""
     bench = Bench.boot("single")
     bench.drain()
-    bench.sim.debug_read(1)
+    bench.debug_read(1)
     return bench
+
+
+@pytest.fixture(autouse=True)
+def _close_benches():
+    yield
+    close_all()

@@ -1,17 +1,22 @@
-"""Talk to simulated modules the way the thesis GUI did: frames out on the
-PC's IR transceiver, replies parsed from what comes back.
+"""Talk to simulated modules the way a PC does: through the host's session
+on the simulator's pyserial URL (``hexbot-sim://...?speed=0``), frames out
+on the PC's IR transceiver, replies parsed from what comes back.
 
-Shared by the firmware tests; every helper runs the simulator in virtual
-time only (no wall-clock waits).
+Shared by the firmware tests; everything runs in virtual time (no
+wall-clock waits).
 """
 
 from __future__ import annotations
 
 import subprocess
-from dataclasses import dataclass, field
 from pathlib import Path
 
-from hexbot.hil_sim import Simulator, load_scenario
+from hexbot.hil_sim import Simulator
+from hexbot.host.endpoints import sim_url
+from hexbot.host.events import Direction, Traffic
+from hexbot.host.host import IR, Host
+from hexbot.host.link import PortSettings
+from hexbot.host.session import Session
 from hexbot.protocol import frames, parser, wire
 from hexbot.protocol.timing import boot_seconds  # noqa: F401 - the tests import it from here
 
@@ -50,24 +55,43 @@ def scenario_file(tmp: Path, modules: list[tuple[int, tuple[int, int], int]], *,
     return path
 
 
-@dataclass
 class Bench:
-    """A booted simulator plus the bytes the PC has heard so far."""
+    """A booted cluster behind a stepped ``hexbot-sim://`` port, driven
+    through the host's one send-and-wait layer (:class:`Session`) in
+    virtual time, plus every byte the PC heard since the last ``drain``."""
 
-    sim: Simulator
-    heard: bytearray = field(default_factory=bytearray)
+    def __init__(self, host: Host, session: Session) -> None:
+        self.host, self.session = host, session
+        self.heard = bytearray()
+        host.add_listener(self._hear)
+
+    def _hear(self, event: object) -> None:
+        if isinstance(event, Traffic) and event.direction is Direction.RX and event.port == IR:
+            self.heard += event.data
+
+    @property
+    def sim(self) -> Simulator:
+        """The simulator itself, through the port's simulator-only interface
+        (pins, positions, debug UART)."""
+        access = self.host.simulator
+        assert access is not None
+        return access.simulator  # type: ignore[attr-defined]
 
     @classmethod
     def boot(cls, scenario: str | Path, seed: int = 1, boot_s: float | None = None,
              version: str = "0.1.0") -> Bench:
-        sim = Simulator(load_scenario(scenario), seed=seed)
-        bench = cls(sim)
-        bench.run(boot_s if boot_s is not None else boot_seconds(sim.modules, version))
+        host = Host()
+        host.add_port(IR, PortSettings(sim_url(str(scenario), seed, 0.0)))
+        host.start(5.0)
+        _OPEN.append(host)
+        access = host.simulator
+        assert access is not None
+        bench = cls(host, Session(host, access.module_ids()))
+        bench.run(boot_s if boot_s is not None else boot_seconds(access.module_ids(), version))
         return bench
 
     def run(self, seconds: float) -> None:
-        self.sim.run(seconds)
-        self.heard += self.sim.pc_read()
+        self.session.sleep(seconds)
 
     def drain(self) -> bytes:
         """Everything heard so far, forgotten afterwards."""
@@ -76,7 +100,15 @@ class Bench:
         return data
 
     def send(self, data: bytes) -> None:
-        self.sim.pc_write(data)
+        self.session.send(data)
+
+    def debug_read(self, module_id: int) -> bytes:
+        """What module ``module_id``'s control board sent on its UART1 debug port."""
+        return self.host.simulator.take(module_id, 1 << 20)  # type: ignore[union-attr]
+
+    def debug_write(self, module_id: int, data: bytes) -> None:
+        """Bytes into that debug port (4800 baud 8N1)."""
+        self.host.simulator.write(module_id, data)  # type: ignore[union-attr]
 
     def events(self) -> list[parser.Event]:
         return parser.parse_all(bytes(self.heard))
@@ -84,31 +116,36 @@ class Bench:
     def replies(self) -> list[parser.Event]:
         return [e for e in self.events() if isinstance(e, REPLY_KINDS)]
 
-    def until(self, predicate, timeout: float, step: float = 0.05) -> None:
+    def until(self, predicate, timeout: float) -> None:
         """Run until ``predicate(self)`` holds; AssertionError after ``timeout`` s."""
-        end = self.sim.time + timeout
-        while not predicate(self):
-            if self.sim.time >= end:
-                raise AssertionError(
-                    f"not met within {timeout} s of simulated time; PC heard {bytes(self.heard)!r}"
-                )
-            self.run(step)
+        if not self.session.clock.wait(lambda: predicate(self), timeout):
+            raise AssertionError(
+                f"not met within {timeout} s of simulated time; PC heard {bytes(self.heard)!r}")
 
-    def exchange(self, frame: bytes, replies: int = 1, timeout: float = 8.0,
-                 quiet: float = 0.8) -> list[parser.Event]:
-        """Send a frame, wait for ``replies`` ACK/ERR/STA replies and then
-        ``quiet`` more seconds (so extra replies would show); return them."""
+    def frame(self, data: bytes | frames.Command, replies: int = 1, timeout: float = 8.0,
+              quiet: float = 0.8) -> list[parser.Event]:
+        """Send a frame (raw bytes: bad input on purpose) through the session,
+        wait for ``replies`` ACK/ERR/STA replies and ``quiet`` more seconds
+        (so extra replies would show); return them all, in order."""
         self.drain()
-        self.send(frame)
-        self.until(lambda b: len(b.replies()) >= replies, timeout)
-        self.run(quiet)
-        found = self.replies()
+        out = self.session.exchange(data, count=replies, timeout=timeout, settle=quiet,
+                                    strict=False)
+        if len(out.replies) < replies:
+            raise AssertionError(f"{out.reason}; PC heard {bytes(self.heard)!r}")
         self.drain()
-        return found
+        return [o.event for o in sorted(out.replies + out.extra, key=lambda o: o.seq)]
 
     def command(self, key: int | str, *args: int, strict: bool = True, **kw) -> list:
-        return self.exchange(frames.encode_pc(frames.make(key, *args, strict=strict),
-                                              strict=strict), **kw)
+        return self.frame(frames.make(key, *args, strict=strict), **kw)
+
+
+#: Hosts opened by Bench.boot; tests/firmware/conftest.py closes them after each test.
+_OPEN: list[Host] = []
+
+
+def close_all() -> None:
+    while _OPEN:
+        _OPEN.pop().close()
 
 
 def pc_frame(code: int, *args: int) -> bytes:

@@ -31,14 +31,14 @@ def test_boot_texts_on_ir_and_debug_port(images):
     assert bench.drain().startswith(b"\n\r\n\rCOMM. BOARD READY")
     bench = Bench.boot("single")
     assert texts(bench.drain()) == IR_BOOT
-    assert texts(bench.sim.debug_read(1)) == DEBUG_BOOT
+    assert texts(bench.debug_read(1)) == DEBUG_BOOT
 
 
 def test_module_id_comes_from_the_dip_switches(images, tmp_path):
     bench = Bench.boot(scenario_file(tmp_path, [(37, (0, 0), 0)]))
     assert ("COMM. LISTENING", "ID=37 FW=0.1.0") in texts(bench.drain())
     bench.sim.run(0.1)
-    assert ("CTR. BOARD READY", "ID=37 FW=0.1.0") in texts(bench.sim.debug_read(37))
+    assert ("CTR. BOARD READY", "ID=37 FW=0.1.0") in texts(bench.debug_read(37))
 
 
 def test_version_string_from_make(tmp_path):
@@ -123,7 +123,7 @@ def test_control_board_restart_is_picked_up_by_the_comm_board(single):
     module = sim.modules[1]
     sim.cluster.reset(module.control.index)
     single.run(3.0)
-    assert texts(sim.debug_read(1)) == DEBUG_BOOT  # it found the comm board again
+    assert texts(single.debug_read(1)) == DEBUG_BOOT  # it found the comm board again
     (ack,) = single.command("JxOpen", 4)
     assert ack.code == 1
     assert module.control.port("A")[1] & 0x3F == 1 << 4

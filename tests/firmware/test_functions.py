@@ -59,14 +59,14 @@ def test_every_function_code_is_acknowledged(single: Bench, fn: codes.FunctionCo
         assert (ack.role, ack.module) == ("M", None)  # thesis prefix "M: "
     if fn.board is Board.CONTROL:
         # The control board logged what it received on its debug port.
-        debug = single.sim.debug_read(1)
+        debug = single.debug_read(1)
         msg = bytes([fn.code, *args, *[78] * (4 - len(args))])
         assert b"ACK" + bytes([fn.code]) + b"\n\rMSG" + msg + b"\n\r" in debug
 
 
 @pytest.mark.parametrize("code", UNUSED)
 def test_unused_codes_answer_ack_n(single: Bench, code: int):
-    single_ack(single.exchange(pc_frame(code)), ord("N"))
+    single_ack(single.frame(pc_frame(code)), ord("N"))
 
 
 @pytest.mark.parametrize(
@@ -76,10 +76,10 @@ def test_unused_codes_answer_ack_n(single: Bench, code: int):
      (68, [2, 1, 1, 1, 7, 1, 1, 1]), (71, [0]), (71, [3])],
 )
 def test_out_of_range_arguments_get_err_not_wraparound(single: Bench, code, args):
-    (err,) = single.exchange(pc_frame(code, *args))
+    (err,) = single.frame(pc_frame(code, *args))
     assert isinstance(err, parser.ErrorReply)
     assert (err.code, err.reason) == (code, ErrorCode.ARG_RANGE)
-    assert single.sim.debug_read(1) == b""  # nothing reached the control board
+    assert single.debug_read(1) == b""  # nothing reached the control board
     (sta,) = single.command("Status")
     assert sta.error == ErrorCode.ARG_RANGE
     single_ack(single.command("ClearError"), 72)
@@ -196,11 +196,11 @@ def test_rotation_sequences_and_timing(single: Bench, name: str):
 def test_combined_rotation_runs_the_half_of_the_role(single: Bench):
     args = (3, 1, 1, 1, 5, 1, 1, 1)  # substrate half joint 3, mobile half joint 5
     single_ack(single.command("CW", *args), 67)
-    assert b"MSG\x15\x05\x01\x01\x01" in single.sim.debug_read(1)  # mobile: MCW(5, ...)
+    assert b"MSG\x15\x05\x01\x01\x01" in single.debug_read(1)  # mobile: MCW(5, ...)
     single_ack(single.command("SetRole", 2), 71)
     ack = single_ack(single.command("CCW", *args), 68)
     assert ack.role == "S"
-    assert b"MSG\x18\x03\x01\x01\x01" in single.sim.debug_read(1)  # substrate: SCCW(3, ...)
+    assert b"MSG\x18\x03\x01\x01\x01" in single.debug_read(1)  # substrate: SCCW(3, ...)
 
 
 def test_substrate_waits_one_second_before_acknowledging(single: Bench):
@@ -208,7 +208,7 @@ def test_substrate_waits_one_second_before_acknowledging(single: Bench):
         single.drain()
         single.send(frames.encode_pc(frames.make("LOn")))
         sent_end = single.sim.time + 11 * 10 / 300
-        single.until(lambda b: b"ACK" in b.heard, 5.0, step=0.01)
+        single.until(lambda b: b"ACK" in b.heard, 5.0)
         return single.sim.time - sent_end
 
     mobile = ack_delay()
@@ -231,18 +231,18 @@ def test_ir_select_acknowledges_on_centre_then_returns_after_silence(single: Ben
 
 def test_debug_port_drives_the_control_board_directly(single: Bench):
     # Thesis 3.4.5: UART1 of the control board takes commands without the comm board.
-    single.sim.debug_write(1, b"*\x01\x03NNN#")
+    single.debug_write(1, b"*\x01\x03NNN#")
     single.run(0.2)
-    assert single.sim.debug_read(1) == b"\n\r\n\rACK\x01\n\rMSG\x01\x03NNN\n\r"
+    assert single.debug_read(1) == b"\n\r\n\rACK\x01\n\rMSG\x01\x03NNN\n\r"
     assert actuators(single)[0] == J(3)
-    single.sim.debug_write(1, b"*\x01\x09NNN#")  # joint 9: refused, everything off
+    single.debug_write(1, b"*\x01\x09NNN#")  # joint 9: refused, everything off
     single.run(0.2)
-    assert single.sim.debug_read(1).startswith(b"\n\r\n\rACKN\n\r")
+    assert single.debug_read(1).startswith(b"\n\r\n\rACKN\n\r")
     assert actuators(single)[0] == J()
-    single.sim.debug_write(1, b"*\x0b\x02NNN#")  # SxP(2)
+    single.debug_write(1, b"*\x0b\x02NNN#")  # SxP(2)
     single.run(0.05)
     assert actuators(single)[1] == M(s2=POS)
-    single.sim.debug_write(1, b"*\x01\x02NN")  # half a frame
+    single.debug_write(1, b"*\x01\x02NN")  # half a frame
     single.run(0.1)  # it times out (30 ms): error path, everything off
     assert actuators(single) == (J(), M())
     assert single.replies() == []  # nothing went to the PC

@@ -28,7 +28,7 @@ LON = frames.encode_pc(frames.make("LOn"))
     ],
 )
 def test_malformed_frame_then_valid_frame_back_to_back(single: Bench, junk: bytes):
-    replies = single.exchange(junk + LON)
+    replies = single.frame(junk + LON)
     assert [r.code for r in replies if isinstance(r, parser.Ack)][-1:] == [44]
 
 
@@ -36,22 +36,22 @@ def test_truncated_frame_is_dropped_after_the_inter_byte_timeout(single: Bench):
     single.send(b"*\x01\x03NN")
     single.run(0.6)  # > 10 byte times of silence: the half frame is abandoned
     assert single.replies() == []
-    single_ack(single.exchange(LON), 44)
+    single_ack(single.frame(LON), 44)
     (sta,) = single.command("Status")
     assert sta.error == ErrorCode.BAD_FRAME
 
 
 def test_argument_bytes_may_be_star_and_hash(single: Bench):
     # JTest(42, 35): '*' and '#' as arguments; the frame is taken by length.
-    ack = single_ack(single.exchange(pc_frame(5, 1, 35)), 5)
+    ack = single_ack(single.frame(pc_frame(5, 1, 35)), 5)
     assert ack.code == 5
-    single_ack(single.exchange(pc_frame(36, 42, 0)), 36)
+    single_ack(single.frame(pc_frame(36, 42, 0)), 36)
 
 
 def test_a_new_command_stops_a_long_led_sequence(single: Bench):
     single.send(pc_frame(46, 255, 255))  # LCircle: hours at the thesis' pace
     single.run(3.0)
-    replies = single.exchange(LON)
+    replies = single.frame(LON)
     assert [r.code for r in replies] == [46, 44]
 
 
@@ -59,7 +59,7 @@ def test_a_new_command_stops_a_long_actuator_sequence(single: Bench):
     single.send(pc_frame(5, 255, 255))  # JTest(255, 255) on the control board
     single.run(3.0)
     single.drain()
-    replies = single.exchange(frames.encode_pc(frames.make("TurnOffAll")))
+    replies = single.frame(frames.encode_pc(frames.make("TurnOffAll")))
     # JTest's LED echo on the comm board stops too; both get their ACK.
     assert [r.code for r in replies] == [5, 20]
     ports = {p: single.sim.modules[1].control.port(p)[1] for p in "ABD"}
@@ -95,7 +95,7 @@ def test_a_thousand_random_strings_never_stop_the_next_valid_command(single: Ben
         single.drain()
         single.send(junk + frame)
         single.until(lambda b, c=code: any(isinstance(r, parser.Ack) and r.code == c
-                                           for r in b.replies()), 8.0, step=0.2)
+                                           for r in b.replies()), 8.0)
     assert single.sim.modules[1].comm.state in ("running", "sleeping")
     single.sim.run(1.0)
     assert single.sim.modules[1].control.state in ("running", "sleeping")
@@ -134,7 +134,7 @@ SIDE_OFF_ALL_N = frames.encode_pc(frames.make("SideOffAllN"))  # code '#' (35)
 def test_stray_star_before_a_hash_coded_frame_does_not_swallow_it(single: Bench, junk: bytes):
     # '*' + 8 bytes + "*#" looks like a complete frame; it is one this module
     # would refuse, so the "*#" is taken as the start of the real frame.
-    replies = single.exchange(b"*" + junk + SIDE_OFF_ALL_N)
+    replies = single.frame(b"*" + junk + SIDE_OFF_ALL_N)
     assert [(type(r).__name__, r.code) for r in replies] == [("Ack", 35)]
     (sta,) = single.command("Status")
     assert sta.error == ErrorCode.BAD_FRAME
@@ -144,12 +144,12 @@ def test_a_valid_frame_ending_in_star_is_still_executed(single: Bench):
     # Select(1, 2, ..., 7, 42): id 42 is valid, B8 = '*'; the frame is real.
     frame = pc_frame(69, 1, 2, 3, 4, 5, 6, 7, 42)
     assert frame[-2:] == b"*#"
-    (ack,) = single.exchange(frame)
+    (ack,) = single.frame(frame)
     assert (ack.code, ack.module) == (69, 1)
 
 
 def test_a_stray_star_before_a_valid_looking_frame_still_swallows_it(single: Bench):
     # The documented limit: "*" + LOn's code and 7 bytes + "*#" is a frame this
     # module executes (LOn takes no arguments); the '#'-coded frame after it is lost.
-    replies = single.exchange(b"*,NNNNNNN" + SIDE_OFF_ALL_N)
+    replies = single.frame(b"*,NNNNNNN" + SIDE_OFF_ALL_N)
     assert [r.code for r in replies] == [44]

@@ -19,7 +19,7 @@ def last_reply_after_frame(bench: Bench, key: str, *args: int, replies: int,
     bench.drain()
     bench.send(frames.encode_pc(frames.make(key, *args)))
     frame_end = bench.sim.time + FRAME_S
-    bench.until(lambda b: len(b.replies()) >= replies, limit, step=0.01)
+    bench.until(lambda b: len(b.replies()) >= replies, limit)
     return bench.sim.time - frame_end
 
 
