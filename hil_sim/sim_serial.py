@@ -68,6 +68,7 @@ class SimCluster:
         self._verdicts: list[PlantVerdict] = []
         self._records_seen = 0
         self._subscribers: list[Callable[[PlantVerdict], None]] = []
+        self._tickers: list[Callable[[], None]] = []
         self._closed = threading.Event()
         self._thread: threading.Thread | None = None
         if speed > 0:
@@ -105,6 +106,9 @@ class SimCluster:
 
     def subscribe(self, callback: Callable[[PlantVerdict], None]) -> None:
         self._subscribers.append(callback)
+
+    def on_advance(self, callback: Callable[[], None]) -> None:
+        self._tickers.append(callback)
 
     def actuators(self, module_id: int) -> dict[str, list[int]]:
         with self._lock:
@@ -171,6 +175,8 @@ class SimCluster:
         for verdict in fresh:
             for callback in list(self._subscribers):
                 callback(verdict)
+        for tick in list(self._tickers):
+            tick()
 
     def _collect(self) -> list[PlantVerdict]:
         sim = self.simulator

@@ -3,10 +3,11 @@
 Every wait in the host is "until this condition holds, at most T seconds",
 and the clock decides what a second is:
 
-- :class:`WallClock` (hardware, ptys, a paced simulator): reader threads
-  append to the journal and notify a condition; the waiter sleeps on it.
-  A paced simulator's time-outs are scaled by its speed, so "5 s" means
-  five simulated seconds there too.
+- :class:`WallClock` (hardware, ptys): reader threads append to the
+  journal and notify a condition; the waiter sleeps on it.
+- :class:`PacedClock` (a simulator on its own thread, ``speed`` > 0): the
+  same condition, also notified as the simulator's time advances, so "5 s"
+  means five simulated seconds whatever the load.
 - :class:`SteppedClock` (a stepped simulator, ``speed=0``): nothing happens
   unless the waiter makes it happen, so waiting *is* running the simulator
   in slices and pumping the ports between them. The same calls give the
@@ -37,23 +38,50 @@ class Clock(Protocol):
 
 
 class WallClock:
-    """Real time; waits sleep on ``condition`` (the host's journal condition).
-    ``now`` may come from elsewhere (a paced simulator) and ``scale`` turns
-    a time-out in session seconds into wall seconds."""
+    """Real time; waits sleep on ``condition`` (the host's journal condition)."""
 
-    def __init__(self, condition: threading.Condition,
-                 now: Callable[[], float] | None = None, scale: float = 1.0) -> None:
+    def __init__(self, condition: threading.Condition) -> None:
         self._condition = condition
-        t0 = time.monotonic()
-        self._now = now or (lambda: time.monotonic() - t0)
-        self.scale = scale
+        self._t0 = time.monotonic()
 
     def now(self) -> float:
-        return self._now()
+        return time.monotonic() - self._t0
 
     def wait(self, ready: Callable[[], bool], timeout: float) -> bool:
         with self._condition:
-            return self._condition.wait_for(ready, max(0.0, timeout) * self.scale)
+            return self._condition.wait_for(ready, max(0.0, timeout))
+
+    def wake(self) -> None:
+        with self._condition:
+            self._condition.notify_all()
+
+
+class PacedClock:
+    """Virtual time of a simulator that runs on its own thread (speed > 0).
+    Waits sleep on the host's condition, which the simulator notifies each
+    time its clock advances; the deadline is in simulated seconds, plus
+    ``LATENCY_S`` of wall time for the host to read what the simulator
+    produced (at 50x, 0.25 s of reading is 12 simulated seconds)."""
+
+    LATENCY_S = 0.25
+
+    def __init__(self, condition: threading.Condition, simulator: SimulatorAccess) -> None:
+        self._condition = condition
+        self.simulator = simulator
+        self._t0 = simulator.now()
+        simulator.on_advance(self.wake)
+
+    def now(self) -> float:
+        return self.simulator.now() - self._t0
+
+    def wait(self, ready: Callable[[], bool], timeout: float) -> bool:
+        end = self.now() + max(0.0, timeout) + self.LATENCY_S * self.simulator.speed
+        with self._condition:
+            while not ready():
+                if self.now() >= end:
+                    return False
+                self._condition.wait(1.0)  # notified at every simulated step
+            return True
 
     def wake(self) -> None:
         with self._condition:

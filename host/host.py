@@ -21,7 +21,7 @@ from collections.abc import Iterable
 
 from hexbot.errors import LinkUnavailableError
 from hexbot.host.capture import Record
-from hexbot.host.clock import Clock, SteppedClock, WallClock
+from hexbot.host.clock import Clock, PacedClock, SteppedClock, WallClock
 from hexbot.host.cluster import ClusterModel
 from hexbot.host.events import (
     Direction,
@@ -124,13 +124,12 @@ class Host:
 
     def _choose_clock(self) -> None:
         sim = self.simulator
-        if sim is None or isinstance(self.clock, SteppedClock) or (
-                isinstance(self.clock, WallClock) and self.clock.scale != 1.0):
-            return
+        if sim is None or not isinstance(self.clock, WallClock):
+            return  # hardware, or chosen already
         if sim.stepped:
             self.clock = SteppedClock(sim, self.pump)
         else:
-            self.clock = WallClock(self.changed, sim.now, 1.0 / sim.speed)
+            self.clock = PacedClock(self.changed, sim)
         sim.subscribe(self._verdict)
 
     @property
@@ -210,6 +209,8 @@ class Host:
     def _verdict(self, verdict: PlantVerdict) -> None:
         if self.log:
             self.log.note("sim", verdict.describe())
+        with self.changed:
+            self.changed.notify_all()  # a workflow may be waiting for it
         self._notify(SimVerdict(verdict))
 
     def link_state(self, port: str, state: LinkState, detail: str) -> None:

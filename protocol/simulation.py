@@ -139,6 +139,9 @@ class SimulatorAccess(Protocol):
     def subscribe(self, callback: Callable[[PlantVerdict], None]) -> None:
         """Call ``callback`` for every later verdict (from the simulating thread)."""
 
+    def on_advance(self, callback: Callable[[], None]) -> None:
+        """Call ``callback`` whenever virtual time advanced (from the simulating thread)."""
+
     def actuators(self, module_id: int) -> dict[str, list[int]]:
         """Joints open (J1..J6) and magnet polarity per side of a control board."""
 
