@@ -11,6 +11,24 @@ Installed with the ``hexbot`` distribution (entry point ``pytest11``:
         hexbot_sim.pc_write(b"*FNNNNNNNN#")
         hexbot_sim.expect(b"ACKF", timeout=5)
 
+A test that talks to the modules the way a PC does asks for
+``hexbot_session`` instead: a :class:`~hexbot.host.session.Session` on a
+stepped ``hexbot-sim://`` port (virtual time), the cluster booted (every
+module's ``COMM. LISTENING`` heard), closed after the test::
+
+    from hexbot.host.session import select
+    from hexbot.protocol.frames import make
+
+    @pytest.mark.hexbot_scenario("pair", seed=3)
+    def test_status(hexbot_session):
+        hexbot_session.request(select(2))
+        (reply,) = hexbot_session.request(make("Status")).replies
+        assert reply.event.module_id == 2
+
+What only the simulator knows (pins, positions, debug ports) is behind
+``hexbot_session.host.simulator`` (its ``.simulator`` is the
+:class:`~hexbot.hil_sim.Simulator`).
+
 Without the marker the scenario is ``--hexbot-scenario`` (default ``single``).
 ``hexbot_sim_factory(scenario, seed=None)`` builds more simulators in one
 test (say, to compare two runs). ``--hexbot-events-dir DIR`` writes each
@@ -36,7 +54,7 @@ def pytest_addoption(parser: pytest.Parser) -> None:
     group.addoption(
         "--hexbot-scenario",
         default="single",
-        help="scenario (built-in name or TOML path) for the hexbot_sim fixture",
+        help="scenario (built-in name or TOML path) of the hexbot_sim and hexbot_session fixtures",
     )
     group.addoption(
         "--hexbot-events-dir",
@@ -48,23 +66,16 @@ def pytest_addoption(parser: pytest.Parser) -> None:
 def pytest_configure(config: pytest.Config) -> None:
     config.addinivalue_line(
         "markers",
-        "hexbot_scenario(name, seed=None): scenario and seed of the hexbot_sim fixture",
+        "hexbot_scenario(name, seed=None): scenario and seed of the hexbot_sim "
+        "and hexbot_session fixtures",
     )
 
 
 @pytest.fixture
-def hexbot_sim_factory(request: pytest.FixtureRequest) -> Iterator[Callable[..., Any]]:
-    """Build simulators: ``factory(scenario, seed=None, **simulator_options)``."""
-    from hexbot.hil_sim import Simulator, load_scenario
-
+def _hexbot_events(request: pytest.FixtureRequest) -> Iterator[list[Any]]:
+    """The simulators a test built; their events go to ``--hexbot-events-dir``."""
     built: list[Any] = []
-
-    def factory(scenario: str | Path, seed: int | None = None, **kwargs: Any) -> Any:
-        sim = Simulator(load_scenario(scenario), seed, **kwargs)
-        built.append(sim)
-        return sim
-
-    yield factory
+    yield built
     folder = request.config.getoption("--hexbot-events-dir")
     if folder:
         Path(folder).mkdir(parents=True, exist_ok=True)
@@ -76,9 +87,7 @@ def hexbot_sim_factory(request: pytest.FixtureRequest) -> Iterator[Callable[...,
                     out.write(json.dumps(event) + "\n")
 
 
-@pytest.fixture
-def hexbot_sim(request: pytest.FixtureRequest, hexbot_sim_factory: Callable[..., Any]) -> Any:
-    """A booting simulator (t = 0) of the marked scenario."""
+def _marked(request: pytest.FixtureRequest) -> tuple[str, int | None]:
     marker = request.node.get_closest_marker("hexbot_scenario")
     scenario = request.config.getoption("--hexbot-scenario")
     seed = None
@@ -86,4 +95,50 @@ def hexbot_sim(request: pytest.FixtureRequest, hexbot_sim_factory: Callable[...,
         if marker.args:
             scenario = marker.args[0]
         seed = marker.kwargs.get("seed")
-    return hexbot_sim_factory(scenario, seed)
+    return scenario, seed
+
+
+@pytest.fixture
+def hexbot_sim_factory(_hexbot_events: list[Any]) -> Callable[..., Any]:
+    """Build simulators: ``factory(scenario, seed=None, **simulator_options)``."""
+    from hexbot.hil_sim import Simulator, load_scenario
+
+    def factory(scenario: str | Path, seed: int | None = None, **kwargs: Any) -> Any:
+        sim = Simulator(load_scenario(scenario), seed, **kwargs)
+        _hexbot_events.append(sim)
+        return sim
+
+    return factory
+
+
+@pytest.fixture
+def hexbot_sim(request: pytest.FixtureRequest, hexbot_sim_factory: Callable[..., Any]) -> Any:
+    """A booting simulator (t = 0) of the marked scenario."""
+    return hexbot_sim_factory(*_marked(request))
+
+
+@pytest.fixture
+def hexbot_session(request: pytest.FixtureRequest, _hexbot_events: list[Any]) -> Iterator[Any]:
+    """A :class:`~hexbot.host.session.Session` on a stepped ``hexbot-sim://``
+    port of the marked scenario, every module booted; closed after the test."""
+    from hexbot.errors import HexBotTimeoutError
+    from hexbot.host.endpoints import sim_url
+    from hexbot.host.host import IR, Host
+    from hexbot.host.link import PortSettings
+    from hexbot.host.session import Session
+
+    scenario, seed = _marked(request)
+    host = Host(None)  # no session log
+    try:
+        host.add_port(IR, PortSettings(sim_url(str(scenario), seed, 0.0)))
+        host.start(5.0)
+        access = host.simulator
+        _hexbot_events.append(access.simulator)
+        ids = access.module_ids()
+        session = Session(host, ids)
+        missing = set(ids) - session.wait_booted(ids)
+        if missing:
+            raise HexBotTimeoutError(f"{scenario}: modules {sorted(missing)} did not boot")
+        yield session
+    finally:
+        host.close()

@@ -18,6 +18,20 @@ def test_factory(hexbot_sim_factory):
     a, b = hexbot_sim_factory("single"), hexbot_sim_factory("single", seed=9)
     a.run(1.0)
     assert a.time == 1.0 and b.time == 0.0 and b.seed == 9
+
+@pytest.mark.hexbot_scenario("pair", seed=5)
+def test_session(hexbot_session):
+    from hexbot.host.session import select
+    from hexbot.protocol.frames import make
+    from hexbot.protocol.parser import StatusReport
+
+    assert hexbot_session.cluster == {1, 2}  # both booted
+    hexbot_session.request(select(2))
+    outcome = hexbot_session.request(make("Status"))
+    (reply,) = outcome.replies
+    assert isinstance(reply.event, StatusReport)
+    assert (reply.event.module_id, reply.event.localized) == (2, False)
+    assert hexbot_session.host.simulator.simulator.time < 30  # virtual time
 '''
 
 
@@ -30,12 +44,14 @@ def test_plugin_fixtures_marker_and_events_dir(tmp_path):
         capture_output=True, text=True, cwd=tmp_path, timeout=120,
     )
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "3 passed" in result.stdout
+    assert "4 passed" in result.stdout
     saved = sorted(p.name for p in events.iterdir())
     assert saved == [
         "test_user.py_test_default_scenario.jsonl",
         "test_user.py_test_factory-1.jsonl",
         "test_user.py_test_factory.jsonl",
         "test_user.py_test_marked.jsonl",
+        "test_user.py_test_session.jsonl",
     ]
     assert "ir-collision" in (events / "test_user.py_test_marked.jsonl").read_text()
+    assert (events / "test_user.py_test_session.jsonl").read_text()
