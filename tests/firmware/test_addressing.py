@@ -4,7 +4,7 @@ acknowledgements are staggered by rank so that they never collide."""
 from __future__ import annotations
 
 import pytest
-from fwsim import Bench
+from fwsim import QUIET_S, Bench
 
 from hexbot.hil_sim.module import LED_PINS
 from hexbot.protocol import frames, parser
@@ -28,18 +28,18 @@ def acks(replies) -> list[tuple[int, int | None]]:
 
 
 def test_select_all_every_module_answers_in_id_order_without_collision(flower: Bench):
-    replies = flower.command("Select", 0, replies=7)
+    replies = flower.command("Select", 0, settle=QUIET_S)  # one reply per module, no more
     assert acks(replies) == [(69, i) for i in range(1, 8)]
     assert not [e for e in flower.events() if isinstance(e, parser.Garbage)]
     # Forwarded to seven control boards: the echo delay does not shift the slots.
-    assert acks(flower.command("JxOpenAll", replies=7)) == [(3, i) for i in range(1, 8)]
+    assert acks(flower.command("JxOpenAll", settle=QUIET_S)) == [(3, i) for i in range(1, 8)]
     assert all(m.control.port("A")[1] & 0x3F == 0x3F for m in flower.sim.modules.values())
     assert collisions(flower) == []
 
 
 def test_status_of_seven_modules(flower: Bench):
-    flower.command("Select", 0, replies=7)
-    replies = flower.command("Status", replies=7, timeout=15)
+    flower.command("Select", 0)
+    replies = flower.command("Status")
     assert [(r.module_id, r.role, r.localized) for r in replies] == [
         (i, "M", False) for i in range(1, 8)
     ]
@@ -48,7 +48,7 @@ def test_status_of_seven_modules(flower: Bench):
 
 def test_only_the_selected_module_executes(flower: Bench):
     assert acks(flower.command("Select", 3)) == [(69, 3)]
-    assert acks(flower.command("LOn")) == [(44, 3)]
+    assert acks(flower.command("LOn", settle=QUIET_S)) == [(44, 3)]  # nobody else answers
     for ident, module in flower.sim.modules.items():
         port, bit = LED_PINS["led_j1"]
         lit = not module.comm.port(port)[1] >> bit & 1
@@ -59,8 +59,8 @@ def test_only_the_selected_module_executes(flower: Bench):
 
 
 def test_rank_is_the_position_in_the_select_list(flower: Bench):
-    assert acks(flower.command("Select", 5, 2, 7, replies=3)) == [(69, 5), (69, 2), (69, 7)]
-    assert acks(flower.command("LOff", replies=3)) == [(45, 5), (45, 2), (45, 7)]
+    assert acks(flower.command("Select", 5, 2, 7)) == [(69, 5), (69, 2), (69, 7)]
+    assert acks(flower.command("LOff")) == [(45, 5), (45, 2), (45, 7)]
     assert collisions(flower) == []
 
 
@@ -76,7 +76,7 @@ def test_invalid_select_keeps_the_previous_selection(flower: Bench):
 def test_roles_and_prefixes_in_addressed_mode(flower: Bench):
     flower.command("Select", 6)
     flower.command("SetRole", 2)
-    flower.command("Select", 0, replies=7)
-    replies = flower.command("Status", replies=7, timeout=15)
+    flower.command("Select", 0)
+    replies = flower.command("Status")
     assert [r.role for r in replies] == ["M", "M", "M", "M", "M", "S", "M"]
     assert [r.prefix_role for r in replies] == ["M", "M", "M", "M", "M", "S", "M"]

@@ -3,7 +3,7 @@ passes the DIP-switch id, joint self-test, and every actuator off."""
 
 from __future__ import annotations
 
-from fwsim import BUILD, Bench, boot_seconds, build_firmware, scenario_file
+from fwsim import BUILD, QUIET_S, Bench, boot_seconds, build_firmware, scenario_file
 
 from hexbot.protocol import parser
 
@@ -67,7 +67,7 @@ def test_a_booting_cluster_reports_every_id_and_version(images):
     collided = [e for e in bench.sim.events if e["event"] == "ir-collision"]
     assert collided and max(e["t"] for e in collided) < 1.2, collided[-1]
     # And every module listens once its text is out.
-    replies = bench.command("Select", 0, replies=7)
+    replies = bench.command("Select", 0, settle=QUIET_S)
     assert [(r.code, r.module) for r in replies] == [(69, i) for i in range(1, 8)]
 
 

@@ -5,7 +5,7 @@ to the pins (joints, magnets, LEDs)."""
 from __future__ import annotations
 
 import pytest
-from fwsim import Bench, pc_frame, single_ack
+from fwsim import QUIET_S, Bench, pc_frame, single_ack
 
 from hexbot.hil_sim.module import LED_PINS, decode_actuators
 from hexbot.hil_sim.plant import NEG, OFF, POS
@@ -36,7 +36,7 @@ UNUSED = [c for c, fn in codes.CODES.items() if not fn.executable] + [0, 76, 127
 @pytest.mark.parametrize("fn", EXECUTABLE, ids=lambda fn: f"{fn.code}-{fn.name}")
 def test_every_function_code_is_acknowledged(single: Bench, fn: codes.FunctionCode):
     args = sample_args(fn)
-    replies = single.command(fn.code, *args, timeout=30.0)
+    replies = single.command(fn.code, *args, timeout=30.0, settle=QUIET_S)
     if fn.code == 66:
         # Alone and not the reference: nobody to hear, the documented error.
         (err,) = replies
@@ -205,11 +205,9 @@ def test_combined_rotation_runs_the_half_of_the_role(single: Bench):
 
 def test_substrate_waits_one_second_before_acknowledging(single: Bench):
     def ack_delay() -> float:
-        single.drain()
-        single.send(frames.encode_pc(frames.make("LOn")))
-        sent_end = single.sim.time + 11 * 10 / 300
-        single.until(lambda b: b"ACK" in b.heard, 5.0)
-        return single.sim.time - sent_end
+        outcome = single.session.exchange(frames.make("LOn"), timeout=5.0)
+        assert outcome.ok, outcome.reason
+        return outcome.waited - 11 * 10 / 300  # from the end of the frame
 
     mobile = ack_delay()
     single.command("SetRole", 2)
@@ -221,6 +219,7 @@ def test_substrate_waits_one_second_before_acknowledging(single: Bench):
 def test_ir_select_acknowledges_on_centre_then_returns_after_silence(single: Bench):
     single_ack(single.command("IrSel", 3), 25)
     assert single.sim.modules[1].channel == 3
+    single.drain()
     single.send(frames.encode_pc(frames.make("LOn")))  # unheard: the module listens on side 3
     single.run(2.0)
     assert single.replies() == []

@@ -7,15 +7,7 @@ from __future__ import annotations
 from fwsim import Bench, scenario_file
 
 from hexbot.hil_sim.geometry import neighbor
-from hexbot.protocol import parser, timing, wire
-
-
-def localize_s(bench: Bench) -> float:
-    """From sending a 66 to every report of a cluster addressed with Select(0)
-    (rank id - 1): the frame, then the protocol's bound."""
-    sim = bench.sim
-    frame = timing.wire_seconds(wire.PC_FRAME_LEN, wire.BAUD_IR)
-    return frame + timing.reply_timeout_s(66, len(sim.modules), last_rank=max(sim.modules) - 1)
+from hexbot.protocol import parser
 
 
 def reports(events: list[parser.Event]) -> dict[int, dict]:
@@ -41,7 +33,7 @@ def reports(events: list[parser.Event]) -> dict[int, dict]:
 def check_cluster(bench: Bench, ref: int) -> None:
     sim = bench.sim
     rx, ry = sim.modules[ref].position
-    replies = bench.command("Status", replies=len(sim.modules), timeout=20)
+    replies = bench.command("Status")  # after Select(0): every module
     for sta in replies:
         module = sim.modules[sta.module_id]
         x, y = module.position
@@ -55,14 +47,11 @@ def run_localization(bench: Bench, ref: int) -> dict[int, dict]:
     n = len(sim.modules)
     bench.command("Select", ref)
     bench.command("Ref")
-    bench.command("Select", 0, replies=n)
+    bench.command("Select", 0)
     bench.sim.events.clear()
-    bench.drain()
-    bench.send(b"*B" + b"N" * 8 + b"#")  # 'B' = 66, Localize
-    bench.until(lambda b: len(b.replies()) >= n, localize_s(bench))
-    bench.run(1.0)
-    replies_heard = bench.events()
-    bench.drain()
+    # Every module answers within the protocol's bound (rank id - 1), nothing after.
+    assert len(bench.command("Localize", settle=1.0)) == n
+    replies_heard = bench.events()  # what the PC heard since sending it
     assert not [e for e in replies_heard if isinstance(e, parser.Garbage)], replies_heard
     assert [e for e in sim.events if e["event"] == "ir-collision"] == []
     return reports(replies_heard)
@@ -98,7 +87,7 @@ def test_oriented_cluster_with_the_reference_on_the_rim(images, tmp_path):
 def test_a_second_localize_keeps_positions(images):
     bench = Bench.boot("flower7")
     run_localization(bench, ref=1)
-    again = bench.command("Localize", replies=7, timeout=localize_s(bench))
+    again = bench.command("Localize")
     assert [(r.code, r.module) for r in again] == [(66, i) for i in range(1, 8)]
     check_cluster(bench, ref=1)
     # A mobile rotation moves the module: its position is no longer known.

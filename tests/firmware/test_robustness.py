@@ -92,10 +92,10 @@ def test_a_thousand_random_strings_never_stop_the_next_valid_command(single: Ben
                 assert s[at + 1] not in (25, 69)
     for n, junk in enumerate(strings):
         frame, code = VALID[n % len(VALID)]
-        single.drain()
-        single.send(junk + frame)
-        single.until(lambda b, c=code: any(isinstance(r, parser.Ack) and r.code == c
-                                           for r in b.replies()), 8.0)
+        mark = single.send(junk + frame)
+        acked = single.session.wait_for(
+            lambda o, c=code: isinstance(o.event, parser.Ack) and o.event.code == c, mark, 8.0)
+        assert acked is not None, (n, junk, code)
     assert single.sim.modules[1].comm.state in ("running", "sleeping")
     single.sim.run(1.0)
     assert single.sim.modules[1].control.state in ("running", "sleeping")
@@ -107,20 +107,16 @@ def test_noisy_ir_link_loses_frames_but_never_the_module(images, tmp_path):
     # 0.3 % of the bits flip on every IR link: about one frame in four of
     # the 11-byte PC frames or 13-byte replies is hit.
     bench = Bench.boot(scenario_file(tmp_path, [(1, (0, 0), 0)], bit_error_rate=0.003))
-    bench.drain()
     answered = 0
     for n in range(60):
         frame, code = VALID[n % len(VALID)]
-        bench.drain()
-        bench.send(frame)
+        mark = bench.send(frame)
         bench.run(1.2)
-        answered += any(isinstance(r, parser.Ack) and r.code == code for r in bench.replies())
+        answered += any(isinstance(o.event, parser.Ack) and o.event.code == code
+                        for o in bench.session.host.since(mark))
     assert 30 <= answered < 60, answered  # noise did bite, yet most got through
     for _attempt in range(5):  # what a host does: retry until acknowledged
-        bench.drain()
-        bench.send(LON)
-        bench.run(1.2)
-        if any(isinstance(r, parser.Ack) and r.code == 44 for r in bench.replies()):
+        if bench.session.exchange(frames.make("LOn"), timeout=1.2).ok:
             break
     else:
         raise AssertionError("no acknowledgement in five attempts")
