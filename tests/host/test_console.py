@@ -76,7 +76,9 @@ async def test_terminal_search_views_and_save(responder, tmp_path):
         app.select_modules([2, 5])
         assert await until(pilot, lambda: not app.busy and app.last_result)
         term = app.query_one("#ir-term", Terminal)
-        assert term.bytes_out == 11 and term.bytes_in > 0 and term.last_ack == "M05 69 Select"
+        # the terminal draws from posted messages: they may trail the workflow's end
+        assert await until(pilot, lambda: term.last_ack == "M05 69 Select")
+        assert term.bytes_out == 11 and term.bytes_in > 0
         await pilot.click("#ir-term .term-search")
         await pilot.press(*"m05")
         await pilot.pause()
