@@ -177,6 +177,10 @@ class Link:
             except (serial.SerialException, OSError) as exc:
                 self._drop_locked(f"read failed: {exc}")
                 return
+        self._deliver(data)
+
+    def _deliver(self, data: bytes) -> None:
+        """Bytes to the data callback; nothing read: the idle callback."""
         if data:
             self.bytes_in += len(data)
             self._on_data(data)
@@ -271,11 +275,7 @@ class Link:
                     if self._port is port:
                         self._drop_locked(f"read failed: {exc}")
                 return
-            if data:
-                self.bytes_in += len(data)
-                self._on_data(data)
-            else:
-                self._on_idle()
+            self._deliver(data)
             with self._lock:
                 if self._port is not port:
                     return
