@@ -40,13 +40,13 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from hexbot.errors import FrameError, HexBotError, ScenarioError
+from hexbot.errors import FrameError, HexBotError, LinkUnavailableError, ScenarioError
 from hexbot.host import workflows
 from hexbot.host.commands import parse_command
 from hexbot.host.describe import describe_event
 from hexbot.host.events import Observed
 from hexbot.host.host import IR
-from hexbot.host.session import Session, select
+from hexbot.host.session import OutcomeKind, Session, select
 from hexbot.protocol.codes import ErrorCode, lookup
 from hexbot.protocol.frames import Command
 from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
@@ -316,8 +316,8 @@ class ScriptRunner:
                 raise ScriptFailed(f"{self.name}:{step.line}: cancelled")
             try:
                 result = self._step(step)
-            except ScriptFailed:
-                raise
+            except (ScriptFailed, LinkUnavailableError):
+                raise  # a lost port is no failed step: the caller says so
             except HexBotError as exc:
                 raise ScriptFailed(f"{self.name}:{step.line}: {step.text}: {exc}") from exc
             self.steps_done += 1
@@ -358,6 +358,8 @@ class ScriptRunner:
         broadcast = self.session.expected_replies(cmd) is None
         outcome = self.session.exchange(cmd, timeout=self.reply_timeout)
         self.mark = before
+        if outcome.kind is OutcomeKind.PORT_LOST:
+            outcome.raise_for_status()
         if broadcast and outcome.ok:
             # Legacy mode: any number of modules may answer; let them finish.
             self.session.collect(before, self.quiet, self.timeout)
@@ -370,8 +372,12 @@ class ScriptRunner:
         return ", ".join(outcome.lines())
 
     def _wait(self, pred: Callable[[Observed], bool], within: float | None) -> Observed | None:
-        return self.session.wait_for(pred, self.mark,
-                                     self.timeout if within is None else within)
+        found = self.session.wait_for(pred, self.mark,
+                                      self.timeout if within is None else within)
+        lost = self.session.port_lost()
+        if found is None and lost is not None:
+            raise LinkUnavailableError(f"{self.name}: port lost ({lost})")
+        return found
 
     def _expect(self, step: Step, w: list[str], where: str) -> str:  # noqa: C901
         kind, args = w[0].lower(), w[1:]

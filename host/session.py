@@ -411,6 +411,10 @@ class Session:
         return frame + timing.reply_timeout_s(code, max(need, 1), command.args,
                                               last_rank=last_rank)
 
+    def port_lost(self, port: str = IR) -> str | None:
+        """Why ``port`` is lost or closed; None while it is connected."""
+        return self._lost(port)
+
     def _lost(self, port: str) -> str | None:
         ch = self.host.channels.get(port)
         if ch is None:

@@ -126,3 +126,14 @@ def test_localize_verification_catches_a_move_that_did_not_happen(responder, log
 @pytest.mark.parametrize("path", sorted(EXAMPLES.glob("*.hbs")), ids=lambda p: p.name)
 def test_shipped_examples_parse(path, capsys):
     assert main(["run", str(path), "--check"]) == 0
+
+
+def test_a_lost_port_ends_the_script_at_once_with_exit_4(responder, log_dir, tmp_path, capsys):
+    import threading
+
+    text = "select 2\nexpect ack 65 within 60\n"  # nobody will send ACK 65
+    threading.Timer(0.5, responder.close).start()  # the cable is pulled
+    rc = main(["run", str(_write(tmp_path, text)), "--port", responder.path])
+    err = capsys.readouterr().err
+    assert rc == 4, err  # not 1 (a failed step) and not after the 60 s wait
+    assert "t.hbs: port lost" in err
