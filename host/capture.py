@@ -73,17 +73,23 @@ class CaptureWriter:
         """Write one record; returns its time stamp (seconds since start)."""
         if kind not in KINDS:
             raise ValueError(f"capture kind must be one of {KINDS}, got {kind!r}")
-        t = self.elapsed()
         body = data.hex() if kind in ("tx", "rx") else " ".join(text.split())
-        self._write(f"{t:.3f} {port} {kind} {body}".rstrip() + "\n")
+        # Stamp under the lock: the reader thread and the sender write
+        # concurrently, and the file must stay in time order.
+        with self._lock:
+            t = self.elapsed()
+            self._write_locked(f"{t:.3f} {port} {kind} {body}".rstrip() + "\n")
         return t
 
     def _write(self, text: str) -> None:
         with self._lock:
-            if self._file is None:
-                return
-            self._file.write(text)
-            self._file.flush()
+            self._write_locked(text)
+
+    def _write_locked(self, text: str) -> None:
+        if self._file is None:
+            return
+        self._file.write(text)
+        self._file.flush()
 
     def close(self) -> None:
         with self._lock:
