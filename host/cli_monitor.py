@@ -10,7 +10,7 @@ import sys
 from hexbot.host.cli_common import session
 from hexbot.host.describe import describe_event, describe_tx, event_json
 from hexbot.host.endpoints import add_port_arguments
-from hexbot.host.events import Direction, HostEvent, Observed, Traffic
+from hexbot.host.events import HostEvent, Observed, Traffic, TrafficDirection
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -37,7 +37,7 @@ def run(args: argparse.Namespace) -> int:
     def listener(event: HostEvent) -> None:
         if isinstance(event, Observed):
             lines.put(fmt(event))
-        elif isinstance(event, Traffic) and event.direction is Direction.TX and args.tx:
+        elif isinstance(event, Traffic) and event.direction is TrafficDirection.TX and args.tx:
             t, port, data = event.t, event.port, event.data
             lines.put(json.dumps({"t": round(t, 3), "port": port, "kind": "tx",
                                   "raw": data.hex()}) if args.json

@@ -15,7 +15,7 @@ from hexbot.protocol.parser import Event
 from hexbot.protocol.simulation import PlantVerdict
 
 
-class Direction(enum.Enum):
+class TrafficDirection(enum.Enum):
     TX = "tx"  # PC -> module
     RX = "rx"  # module -> PC
 
@@ -25,7 +25,7 @@ class Traffic:
     """Bytes sent or received on a port."""
 
     port: str
-    direction: Direction
+    direction: TrafficDirection
     t: float
     data: bytes
 

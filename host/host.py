@@ -24,7 +24,6 @@ from hexbot.host.capture import Record
 from hexbot.host.clock import Clock, PacedClock, SteppedClock, WallClock
 from hexbot.host.cluster import ClusterModel
 from hexbot.host.events import (
-    Direction,
     HostEvent,
     HostWarning,
     Listener,
@@ -32,6 +31,7 @@ from hexbot.host.events import (
     PortChanged,
     SimVerdict,
     Traffic,
+    TrafficDirection,
 )
 from hexbot.host.link import Link, LinkState, PortSettings
 from hexbot.host.session_log import SessionLog
@@ -176,12 +176,12 @@ class Host:
 
     def received(self, port: str, data: bytes) -> float:
         t = self.log.received(port, data) if self.log else self.elapsed()
-        self._notify(Traffic(port, Direction.RX, t, data))
+        self._notify(Traffic(port, TrafficDirection.RX, t, data))
         return t
 
     def sent(self, port: str, data: bytes) -> float:
         t = self.log.sent(port, data) if self.log else self.elapsed()
-        self._notify(Traffic(port, Direction.TX, t, data))
+        self._notify(Traffic(port, TrafficDirection.TX, t, data))
         return t
 
     def observe(self, t: float, port: str, ev: Event) -> None:
@@ -245,11 +245,11 @@ class Host:
             last = rec.t
             n += 1
             if rec.kind == "rx":
-                self._notify(Traffic(rec.port, Direction.RX, rec.t, rec.data))
+                self._notify(Traffic(rec.port, TrafficDirection.RX, rec.t, rec.data))
                 for ev in parsers.setdefault(rec.port, ReplyParser()).feed(rec.data):
                     self.observe(rec.t, rec.port, ev)
             elif rec.kind == "tx":
-                self._notify(Traffic(rec.port, Direction.TX, rec.t, rec.data))
+                self._notify(Traffic(rec.port, TrafficDirection.TX, rec.t, rec.data))
             elif rec.kind == "state":
                 word, _, detail = rec.text.partition(" ")
                 try:

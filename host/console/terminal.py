@@ -124,8 +124,9 @@ class Terminal(Vertical):
             parts.append(f"ACK {self.last_ack}")
         if self.last_msg:
             parts.append(f"MSG {self.last_msg}")
-        if self.is_mounted:
-            self.query_one(".term-info", Label).update(" | ".join(parts))
+        # Traffic may still arrive while the app tears the widget down.
+        for info in self.query(".term-info").results(Label):
+            info.update(" | ".join(parts))
 
     # --- views ---------------------------------------------------------------
 

@@ -13,7 +13,7 @@ from pathlib import Path
 
 from hexbot.hil_sim import Simulator
 from hexbot.host.endpoints import sim_url
-from hexbot.host.events import Direction, Traffic
+from hexbot.host.events import Traffic, TrafficDirection
 from hexbot.host.host import IR, Host
 from hexbot.host.link import PortSettings
 from hexbot.host.session import OutcomeKind, Session
@@ -69,7 +69,8 @@ class Bench:
         host.add_listener(self._hear)
 
     def _hear(self, event: object) -> None:
-        if isinstance(event, Traffic) and event.direction is Direction.RX and event.port == IR:
+        if (isinstance(event, Traffic) and event.direction is TrafficDirection.RX
+                and event.port == IR):
             self.heard += event.data
 
     @property
