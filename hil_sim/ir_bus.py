@@ -16,7 +16,8 @@ by its channel selector (Table 3-5). The medium decides, byte by byte:
   byte ends, after the first was handed over: it gets the first intact and the
   AND as a second, broken byte. The PC's receiver waits until no overlapping
   byte can still come (one frame time) and gets one broken byte for the two.
-* A receiver whose baud rate differs by more than 4 % from the sender's, or
+* A receiver whose baud rate differs by more than ``BAUD_TOLERANCE``
+  (protocol/timing.py, 4.5 %) from the sender's, or
   whose frame format differs, gets a garbage byte from the seeded generator
   with the framing error flag.
 * Fault injection per directed link: each data bit flips with probability
@@ -35,13 +36,12 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Protocol
 
-from hexbot.protocol.timing import BAUD_IR
+from hexbot.protocol.timing import BAUD_IR, BAUD_TOLERANCE
 
 from .geometry import CENTRE, Cell, facing, neighbor
 from .scenario import PC, Faults
 
 Endpoint = int | str  # module id or "pc"
-BAUD_TOLERANCE = 0.04
 
 
 @dataclass(frozen=True)

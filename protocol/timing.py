@@ -23,7 +23,8 @@ from hexbot.protocol.codes import CODES, Board, lookup
 from hexbot.protocol.wire import BAUD_BOARD, BAUD_DEBUG, BAUD_IR, F_CPU
 
 __all__ = [
-    "ACK_SLOT_S", "ACK_SLOT_TICKS", "BAUD_BOARD", "BAUD_DEBUG", "BAUD_IR", "F_CPU",
+    "ACK_SLOT_S", "ACK_SLOT_TICKS", "BAUD_BOARD", "BAUD_DEBUG", "BAUD_IR", "BAUD_TOLERANCE",
+    "F_CPU",
     "LOCALIZE_WINDOW_S", "TICK_S", "boot_seconds", "reply_timeout_s",
 ]
 
@@ -40,6 +41,12 @@ TICKS_PER_S = 100
 #: few per cent an 8N1 receiver tolerates, so a module that answers at all
 #: runs at most this much slower than nominal; bounds on hardware allow it.
 CLOCK_TOLERANCE = 0.05
+
+#: Largest baud-rate mismatch an 8N1 receiver takes: ATmega162 datasheet,
+#: "Asynchronous Operational Range", 8 data bits (D = 8) at U2X = 0: the
+#: incoming rate may be 95.36 % .. 104.58 % of the receiver's, +-4.5 % when
+#: taken symmetric. The simulator's wires (C) and IR medium use this number.
+BAUD_TOLERANCE = 0.045
 
 # --- bytes on the air -----------------------------------------------------------
 

@@ -18,13 +18,14 @@ static void ensure_logger(void)
 	}
 }
 
-cluster_t *cluster_new(uint64_t quantum)
+cluster_t *cluster_new(uint64_t quantum, double baud_tolerance)
 {
 	ensure_logger();
 	cluster_t *c = calloc(1, sizeof *c);
 	if (!c)
 		return NULL;
 	c->quantum = quantum ? quantum : 1000;
+	c->baud_tolerance = baud_tolerance;
 	return c;
 }
 
@@ -75,8 +76,10 @@ int cluster_add(cluster_t *c, const char *elf_path, const char *name, const char
 	}
 	c->frequency = m->avr->frequency;
 	snprintf(m->name, sizeof m->name, "%s", name ? name : "");
-	/* a late-added MCU starts at the cluster's present time */
+	/* a late-added MCU starts at the cluster's present time, on the
+	 * nominal clock until told otherwise */
 	m->avr->cycle = c->cycle;
+	m->clock = (m162_clock_t){ c->frequency, c->frequency, c->cycle, c->cycle };
 	c->mcu[c->n] = m;
 	return c->n++;
 }
@@ -108,6 +111,11 @@ void cluster_watch(cluster_t *c, int mcu, int uart)
 	update_keep(s);
 }
 
+void cluster_set_clock(cluster_t *c, int mcu, uint32_t hz)
+{
+	m162_set_clock(c->mcu[mcu], hz, c->cycle);
+}
+
 /* Work done between quanta.  Returns 1 if a watched USART finished a byte
  * nobody has been told about. */
 static int boundary(cluster_t *c)
@@ -125,9 +133,9 @@ static int boundary(cluster_t *c)
 					/* a receiver set to another baud rate or frame
 					 * format sees a framing error */
 					uint16_t v = r->byte;
-					if (!m162_usart_frame_ok(s->peer, r))
+					if (!m162_usart_frame_ok(s->peer, r, c->baud_tolerance))
 						v |= UART_INPUT_FE;
-					m162_usart_queue_rx(s->peer, r->end, v);
+					m162_usart_queue_rx(s->peer, r->mid_stop, v);
 				}
 			}
 			if (s->watched) {

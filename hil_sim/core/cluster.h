@@ -9,11 +9,18 @@
  * the host's speed or on threads: the same inputs give the same trace.
  *
  * A byte on a connect_uart() wire is handed to the receiver at the boundary
- * after its first bit went out, due at the cycle its stop bit ends; the
- * receiver gets it exactly then if that is still in the future (frames
- * longer than a quantum, e.g. 4800 baud at 1 MHz with Q = 1000), otherwise
- * at once.  A receiver whose baud rate differs by more than 4.5 % or whose
- * frame format differs gets the byte with a framing error.
+ * after its first bit went out, due in the middle of its stop bit (where the
+ * part raises RXC); the receiver gets it exactly then if that is still in the
+ * future, otherwise at once.  A quantum no longer than the shortest start-to-
+ * mid-stop time on any wire (the lookahead, e.g. 9.5 bit times at 4800 baud
+ * = 1,979 cycles at 1 MHz) makes every delivery exact.  A receiver whose
+ * baud rate differs by more than the tolerance (protocol/timing.py
+ * BAUD_TOLERANCE, given to cluster_new) or whose frame format differs gets
+ * the byte with a framing error.
+ *
+ * Time is counted in cycles of the nominal clock (the ELF's frequency); an
+ * MCU may run on its own clock (m162_set_clock), and everything the cluster
+ * reports (byte and pin-log cycles) is converted to cluster cycles.
  */
 #ifndef HEXBOT_CLUSTER_H
 #define HEXBOT_CLUSTER_H
@@ -26,12 +33,13 @@
 typedef struct cluster_t {
 	uint64_t quantum;
 	uint64_t cycle;
+	double baud_tolerance;
 	uint32_t frequency; /* shared by all MCUs; 0 until the first is added */
 	m162_t **mcu;
 	int n, cap;
 } cluster_t;
 
-cluster_t *cluster_new(uint64_t quantum);
+cluster_t *cluster_new(uint64_t quantum, double baud_tolerance);
 void cluster_free(cluster_t *c);
 /* core: "atmega162" (ours) or the name of a stock simavr core.
  * Returns the index, or -1 with a message in err. */
@@ -39,6 +47,8 @@ int cluster_add(cluster_t *c, const char *elf_path, const char *name, const char
 		char *err, size_t errlen);
 void cluster_connect(cluster_t *c, int a, int ua, int b, int ub);
 void cluster_watch(cluster_t *c, int mcu, int uart);
+/* Set MCU mcu's clock to hz from now on (the nominal clock: cluster->frequency). */
+void cluster_set_clock(cluster_t *c, int mcu, uint32_t hz);
 /* Advance to until (a multiple of nothing in particular); returns the cycle
  * reached, earlier if a watched USART finished a byte. */
 uint64_t cluster_run(cluster_t *c, uint64_t until);

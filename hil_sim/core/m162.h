@@ -25,16 +25,19 @@
 #define M162_NPORTS 5  /* A..E */
 #define M162_NUARTS 2
 
-/* One byte as it went over a wire: first edge of the start bit, end of the
- * last stop bit, in the transmitting MCU's cycles. */
+/* One byte as it went over a wire: first edge of the start bit, the middle
+ * of its (first) stop bit, where a receiver samples it and raises RXC, and
+ * the end of the last stop bit.  All in cluster cycles (nominal clock, see
+ * m162_clock_t), so bytes of MCUs on different clocks compare directly. */
 typedef struct m162_txrec_t {
-	uint64_t start, end;
+	uint64_t start, mid_stop, end;
 	uint8_t byte;
 	uint8_t format;      /* data bits | parity mode << 4 | stop bits << 6 */
-	uint32_t bit_cycles; /* sender's bit time */
+	uint32_t bit_cycles; /* sender's bit time, in cluster cycles */
 } m162_txrec_t;
 
-/* A byte waiting to reach a receiver at a given cycle (wire delivery). */
+/* A byte waiting to reach a receiver at a given cycle (wire delivery, in the
+ * receiver's own cycles). */
 typedef struct m162_rxpend_t {
 	uint64_t due;
 	uint16_t value; /* byte | UART_INPUT_FE */
@@ -102,8 +105,21 @@ struct mcu_t {
 	avr_spi_t spi;
 };
 
+/* Each MCU has its own clock (the boards run on internal RC oscillators,
+ * several per cent apart).  The cluster keeps time in cycles of the nominal
+ * clock; an MCU's own cycle counter runs at hz/nominal_hz of that rate,
+ * anchored at the moment its clock was last set. */
+typedef struct m162_clock_t {
+	uint32_t hz, nominal_hz;
+	uint64_t base_local, base_cluster;
+} m162_clock_t;
+
 typedef struct m162_t {
 	struct mcu_t mcu; /* our core (unused when running a stock simavr core) */
+	m162_clock_t clock;
+	int changed;        /* new pin-log records or watched bytes since the last look */
+	uint64_t prescaler_base[2]; /* cycle the prescalers of timers 0/1/3 and 2 restarted */
+	uint8_t level_armed; /* INT0/INT1 enabled with low-level sense (bit per INT) */
 	avr_io_t fixup_io;  /* reset hook that runs after every simavr module */
 	int is_m162;        /* 0 for a stock simavr core (comparison runs) */
 	avr_t *avr;
@@ -120,6 +136,8 @@ typedef struct m162_t {
 	uint64_t crash_cycle;
 	unsigned sp_low_count; /* instructions in a row with SP below SRAM */
 	avr_io_write_t spdr_write_orig;
+	avr_io_write_t wdtcr_write_orig;
+	avr_io_write_t tcnt_write_orig[2], tccr_write_orig[2]; /* timers 0 and 2 */
 } m162_t;
 
 /* Core */
@@ -130,6 +148,12 @@ int m162_load_elf(m162_t *m, const char *path, char *err, size_t errlen);
 void m162_install_logger(void);
 void m162_run_until(m162_t *m, uint64_t end);
 void m162_reset(m162_t *m);
+/* Cluster cycles <-> this MCU's own cycles (equal on the nominal clock). */
+uint64_t m162_to_local(const m162_t *m, uint64_t cluster_cycle);
+uint64_t m162_to_cluster(const m162_t *m, uint64_t local_cycle);
+uint32_t m162_to_cluster_span(const m162_t *m, uint32_t local_cycles);
+/* Change the MCU's clock at cluster cycle now (hz > 0). */
+void m162_set_clock(m162_t *m, uint32_t hz, uint64_t now);
 const char *m162_state_name(int state); /* "running", "sleeping", "crashed", "done", "stopped" */
 static inline m162_t *m162_of(avr_t *avr) { return (m162_t *)avr->custom.data; }
 
@@ -137,14 +161,15 @@ static inline m162_t *m162_of(avr_t *avr) { return (m162_t *)avr->custom.data; }
 void m162_usart_init(m162_t *m);
 void m162_usart_reset(m162_t *m);
 int m162_usart_put(m162_usart_t *s, uint16_t value); /* 1 = accepted, 0 = dropped */
-void m162_usart_queue_rx(m162_usart_t *s, uint64_t due, uint16_t value);
+void m162_usart_queue_rx(m162_usart_t *s, uint64_t due_cluster, uint16_t value);
 void m162_usart_config(m162_usart_t *s, double *baud, int *data_bits, char *parity,
 		int *stop_bits, int *rxen, int *txen);
 void m162_usart_set_keep_log(m162_usart_t *s, int keep);
 void m162_usart_log(m162_usart_t *s, m162_txrec_t rec); /* append, if the log is kept */
 void m162_usart_compact_log(m162_usart_t *s);
-/* Would s receive this frame intact?  Same format, bit times within 4.5 %. */
-int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r);
+/* Would s receive this frame intact?  Same data bits and parity, bit times
+ * within tolerance (a fraction: protocol/timing.py BAUD_TOLERANCE). */
+int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r, double tolerance);
 
 /* Register addresses (data space) used outside the descriptor table. */
 extern const uint16_t m162_port_regs[M162_NPORTS][3]; /* PIN, DDR, PORT */

@@ -14,6 +14,15 @@
  *  - PINx writes do nothing (the ATmega162 predates the PIN-toggle feature).
  *  - Our own run function: SLEEP honours MCUCR.SE, sleeping advances cycles
  *    only (no wall-clock wait) and never past the current lock-step quantum.
+ *  - Watchdog: WDTCR = 0 after every reset, and WDRF does not hold WDE set
+ *    (ATmega162 datasheet, safety level 1; simavr re-arms it after a
+ *    watchdog reset, as the newer parts do).
+ *  - Timers 0 and 2: a TCNT write or a clock start counts from the written
+ *    value on the next edge of the free-running prescaler (simavr rescales
+ *    the value by 255 and drops the prescaler phase: a 10 ms tick came out
+ *    9,976 cycles instead of 9,984).
+ *  - Each MCU runs on its own clock (m162_clock_t); what it reports to the
+ *    scheduler is in cluster cycles.
  */
 #include <stdlib.h>
 #include <string.h>
@@ -25,6 +34,7 @@
 #include "sim_elf.h"
 #include "sim_core.h"
 #include "sim_vcd_file.h"
+#include "sim_core_config.h"
 
 /* The macros sim_core_declare.h would give us: register names from avr-libc
  * evaluate to data-space addresses, vectors and bits to plain numbers. */
@@ -58,6 +68,45 @@ const uint16_t m162_port_regs[M162_NPORTS][3] = {
 };
 
 static void m162_init(avr_t *avr);
+
+/* ------------------------------------------------------------------ */
+/* clock */
+
+uint64_t m162_to_local(const m162_t *m, uint64_t cluster_cycle)
+{
+	const m162_clock_t *k = &m->clock;
+	if (k->hz == k->nominal_hz || cluster_cycle <= k->base_cluster)
+		return k->base_local + (cluster_cycle - k->base_cluster);
+	unsigned __int128 d = (unsigned __int128)(cluster_cycle - k->base_cluster) * k->hz;
+	return k->base_local + (uint64_t)(d / k->nominal_hz);
+}
+
+uint64_t m162_to_cluster(const m162_t *m, uint64_t local_cycle)
+{
+	const m162_clock_t *k = &m->clock;
+	if (k->hz == k->nominal_hz || local_cycle <= k->base_local)
+		return k->base_cluster + (local_cycle - k->base_local);
+	unsigned __int128 d = (unsigned __int128)(local_cycle - k->base_local) * k->nominal_hz;
+	return k->base_cluster + (uint64_t)((d + k->hz - 1) / k->hz);
+}
+
+uint32_t m162_to_cluster_span(const m162_t *m, uint32_t local_cycles)
+{
+	const m162_clock_t *k = &m->clock;
+	if (k->hz == k->nominal_hz)
+		return local_cycles;
+	return (uint32_t)(((uint64_t)local_cycles * k->nominal_hz + k->hz / 2) / k->hz);
+}
+
+void m162_set_clock(m162_t *m, uint32_t hz, uint64_t now)
+{
+	uint64_t local = m162_to_local(m, now);
+	m->clock.base_local = local;
+	m->clock.base_cluster = now;
+	m->clock.hz = hz;
+	/* baud rates and the watchdog's cycle count follow the real clock */
+	m->avr->frequency = hz;
+}
 static void m162_core_reset(avr_t *avr);
 static void m162_extint_level(m162_t *m);
 
@@ -438,11 +487,12 @@ static void m162_sleep_virtual(avr_t *avr, avr_cycle_count_t how_long)
 	(void)how_long; /* virtual time: the caller advances avr->cycle */
 }
 
-void m162_run_until(m162_t *m, uint64_t end)
+void m162_run_until(m162_t *m, uint64_t cluster_end)
 {
 	avr_t *avr = m->avr;
+	uint64_t end = m162_to_local(m, cluster_end);
 	m->quantum_end = end;
-	if (m->is_m162)
+	if (m->level_armed)
 		m162_extint_level(m);
 	while (avr->cycle < end) {
 		int st = avr->state;
@@ -498,7 +548,9 @@ static void m162_pinlog_add(m162_t *m, int idx, uint8_t value)
 		m->pinlog = n;
 		m->pinlog_cap = cap;
 	}
-	m->pinlog[m->pinlog_len++] = (m162_pinrec_t){ m->avr->cycle, (char)('A' + idx), value };
+	m->pinlog[m->pinlog_len++] = (m162_pinrec_t){ m162_to_cluster(m, m->avr->cycle),
+		(char)('A' + idx), value };
+	m->changed = 1;
 }
 
 static void m162_port_change(struct avr_irq_t *irq, uint32_t value, void *param)
@@ -548,7 +600,122 @@ static void m162_gicr_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *par
 {
 	(void)param;
 	avr_core_watch_write(avr, addr, v);
-	m162_extint_level(m162_of(avr));
+	m162_t *m = m162_of(avr);
+	/* the per-quantum level check runs only while INT0 or INT1 is enabled */
+	m->level_armed = v & ((1 << INT0) | (1 << INT1));
+	m162_extint_level(m);
+}
+
+/* ------------------------------------------------------------------ */
+/* watchdog: off after every reset; WDRF does not force WDE on this part */
+
+/* Cancel every cycle timer a peripheral (its param) has armed. */
+static void m162_cancel_timers_of(avr_t *avr, void *param)
+{
+	avr_cycle_timer_t fns[MAX_CYCLE_TIMERS];
+	int n = 0;
+	for (avr_cycle_timer_slot_p t = avr->cycle_timers.timer; t; t = t->next)
+		if (t->param == param)
+			fns[n++] = t->timer;
+	for (int i = 0; i < n; i++)
+		avr_cycle_timer_cancel(avr, fns[i], param);
+}
+
+static void m162_wdtcr_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
+{
+	m162_t *m = m162_of(avr);
+	/* simavr keeps WDE set while WDRF is (ATmega48-style); hide WDRF from it */
+	uint8_t wdrf = avr_regbit_get(avr, m->mcu.watchdog.wdrf);
+	avr_regbit_clear(avr, m->mcu.watchdog.wdrf);
+	m->wdtcr_write_orig(avr, addr, v, param);
+	if (wdrf)
+		avr_regbit_set(avr, m->mcu.watchdog.wdrf);
+}
+
+static void m162_watchdog_reset(m162_t *m)
+{
+	m->avr->data[WDTCR] = 0;
+	m162_cancel_timers_of(m->avr, &m->mcu.watchdog);
+}
+
+/* ------------------------------------------------------------------ */
+/* timers 0 and 2: exact TCNT writes and prescaler phase */
+
+/* prescaler_base index of each 8-bit timer: timer 0 shares its prescaler
+ * with timers 1 and 3 (PSR310), timer 2 has its own (PSR2). */
+#define M162_PRESCALER_T0 0
+#define M162_PRESCALER_T2 1
+
+/* simavr has (re)armed timer p as if it counted from 0 now.  Move its
+ * overflow and compare timers so that, counting from count, the overflow
+ * falls on the right edge of the free-running prescaler. */
+static void m162_timer_align(m162_t *m, avr_timer_t *p, int prescaler, uint32_t count)
+{
+	avr_t *avr = m->avr;
+	if (!p->tov_cycles || !p->tov_top || !p->cs_div_value ||
+			(p->ext_clock_flags & (AVR_TIMER_EXTCLK_FLAG_TN | AVR_TIMER_EXTCLK_FLAG_AS2)))
+		return;
+	uint64_t div = p->cs_div_value, now = avr->cycle, base = m->prescaler_base[prescaler];
+	uint64_t first_edge = base + ((now - base) / div + 1) * div;
+	uint32_t edges = count < p->tov_top ? p->tov_top + 1 - count : 1;
+	uint64_t overflow = first_edge + (edges - 1) * div;
+	uint64_t want_base = overflow - p->tov_cycles;
+	int64_t shift = (int64_t)(want_base - p->tov_base);
+	if (!shift)
+		return;
+	p->tov_base = want_base;
+	struct { avr_cycle_timer_t fn; uint64_t when; } armed[8];
+	int n = 0;
+	for (avr_cycle_timer_slot_p t = avr->cycle_timers.timer; t && n < 8; t = t->next)
+		if (t->param == p)
+			armed[n++] = (typeof(armed[0])){ t->timer, t->when };
+	for (int i = 0; i < n; i++) {
+		uint64_t when = armed[i].when + shift;
+		if (when > now)
+			avr_cycle_timer_register(avr, when - now, armed[i].fn, p);
+		else
+			avr_cycle_timer_cancel(avr, armed[i].fn, p); /* already passed this period */
+	}
+}
+
+static int m162_timer8_index(m162_t *m, avr_timer_t *p)
+{
+	return p == &m->mcu.timer2 ? M162_PRESCALER_T2 : M162_PRESCALER_T0;
+}
+
+static void m162_tcnt8_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
+{
+	m162_t *m = m162_of(avr);
+	avr_timer_t *p = param;
+	int i = m162_timer8_index(m, p);
+	m->tcnt_write_orig[i](avr, addr, v, param);
+	m162_timer_align(m, p, i, v);
+}
+
+static void m162_tccr8_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
+{
+	m162_t *m = m162_of(avr);
+	avr_timer_t *p = param;
+	int i = m162_timer8_index(m, p);
+	uint64_t was_cycles = p->tov_cycles, was_div = p->cs_div_value;
+	/* the count the timer holds: a stopped timer keeps what TCNT was set to */
+	uint8_t count = p->tov_cycles ? avr->io[AVR_DATA_TO_IO(p->r_tcnt)].r.c(avr,
+			p->r_tcnt, avr->io[AVR_DATA_TO_IO(p->r_tcnt)].r.param) : avr->data[p->r_tcnt];
+	m->tccr_write_orig[i](avr, addr, v, param);
+	if (p->tov_cycles != was_cycles || p->cs_div_value != was_div)
+		m162_timer_align(m, p, i, count);
+}
+
+/* SFIOR: PSR2 and PSR310 restart a prescaler; the bits read back 0 */
+static void m162_sfior_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
+{
+	(void)param;
+	m162_t *m = m162_of(avr);
+	if (v & (1 << PSR310))
+		m->prescaler_base[M162_PRESCALER_T0] = avr->cycle;
+	if (v & (1 << PSR2))
+		m->prescaler_base[M162_PRESCALER_T2] = avr->cycle;
+	avr_core_watch_write(avr, addr, v & ~((1 << PSR310) | (1 << PSR2)));
 }
 
 /* A reset does not unplug what drives the pins from outside (DIP switches):
@@ -575,6 +742,10 @@ static void m162_fixup_reset(avr_io_t *io)
 		avr_irq_register_notify(m->mcu.extint.eint[i].vector.irq + AVR_INT_IRQ_RUNNING,
 				m162_extint_returned, m);
 	}
+	m->level_armed = 0;
+	m->prescaler_base[M162_PRESCALER_T0] = m->prescaler_base[M162_PRESCALER_T2] =
+		m->avr->cycle;
+	m162_watchdog_reset(m);
 	m162_log_reset_ports(m);
 	m162_usart_reset(m);
 	m162_reapply_external(m);
@@ -617,6 +788,19 @@ static void m162_init(avr_t *avr)
 	avr_spi_init(avr, &mcu->spi);
 
 	avr_register_io_write(avr, GICR, m162_gicr_write, NULL);
+	avr_register_io_write(avr, SFIOR, m162_sfior_write, NULL);
+
+	m->wdtcr_write_orig = avr->io[AVR_DATA_TO_IO(WDTCR)].w.c;
+	avr->io[AVR_DATA_TO_IO(WDTCR)].w.c = m162_wdtcr_write;
+	avr_timer_t *timer8[2] = { &mcu->timer0, &mcu->timer2 };
+	for (int i = 0; i < 2; i++) {
+		avr_io_addr_t tcnt = AVR_DATA_TO_IO(timer8[i]->r_tcnt);
+		avr_io_addr_t tccr = AVR_DATA_TO_IO(timer8[i]->cs[0].reg);
+		m->tcnt_write_orig[i] = avr->io[tcnt].w.c;
+		avr->io[tcnt].w.c = m162_tcnt8_write;
+		m->tccr_write_orig[i] = avr->io[tccr].w.c;
+		avr->io[tccr].w.c = m162_tccr8_write;
+	}
 
 	m->spdr_write_orig = avr->io[AVR_DATA_TO_IO(SPDR)].w.c;
 	avr->io[AVR_DATA_TO_IO(SPDR)].w.c = m162_spdr_write;
@@ -690,8 +874,8 @@ static void m162_stock_uart_out(struct avr_irq_t *irq, uint32_t value, void *par
 {
 	m162_usart_t *s = (m162_usart_t *)param;
 	(void)irq;
-	uint64_t now = s->mcu->avr->cycle;
-	m162_usart_log(s, (m162_txrec_t){ now, now, (uint8_t)value, 0, 0 });
+	uint64_t now = m162_to_cluster(s->mcu, s->mcu->avr->cycle);
+	m162_usart_log(s, (m162_txrec_t){ now, now, now, (uint8_t)value, 0, 0 });
 }
 
 m162_t *m162_make_stock(const char *mmcu)
@@ -729,12 +913,33 @@ m162_t *m162_make_stock(const char *mmcu)
 	return m;
 }
 
+/* avr_terminate frees the peripherals' IRQs but not those embedded in the
+ * interrupt vectors (their names and notify hooks) nor the IRQ pool itself:
+ * ~4.7 KB per MCU in simavr 1.6.  Whatever is still in the pool after
+ * avr_terminate is one of those. */
+static void m162_free_irq_pool(avr_t *avr)
+{
+	avr_irq_pool_t *pool = &avr->irq_pool;
+	for (int i = 0; i < pool->count; i++) {
+		avr_irq_t *irq = pool->irq[i];
+		if (!irq)
+			continue;
+		/* embedded in a vector: free its name and hooks, not the IRQ */
+		irq->flags &= ~IRQ_FLAG_ALLOC;
+		avr_free_irq(irq, 1);
+	}
+	free(pool->irq);
+	pool->irq = NULL;
+	pool->count = 0;
+}
+
 void m162_free(m162_t *m)
 {
 	if (!m)
 		return;
 	avr_t *avr = m->avr;
 	avr_terminate(avr);
+	m162_free_irq_pool(avr);
 	for (int i = 0; i < M162_NUARTS; i++)
 		free(m->usart[i].log);
 	free(m->pinlog);
@@ -797,6 +1002,12 @@ int m162_load_elf(m162_t *m, const char *path, char *err, size_t errlen)
 	free(fw->f.eeprom);
 	free(fw->f.fuse);
 	free(fw->f.lockbits);
+#if ELF_SYMBOLS && !CONFIG_SIMAVR_TRACE
+	/* the symbol table is only kept by tracing builds of simavr */
+	for (uint32_t i = 0; i < fw->f.symbolcount; i++)
+		free(fw->f.symbol[i]);
+	free(fw->f.symbol);
+#endif
 	free(fw);
 	/* avr_load_firmware may install a VCD trace if the ELF asks; we never
 	 * want files written behind the caller's back. */

@@ -67,6 +67,8 @@ void m162_usart_log(m162_usart_t *s, m162_txrec_t rec)
 {
 	if (!s->keep_log)
 		return;
+	if (s->watched)
+		s->mcu->changed = 1;
 	if (s->log_len == s->log_cap) {
 		size_t cap = s->log_cap ? s->log_cap * 2 : 64;
 		m162_txrec_t *n = realloc(s->log, cap * sizeof *n);
@@ -80,12 +82,18 @@ void m162_usart_log(m162_usart_t *s, m162_txrec_t rec)
 
 static void start_frame(m162_usart_t *s, uint8_t byte, uint64_t when)
 {
+	m162_t *m = s->mcu;
 	s->shifting = 1;
 	s->shift_byte = byte;
 	s->shift_start = when;
 	s->shift_end = when + s->frame_cycles;
-	m162_usart_log(s, (m162_txrec_t){ s->shift_start, s->shift_end, byte, s->format,
-			s->bit_cycles });
+	/* the receiver samples the middle of the first stop bit and raises RXC
+	 * there (datasheet, "Asynchronous Data Reception") */
+	uint32_t stop_bits = s->format >> 6;
+	uint64_t mid_stop = s->shift_end - (uint64_t)s->bit_cycles * stop_bits + s->bit_cycles / 2;
+	m162_usart_log(s, (m162_txrec_t){ m162_to_cluster(m, when), m162_to_cluster(m, mid_stop),
+			m162_to_cluster(m, s->shift_end), byte, s->format,
+			m162_to_cluster_span(m, s->bit_cycles) });
 }
 
 static avr_cycle_count_t tx_done(avr_t *avr, avr_cycle_count_t when, void *param)
@@ -176,9 +184,10 @@ static avr_cycle_count_t rx_deliver(avr_t *avr, avr_cycle_count_t when, void *pa
 	return s->rxq_len ? s->rxq[s->rxq_head].due : 0;
 }
 
-void m162_usart_queue_rx(m162_usart_t *s, uint64_t due, uint16_t value)
+void m162_usart_queue_rx(m162_usart_t *s, uint64_t due_cluster, uint16_t value)
 {
 	avr_t *avr = s->mcu->avr;
+	uint64_t due = m162_to_local(s->mcu, due_cluster);
 	if (due <= avr->cycle && s->rxq_len == 0) {
 		m162_usart_put(s, value);
 		return;
@@ -316,13 +325,14 @@ void m162_usart_set_keep_log(m162_usart_t *s, int keep)
 	s->keep_log = keep;
 }
 
-int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r)
+int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r, double tolerance)
 {
-	if (r->format != s->format)
+	/* a receiver checks only the first stop bit: 8N2 into 8N1 is fine */
+	if ((r->format & 0x3F) != (s->format & 0x3F))
 		return 0;
-	uint32_t a = r->bit_cycles, b = s->bit_cycles;
-	uint32_t diff = a > b ? a - b : b - a;
-	return diff * 1000 <= 45 * (a > b ? a : b);
+	double sent = r->bit_cycles, own = m162_to_cluster_span(s->mcu, s->bit_cycles);
+	double diff = sent > own ? sent - own : own - sent;
+	return diff <= tolerance * sent;
 }
 
 /* Forget records every consumer has seen, so logs stay small. */

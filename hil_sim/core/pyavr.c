@@ -16,6 +16,10 @@ typedef struct {
 	cluster_t *c;
 } ClusterObject;
 
+/* hexbot.protocol.timing.BAUD_TOLERANCE, read once at import: the one place
+ * that number lives. */
+static double baud_tolerance;
+
 static m162_t *get_mcu(ClusterObject *self, long i)
 {
 	if (i < 0 || i >= self->c->n) {
@@ -89,7 +93,7 @@ static int Cluster_init(ClusterObject *self, PyObject *args, PyObject *kw)
 	}
 	if (self->c)
 		cluster_free(self->c);
-	self->c = cluster_new((uint64_t)q);
+	self->c = cluster_new((uint64_t)q, baud_tolerance);
 	if (!self->c) {
 		PyErr_NoMemory();
 		return -1;
@@ -145,6 +149,12 @@ static PyObject *Cluster_get_frequency(ClusterObject *self, void *closure)
 {
 	(void)closure;
 	return PyLong_FromUnsignedLong(self->c->frequency ? self->c->frequency : 1000000);
+}
+
+static PyObject *Cluster_get_tolerance(ClusterObject *self, void *closure)
+{
+	(void)closure;
+	return PyFloat_FromDouble(self->c->baud_tolerance);
 }
 
 static PyObject *Cluster_get_count(ClusterObject *self, void *closure)
@@ -212,7 +222,7 @@ static PyObject *Cluster_uart_take(ClusterObject *self, PyObject *args)
 	PyObject *list = PyList_New(0);
 	if (!list)
 		return NULL;
-	uint64_t now = s->mcu->avr->cycle;
+	uint64_t now = self->c->cycle;
 	while (s->take_pos < s->log_len && s->log[s->take_pos].end <= now) {
 		m162_txrec_t *r = &s->log[s->take_pos];
 		PyObject *t = Py_BuildValue("(KKi)", (unsigned long long)r->start,
@@ -273,6 +283,51 @@ static PyObject *Cluster_uart_config(ClusterObject *self, PyObject *args)
 			"parity", par, "stop_bits", sb, "rxen", rxen ? Py_True : Py_False, "txen",
 			txen ? Py_True : Py_False, "frame_cycles", (unsigned long)s->frame_cycles,
 			"rx_dropped", (unsigned long long)s->rx_dropped);
+}
+
+static PyObject *Cluster_set_clock(ClusterObject *self, PyObject *args)
+{
+	long m;
+	double hz;
+	if (!PyArg_ParseTuple(args, "ld", &m, &hz))
+		return NULL;
+	m162_t *mc = get_mcu(self, m);
+	if (!mc)
+		return NULL;
+	if (!(hz >= 1000.0 && hz <= 100e6)) {
+		PyErr_Format(PyExc_ValueError, "clock %g Hz outside 1 kHz..100 MHz", hz);
+		return NULL;
+	}
+	cluster_set_clock(self->c, (int)m, (uint32_t)(hz + 0.5));
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_clock(ClusterObject *self, PyObject *args)
+{
+	m162_t *mc = mcu_arg(self, args);
+	return mc ? PyLong_FromUnsignedLong(mc->clock.hz) : NULL;
+}
+
+static PyObject *Cluster_changed(ClusterObject *self, PyObject *noargs)
+{
+	(void)noargs;
+	PyObject *list = PyList_New(0);
+	if (!list)
+		return NULL;
+	for (int i = 0; i < self->c->n; i++) {
+		m162_t *m = self->c->mcu[i];
+		if (!m->changed)
+			continue;
+		m->changed = 0;
+		PyObject *v = PyLong_FromLong(i);
+		if (!v || PyList_Append(list, v) < 0) {
+			Py_XDECREF(v);
+			Py_DECREF(list);
+			return NULL;
+		}
+		Py_DECREF(v);
+	}
+	return list;
 }
 
 static PyObject *Cluster_port(ClusterObject *self, PyObject *args)
@@ -526,6 +581,11 @@ static PyMethodDef Cluster_methods[] = {
 	{ "uart_config", (PyCFunction)Cluster_uart_config, METH_VARARGS,
 		"uart_config(mcu, uart) -> dict of the USART's present configuration" },
 	{ "port", (PyCFunction)Cluster_port, METH_VARARGS, "port(mcu, 'A'..'E') -> (DDR, PORT, PIN)" },
+	{ "set_clock", (PyCFunction)Cluster_set_clock, METH_VARARGS,
+		"set_clock(mcu, hz): run this MCU on its own clock from now on" },
+	{ "clock", (PyCFunction)Cluster_clock, METH_VARARGS, "clock(mcu) -> its clock in Hz" },
+	{ "changed", (PyCFunction)Cluster_changed, METH_NOARGS,
+		"changed() -> MCUs with new pin-log records or watched bytes since the last call" },
 	{ "set_input", (PyCFunction)Cluster_set_input, METH_VARARGS,
 		"set_input(mcu, port, mask, value): drive external levels on pins" },
 	{ "pin_log", (PyCFunction)Cluster_pin_log, METH_VARARGS,
@@ -557,7 +617,10 @@ static PyMethodDef Cluster_methods[] = {
 static PyGetSetDef Cluster_getset[] = {
 	{ "cycle", (getter)Cluster_get_cycle, NULL, "common simulated cycle", NULL },
 	{ "quantum_cycles", (getter)Cluster_get_quantum, NULL, "lock-step quantum", NULL },
-	{ "frequency", (getter)Cluster_get_frequency, NULL, "clock of every MCU, Hz", NULL },
+	{ "frequency", (getter)Cluster_get_frequency, NULL,
+		"nominal clock, Hz: the unit of every cycle count (MCUs may run off it)", NULL },
+	{ "baud_tolerance", (getter)Cluster_get_tolerance, NULL,
+		"largest baud-rate mismatch a receiver takes, as a fraction", NULL },
 	{ "mcu_count", (getter)Cluster_get_count, NULL, "number of MCUs", NULL },
 	{ NULL, NULL, NULL, NULL, NULL },
 };
@@ -582,6 +645,17 @@ static struct PyModuleDef avr_module = {
 
 PyMODINIT_FUNC PyInit__avr(void)
 {
+	PyObject *timing = PyImport_ImportModule("hexbot.protocol.timing");
+	if (!timing)
+		return NULL;
+	PyObject *tol = PyObject_GetAttrString(timing, "BAUD_TOLERANCE");
+	Py_DECREF(timing);
+	if (!tol)
+		return NULL;
+	baud_tolerance = PyFloat_AsDouble(tol);
+	Py_DECREF(tol);
+	if (PyErr_Occurred())
+		return NULL;
 	if (PyType_Ready(&ClusterType) < 0)
 		return NULL;
 	PyObject *m = PyModule_Create(&avr_module);

@@ -3,7 +3,7 @@
  * Python: a quick look at what firmware does, and a way to use gdb/valgrind
  * on the core itself.
  *
- *   m162run [-c cycles] [-q quantum] [-w] a.elf [b.elf ...]
+ *   m162run [-c cycles] [-q quantum] [-t baud-tolerance] [-w] a.elf [b.elf ...]
  *
  * Prints every byte each USART sends ("mcu uart start end byte") and every
  * PORTx change ("mcu port cycle value"), then each MCU's state.  -w wires
@@ -22,7 +22,7 @@ static void drain(cluster_t *c)
 		m162_t *m = c->mcu[i];
 		for (int u = 0; u < M162_NUARTS; u++) {
 			m162_usart_t *s = &m->usart[u];
-			while (s->take_pos < s->log_len && s->log[s->take_pos].end <= m->avr->cycle) {
+			while (s->take_pos < s->log_len && s->log[s->take_pos].end <= c->cycle) {
 				m162_txrec_t *r = &s->log[s->take_pos++];
 				printf("%d uart%d %llu %llu 0x%02x %c\n", i, u, (unsigned long long)r->start,
 						(unsigned long long)r->end, r->byte,
@@ -40,14 +40,17 @@ static void drain(cluster_t *c)
 int main(int argc, char **argv)
 {
 	unsigned long long cycles = 1000000, quantum = 1000;
+	/* the simulator takes it from protocol/timing.py BAUD_TOLERANCE */
+	double tolerance = 0.045;
 	int wire = 0, opt;
-	while ((opt = getopt(argc, argv, "c:q:w")) != -1) {
+	while ((opt = getopt(argc, argv, "c:q:t:w")) != -1) {
 		switch (opt) {
 		case 'c': cycles = strtoull(optarg, NULL, 0); break;
 		case 'q': quantum = strtoull(optarg, NULL, 0); break;
+		case 't': tolerance = strtod(optarg, NULL); break;
 		case 'w': wire = 1; break;
 		default:
-			fprintf(stderr, "usage: %s [-c cycles] [-q quantum] [-w] a.elf [b.elf ...]\n",
+			fprintf(stderr, "usage: %s [-c cycles] [-q quantum] [-t tolerance] [-w] a.elf ...\n",
 					argv[0]);
 			return 2;
 		}
@@ -56,7 +59,7 @@ int main(int argc, char **argv)
 		fprintf(stderr, "%s: no ELF file given\n", argv[0]);
 		return 2;
 	}
-	cluster_t *c = cluster_new(quantum);
+	cluster_t *c = cluster_new(quantum, tolerance);
 	for (int i = optind; i < argc; i++) {
 		char err[512];
 		int idx = cluster_add(c, argv[i], argv[i], "atmega162", err, sizeof err);
