@@ -5,6 +5,7 @@ A scenario is a TOML file (built-ins in ``hil_sim/scenarios/``)::
     name = "pair"
     seed = 1                      # fault injection and garbage bytes
     base = 1                      # id of the module fixed to the base (never moves)
+    clock_spread_ppm = 20000      # optional: each MCU's RC clock drawn (seeded) within +-2 %
 
     [firmware]                    # optional; default: firmware/build/*.elf
     comm = "firmware/build/comm.elf"       # relative to the scenario file
@@ -20,15 +21,19 @@ A scenario is a TOML file (built-ins in ``hil_sim/scenarios/``)::
     byte_loss = 0.5
 
     [[module]]
-    id = 1                        # 1..63, also its DIP switches
+    id = 1                        # 1..255, also its 8 DIP switches
     position = [0, 0]             # Table 4-1 axial coordinates
     orientation = 0               # 0..5, see geometry.py
+    clock_ppm = -12000            # optional: both boards' clocks off nominal (overrides the spread)
 
-Every error names the file, the line and the problem.
+Every error names the file, the line and the problem. Besides files, the
+generator of :mod:`hexbot.hil_sim.scenario_gen` makes clusters of any size by
+name: ``blob:50``, ``line:12``, ``blob:255:7`` (shape, modules, seed).
 """
 
 from __future__ import annotations
 
+import random
 import re
 import tomllib
 from dataclasses import dataclass, field
@@ -37,16 +42,21 @@ from pathlib import Path
 from typing import Any
 
 from hexbot.errors import ScenarioError
-from hexbot.protocol.wire import MAX_MODULE_ID
+from hexbot.protocol.pins import DIP_SWITCHES
+from hexbot.protocol.timing import CLOCK_TOLERANCE
 
 from .geometry import Cell
 
-MAX_ID = MAX_MODULE_ID
+#: A module's id is its control board's DIP switches: up to 255 modules. (The
+#: legacy Select frame addresses 1..63, MAVLink frames all of them.)
+MAX_ID = (1 << DIP_SWITCHES) - 1
 COORD_LIMIT = 99  # MSG1 carries two decimal digits per coordinate
+MAX_CLOCK_PPM = round(CLOCK_TOLERANCE * 1e6)  # an RC clock further off cannot talk at all
 PC = "pc"
 
-_TOP_KEYS = {"name", "description", "seed", "base", "firmware", "faults", "module"}
-_MODULE_KEYS = {"id", "position", "orientation", "firmware"}
+_TOP_KEYS = {"name", "description", "seed", "base", "firmware", "faults", "module",
+             "clock_spread_ppm"}
+_MODULE_KEYS = {"id", "position", "orientation", "firmware", "clock_ppm"}
 _FIRMWARE_KEYS = {"comm", "control"}
 _FAULT_KEYS = {"bit_error_rate", "byte_loss"}
 _LINK_KEYS = _FAULT_KEYS | {"from", "to"}
@@ -77,6 +87,7 @@ class ModuleSpec:
     orientation: int
     firmware: Firmware
     line: int  # where the module's table starts, for later error messages
+    clock_ppm: float | None = None  # both boards; None: drawn from the scenario's spread
 
 
 @dataclass
@@ -89,6 +100,20 @@ class Scenario:
     link_faults: dict[tuple[int | str, int | str], Faults] = field(default_factory=dict)
     path: Path | None = None
     description: str = ""
+    clock_spread_ppm: float = 0.0
+
+    def clocks(self, seed: int) -> dict[tuple[int, str], float]:
+        """Clock error in ppm of every MCU, by (module id, "comm"/"control"):
+        the module's ``clock_ppm``, else drawn uniformly within the spread by
+        a generator of its own (seeded), in module order."""
+        rng = random.Random(seed ^ 0xC10C)
+        spread = self.clock_spread_ppm
+        clocks: dict[tuple[int, str], float] = {}
+        for spec in sorted(self.modules, key=lambda m: m.id):
+            for board in ("comm", "control"):
+                drawn = rng.uniform(-spread, spread) if spread else 0.0
+                clocks[(spec.id, board)] = drawn if spec.clock_ppm is None else spec.clock_ppm
+        return clocks
 
     def faults_for(self, sender: int | str, receiver: int | str) -> Faults:
         return self.link_faults.get((sender, receiver), self.faults)
@@ -108,8 +133,13 @@ def builtin_names() -> list[str]:
 
 
 def load_scenario(source: str | Path) -> Scenario:
-    """A scenario by built-in name (``"pair"``) or by path to a TOML file."""
+    """A scenario by built-in name (``"pair"``), generator name (``"blob:50"``)
+    or path to a TOML file."""
     text_source = str(source)
+    if text_source.split(":", 1)[0] in ("blob", "line") and ":" in text_source:
+        from .scenario_gen import from_name
+
+        return from_name(text_source)
     path = Path(text_source)
     if text_source.endswith(".toml") or path.is_file():
         if not path.is_file():
@@ -200,7 +230,7 @@ def parse_scenario(text: str, path: Path) -> Scenario:
         if not 1 <= module_id <= MAX_ID:
             raise fail(
                 lines.find("module", index, "id"),
-                f"module id {module_id} outside 1..{MAX_ID} (DIP switches PC0..PC5)",
+                f"module id {module_id} outside 1..{MAX_ID} (DIP switches PC0..PC7)",
             )
         if module_id in ids:
             raise fail(
@@ -229,7 +259,10 @@ def parse_scenario(text: str, path: Path) -> Scenario:
                 f"orientation must be an integer 0..5, not {orientation!r}",
             )
         fw = _firmware(raw.get("firmware", {}), default_fw, path, lines, "module", index, fail)
-        modules.append(ModuleSpec(module_id, cell, orientation, fw, at))
+        clock = raw.get("clock_ppm")
+        if clock is not None:
+            clock = _ppm(clock, lines.find("module", index, "clock_ppm"), "clock_ppm", fail)
+        modules.append(ModuleSpec(module_id, cell, orientation, fw, at, clock))
 
     for index, raw in enumerate(raw_links):
         if not isinstance(raw, dict):
@@ -250,6 +283,11 @@ def parse_scenario(text: str, path: Path) -> Scenario:
     base = data.get("base")
     if base is not None and base not in ids:
         raise fail(lines.find("", -1, "base"), f"base = {base!r} is not the id of a module")
+    spread = _ppm(data.get("clock_spread_ppm", 0), lines.find("", -1, "clock_spread_ppm"),
+                  "clock_spread_ppm", fail)
+    if spread < 0:
+        raise fail(lines.find("", -1, "clock_spread_ppm"),
+                   f"clock_spread_ppm must not be negative, not {spread:g}")
 
     return Scenario(
         name=name,
@@ -260,7 +298,17 @@ def parse_scenario(text: str, path: Path) -> Scenario:
         link_faults=link_faults,
         path=path,
         description=str(data.get("description", "")),
+        clock_spread_ppm=spread,
     )
+
+
+def _ppm(value: Any, line: int, key: str, fail: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, int | float):
+        raise fail(line, f"{key} must be a number of ppm, not {value!r}")
+    if abs(value) > MAX_CLOCK_PPM:
+        raise fail(line, f"{key} = {value:g} beyond +-{MAX_CLOCK_PPM} ppm "
+                         "(protocol/timing.py CLOCK_TOLERANCE)")
+    return float(value)
 
 
 def _faults(

@@ -3,9 +3,15 @@
 It owns the time loop. The C core runs every MCU in lock-step and returns at
 the first quantum boundary after a watched UART byte completes; in between,
 this loop moves bytes (IR, debug ports, PC), reads the pin logs (selectors,
-actuators, LEDs) and lets the plant resolve rotations. Everything is in
-virtual time: a run is as fast as the host allows and the same scenario and
-seed give the same trace.
+actuators, LEDs) of the MCUs the core reports as changed, and lets the plant
+resolve rotations. Everything is in virtual time: a run is as fast as the
+host allows and the same scenario and seed give the same trace.
+
+The quantum defaults to the lookahead of the fastest wire the core routes
+itself (a module's board link): no byte can start and reach the middle of its
+stop bit within one quantum, so every delivery on it is exact. Each MCU runs
+on its own clock (scenario ``clock_ppm`` / ``clock_spread_ppm``); cycles
+everywhere are cycles of the nominal clock ``F_CPU``.
 """
 
 from __future__ import annotations
@@ -17,7 +23,7 @@ from typing import Any
 
 from hexbot.errors import HexBotError, HexBotTimeoutError, ScenarioError
 from hexbot.protocol.pins import DIP_PORT
-from hexbot.protocol.timing import BAUD_DEBUG, BAUD_IR, F_CPU
+from hexbot.protocol.timing import BAUD_BOARD, BAUD_DEBUG, BAUD_IR, CLOCK_TOLERANCE, F_CPU
 
 from .geometry import CENTRE, Cell, to_global
 from .ir_bus import PC_FRAME, AirByte, Frame, IrMedium
@@ -27,6 +33,14 @@ from .scenario import PC, Scenario, load_scenario
 
 DEBUG_FRAME = Frame(float(BAUD_DEBUG))
 HISTORY_S = 2.0  # selector history kept, far more than one 300-baud byte
+
+
+def lookahead_cycles(hz: int = F_CPU) -> int:
+    """Shortest time from a byte's start bit to the middle of its stop bit on a
+    wire the core routes (the board link), on the fastest clock allowed: the
+    largest quantum that still delivers every byte on its exact cycle."""
+    bits_to_mid_stop = 9.5  # start + 8 data + half a stop bit
+    return int(bits_to_mid_stop * hz / BAUD_BOARD / (1 + CLOCK_TOLERANCE))
 
 
 def _load_core() -> Any:
@@ -57,14 +71,16 @@ class Simulator:
         scenario: Scenario,
         seed: int | None = None,
         *,
-        quantum_cycles: int = 1000,
+        quantum_cycles: int | None = None,
         hz: int = F_CPU,
         timing: Timing | None = None,
         cluster: Any = None,
     ) -> None:
         self.scenario = scenario
         self.seed = scenario.seed if seed is None else seed
-        self.cluster = cluster if cluster is not None else _load_core().Cluster(quantum_cycles)
+        if cluster is None:
+            cluster = _load_core().Cluster(quantum_cycles or lookahead_cycles(hz))
+        self.cluster = cluster
         self.hz = int(getattr(self.cluster, "frequency", hz))
         self.events: list[dict] = []
         self.event_sinks: list[Callable[[dict], None]] = []
@@ -73,7 +89,9 @@ class Simulator:
         self.plant = Plant(float(hz), timing or Timing(), emit=self._emit)
         self.modules: dict[int, Module] = {}
         self._by_comm: dict[int, Module] = {}
+        self._boards: dict[int, tuple[Module, str]] = {}  # MCU index -> module, board
         self._garbage = random.Random(self.seed ^ 0x5EED)
+        clocks = scenario.clocks(self.seed)
         for spec in sorted(scenario.modules, key=lambda m: m.id):
             for board in ("comm", "control"):
                 image = getattr(spec.firmware, board)
@@ -97,6 +115,12 @@ class Simulator:
             )
             self.modules[spec.id] = module
             self._by_comm[comm] = module
+            self._boards[comm] = (module, "comm")
+            self._boards[control] = (module, "control")
+            for index, board in ((comm, "comm"), (control, "control")):
+                ppm = clocks[(spec.id, board)]
+                if ppm:
+                    self.cluster.set_clock(index, hz * (1 + ppm / 1e6))
         self.medium = IrMedium(
             self, self.seed, faults_for=scenario.faults_for, emit=self._emit
         )
@@ -259,40 +283,40 @@ class Simulator:
         now = self._cycle
         keep_from = now - round(HISTORY_S * self.hz)
         changes: list[tuple[int, int, str, str, int]] = []
-        for module in self.modules.values():
-            for cycle, port, value in self.cluster.pin_log(module.comm.index):
-                module.comm_ports[port] = value
-                changes.append((cycle, module.id, "comm", port, value))
-                if port == "A":
-                    module.record_selector(cycle, value, keep_from)
-            for cycle, port, value in self.cluster.pin_log(module.control.index):
-                changes.append((cycle, module.id, "control", port, value))
+        # Only the MCUs the core says changed: the cost follows activity, not size.
+        changed = [self._boards[i] for i in sorted(self.cluster.changed())]
+        for module, board in changed:
+            for cycle, port, value in self.cluster.pin_log(getattr(module, board).index):
+                changes.append((cycle, module.id, board, port, value))
+                if board == "comm":
+                    module.comm_ports[port] = value
+                    if port == "A":
+                        module.record_selector(cycle, value, keep_from)
         changes.sort(key=lambda c: (c[0], c[1], c[2]))
-        control_ports = {m: dict(mod.control_ports) for m, mod in self.modules.items()}
         for cycle, module_id, board, port, value in changes:
             if board != "control":
                 continue
-            ports = control_ports[module_id]
+            ports = self.modules[module_id].control_ports
             if ports.get(port) == value:
                 continue
             ports[port] = value
             joints, magnets = decode_actuators(ports)
             self.plant.set_outputs(module_id, cycle, joints, magnets)
-        for module_id, ports in control_ports.items():
-            self.modules[module_id].control_ports = ports
         self.plant.step(now)
         for sink in self.pin_sinks:
             sink(changes)
 
         air: list[AirByte] = []
-        for module in self.modules.values():
-            taken = self.cluster.uart_take(module.comm.index, 1)
-            if taken:
-                frame = frame_of(module.comm.uart_config(1))
-                air.extend(AirByte(module.id, s, e, b, frame) for s, e, b in taken)
-            debug = self.cluster.uart_take(module.control.index, 1)
-            if debug:
-                self._debug_received(module, debug)
+        for module, board in changed:
+            if board == "comm":
+                taken = self.cluster.uart_take(module.comm.index, 1)
+                if taken:
+                    frame = frame_of(module.comm.uart_config(1))
+                    air.extend(AirByte(module.id, s, e, b, frame) for s, e, b in taken)
+            else:
+                debug = self.cluster.uart_take(module.control.index, 1)
+                if debug:
+                    self._debug_received(module, debug)
         while self._pc_tx and self._pc_tx[0][1] <= now:
             start, end, value = self._pc_tx.popleft()
             air.append(AirByte(PC, start, end, value, PC_FRAME))

@@ -23,6 +23,7 @@ MAGNET_POS_PINS: tuple[Pin, ...] = (("B", 0), ("D", 3), ("B", 6), ("D", 4), ("B"
 MAGNET_NEG_PINS: tuple[Pin, ...] = (("D", 6), ("D", 5), ("D", 7), ("B", 4), ("B", 5), ("D", 2))
 #: DIP switches PC0..PC7; the module id is PC0..PC5 (PC6, PC7 must be off).
 DIP_PORT = "C"
+DIP_SWITCHES = 8  # a cluster has up to 2**8 - 1 modules (id 0: no switch on)
 DIP_ID_MASK = 0x3F
 CONTROL_PORTS = ("A", "B", "D")  # the ports the simulator reads actuators from
 

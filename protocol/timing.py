@@ -106,7 +106,6 @@ SLOTS_LOCALIZE = reply_slots(REPLY_BYTES_LOCALIZE)
 #: long as its text at 300 baud plus a guard.
 BOOT_SLOTS = 8
 BOOT_FIRST_SLOT_TICKS = 200
-BOOT_GUARD_TICKS = 5
 #: Bytes of the slot text (preamble, CTR. BOARD READY ID=nn, CTR. LISTENING,
 #: COMM. LISTENING ID=nn FW=) without the version string.
 BOOT_TEXT_FIXED_BYTES = len(
@@ -114,6 +113,18 @@ BOOT_TEXT_FIXED_BYTES = len(
     + f"{wire.TEXT_CTR_READY}{wire.BOOT_ID_TAIL}nn".encode() + wire.EOL
     + wire.TEXT_CTR_LISTENING.encode() + wire.EOL
     + f"{wire.TEXT_COMM_LISTENING}{wire.BOOT_ID_TAIL}nn{wire.BOOT_FW_TAIL}".encode() + wire.EOL
+)
+#: The slots are counted on each module's own RC clock. They are designed
+#: for clocks within +-CLOCK_SPREAD of nominal (the internal oscillator after
+#: factory calibration; the simulator tests them so): the guard covers a slow
+#: module in one slot running into a fast one in the next, at the last slot,
+#: where the drift is largest: guard (1 + s) >= 2 s (first + (slots - 1)
+#: (text + guard)), for version strings of up to 16 characters.
+CLOCK_SPREAD = 0.02
+_BOOT_TEXT_TICKS_MAX = ir_ticks(BOOT_TEXT_FIXED_BYTES + 16)
+BOOT_GUARD_TICKS = math.ceil(
+    2 * CLOCK_SPREAD * (BOOT_FIRST_SLOT_TICKS + (BOOT_SLOTS - 1) * _BOOT_TEXT_TICKS_MAX)
+    / (1 + CLOCK_SPREAD - 2 * CLOCK_SPREAD * (BOOT_SLOTS - 1))
 )
 
 

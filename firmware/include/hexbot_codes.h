@@ -4,8 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0xd39fc01bUL
-#define HB_SCHEMA_HASH_TEXT "d39fc01b"
+#define HB_SCHEMA_HASH 0x4584a85cUL
+#define HB_SCHEMA_HASH_TEXT "4584a85c"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */
@@ -52,7 +52,7 @@
  * HB_BOOT_TEXT_FIXED_BYTES + the length of the version string. */
 #define HB_BOOT_SLOTS       8u
 #define HB_BOOT_FIRST_SLOT_TICKS 200u
-#define HB_BOOT_GUARD_TICKS 5u
+#define HB_BOOT_GUARD_TICKS 123u
 #define HB_BOOT_TEXT_FIXED_BYTES 71u
 #define HB_BOOT_SLOT_TICKS(text_bytes) (HB_IR_TICKS(text_bytes) + HB_BOOT_GUARD_TICKS)
 /* Localization (code 66) */

@@ -143,6 +143,7 @@ static int boundary(cluster_t *c)
 						s->log[s->notified_pos].end <= c->cycle) {
 					s->notified_pos++;
 					news = 1;
+					m->changed = 1;
 				}
 			}
 			if (s->log_len > 256)

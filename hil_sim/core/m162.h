@@ -117,7 +117,7 @@ typedef struct m162_clock_t {
 typedef struct m162_t {
 	struct mcu_t mcu; /* our core (unused when running a stock simavr core) */
 	m162_clock_t clock;
-	int changed;        /* new pin-log records or watched bytes since the last look */
+	int changed;        /* new pin-log records or finished watched bytes since the last look */
 	uint64_t prescaler_base[2]; /* cycle the prescalers of timers 0/1/3 and 2 restarted */
 	uint8_t level_armed; /* INT0/INT1 enabled with low-level sense (bit per INT) */
 	avr_io_t fixup_io;  /* reset hook that runs after every simavr module */

@@ -67,8 +67,6 @@ void m162_usart_log(m162_usart_t *s, m162_txrec_t rec)
 {
 	if (!s->keep_log)
 		return;
-	if (s->watched)
-		s->mcu->changed = 1;
 	if (s->log_len == s->log_cap) {
 		size_t cap = s->log_cap ? s->log_cap * 2 : 64;
 		m162_txrec_t *n = realloc(s->log, cap * sizeof *n);

@@ -76,8 +76,10 @@ def listening(bench: Bench) -> list[str]:
 
 
 def test_boot_texts_are_out_by_boot_seconds_and_not_long_before(images, tmp_path):
+    # id 4's text ends one guard before its slot does
+    early = timing.BOOT_GUARD_TICKS * timing.TICK_S + 0.3
     bench = Bench.boot(scenario_file(tmp_path, [(3, (0, 0), 0), (4, (1, 0), 0)]),
-                       boot_s=timing.boot_seconds([3, 4]) - 0.3)
+                       boot_s=timing.boot_seconds([3, 4]) - early)
     assert listening(bench) == ["ID=03 FW=0.1.0"]  # id 4's slot is not over yet
-    bench.run(0.3)
+    bench.run(early)
     assert listening(bench) == ["ID=03 FW=0.1.0", "ID=04 FW=0.1.0"]

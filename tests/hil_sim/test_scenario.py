@@ -69,7 +69,9 @@ def test_full_file(tmp_path):
         ("byte_loss = 0.1", "byte_loss = 2", 6, "probability"),
         ("base = 1", "base = 5", 3, "base = 5 is not the id"),
         ("orientation = 3", "orientation = 3\ncolour = 1", 21, "unknown key 'colour'"),
-        ("id = 2\n", "id = 64\n", 18, "outside 1..63"),
+        ("id = 2\n", "id = 256\n", 18, "outside 1..255"),
+        ("id = 2\n", "id = 2\nclock_ppm = 60000\n", 19, "beyond +-50000 ppm"),
+        ("seed = ", "clock_spread_ppm = -5\nseed = ", 2, "must not be negative"),
     ],
 )
 def test_semantic_errors_name_file_line_problem(tmp_path, old, new, line, problem):

@@ -52,8 +52,17 @@ def test_boot_slot_holds_the_slot_text():
             + wire.TEXT_CTR_LISTENING.encode() + wire.EOL
             + f"{wire.TEXT_COMM_LISTENING} ID={ident} FW=0.1.0".encode() + wire.EOL)
     assert timing.BOOT_TEXT_FIXED_BYTES + len("0.1.0") == len(text)
-    assert timing.boot_slot_ticks("0.1.0") == 264  # docs/firmware.md: 2.64 s
-    assert timing.boot_slot_ticks("0.1.10") == timing.ir_ticks(len(text) + 1) + 5
+    assert timing.boot_slot_ticks("0.1.0") == 382  # docs/firmware.md: 3.82 s
+    guard = timing.BOOT_GUARD_TICKS
+    assert timing.boot_slot_ticks("0.1.10") == timing.ir_ticks(len(text) + 1) + guard
+
+
+def test_boot_guard_covers_the_clock_spread_at_the_last_slot():
+    """A slow module's text in slot 6 ends before a fast module's slot 7 starts."""
+    s, slot = timing.CLOCK_SPREAD, timing.boot_slot_ticks("0.1.0-rc1+build")  # 15 characters
+    last_start = timing.BOOT_FIRST_SLOT_TICKS + (timing.BOOT_SLOTS - 1) * slot
+    previous_text_end = last_start - timing.BOOT_GUARD_TICKS
+    assert previous_text_end * (1 + s) <= last_start * (1 - s)
 
 
 def test_boot_seconds_is_the_end_of_the_last_slot_used():
