@@ -1,126 +1,117 @@
-"""``hexbot bench sim``: simulator throughput, measured now on this machine.
+"""``hexbot bench sim``: simulator throughput by cluster size, measured now.
 
-    hexbot bench sim --json [--seconds S]
+    hexbot bench sim [--json] [--sizes 7,50,200,255] [--seconds S] [--repeat N]
 
-Cases (the real firmware images, the whole Python loop: IR medium, plant,
-pin logs):
-  idle-1   the ``single`` scenario, after boot;
-  idle-7   ``flower7``, after boot;
-  idle-50  50 modules in a hexagonal patch, after boot;
-  busy-7   ``flower7`` while the PC runs a localization and rotation script
-           (about 45 simulated seconds, whatever --seconds says).
-Reference: raw simavr (its own run loop, stock atmega128 core) on one MCU in
-a CPU-bound loop, measured in the same run (bench/raw_simavr.c).
+For each size N, a generated blob of N modules (``blob:N``, the real
+firmware images, the whole Python loop: IR medium, plant, pin logs):
+  idle   after boot, --seconds of nothing but the 10 ms ticks;
+  boot   from reset to the end of the last boot slot;
+  wave   the localization wave: module 1 is made the reference, everyone is
+         selected, Localize is sent and the flood window runs
+         (LOCALIZE_WINDOW_S; the reports that follow are not timed);
+  busy   2N MCUs of a CPU-bound loop (tests/hil_sim/avr/cpuloop.c) in the
+         same scheduler: per-MCU cycles per second against raw simavr.
+Reference: raw simavr (its own run loop, stock atmega128 core) on one MCU
+in the same CPU-bound loop, measured in the same run (bench/raw_simavr.c).
+Each case is the best of --repeat runs (the machine is shared); the peak
+resident memory of the process is read after each size. One thread.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import resource
 import time
-from collections.abc import Callable
 
 from hexbot.bench.raw import avr_program, raw_simavr_seconds
 from hexbot.errors import HexBotError
-from hexbot.hil_sim.geometry import Cell, neighbor
-from hexbot.hil_sim.scenario import ModuleSpec, Scenario, load_scenario
+from hexbot.hil_sim.scenario_gen import generate
 from hexbot.hil_sim.simulator import Simulator
-from hexbot.protocol.timing import BOOT_SLOTS, boot_seconds
+from hexbot.protocol.frames import encode_pc, make, select
+from hexbot.protocol.timing import LOCALIZE_WINDOW_S, boot_seconds
 
-BOOT_S = boot_seconds(range(1, BOOT_SLOTS + 1))  # simulated boot (every boot slot), excluded
+BUSY_CYCLES = 100_000  # per MCU, for the CPU-bound case
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument("--sizes", default="7,50,200,255",
+                        help="cluster sizes, comma-separated (default 7,50,200,255)")
     parser.add_argument(
-        "--seconds", type=float, default=10.0, help="simulated seconds per idle case (default 10)"
+        "--seconds", type=float, default=10.0, help="simulated seconds of idle (default 10)"
     )
     parser.add_argument(
-        "--repeat", type=int, default=3, help="runs per case; the best counts (default 3)"
+        "--repeat", type=int, default=1, help="runs per case; the best counts (default 1)"
     )
 
 
-def patch_scenario(count: int) -> Scenario:
-    """``count`` modules filling hexagonal rings around the origin, module 1 at the centre."""
-    template = load_scenario("single").modules[0]
-    cells: list[Cell] = [(0, 0)]
-    ring = 1
-    while len(cells) < count:
-        cell = (ring, 0)  # walk ring r: start r steps along side 3, then turn
-        for side in (5, 6, 1, 2, 3, 4):
-            for _ in range(ring):
-                cell = neighbor(cell, side)
-                cells.append(cell)
-        ring += 1
-    modules = [
-        ModuleSpec(i, cell, 0, template.firmware, 0) for i, cell in enumerate(cells[:count], 1)
-    ]
-    return Scenario(f"patch{count}", modules, base=1, seed=1)
+def _timed(sim: Simulator, action) -> tuple[float, float]:
+    """(simulated seconds, wall seconds) of ``action(sim)``."""
+    start_cycle, t0 = sim.cycle, time.perf_counter()
+    action(sim)
+    return (sim.cycle - start_cycle) / sim.hz, time.perf_counter() - t0
 
 
-def _measure(sim: Simulator, seconds: float, script: Callable[[Simulator], None] | None) -> dict:
-    mcus = 2 * len(sim.modules)
-    start_cycle = sim.cycle
+def _rates(mcus: int, simulated: float, wall: float, hz: int) -> dict:
+    return {"realtime_factor": round(simulated / wall, 2),
+            "cycles_per_s": round(simulated * hz * mcus / wall),
+            "simulated_s": round(simulated, 2), "wall_s": round(wall, 3)}
+
+
+def _start_wave(sim: Simulator) -> None:
+    """Reference on module 1, everyone selected; the ACKs of Select(0) are not awaited."""
+    sim.pc_write(encode_pc(select([1])))
+    sim.expect(b"M01: ACKE", timeout=10.0)
+    sim.pc_write(encode_pc(make("Ref")))
+    sim.expect(b"S01: ACKA", timeout=10.0)
+    sim.pc_write(encode_pc(select([0])))
+    sim.run(1.0)
+    sim.pc_write(encode_pc(make("Localize")))
+
+
+def measure_size(count: int, seconds: float, busy_elf: str) -> dict:
+    ids = range(1, count + 1)
+    mcus = 2 * count
+    sim = Simulator(generate("blob", count, seed=1))
+    boot = _rates(mcus, *_timed(sim, lambda s: s.run(boot_seconds(ids))), sim.hz)
+    idle = _rates(mcus, *_timed(sim, lambda s: s.run(seconds)), sim.hz)
+    _start_wave(sim)
+    wave = _rates(mcus, *_timed(sim, lambda s: s.run(LOCALIZE_WINDOW_S)), sim.hz)
+    cluster = type(sim.cluster)(sim.cluster.quantum_cycles)
+    for i in range(mcus):
+        cluster.add_mcu(busy_elf, f"busy{i}")
     t0 = time.perf_counter()
-    if script is None:
-        sim.run(seconds)
-    else:
-        script(sim)
-        remaining = seconds - (sim.cycle - start_cycle) / sim.hz
-        if remaining > 0:
-            sim.run(remaining)
-    wall = time.perf_counter() - t0
-    simulated = (sim.cycle - start_cycle) / sim.hz
-    return {
-        "sim_seconds_per_wall_second": round(simulated / wall, 2),
-        "cycles_per_wall_second": round(simulated * sim.hz * mcus / wall),
-    }
+    cluster.run(BUSY_CYCLES)
+    busy_wall = time.perf_counter() - t0
+    return {"modules": count, "mcus": mcus, "quantum_cycles": sim.cluster.quantum_cycles,
+            "threads": 1, "boot": boot, "idle": idle, "wave": wave,
+            "busy": {"cycles_per_mcu_per_s": round(BUSY_CYCLES / busy_wall * mcus),
+                     "wall_s": round(busy_wall, 3)},
+            "peak_rss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)}
 
 
-def localize_and_rotate(sim: Simulator) -> None:
-    """Ref on module 1, Localize everyone, then a CW rotation of module 2 about module 1.
-
-    Each step waits for the last acknowledgement it causes, as a PC would.
-    """
-    from hexbot.protocol.frames import encode_pc, make, select
-
-    last = f"M{max(sim.modules):02d}: ACK".encode()
-    script = [
-        (select([1]), b"M01: ACKE"),
-        (make("Ref"), b"S01: ACKA"),
-        (select([0]), last + b"E"),
-        (make("Localize"), last + b"B"),
-        (select([1, 2]), b"M02: ACKE"),
-        (make("CW", 4, 8, 4, 9, 4, 8, 4, 9), b"M02: ACKC"),
-    ]
-    for command, reply in script:
-        sim.pc_write(encode_pc(command))
-        sim.expect(reply, timeout=60.0)
+def _best(runs: list[dict]) -> dict:
+    best = dict(runs[0])
+    for case in ("boot", "idle", "wave"):
+        best[case] = max((r[case] for r in runs), key=lambda c: c["realtime_factor"])
+    best["busy"] = max((r["busy"] for r in runs), key=lambda c: c["cycles_per_mcu_per_s"])
+    best["peak_rss_mb"] = max(r["peak_rss_mb"] for r in runs)
+    return best
 
 
-def raw_reference(seconds: float, repeat: int = 3) -> int:
-    elf = avr_program("cpuloop", "atmega128")
-    cycles = round(seconds * 1_000_000)
-    best = min(raw_simavr_seconds(elf, "atmega128", cycles) for _ in range(max(repeat, 1)))
-    return round(cycles / best)
-
-
-def measure(seconds: float, repeat: int = 3) -> dict:
-    cases = []
-    for name, make_scenario, script in (
-        ("idle-1", lambda: load_scenario("single"), None),
-        ("idle-7", lambda: load_scenario("flower7"), None),
-        ("idle-50", lambda: patch_scenario(50), None),
-        ("busy-7", lambda: load_scenario("flower7"), localize_and_rotate),
-    ):
-        runs = []
-        for _ in range(repeat):
-            sim = Simulator(make_scenario())
-            sim.run(BOOT_S)
-            runs.append(_measure(sim, seconds, script))
-        best = max(runs, key=lambda r: r["cycles_per_wall_second"])
-        cases.append({"name": name, **best})
-    return {"raw_simavr_cycles_per_wall_second": raw_reference(2.0, repeat), "cases": cases}
+def measure(sizes: list[int], seconds: float, repeat: int = 1) -> dict:
+    busy162, busy128 = avr_program("cpuloop", "atmega162"), avr_program("cpuloop", "atmega128")
+    raw_cycles = 20_000_000
+    raw = round(raw_cycles / min(raw_simavr_seconds(busy128, "atmega128", raw_cycles)
+                                 for _ in range(repeat)))
+    results = []
+    for count in sizes:
+        best = _best([measure_size(count, seconds, busy162) for _ in range(repeat)])
+        # per-MCU cycles on one core, against raw simavr's one MCU
+        best["busy"]["vs_raw"] = round(best["busy"]["cycles_per_mcu_per_s"] / raw, 3)
+        results.append(best)
+    return {"raw_simavr_cycles_per_s": raw, "sizes": results}
 
 
 def run(args: argparse.Namespace) -> int:
@@ -128,12 +119,19 @@ def run(args: argparse.Namespace) -> int:
         raise HexBotError(f"--seconds must be positive, not {args.seconds}")
     if args.repeat < 1:
         raise HexBotError(f"--repeat must be at least 1, not {args.repeat}")
-    result = measure(args.seconds, args.repeat)
+    try:
+        sizes = [int(s) for s in args.sizes.split(",")]
+    except ValueError:
+        raise HexBotError(
+            f"--sizes takes numbers separated by commas, not {args.sizes!r}") from None
+    result = measure(sizes, args.seconds, args.repeat)
     if args.json:
         print(json.dumps(result))
         return 0
-    print(f"raw simavr: {result['raw_simavr_cycles_per_wall_second']:,} cycles/s (1 MCU)")
-    for case in result["cases"]:
-        print(f"{case['name']:8} {case['sim_seconds_per_wall_second']:8.2f} x real time  "
-              f"{case['cycles_per_wall_second']:>14,} cycles/s")
+    print(f"raw simavr: {result['raw_simavr_cycles_per_s']:,} cycles/s (1 MCU)")
+    print("modules  idle x  boot x  wave x  busy/MCU vs raw  peak MB")
+    for r in result["sizes"]:
+        print(f"{r['modules']:7} {r['idle']['realtime_factor']:7.1f} "
+              f"{r['boot']['realtime_factor']:7.1f} {r['wave']['realtime_factor']:7.1f} "
+              f"{r['busy']['vs_raw']:16.3f} {r['peak_rss_mb']:8}")
     return 0

@@ -4,6 +4,9 @@
  * handler or the main loop) calls ring_put, exactly one consumer calls
  * ring_get. Head and tail are single bytes, so each side reads the other's
  * index atomically; no locking is needed. RING_SIZE must be a power of two.
+ * A compiler barrier orders the data access before the index is published
+ * (the AVR has no memory reordering, but gcc may move a non-volatile store
+ * past a volatile one).
  */
 #ifndef RING_H
 #define RING_H
@@ -12,6 +15,7 @@
 
 #define RING_SIZE 32u
 #define RING_MASK (RING_SIZE - 1u)
+#define RING_BARRIER() __asm__ __volatile__("" ::: "memory")
 
 typedef struct {
     volatile uint8_t head; /* next slot the producer writes */
@@ -37,6 +41,7 @@ static inline uint8_t ring_put(ring_t *r, uint8_t b)
     if (next == r->tail)
         return 0;
     r->data[h] = b;
+    RING_BARRIER(); /* the byte is in place before the consumer can see it */
     r->head = next;
     return 1;
 }
@@ -48,6 +53,7 @@ static inline int16_t ring_get(ring_t *r)
     if (t == r->head)
         return -1;
     uint8_t b = r->data[t];
+    RING_BARRIER(); /* read the byte before handing its slot back */
     r->tail = (uint8_t)(t + 1u) & RING_MASK;
     return b;
 }
