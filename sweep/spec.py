@@ -90,7 +90,7 @@ def _resolve(spec_path: Path, param: Param, value: Any) -> Any:
     return value
 
 
-_TOML_LINE = re.compile(r"\(at line (\d+), column \d+\)")
+_TOML_LINE = re.compile(r"\((?:at line (\d+), column \d+|at end of document)\)")
 
 
 def load_spec(path: str | Path) -> Spec:
@@ -104,7 +104,8 @@ def load_spec(path: str | Path) -> Spec:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
         m = _TOML_LINE.search(str(exc))
-        where = f"{path}:{m.group(1)}" if m else str(path)
+        line = (m.group(1) or len(text.splitlines())) if m else None
+        where = f"{path}:{line}" if line else str(path)
         raise ScenarioError(f"{where}: {_TOML_LINE.sub('', str(exc)).strip()}") from exc
     return parse_spec(data, text, path)
 
