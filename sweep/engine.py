@@ -86,6 +86,7 @@ def connect(scheduler: str | None = None, workers: int | None = None) -> Iterato
     # loopback only; the scheduler's HTTP server (dashboard) on a free port, never 8787
     with LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
                       processes=True, host="127.0.0.1", dashboard_address="127.0.0.1:0",
+                      preload=["hexbot.sweep.worker_setup"],
                       silence_logs=logging.ERROR) as cluster, Client(cluster) as client:
         yield client
 
