@@ -30,7 +30,7 @@ def junit_xml(rows: list[dict]) -> ET.ElementTree:
                               time=f"{sum(r['seconds'] for r in cases):.3f}")
         for r in cases:
             firmware = r.get("firmware") or "default"
-            scenario = r.get("scenario") or "declared"
+            scenario = r.get("scenario_run") or r.get("scenario")
             case = ET.SubElement(suite, "testcase", classname=f"{firmware}.{scenario}",
                                  name=case_name(r), time=f"{r['seconds']:.3f}")
             if r["outcome"] != "ok":

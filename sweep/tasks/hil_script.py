@@ -65,7 +65,7 @@ def run(script: str, scenario: str | None, seed: int | None, firmware: str | Non
     add_port_arguments(parser, debug=False)
     args = parser.parse_args(["--port", sim_url(scenario, seed, 0.0, firmware), "--no-log"])
     log = io.StringIO()
-    figures: dict = {"steps": len(steps)}
+    figures: dict = {"scenario_run": scenario, "steps": len(steps)}
     with redirect_stderr(log):
         try:
             with session(args, verbose_states=False) as sess:
@@ -84,7 +84,7 @@ def run(script: str, scenario: str | None, seed: int | None, firmware: str | Non
 
 def summarize(rows: list[dict]) -> str:
     """One line per case, as a CI server lists them."""
-    body = [[r["script"], r.get("firmware") or "scenario's", r.get("scenario") or "declared",
+    body = [[r["script"], r.get("firmware") or "scenario's", r.get("scenario_run"),
              r.get("seed"), r.get("result") or r["outcome"],
              f"{r.get('steps_passed') or 0}/{r.get('steps') or '?'}", r.get("sim_seconds"),
              r["seconds"]]

@@ -66,7 +66,7 @@ seed = [1, 2]
     assert suite.get("name") == "pair_rotate.hbs"
     assert (suite.get("tests"), suite.get("failures"), suite.get("errors")) == ("4", "2", "0")
     failed = [c for c in suite.iter("testcase") if c.find("failure") is not None]
-    assert {c.get("classname") for c in failed} == {"broken-build.declared"}
+    assert {c.get("classname") for c in failed} == {"broken-build.pair"}
     assert "no reply from module 1" in failed[0].find("failure").get("message")
     assert "JUnit:" in capsys.readouterr().err
 
