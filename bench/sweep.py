@@ -70,6 +70,8 @@ def timed_sweep(folder: Path, text: str, workers: int) -> dict:
     return {"workers": workers, "tasks": outcome.total,
             "cluster_start_s": round(started - start, 2), "wall_s": round(wall, 3),
             "task_s": round(task_s, 3),
+            # how much of the workers' wall time went into tasks (1.0: never idle)
+            "busy_fraction": round(task_s / (wall * workers), 3),
             "overhead_ms_per_task": round(1000 * (wall * workers - task_s) / outcome.total, 2)}
 
 

@@ -12,7 +12,7 @@ from pathlib import Path
 
 from hexbot.errors import HexBotError
 from hexbot.extras import require
-from hexbot.sweep.kinds import BUILTIN, load_kind
+from hexbot.sweep.kinds import load_kind, registered
 from hexbot.sweep.results import read_table, table_meta
 from hexbot.sweep.summary import OUTCOMES, generic, group_keys
 
@@ -28,8 +28,9 @@ def load_rows(folder: str | Path) -> tuple[str, list[str], list[dict]]:
 
 
 def _own_summary(kind: str):
-    """The kind's summarize(), for built-in kinds (a custom kind's module may be absent)."""
-    if kind not in BUILTIN:
+    """The kind's summarize() and COUNT_BY, for registered kinds (a dotted-path
+    kind's module may be absent where the report runs)."""
+    if kind not in registered():
         return None, None
     k = load_kind(kind, check_ready=False)  # reading rows needs no trial function
     return k.summarize, k.count_by
