@@ -2,6 +2,7 @@
 #
 #   make run    set up, then open the console on the embedded simulated cluster
 #   make test   set up, then lint, check firmware budgets and run the test suite
+#               (pytest-xdist: one test process per core; tests share no ports or files)
 #
 # Sub-steps: deps (Debian packages), venv (.venv + pip install -e .[dev]; dev
 # brings the test tools and the plot extra, so the drawing tests run),

@@ -1,6 +1,6 @@
 """Build script: maps the top-level folders onto the ``hexbot`` package.
 
-The folders (protocol/, host/, hil_sim/, planning/, bench/) show the architecture;
+The folders (protocol/, host/, hil_sim/, planning/, bench/, sweep/) show the architecture;
 they import as ``hexbot.<folder>``. Package metadata lives in pyproject.toml.
 """
 
@@ -17,6 +17,7 @@ ROOTS = {
     "hexbot.hil_sim": "hil_sim",
     "hexbot.planning": "planning",
     "hexbot.bench": "bench",
+    "hexbot.sweep": "sweep",
 }
 
 

@@ -24,6 +24,7 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
         "hexbot.bench.pyramid_search",
         "random symmetric staircases against Table 2 of the locomotion thesis (JSON)",
     ),
+    "sweep": ("hexbot.bench.sweep", "sweep engine on Dask: 2-vs-1 worker speed-up, per-task cost"),
 }
 
 

@@ -152,19 +152,26 @@ def run(args: argparse.Namespace) -> int:
         for r in rows:
             print(json.dumps(r))
         return 0
-    print("| case | modules | method | reached | time (s) | moves | move bound | ratio "
-          "| steps | step bound | ratio |")
-    print("|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|")
-    for r in rows:
-        print(f"| {r['family']} | {r['modules']} | {r['method'] or '-'} | "
-              f"{'yes' if r['reached'] else 'no'} | {r['seconds']:.3f} | {r['moves']} | "
-              f"{r['move_lower_bound']} | {ratio(r['moves'], r['move_lower_bound'])} | "
-              f"{r['time_steps']} | {r['step_lower_bound']} | "
-              f"{ratio(r['time_steps'], r['step_lower_bound'])} |")
+    print(markdown_table(rows))
     failed = [r for r in rows if not r["reached"] and "faithful" not in r["family"]]
     for r in failed:
         print(f"\n{r['family']} ({r['modules']}): {r['reason']}")
     return 0
+
+
+def markdown_table(rows: list[dict]) -> str:
+    """The table of docs/planning.md (also printed by ``hexbot sweep report``)."""
+    lines = ["| case | modules | method | reached | time (s) | moves | move bound | ratio "
+             "| steps | step bound | ratio |",
+             "|---|---:|---|---|---:|---:|---:|---:|---:|---:|---:|"]
+    for r in rows:
+        lines.append(
+            f"| {r['family']} | {r['modules']} | {r['method'] or '-'} | "
+            f"{'yes' if r['reached'] else 'no'} | {r['seconds']:.3f} | {r['moves']} | "
+            f"{r['move_lower_bound']} | {ratio(r['moves'], r['move_lower_bound'])} | "
+            f"{r['time_steps']} | {r['step_lower_bound']} | "
+            f"{ratio(r['time_steps'], r['step_lower_bound'])} |")
+    return "\n".join(lines)
 
 
 def ratio(value: int, bound: int | None) -> str:

@@ -36,6 +36,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "square-lattice locomotion rule engine (Salvador, Otero rule sets)",
     ),
     "plan": ("hexbot.planning.cli_plan", "plan a hex reconfiguration (thesis or robust planner)"),
+    "sweep": ("hexbot.sweep.cli", "run a sweep file on Dask (`sweep report RESULTS`: its tables)"),
 }
 
 

@@ -36,7 +36,7 @@ from __future__ import annotations
 import random
 import re
 import tomllib
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from importlib import resources
 from pathlib import Path
 from typing import Any
@@ -44,6 +44,7 @@ from typing import Any
 from hexbot.errors import ScenarioError
 from hexbot.protocol.pins import DIP_SWITCHES
 from hexbot.protocol.timing import CLOCK_TOLERANCE
+from hexbot.toml_lines import TomlLines as _Lines
 
 from .geometry import Cell
 
@@ -121,6 +122,12 @@ class Scenario:
     def where(self, line: int) -> str:
         return f"{self.path or self.name}:{line}"
 
+    def with_firmware(self, folder: Path) -> Scenario:
+        """The same cluster with every module on ``folder``'s comm.elf and
+        control.elf: one firmware build against another on the same scenario."""
+        images = Firmware(Path(folder) / "comm.elf", Path(folder) / "control.elf")
+        return replace(self, modules=[replace(m, firmware=images) for m in self.modules])
+
 
 def default_firmware_dir() -> Path:
     """firmware/build of the source tree this package runs from."""
@@ -151,38 +158,6 @@ def load_scenario(source: str | Path) -> Scenario:
         names = ", ".join(builtin_names())
         raise ScenarioError(f"unknown scenario {text_source!r}: built-in ones are {names}")
     return parse_scenario(candidate.read_text(encoding="utf-8"), Path(str(candidate)))
-
-
-class _Lines:
-    """Finds the line of a key inside a table of the TOML text (tomllib has no positions)."""
-
-    _header = re.compile(r"^\s*(\[\[?)\s*([A-Za-z0-9_.\"-]+)\s*\]\]?")
-    _key = re.compile(r"^\s*([A-Za-z0-9_-]+)\s*=")
-
-    def __init__(self, text: str) -> None:
-        # (table name, array index or -1) -> {key: line}, plus the header line under key ""
-        self.tables: dict[tuple[str, int], dict[str, int]] = {("", -1): {"": 1}}
-        counts: dict[str, int] = {}
-        current = ("", -1)
-        for number, raw in enumerate(text.splitlines(), start=1):
-            line = raw.split("#", 1)[0] if '"' not in raw else raw
-            header = self._header.match(line)
-            if header:
-                name = header.group(2)
-                if header.group(1) == "[[":
-                    counts[name] = counts.get(name, -1) + 1
-                    current = (name, counts[name])
-                else:
-                    current = (name, -1)
-                self.tables.setdefault(current, {})[""] = number
-                continue
-            key = self._key.match(line)
-            if key:
-                self.tables.setdefault(current, {}).setdefault(key.group(1), number)
-
-    def find(self, table: str = "", index: int = -1, key: str = "") -> int:
-        entries = self.tables.get((table, index)) or self.tables[("", -1)]
-        return entries.get(key, entries.get("", 1))
 
 
 def parse_scenario(text: str, path: Path) -> Scenario:

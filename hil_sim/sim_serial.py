@@ -6,13 +6,15 @@ opens a simulated cluster in this process and returns a port on the PC's
 IR transceiver, exactly as ``/dev/ttyUSB0`` would be on hardware (register
 the URL scheme first: :func:`hexbot.hil_sim.urlhandler.register`). URL forms:
 
-``hexbot-sim://SCENARIO[?seed=N][&speed=X]``
+``hexbot-sim://SCENARIO[?seed=N][&speed=X][&firmware=DIR]``
     a new cluster of a built-in scenario or a TOML file
     (``hexbot-sim:///abs/path.toml``). ``speed=0`` is *stepped*: virtual
     time advances only while someone waits for bytes (``read`` with a
     time-out, counted in simulated seconds) or calls ``hexbot_sim.advance``,
     so the same calls give the same trace. ``speed=N`` (default 1) runs the
-    cluster on its own thread at N times real time.
+    cluster on its own thread at N times real time. ``firmware=DIR`` runs
+    every module on DIR's comm.elf and control.elf instead of the
+    scenario's images (a regression matrix over firmware builds).
 ``hexbot-sim://@INSTANCE/uart1/ID``
     module ID's control-board debug port (UART1, 4800 baud) on a cluster
     this process already opened (``hexbot_sim.uart1_url(ID)`` makes it).
@@ -32,6 +34,7 @@ import threading
 import time
 import weakref
 from collections.abc import Callable
+from pathlib import Path
 from urllib.parse import parse_qs, urlsplit
 
 from serial.serialutil import PortNotOpenError, SerialBase, SerialException
@@ -49,12 +52,16 @@ class SimCluster:
     """One simulated cluster shared by the ports opened on it; implements
     :class:`~hexbot.protocol.simulation.SimulatorAccess`."""
 
-    def __init__(self, scenario: str, seed: int | None, speed: float) -> None:
+    def __init__(self, scenario: str, seed: int | None, speed: float,
+                 firmware: str | None = None) -> None:
         from hexbot.hil_sim import Simulator, load_scenario
 
         if speed < 0:
             raise HexBotError(f"speed must be 0 or more, not {speed:g}")
-        self.simulator = Simulator(load_scenario(scenario), seed)
+        spec = load_scenario(scenario)
+        if firmware:
+            spec = spec.with_firmware(Path(firmware))
+        self.simulator = Simulator(spec, seed)
         self.scenario = scenario
         self.seed = self.simulator.seed
         self.base = self.simulator.scenario.base
@@ -222,17 +229,17 @@ def _attach(url: str) -> tuple[SimCluster, int | None, bool]:
     if not target:
         raise SerialException(f"{url}: name a scenario, e.g. {SCHEME}://flower7?speed=0")
     options = {k: v[-1] for k, v in parse_qs(parts.query, keep_blank_values=True).items()}
-    unknown = set(options) - {"seed", "speed"}
+    unknown = set(options) - {"seed", "speed", "firmware"}
     if unknown:
         raise SerialException(f"{url}: unknown option(s) {', '.join(sorted(unknown))} "
-                              "(seed, speed)")
+                              "(seed, speed, firmware)")
     try:
         seed = int(options["seed"]) if "seed" in options else None
         speed = float(options.get("speed", "1"))
     except ValueError as exc:
         raise SerialException(f"{url}: seed must be an integer and speed a number") from exc
     try:
-        return SimCluster(target, seed, speed), None, True
+        return SimCluster(target, seed, speed, options.get("firmware")), None, True
     except HexBotError as exc:  # bad scenario, missing firmware or C extension
         raise SerialException(f"{url}: {exc}") from exc
 

@@ -32,7 +32,7 @@ def session(args: argparse.Namespace, *, wait_s: float = 5.0, verbose_states: bo
         sim = host.simulator
         sess = Session(host, sim.module_ids() if sim is not None else ())
         if sim is not None and wait_boot:
-            print(f"simulator: {ends.scenario}, waiting for the modules to boot",
+            print(f"simulator: {ends.scenario or ends.ir.url}, waiting for the modules to boot",
                   file=sys.stderr)
             sess.wait_booted(sim.module_ids())
         yield sess

@@ -13,6 +13,7 @@ import argparse
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
+from urllib.parse import quote
 
 from hexbot.errors import HexBotError
 from hexbot.host.events import Listener
@@ -66,11 +67,15 @@ class Endpoints:
         """Nothing to stop: an embedded simulator closes with its port."""
 
 
-def sim_url(scenario: str, seed: int | None = None, speed: float = 0.0) -> str:
-    """The ``hexbot-sim://`` URL of a scenario (a built-in name or a TOML file)."""
+def sim_url(scenario: str, seed: int | None = None, speed: float = 0.0,
+            firmware: str | Path | None = None) -> str:
+    """The ``hexbot-sim://`` URL of a scenario (a built-in name or a TOML file),
+    optionally with every module on the images of the ``firmware`` folder."""
     path = Path(scenario)
     target = str(path.resolve()) if path.suffix == ".toml" or path.is_file() else scenario
     query = [f"speed={speed:g}"] + ([f"seed={seed}"] if seed is not None else [])
+    if firmware is not None:
+        query.append(f"firmware={quote(str(Path(firmware).resolve()))}")
     return f"hexbot-sim://{target}?{'&'.join(query)}"
 
 

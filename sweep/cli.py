@@ -1,0 +1,117 @@
+"""``hexbot sweep``: run a sweep file on Dask, or report on its results.
+
+    hexbot sweep docs/examples/sweep_locomotion.toml     # embedded cluster, a worker per core
+    hexbot sweep SPEC.toml --scheduler tcp://10.0.0.5:8786  # the same on a Dask cluster
+    hexbot sweep SPEC.toml --resume                      # only the tasks not in the table yet
+    hexbot sweep report sweep_locomotion.results [--plot outcomes.png]
+
+Exit status: 0 every task ok, 1 some task failed or was lost (the table
+says which), 130 interrupted (finished rows are kept; --resume goes on).
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+from pathlib import Path
+
+from hexbot.errors import CancelledError, HexBotError
+from hexbot.extras import require
+
+REPORT = "report"
+RUN_OPTIONS = ("out", "resume", "scheduler", "workers", "check", "no_progress")
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.formatter_class = argparse.RawDescriptionHelpFormatter
+    parser.epilog = __doc__.split("\n\n", 1)[1]
+    parser.add_argument("target", metavar="SPEC.toml | report",
+                        help="a sweep file to run, or the word 'report'")
+    parser.add_argument("results", nargs="?", metavar="RESULTS",
+                        help="report: the results folder of a sweep")
+    run = parser.add_argument_group("running a sweep")
+    run.add_argument("--out", type=Path, help="results folder (default: the file's 'output', "
+                     "else SPEC-NAME.results in the current folder)")
+    run.add_argument("--resume", action="store_true",
+                     help="keep the folder's rows and run only the missing tasks")
+    run.add_argument("--scheduler", metavar="tcp://HOST:8786",
+                     help="a running Dask scheduler (default: an embedded local cluster)")
+    run.add_argument("--workers", type=int, metavar="N",
+                     help="embedded cluster: worker processes (default: one per core)")
+    run.add_argument("--check", action="store_true",
+                     help="only check the sweep file and count its tasks")
+    run.add_argument("--no-progress", action="store_true", help="no progress bar")
+    rep = parser.add_argument_group("report")
+    rep.add_argument("--plot", metavar="FILE.png", help="also draw the outcomes per setting")
+
+
+def run(args: argparse.Namespace) -> int:
+    for module in ("pyarrow", "distributed"):
+        require(module, "sweep", "hexbot sweep")
+    if args.target == REPORT:
+        return _report(args)
+    if args.results or args.plot:
+        raise HexBotError("RESULTS and --plot belong to 'hexbot sweep report RESULTS'")
+    return _run(args)
+
+
+def _report(args: argparse.Namespace) -> int:
+    from hexbot.sweep.report import plot, report
+
+    given = [o for o in RUN_OPTIONS if getattr(args, o) not in (None, False)]
+    if given:
+        raise HexBotError(f"--{given[0].replace('_', '-')} is for running a sweep, not report")
+    if not args.results:
+        raise HexBotError("report needs the results folder: hexbot sweep report RESULTS")
+    print(report(args.results))
+    if args.plot:
+        print(f"plot: {plot(args.results, args.plot)}", file=sys.stderr)
+    return 0
+
+
+def _run(args: argparse.Namespace) -> int:
+    from hexbot.sweep.spec import load_spec
+
+    spec = load_spec(args.target)  # every error of the file, before anything runs
+    tasks = spec.tasks()
+    if args.workers is not None and (args.workers < 1 or args.scheduler):
+        raise HexBotError("--workers: a positive count, for the embedded cluster only")
+    out = args.out or spec.output or Path(f"{spec.path.stem}.results")
+    if args.check:
+        print(f"{spec.path}: kind {spec.kind.name}, {len(tasks)} tasks, results in {out}")
+        return 0
+    from hexbot.sweep.engine import connect, run_sweep
+    from hexbot.sweep.progress import SweepProgress
+    from hexbot.sweep.results import ResultStore
+
+    with ResultStore(out, spec.kind.name, spec.param_names) as store, \
+            connect(args.scheduler, args.workers) as client, \
+            SweepProgress(spec.path.name, not args.no_progress) as bar:
+        outcome = run_sweep(spec, client, store, resume=args.resume,
+                            on_start=bar.on_start, on_result=bar.on_result)
+    _write_junit(spec.kind.name, out)
+    done = outcome.skipped + outcome.stored
+    print(f"{out}: {done} of {outcome.total} tasks stored ({outcome.stored} by this run, "
+          f"{outcome.seconds:.1f} s), {outcome.failed} failed", file=sys.stderr)
+    if outcome.interrupted:
+        raise CancelledError(f"interrupted: {outcome.missing} tasks not run; "
+                             f"add --resume to run only them")
+    if outcome.lost:
+        raise HexBotError(f"{outcome.lost} tasks lost ({outcome.lost_reason}); "
+                          "--resume runs them again")
+    if outcome.failed:
+        print(f"{outcome.failed} tasks failed: hexbot sweep report {out}", file=sys.stderr)
+        return 1
+    return 0
+
+
+def _write_junit(kind: str, out: Path) -> None:
+    if kind != "hil-script":
+        return
+    from hexbot.sweep.junit import write_junit
+    from hexbot.sweep.results import read_table
+
+    table = read_table(out)
+    if table is not None:
+        print(f"JUnit: {write_junit(table.to_pylist(), out)}", file=sys.stderr)
+

@@ -1,0 +1,195 @@
+"""Sweep files: a task kind and its parameter grid, checked before anything runs.
+
+::
+
+    kind = "locomotion"                   # a built-in kind, or package.module:function
+    description = "Salvador's rules on random maps"
+    output = "salvador-random"            # optional; the --out folder, relative to this file
+
+    [grid]                                # one axis per list or range, scalars are fixed
+    ruleset = ["salvador", "otero"]
+    n = [5, 12, 20]
+    seed = { start = 0, stop = 300 }      # range(0, 300); optional step = K
+    rounds = 2500
+
+The tasks are every combination of the axes (the first axis varies
+slowest), each with the kind's defaults for what the grid leaves out. A
+task's id is a hash of its kind and parameters: the same task has the same
+id in every run, which is what ``--resume`` and a retried task rely on.
+
+Every error names the file and the line: tomllib's own for syntax, the
+key's line (found by :class:`~hexbot.toml_lines.TomlLines`) for the rest.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import itertools
+import json
+import re
+import tomllib
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from hexbot.errors import HexBotError, ScenarioError
+from hexbot.sweep.kinds import Kind, Param, load_kind
+from hexbot.toml_lines import TomlLines
+
+TOP_KEYS = {"kind", "description", "output", "grid"}
+RANGE_KEYS = {"start", "stop", "step"}
+
+
+@dataclass(frozen=True)
+class Task:
+    id: str
+    params: dict[str, Any]  # as written in the sweep file: the row's columns
+    call: dict[str, Any]  # what the kind's function gets (paths resolved)
+
+
+@dataclass
+class Spec:
+    path: Path
+    kind: Kind
+    description: str
+    output: Path | None
+    axes: dict[str, list[Any]]  # parameter -> its values (one value: fixed)
+
+    @property
+    def param_names(self) -> list[str]:
+        """The grid's parameters, then the kind's defaults the grid leaves out."""
+        return list(self.axes) + [n for n in self.kind.params or {} if n not in self.axes]
+
+    def tasks(self) -> list[Task]:
+        """Every task of the grid, in a fixed order."""
+        defaults: dict[str, Any] = {}
+        if self.kind.params:
+            defaults = {n: p.default for n, p in self.kind.params.items() if n not in self.axes}
+        out = []
+        for combo in itertools.product(*self.axes.values()):
+            params = {**dict(zip(self.axes, combo, strict=True)), **defaults}
+            out.append(Task(task_id(self.kind.name, params), params, self._call(params)))
+        return out
+
+    def _call(self, params: dict[str, Any]) -> dict[str, Any]:
+        if not self.kind.params:
+            return dict(params)
+        return {n: _resolve(self.path, self.kind.params[n], v) for n, v in params.items()}
+
+
+def task_id(kind: str, params: dict[str, Any]) -> str:
+    text = json.dumps({"kind": kind, "params": params}, sort_keys=True)
+    return hashlib.sha256(text.encode()).hexdigest()[:16]
+
+
+def _resolve(spec_path: Path, param: Param, value: Any) -> Any:
+    if param.path and isinstance(value, str):
+        candidate = spec_path.parent / value
+        if candidate.exists():
+            return str(candidate.resolve())
+    return value
+
+
+_TOML_LINE = re.compile(r"\((?:at line (\d+), column \d+|at end of document)\)")
+
+
+def load_spec(path: str | Path) -> Spec:
+    """Read and check a sweep file; ScenarioError ``file:line: problem``."""
+    path = Path(path)
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise ScenarioError(f"{path}: cannot read the sweep file ({exc.strerror})") from exc
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        m = _TOML_LINE.search(str(exc))
+        line = (m.group(1) or len(text.splitlines())) if m else None
+        where = f"{path}:{line}" if line else str(path)
+        raise ScenarioError(f"{where}: {_TOML_LINE.sub('', str(exc)).strip()}") from exc
+    return parse_spec(data, text, path)
+
+
+def parse_spec(data: dict[str, Any], text: str, path: Path) -> Spec:
+    lines = TomlLines(text)
+
+    def fail(line: int, problem: str) -> ScenarioError:
+        return ScenarioError(f"{path}:{line}: {problem}")
+
+    for key in sorted(set(data) - TOP_KEYS):
+        raise fail(lines.find("", -1, key), f"unknown key {key!r} (known: "
+                   f"{', '.join(sorted(TOP_KEYS))})")
+    kind_name = data.get("kind")
+    if not isinstance(kind_name, str):
+        raise fail(lines.find("", -1, "kind"), "kind must name a task kind, e.g. "
+                   'kind = "locomotion"')
+    try:
+        kind = load_kind(kind_name)
+    except HexBotError as exc:
+        raise fail(lines.find("", -1, "kind"), str(exc)) from exc
+    description = data.get("description", "")
+    if not isinstance(description, str):
+        raise fail(lines.find("", -1, "description"), "description must be a string")
+    output = data.get("output")
+    if output is not None and not isinstance(output, str):
+        raise fail(lines.find("", -1, "output"), "output must be a folder name (a string)")
+    grid = data.get("grid")
+    if not isinstance(grid, dict) or not grid:
+        raise fail(lines.find("grid"), "a sweep needs a [grid] table with the kind's parameters")
+
+    axes: dict[str, list[Any]] = {}
+    for name, raw in grid.items():
+        line = lines.find("grid", -1, name)
+        values = _values(raw, lambda problem, name=name, line=line:
+                         fail(line, f"{name}: {problem}"))
+        if kind.params is not None:
+            param = kind.params.get(name)
+            if param is None:
+                raise fail(line, f"kind {kind.name} has no parameter {name!r} (it takes "
+                           f"{', '.join(kind.params)})")
+            values = [_checked(param, v, path, lambda p, line=line: fail(line, p))
+                      for v in values]
+        axes[name] = values
+    if kind.params is not None:
+        missing = [n for n, p in kind.params.items() if p.required and n not in axes]
+        if missing:
+            raise fail(lines.find("grid"), f"kind {kind.name} needs {', '.join(missing)} "
+                       "in [grid]")
+    out = (path.parent / output) if output else None
+    return Spec(path, kind, description, out, axes)
+
+
+def _values(raw: Any, fail) -> list[Any]:
+    """An axis: a non-empty list, a range table, or one fixed value."""
+    if isinstance(raw, list):
+        if not raw:
+            raise fail("an empty list gives no tasks")
+        return raw
+    if isinstance(raw, dict):
+        unknown = set(raw) - RANGE_KEYS
+        if unknown or "stop" not in raw:
+            raise fail("a range is { start = A, stop = B } with optional step = K, "
+                       f"not {sorted(raw)}")
+        bounds = [raw.get("start", 0), raw["stop"], raw.get("step", 1)]
+        if not all(isinstance(b, int) and not isinstance(b, bool) for b in bounds):
+            raise fail("range bounds must be integers")
+        if bounds[2] < 1:
+            raise fail("range step must be at least 1")
+        values = list(range(*bounds))
+        if not values:
+            raise fail(f"range {bounds[0]}..{bounds[1]} is empty (stop must be above start)")
+        return values
+    return [raw]
+
+
+def _checked(param: Param, value: Any, spec_path: Path, fail) -> Any:
+    if param.type is float and isinstance(value, int) and not isinstance(value, bool):
+        value = float(value)
+    if not isinstance(value, param.type) or (param.type is int and isinstance(value, bool)):
+        raise fail(f"{param.name} must be {param.type.__name__}, not {value!r}")
+    if param.check is not None:
+        try:
+            param.check(_resolve(spec_path, param, value))
+        except HexBotError as exc:
+            raise fail(f"{param.name} = {value!r}: {exc}") from exc
+    return value

@@ -1,0 +1,89 @@
+"""Fixtures of the sweep tests: Dask clusters (embedded, and as separate processes)
+and small sweep files written into the test's own folder."""
+
+from __future__ import annotations
+
+import json
+import os
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import pytest
+
+DASK = Path(sys.executable).with_name("dask")
+
+
+@pytest.fixture(scope="session")
+def embedded_client():
+    """A client on an embedded LocalCluster of two worker processes (what
+    ``hexbot sweep`` starts by default), shared by the tests of one process."""
+    from hexbot.sweep.engine import connect
+
+    with connect(workers=2) as client:
+        yield client
+
+
+def _start(argv: list[str], log: Path) -> subprocess.Popen:
+    return subprocess.Popen(argv, stdout=log.open("w"), stderr=subprocess.STDOUT,
+                            start_new_session=True)
+
+
+def kill_group(proc: subprocess.Popen, sig: int = signal.SIGKILL) -> None:
+    """Signal the process and its children (a dask worker's nanny starts one)."""
+    try:
+        os.killpg(proc.pid, sig)
+    except ProcessLookupError:
+        pass  # the whole group is gone already
+
+
+def _stop(proc: subprocess.Popen) -> None:
+    kill_group(proc, signal.SIGTERM)
+    try:
+        proc.wait(10)
+    except subprocess.TimeoutExpired:
+        kill_group(proc)
+        proc.wait()
+    kill_group(proc)  # a child the leader left behind
+
+
+@pytest.fixture
+def dask_processes(tmp_path):
+    """``dask scheduler`` and two ``dask worker`` processes on 127.0.0.1 (ports
+    chosen by the OS); yields (scheduler address, worker processes); all killed after."""
+    info = tmp_path / "scheduler.json"
+    procs = [_start([str(DASK), "scheduler", "--host", "127.0.0.1", "--port", "0",
+                     "--no-dashboard", "--scheduler-file", str(info)],
+                    tmp_path / "scheduler.log")]
+    try:
+        deadline = time.monotonic() + 60
+        while not info.exists() or not info.read_text().strip():
+            assert procs[0].poll() is None, (tmp_path / "scheduler.log").read_text()
+            assert time.monotonic() < deadline, "the scheduler wrote no address"
+            time.sleep(0.1)
+        address = json.loads(info.read_text())["address"]
+        workers = [_start([str(DASK), "worker", address, "--nthreads", "1", "--no-dashboard",
+                           "--host", "127.0.0.1", "--local-directory", str(tmp_path / f"w{i}"),
+                           "--name", f"w{i}"], tmp_path / f"worker{i}.log")
+                   for i in range(2)]
+        procs += workers
+        from distributed import Client
+
+        with Client(address, timeout="30s") as client:
+            client.wait_for_workers(2, timeout=60)
+        yield address, workers
+    finally:
+        for proc in reversed(procs):
+            _stop(proc)
+
+
+@pytest.fixture
+def write_spec(tmp_path):
+    """``write_spec(text, name="sweep.toml")``: a sweep file in the test's folder."""
+    def write(text: str, name: str = "sweep.toml") -> Path:
+        path = tmp_path / name
+        path.write_text(text)
+        return path
+    return write

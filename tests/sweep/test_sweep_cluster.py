@@ -1,0 +1,99 @@
+"""A small sweep on the embedded cluster, on a scheduler and two workers started
+as separate processes, and in this process: the same rows everywhere."""
+
+from __future__ import annotations
+
+import pytest
+
+from hexbot.cli import main
+from hexbot.sweep.engine import execute, run_sweep
+from hexbot.sweep.results import ResultStore, read_table
+from hexbot.sweep.spec import load_spec
+from tests.sweep.conftest import kill_group
+
+SWEEP = """\
+kind = "locomotion"
+[grid]
+ruleset = ["salvador", "otero"]
+n = [5, 8]
+seed = { start = 0, stop = 2 }
+round_limit = 600
+"""
+TIMING = ("seconds",)  # the one column that may differ between runs
+
+
+def rows_of(folder) -> dict[str, dict]:
+    table = read_table(folder)
+    assert table is not None
+    return {r["task"]: {k: v for k, v in r.items() if k not in TIMING}
+            for r in table.to_pylist()}
+
+
+def test_embedded_and_separate_processes_give_the_same_rows(write_spec, tmp_path,
+                                                            dask_processes, capsys):
+    spec_path = write_spec(SWEEP)
+    address, _ = dask_processes
+    assert main(["sweep", str(spec_path), "--out", str(tmp_path / "local"),
+                 "--workers", "2", "--no-progress"]) == 0
+    assert main(["sweep", str(spec_path), "--out", str(tmp_path / "remote"),
+                 "--scheduler", address, "--no-progress"]) == 0
+    local, remote = rows_of(tmp_path / "local"), rows_of(tmp_path / "remote")
+    assert len(local) == 8 and local == remote
+    assert {r["result"] for r in local.values()} <= {"reached", "deadlock", "rounds-exhausted"}
+    assert all(r["outcome"] == "ok" for r in local.values())
+    # a task is pure: run here, in this process, it gives the same figures
+    spec = load_spec(spec_path)
+    for task in spec.tasks()[:2]:
+        here = execute(spec.kind.target, task.call)
+        del here["seconds"]
+        there = local[task.id]
+        assert {k: there[k] for k in here} == here
+
+
+def test_a_lost_worker_keeps_every_row_and_the_sweep_completes(write_spec, tmp_path,
+                                                               dask_processes):
+    from distributed import Client
+
+    address, workers = dask_processes
+    spec = load_spec(write_spec(SWEEP))
+    seen = []
+
+    def kill_one_worker_after_the_first_row(outcome: str) -> None:
+        seen.append(outcome)
+        if len(seen) == 1:
+            kill_group(workers[0])  # nanny and worker: its tasks move to the other one
+
+    with ResultStore(tmp_path / "out", spec.kind.name, spec.param_names) as store, \
+            Client(address, timeout="30s") as client:
+        outcome = run_sweep(spec, client, store, on_result=kill_one_worker_after_the_first_row)
+    assert workers[0].wait(10) is not None
+    assert outcome.stored == 8 and outcome.lost == 0
+    assert len(rows_of(tmp_path / "out")) == 8
+
+
+def test_an_unreachable_scheduler_is_exit_4(write_spec, tmp_path, capsys):
+    import socket
+
+    with socket.socket() as s:  # a port nobody listens on
+        s.bind(("127.0.0.1", 0))
+        port = s.getsockname()[1]
+    code = main(["sweep", str(write_spec(SWEEP)), "--out", str(tmp_path / "o"),
+                 "--scheduler", f"tcp://127.0.0.1:{port}", "--no-progress"])
+    assert code == 4
+    assert "cannot reach the Dask scheduler" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("resume", [False, True])
+def test_an_existing_results_folder_needs_resume(write_spec, tmp_path, embedded_client, resume):
+    spec = load_spec(write_spec(SWEEP))
+    with ResultStore(tmp_path / "out", spec.kind.name, spec.param_names) as store:
+        run_sweep(spec, embedded_client, store)
+    with ResultStore(tmp_path / "out", spec.kind.name, spec.param_names) as store:
+        if resume:
+            again = run_sweep(spec, embedded_client, store, resume=True)
+            assert (again.skipped, again.stored) == (8, 0)
+        else:
+            from hexbot.errors import HexBotError
+
+            with pytest.raises(HexBotError, match="already holds 8 rows: --resume"):
+                run_sweep(spec, embedded_client, store)

@@ -1,0 +1,87 @@
+"""Ctrl-C keeps every finished row; --resume runs only the missing tasks."""
+
+from __future__ import annotations
+
+import os
+import re
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+from hexbot.sweep.engine import run_sweep
+from hexbot.sweep.results import ResultStore, part_files, read_table
+from hexbot.sweep.spec import load_spec
+
+HEXBOT = Path(sys.executable).with_name("hexbot")
+
+
+def sweep_text(seeds: int) -> str:
+    return ("kind = \"locomotion\"\n[grid]\nruleset = \"salvador\"\nn = 5\n"
+            f"seed = {{ start = 0, stop = {seeds} }}\n")
+
+
+def seconds_by_task(folder: Path) -> dict[str, float]:
+    return {r["task"]: r["seconds"] for r in read_table(folder).to_pylist()}
+
+
+def test_an_interrupt_keeps_the_finished_rows_and_resume_runs_only_the_rest(
+        write_spec, tmp_path, embedded_client):
+    spec = load_spec(write_spec(sweep_text(10)))
+    out = tmp_path / "out"
+    seen = []
+
+    def interrupt_after_three(outcome: str) -> None:
+        seen.append(outcome)
+        if len(seen) == 3:
+            raise KeyboardInterrupt  # what Ctrl-C raises in the client
+
+    with ResultStore(out, spec.kind.name, spec.param_names) as store:
+        first = run_sweep(spec, embedded_client, store, on_result=interrupt_after_three,
+                          window=2)
+    assert first.interrupted
+    kept = seconds_by_task(out)
+    # the three taken back, and whatever else had finished by then (at most two in flight)
+    assert 3 <= len(kept) == first.stored <= 5
+    assert first.missing == 10 - len(kept)
+
+    with ResultStore(out, spec.kind.name, spec.param_names) as store:
+        second = run_sweep(spec, embedded_client, store, resume=True)
+    assert (second.skipped, second.stored, second.interrupted) == (len(kept), 10 - len(kept),
+                                                                   False)
+    after = seconds_by_task(out)
+    assert set(after) == {t.id for t in spec.tasks()}
+    assert {t: after[t] for t in kept} == kept  # not run again: the same rows
+    assert len(part_files(out)) == 1  # closing merged the parts
+
+
+def test_ctrl_c_on_the_command_exits_130_and_resume_completes(write_spec, tmp_path):
+    spec = write_spec(sweep_text(40))
+    out = tmp_path / "out"
+    argv = [str(HEXBOT), "sweep", str(spec), "--out", str(out), "--workers", "1"]
+    proc = subprocess.Popen(argv, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    try:
+        deadline = time.monotonic() + 120
+        while not part_files(out):  # rows are on disk: the sweep is under way
+            assert proc.poll() is None, proc.stderr.read()
+            assert time.monotonic() < deadline
+            time.sleep(0.05)
+        os.killpg(proc.pid, signal.SIGINT)  # a terminal's Ctrl-C reaches the whole group
+        err = proc.communicate(timeout=120)[1]
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    assert proc.returncode == 130, err
+    kept = seconds_by_task(out)
+    assert 0 < len(kept) < 40
+    assert f"interrupted: {40 - len(kept)} tasks not run; add --resume" in err
+    assert "Traceback" not in err
+
+    done = subprocess.run([*argv, "--resume", "--no-progress"], capture_output=True, text=True,
+                          timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert re.search(rf"40 of 40 tasks stored \({40 - len(kept)} by this run", done.stderr)
+    after = seconds_by_task(out)
+    assert len(after) == 40 and {t: after[t] for t in kept} == kept

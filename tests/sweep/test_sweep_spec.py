@@ -1,0 +1,98 @@
+"""Sweep files: the grid, the task ids, and every error with file:line before anything runs."""
+
+from __future__ import annotations
+
+import pytest
+
+from hexbot.cli import main
+from hexbot.errors import ScenarioError
+from hexbot.sweep.spec import load_spec
+
+LOCOMOTION = """\
+kind = "locomotion"
+[grid]
+ruleset = ["salvador", "otero"]
+n = [5, 12]
+seed = { start = 3, stop = 9, step = 2 }
+round_limit = 100
+"""
+
+
+def test_the_grid_is_every_combination_with_the_kinds_defaults(write_spec):
+    spec = load_spec(write_spec(LOCOMOTION))
+    tasks = spec.tasks()
+    assert len(tasks) == 2 * 2 * 3
+    assert [t.params["seed"] for t in tasks[:3]] == [3, 5, 7]  # the last axis varies fastest
+    first = tasks[0].params
+    assert first == {"ruleset": "salvador", "n": 5, "seed": 3, "round_limit": 100,
+                     "scenario": "random", "until_advance": None}
+    assert spec.param_names == list(first)
+
+
+def test_task_ids_depend_on_the_parameters_only(write_spec):
+    a = load_spec(write_spec(LOCOMOTION, "a.toml")).tasks()
+    reordered = LOCOMOTION.replace('["salvador", "otero"]', '["otero", "salvador"]')
+    b = load_spec(write_spec(reordered, "b.toml")).tasks()
+    assert {t.id for t in a} == {t.id for t in b}
+    assert len({t.id for t in a}) == len(a)
+    changed = load_spec(write_spec(LOCOMOTION.replace("100", "101"), "c.toml")).tasks()
+    assert not {t.id for t in a} & {t.id for t in changed}
+
+
+@pytest.mark.parametrize(("text", "line", "words"), [
+    ('kind = "locomotion"\n[grid]\nn = [5, 12\n', 3, "Unclosed array"),
+    ('kind = "locomotion"\n[grid]\nn = 5 6\nseed = 1\n', 3, "Expected newline"),
+    ('kind = "locomotion"\nfoo = 1\n[grid]\nruleset = "salvador"\n', 2, "unknown key 'foo'"),
+    ('kind = "no-such-kind"\n[grid]\nx = 1\n', 1, "unknown kind 'no-such-kind'"),
+    ('kind = "nomodule_here.x:f"\n[grid]\nx = 1\n', 1, "cannot import nomodule_here.x"),
+    ('kind = "locomotion"\n[grid]\nruleset = "salvador"\nn = [5, "x"]\n', 4,
+     "n must be int, not 'x'"),
+    ('kind = "locomotion"\n[grid]\nruleset = "salvador"\nseed = { start = 5, stop = 5 }\n', 4,
+     "is empty"),
+    ('kind = "locomotion"\n[grid]\nruleset = "salvador"\nrounds = 10\n', 4,
+     "no parameter 'rounds'"),
+    ('kind = "locomotion"\n\n[grid]\nn = 5\n', 3, "needs ruleset"),
+    ('kind = "locomotion"\n[grid]\n\nruleset = ["salvador", "salvadore"]\n', 4,
+     "unknown rule set 'salvadore'"),
+    ('kind = "plan"\n[grid]\nmodules = 10\nfamily = "square"\n', 4, "expected one of blob"),
+    ('kind = "locomotion"\n[grid]\nruleset = "salvador"\nn = []\n', 4, "empty list"),
+])
+def test_errors_name_the_file_and_line(write_spec, text, line, words):
+    path = write_spec(text)
+    with pytest.raises(ScenarioError) as err:
+        load_spec(path)
+    assert str(err.value).startswith(f"{path}:{line}: "), str(err.value)
+    assert words in str(err.value)
+
+
+def test_a_hil_script_with_a_bad_line_stops_the_sweep_before_it_runs(write_spec, tmp_path):
+    (tmp_path / "bad.hbs").write_text("select 1\nfrobnicate 3\n")
+    path = write_spec('kind = "hil-script"\n[grid]\nscript = "bad.hbs"\nseed = [1, 2]\n')
+    with pytest.raises(ScenarioError) as err:
+        load_spec(path)
+    assert str(err.value).startswith(f"{path}:3: script = 'bad.hbs': ")
+    assert "bad.hbs:2" in str(err.value)  # the script's own line, too
+
+
+def test_the_cli_reports_a_bad_file_with_exit_1_and_writes_nothing(write_spec, tmp_path, capsys):
+    path = write_spec('kind = "locomotion"\n[grid]\nruleset = "salvador"\nn = 0.5\n')
+    out = tmp_path / "out"
+    assert main(["sweep", str(path), "--out", str(out)]) == 1
+    assert f"{path}:4: n must be int" in capsys.readouterr().err
+    assert not out.exists()
+
+
+def test_check_counts_the_tasks(write_spec, tmp_path, capsys):
+    path = write_spec(LOCOMOTION)
+    assert main(["sweep", str(path), "--check", "--out", str(tmp_path / "o")]) == 0
+    assert "kind locomotion, 12 tasks" in capsys.readouterr().out
+    assert not (tmp_path / "o").exists()
+
+
+def test_shipped_example_sweeps_are_valid(capsys):
+    from pathlib import Path
+
+    examples = sorted((Path(__file__).parents[2] / "docs" / "examples").glob("sweep_*.toml"))
+    assert examples
+    for path in examples:
+        assert main(["sweep", str(path), "--check"]) == 0, path
