@@ -34,7 +34,6 @@ name: ``blob:50``, ``line:12``, ``blob:255:7`` (shape, modules, seed).
 from __future__ import annotations
 
 import random
-import re
 import tomllib
 from dataclasses import dataclass, field, replace
 from importlib import resources
