@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 from hexbot.errors import (
     CancelledError,
     CommandRefusedError,
+    FrameError,
     HexBotTimeoutError,
     LinkUnavailableError,
 )
@@ -42,7 +43,7 @@ from hexbot.host.link import LinkState
 from hexbot.protocol import frames, timing, wire
 from hexbot.protocol.codes import CODES, ErrorCode, lookup
 from hexbot.protocol.frames import Command
-from hexbot.protocol.parser import Ack, ErrorReply, StatusReport, Text
+from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
 
 SELECT = lookup("Select").code
 STATUS = lookup("Status").code
@@ -58,6 +59,7 @@ class OutcomeKind(enum.Enum):
     ACKNOWLEDGED = "acknowledged"
     REFUSED = "refused"
     TIMED_OUT = "timed out"
+    GARBLED = "garbled"  # too few replies, and bytes that decode as nothing (a collision)
     PORT_LOST = "port lost"
     CANCELLED = "cancelled"
 
@@ -92,6 +94,7 @@ class Outcome:
     refusals: tuple[Refusal, ...] = ()
     waited: float = 0.0  # session seconds from sending to the verdict
     detail: str = ""  # port lost: why
+    garbage: tuple[Observed, ...] = ()  # undecodable bytes heard while waiting
 
     @property
     def ok(self) -> bool:
@@ -116,6 +119,10 @@ class Outcome:
             return f"{head}: {who} within {self.waited:.1f} s ({n} received)"
         if self.kind is OutcomeKind.PORT_LOST:
             return f"{head}: port lost ({self.detail})" if self.detail else f"{head}: port lost"
+        if self.kind is OutcomeKind.GARBLED:
+            size = sum(len(g.event.raw) for g in self.garbage)
+            return (f"{head}: garbled reply: {size} bytes decode as no reply "
+                    f"(replies collided?); {n} decoded")
         return f"{head}: cancelled"
 
     def lines(self) -> list[str]:
@@ -131,6 +138,8 @@ class Outcome:
             raise HexBotTimeoutError(self.reason)
         if self.kind is OutcomeKind.PORT_LOST:
             raise LinkUnavailableError(self.reason)
+        if self.kind is OutcomeKind.GARBLED:
+            raise FrameError(self.reason)
         raise CancelledError(self.reason)
 
 
@@ -144,11 +153,14 @@ class _Collector:
     port: str
     replies: list[Observed] = field(default_factory=list)
     extra: list[Observed] = field(default_factory=list)
+    garbage: list[Observed] = field(default_factory=list)
     checked: int = 0
     roll_call: bool = False  # every module's answer counts
 
     def take(self, journal: list[Observed]) -> None:
         for obs in journal[self.checked:]:
+            if obs.port == self.port and isinstance(obs.event, Garbage):
+                self.garbage.append(obs)
             if self.roll_call and self._is_reply(obs):
                 self.replies.append(obs)
             elif self._is_reply(obs):
@@ -440,6 +452,9 @@ class Session:
         if lost is not None:
             return Outcome(command, OutcomeKind.PORT_LOST, replies, extra, missing,
                            waited=waited, detail=lost)
+        if got.garbage:
+            return Outcome(command, OutcomeKind.GARBLED, replies, extra, missing,
+                           waited=waited, garbage=tuple(got.garbage))
         return Outcome(command, OutcomeKind.TIMED_OUT, replies, extra, missing, waited=waited)
 
 
