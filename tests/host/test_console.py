@@ -14,6 +14,7 @@ from hexbot.host.console.modules_view import ModulesView
 from hexbot.host.console.terminal import Terminal
 from hexbot.host.host import IR, Host
 from hexbot.host.link import LinkState, PortSettings
+from hexbot.protocol import frames
 from hexbot.protocol.simulation import Placement
 
 
@@ -91,6 +92,20 @@ async def test_terminal_search_views_and_save(responder, tmp_path):
         assert any("2a 45 02 05 4e" in line.plain for line in term.lines())
         path = term.save(tmp_path / "ir.txt")
         assert "2a 45 02 05 4e" in path.read_text()
+
+
+@sync
+async def test_replies_without_id_add_no_module(responder):
+    """Issue 13, defect 2: before any Select every module answers ``M: ACK``
+    at once; the console made a module row ``M`` and counted it."""
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        await until(pilot, lambda: app.port_states.get(IR, (None,))[0] is LinkState.CONNECTED)
+        app.send_command(frames.make("TurnOffAll"))
+        assert await until(pilot, lambda: ir_text(app).count("M ACK 20 TurnOffAll") == 7)
+        await pilot.pause(0.2)
+        assert modules_rows(app) == []
+        assert "0 modules, 0 placed" in str(app.query_one("#status").render())
 
 
 @sync
