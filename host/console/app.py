@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import copy
 import threading
+import time
 from collections.abc import Callable
 from pathlib import Path
 
@@ -20,7 +21,15 @@ from textual import on, work
 from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, ScrollableContainer, Vertical
-from textual.widgets import Footer, Header, ProgressBar, Static, TabbedContent, TabPane
+from textual.widgets import (
+    Footer,
+    Header,
+    Input,
+    ProgressBar,
+    Static,
+    TabbedContent,
+    TabPane,
+)
 
 from hexbot.errors import CancelledError, HexBotError
 from hexbot.host import workflows
@@ -74,6 +83,8 @@ class HexBotConsole(App[None]):
         ("clear_error", "Clear error (72)", "clear the last error of the selected modules"),
         ("cancel", "Cancel operation", "stop the running workflow"),
         ("cycle_mode", "Terminal view: decoded/text/hex", "cycle how terminals show bytes"),
+        ("cycle_stamps", "Time stamps: session/wall clock", "seconds since start or time of day"),
+        ("search", "Search the terminals", "type to keep only matching lines"),
         ("save_terminals", "Save terminals", "write both terminals to the session folder"),
         ("clear_terminals", "Clear terminals", "clear both terminals and their counters"),
         ("help", "Help", "keys and workflows"),
@@ -89,6 +100,8 @@ class HexBotConsole(App[None]):
         Binding("o", "all_off", "All off"),
         Binding("escape", "cancel", "Cancel", show=False),
         Binding("m", "cycle_mode", "View", show=False),
+        Binding("c", "cycle_stamps", "Time stamps", show=False),
+        Binding("slash", "search", "Search", show=False),
         Binding("ctrl+s", "save_terminals", "Save", show=False),
         Binding("ctrl+l", "clear_terminals", "Clear", show=False),
         Binding("1", "show_tab('terminals')", "Terminals", show=False),
@@ -255,10 +268,10 @@ class HexBotConsole(App[None]):
             self.post_message(Parsed(event.port, event))
         elif isinstance(event, Traffic):
             self.post_message(TrafficMsg(event.port, event.direction.value, event.t,
-                                         event.data))
+                                         event.data, time.time()))
         elif isinstance(event, PortChanged):
             self.post_message(PortState(event.port, event.state,  # type: ignore[arg-type]
-                                        event.detail, event.t))
+                                        event.detail, event.t, time.time()))
         elif isinstance(event, SimVerdict):
             self.post_message(SimEvent(event.verdict))
 
@@ -266,7 +279,7 @@ class HexBotConsole(App[None]):
         return self.main_query("#ir-term" if port == IR else "#debug-term", Terminal)
 
     def on_traffic(self, msg: TrafficMsg) -> None:
-        self.terminal(msg.port).add(Entry(msg.t, msg.direction, data=msg.data))
+        self.terminal(msg.port).add(Entry(msg.t, msg.direction, data=msg.data, wall=msg.wall))
 
     def on_parsed(self, msg: Parsed) -> None:
         obs = msg.observed
@@ -284,7 +297,7 @@ class HexBotConsole(App[None]):
 
     def on_port_state(self, msg: PortState) -> None:
         self.port_states[msg.port] = (msg.state, msg.detail)
-        self.terminal(msg.port).add(Entry(msg.t, "state",
+        self.terminal(msg.port).add(Entry(msg.t, "state", wall=msg.wall,
                                           text=f"{msg.state.value} {msg.detail}"))
         self.main_query(f"#port-{msg.port}", PortPanel).show_state(msg.state, msg.detail)
         if msg.state is LinkState.LOST:
@@ -443,6 +456,11 @@ class HexBotConsole(App[None]):
         self._update_status()
 
     def action_cancel(self) -> None:
+        """Escape: leave a text input first (so letter keys act again),
+        otherwise cancel the running operation."""
+        if isinstance(self.focused, Input) and self.screen is self.screen_stack[0]:
+            self.set_focus(None)
+            return
         if self.busy:
             self.cancel_event.set()
             if self.session is not None:
@@ -567,6 +585,16 @@ class HexBotConsole(App[None]):
             mode = self.terminal(port).cycle_mode()
         self.notify(f"terminals show {mode}")
 
+    def action_cycle_stamps(self) -> None:
+        for port in (IR, DEBUG):
+            stamps = self.terminal(port).cycle_stamps()
+        self.notify(f"time stamps: {'wall clock' if stamps == 'wall' else 'since start'}")
+
+    def action_search(self) -> None:
+        """``/``: the terminals' search box (escape leaves it)."""
+        self.show_tab("terminals")
+        self.terminal(IR).query_one(".term-search", Input).focus()
+
     def action_clear_terminals(self) -> None:
         for port in (IR, DEBUG):
             self.terminal(port).clear()
@@ -577,9 +605,9 @@ class HexBotConsole(App[None]):
         self.notify("saved " + ", ".join(str(p) for p in paths))
 
     def action_help(self) -> None:
-        keys = [(b.key, b.description) for b in self.BINDINGS if isinstance(b, Binding)]
+        keys = [(key_names(self, b), b.description) for b in self.BINDINGS
+                if isinstance(b, Binding)]
         keys.append(("ctrl+p", "command palette: workflows, tabs, every function"))
-        keys.append(("/", "terminals: type in the search box to filter lines"))
         self.push_screen(HelpScreen(keys))
 
     def on_unmount(self) -> None:
@@ -589,3 +617,9 @@ class HexBotConsole(App[None]):
             self.host.close()
         if self.endpoints is not None:
             self.endpoints.close()
+
+
+def key_names(app: App, binding: Binding) -> str:
+    """A binding's keys as people write them: ``f1, ?`` (not ``f1,question_mark``)."""
+    return ", ".join(app.get_key_display(Binding(key.strip(), binding.action))
+                     for key in binding.key.split(","))

@@ -109,6 +109,28 @@ async def test_replies_without_id_add_no_module(responder):
 
 
 @sync
+async def test_keys_search_help_names_and_escape_leaves_inputs(responder):
+    """Issue 13, defect 8: ``/`` was listed but unbound, help showed
+    ``f1,question_mark``, escape did not leave a text input."""
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        await pilot.press("2")
+        await pilot.click("#fn-filter")
+        await pilot.press("escape")  # leave the filter: keys act again
+        await pilot.press("1")
+        assert app.query_one("#tabs").active == "terminals"
+        assert app.query_one("#fn-filter").value == ""
+        await pilot.press("slash")
+        assert app.focused is app.query_one("#ir-term .term-search")
+        await pilot.press(*"ack", "escape", "c")  # c: wall-clock time stamps
+        assert app.query_one("#ir-term", Terminal).stamps == "wall"
+        await pilot.press("f1")
+        help_text = app.screen.query_one("Markdown").source
+        assert "`f1, ?` Help" in help_text and "question_mark" not in help_text
+        assert "`/` Search" in help_text
+
+
+@sync
 async def test_composer_refuses_out_of_range_argument(responder):
     app = _app(responder)
     async with app.run_test(size=(100, 30)) as pilot:
