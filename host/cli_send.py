@@ -23,6 +23,7 @@ import sys
 from hexbot.errors import FrameError
 from hexbot.host.cli_args import seconds, seconds_or_zero
 from hexbot.host.cli_common import session
+from hexbot.host.cli_progress import session_waits
 from hexbot.host.commands import parse_command
 from hexbot.host.describe import describe_event, describe_tx, event_json
 from hexbot.host.endpoints import add_port_arguments
@@ -73,10 +74,11 @@ def run(args: argparse.Namespace) -> int:
     with session(args) as sess:
         printer = _Printer(sess, sess.host.mark(), args.json)
         for frame in steps:
-            out = sess.exchange(frame, modules=modules,
-                                count=None if modules else args.expect,
-                                timeout=_timeout(sess, frame, args.timeout),
-                                strict=not args.unchecked)
+            with session_waits(sess):
+                out = sess.exchange(frame, modules=modules,
+                                    count=None if modules else args.expect,
+                                    timeout=_timeout(sess, frame, args.timeout),
+                                    strict=not args.unchecked)
             printer.catch_up()
             out.raise_for_status()
         printer.linger(args.linger)

@@ -144,6 +144,17 @@ class Outcome:
 
 
 @dataclass
+class Waiting:
+    """What the session is waiting for right now (for progress displays)."""
+
+    what: str
+    need: int
+    started: float  # session seconds
+    timeout: float
+    replied: int = 0
+
+
+@dataclass
 class _Collector:
     """The replies to one command, as they arrive."""
 
@@ -232,6 +243,8 @@ class Session:
         self.selection: tuple[int, ...] | None = LEGACY
         self.all_selected = False  # the last Select was Select(0): ranks are id - 1
         self.cancel = threading.Event()
+        #: the exchange under way, read by progress displays (None: idle)
+        self.waiting: Waiting | None = None
 
     # --- time ----------------------------------------------------------------
 
@@ -378,13 +391,20 @@ class Session:
             return Outcome(command, OutcomeKind.PORT_LOST, detail=str(exc))
         got = _Collector(code, set(ids) if ids is not None else None, need, port,
                          checked=mark, roll_call=roll_call)
+        waiting = self.waiting = Waiting(
+            str(command) if isinstance(command, Command) else f"frame {command.hex(' ')}",
+            need, started, timeout)
 
         def ready() -> bool:
             with self.host.lock:
                 got.take(self.host.since(0))
+            waiting.replied = len(got.replies)
             return got.complete or self.cancel.is_set() or self._lost(port) is not None
 
-        self.host.clock.wait(ready, timeout)
+        try:
+            self.host.clock.wait(ready, timeout)
+        finally:
+            self.waiting = None
         if roll_call and got.replies:
             self.collect(mark, max(QUIET_S, 2 * timing.ACK_SLOT_S), timeout)
             with self.host.lock:

@@ -62,6 +62,8 @@ Step = Callable[[], str]
 SIM_LOG_LINES = 3
 #: Cluster views are redrawn at most this often (seconds).
 REFRESH_S = 0.05
+#: How often the status line shows a wait's progress (seconds).
+WAIT_TICK_S = 0.25
 
 
 class HexBotConsole(App[None]):
@@ -133,6 +135,7 @@ class HexBotConsole(App[None]):
         self.port_states: dict[str, tuple[LinkState, str]] = {}
         self.sim_log: list[PlantVerdict] = []  # the plant's verdicts, newest last
         self._refresh_pending = False
+        self.step_progress = (0, 1)  # (steps done, steps) of the running operation
 
     # --- layout ---------------------------------------------------------------
 
@@ -164,6 +167,7 @@ class HexBotConsole(App[None]):
 
     def on_mount(self) -> None:
         self.main_query("#progress", ProgressBar).display = False
+        self.set_interval(WAIT_TICK_S, self._show_wait)
         self.on_resize()
         if self.host is not None:
             self.attach(self.host, None, start=self.start_ports)
@@ -340,7 +344,7 @@ class HexBotConsole(App[None]):
                          f"{len(self.host.model.placements)} placed")
         parts.append(f"sel {self.selection_text()}")
         if self.busy:
-            parts.append(f"[b]{self.busy}[/] (esc cancels)")
+            parts.append(f"[b]{escape(self.busy)}[/]{self.wait_text()} (esc cancels)")
         elif self.last_result:
             parts.append(self.last_result)
         self.main_query("#status", Static).update(" | ".join(parts))
@@ -413,6 +417,7 @@ class HexBotConsole(App[None]):
         self.session.cancel.clear()
         self.busy = title
         bar = self.main_query("#progress", ProgressBar)
+        self.step_progress = (0, len(steps))
         bar.update(total=len(steps), progress=0)
         bar.display = True
         self._update_status()
@@ -440,8 +445,28 @@ class HexBotConsole(App[None]):
             result = f"{title}: {detail}"
         self.call_from_thread(self._finished, result, ok, len(steps))
 
+    def wait_text(self) -> str:
+        """``: 3 of 7 replied, 12.4 s of 61 s`` while the session waits."""
+        w = self.session.waiting if self.session is not None else None
+        if w is None:
+            return ""
+        elapsed = max(0.0, self.session.now() - w.started)  # type: ignore[union-attr]
+        return f": {w.replied} of {w.need} replied, {elapsed:.1f} s of {w.timeout:.0f} s"
+
+    def _show_wait(self) -> None:
+        """Tick: a long wait (a localization, ~50 s) moves the bar by replies
+        and shows the time it has been waiting and its time-out."""
+        if not self.busy or self.session is None:
+            return
+        w = self.session.waiting
+        done, total = (w.replied, w.need) if w is not None else self.step_progress
+        self.main_query("#progress", ProgressBar).update(total=total, progress=done)
+        self._update_status()
+
     def _progress(self, n: int, label: str) -> None:
-        self.main_query("#progress", ProgressBar).update(progress=n)
+        self.step_progress = (n, self.step_progress[1])
+        self.main_query("#progress", ProgressBar).update(total=self.step_progress[1],
+                                                         progress=n)
         self.busy = label
         self._update_status()
 

@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 
 from hexbot.errors import ScenarioError
+from hexbot.host.cli_progress import meter
 from hexbot.planning.locomotion import render
 from hexbot.planning.locomotion.scenarios import (
     load_ruleset,
@@ -145,15 +147,35 @@ def _random(args: argparse.Namespace) -> int:
 
     seeds = _seed_range(args.seeds)
     rs = load_ruleset(args.ruleset)
-    report = randommaps.sweep(rs, seeds, _int_list(args.n, "--n"), args.rounds)
+    sizes = _int_list(args.n, "--n")
+    report, done = randommaps.SweepReport(), 0
+    # One seed at a time: a bar on the terminal, and Ctrl-C keeps what finished.
+    with meter(f"random maps, {rs.name}", len(seeds)) as bar:
+        try:
+            for seed in seeds:
+                part = randommaps.sweep(rs, [seed], sizes, args.rounds)
+                report.runs += part.runs
+                report.outcomes.update(part.outcomes)
+                report.violations += part.violations
+                done += 1
+                bar.advance()
+        except KeyboardInterrupt:
+            pass
+    finished = f"{seeds.start}:{seeds.start + done}"
+    interrupted = done < len(seeds)
     if args.json:
-        print(json.dumps({"ruleset": rs.name, "seeds": args.seeds, **report.to_dict()}))
+        print(json.dumps({"ruleset": rs.name, "seeds": finished, "interrupted": interrupted,
+                          **report.to_dict()}))
     else:
         counts = ", ".join(f"{k} {v}" for k, v in sorted(report.outcomes.items()))
-        print(f"rule set {rs.name}, random maps {args.seeds}: {report.runs} runs: {counts}")
+        print(f"rule set {rs.name}, random maps {finished}: {report.runs} runs: {counts}")
         for v in report.violations:
             print(f"  random-{v['seed']} n = {v['n']}: {v['kind']} in round {v['round']} "
                   f"at {[tuple(c) for c in v['cells'][:3]]} ({'; '.join(v['rules'])})")
+    if interrupted:
+        print(f"interrupted: {done} of {len(seeds)} seeds done (results above are theirs)",
+              file=sys.stderr)
+        return 130
     return 3 if report.violations else 0
 
 

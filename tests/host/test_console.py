@@ -169,6 +169,10 @@ async def test_cancel_stops_a_long_operation(silent_responder):
         await until(pilot, lambda: app.port_states.get(IR, (None,))[0] is LinkState.CONNECTED)
         await pilot.press("t")
         assert await until(pilot, lambda: bool(app.busy))
+        # issue 13, defect 9: a long wait shows replies, elapsed time and time-out
+        status = app.query_one("#status")
+        assert await until(pilot, lambda: "0 of 1 replied, " in str(status.render())
+                           and " s of 30 s" in str(status.render()))
         await pilot.press("escape")
         assert await until(pilot, lambda: not app.busy, timeout=5)
         assert "cancelled" in app.last_result
