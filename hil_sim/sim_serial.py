@@ -70,6 +70,7 @@ class SimCluster:
         self._subscribers: list[Callable[[PlantVerdict], None]] = []
         self._tickers: list[Callable[[], None]] = []
         self._closed = threading.Event()
+        self.failure = ""  # why the simulator stopped on its own ("" while it runs)
         self._thread: threading.Thread | None = None
         if speed > 0:
             self._thread = threading.Thread(target=self._pace, daemon=True,
@@ -169,8 +170,18 @@ class SimCluster:
 
     def _run(self, seconds: float) -> None:
         with self._lock:
-            self.simulator.run(seconds)
-            fresh = self._collect()
+            if self.failure:
+                raise SerialException(self.failure)
+            try:
+                self.simulator.run(seconds)
+                fresh = self._collect()
+            except Exception as exc:  # noqa: BLE001 - any fault of the simulator ends it
+                # The cluster is gone as a pulled cable is: its ports fail from
+                # now on with the reason, and nobody silently starts another.
+                self.failure = f"the simulator stopped: {type(exc).__name__}: {exc}"
+                self._closed.set()
+                self.changed.notify_all()
+                raise SerialException(self.failure) from exc
             self.changed.notify_all()
         for verdict in fresh:
             for callback in list(self._subscribers):
@@ -192,7 +203,10 @@ class SimCluster:
     def _pace(self) -> None:
         wall0, sim0 = time.monotonic(), self.now()
         while not self._closed.is_set():
-            self._run(SLICE_S)
+            try:
+                self._run(SLICE_S)
+            except SerialException:
+                return  # failure recorded: the ports report it
             ahead = (self.now() - sim0) / self.speed - (time.monotonic() - wall0)
             if ahead > 0:
                 self._closed.wait(ahead)
@@ -233,8 +247,8 @@ def _attach(url: str) -> tuple[SimCluster, int | None, bool]:
         raise SerialException(f"{url}: seed must be an integer and speed a number") from exc
     try:
         return SimCluster(target, seed, speed), None, True
-    except HexBotError as exc:  # bad scenario, missing firmware or C extension
-        raise SerialException(f"{url}: {exc}") from exc
+    except HexBotError as exc:  # bad scenario (file:line), missing firmware or C extension
+        raise SerialException(str(exc)) from exc
 
 
 class Serial(SerialBase):
@@ -318,4 +332,4 @@ class Serial(SerialBase):
         if not self.is_open:
             raise PortNotOpenError()
         if self.hexbot_sim._closed.is_set():
-            raise SerialException("the simulated cluster was closed")
+            raise SerialException(self.hexbot_sim.failure or "the simulated cluster was closed")

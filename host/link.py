@@ -191,6 +191,12 @@ class Link:
     def connected(self) -> bool:
         return self.state is LinkState.CONNECTED
 
+    @property
+    def retries(self) -> bool:
+        """Whether a lost port is opened again. Not an in-process simulator:
+        opening its URL again would silently start a fresh cluster."""
+        return not self.settings.url.startswith(urlhandler.SCHEME + "://")
+
     def write(self, data: bytes) -> None:
         """Write all bytes now; LinkUnavailableError if the port is not open
         or fails (the reader thread then reconnects)."""
@@ -261,6 +267,8 @@ class Link:
                 self._set_state(LinkState.CONNECTED, self.settings.describe())
             port.timeout = self.poll_s
             self._read_until_failure(port)
+            if not self.retries:
+                return  # lost for good: the state says why
             if not self._stop.is_set():
                 self._stop.wait(self.retry_s)
 

@@ -31,7 +31,7 @@ from textual.widgets import (
     TabPane,
 )
 
-from hexbot.errors import CancelledError, HexBotError
+from hexbot.errors import CancelledError, HexBotError, LinkUnavailableError
 from hexbot.host import workflows
 from hexbot.host.capture import Record
 from hexbot.host.console.composer import Composer
@@ -89,6 +89,7 @@ class HexBotConsole(App[None]):
         ("search", "Search the terminals", "type to keep only matching lines"),
         ("save_terminals", "Save terminals", "write both terminals to the session folder"),
         ("clear_terminals", "Clear terminals", "clear both terminals and their counters"),
+        ("restart_session", "Restart the simulator", "open the session's ports anew"),
         ("help", "Help", "keys and workflows"),
     )
 
@@ -106,6 +107,7 @@ class HexBotConsole(App[None]):
         Binding("slash", "search", "Search", show=False),
         Binding("ctrl+s", "save_terminals", "Save", show=False),
         Binding("ctrl+l", "clear_terminals", "Clear", show=False),
+        Binding("ctrl+r", "restart_session", "Restart simulator", show=False),
         Binding("1", "show_tab('terminals')", "Terminals", show=False),
         Binding("2", "show_tab('compose')", "Composer", show=False),
         Binding("3", "show_tab('modules')", "Modules", show=False),
@@ -136,6 +138,8 @@ class HexBotConsole(App[None]):
         self.sim_log: list[PlantVerdict] = []  # the plant's verdicts, newest last
         self._refresh_pending = False
         self.step_progress = (0, 1)  # (steps done, steps) of the running operation
+        #: exit status for `hexbot console` when the session could not go on
+        self.failure_status: int | None = None
 
     # --- layout ---------------------------------------------------------------
 
@@ -160,6 +164,7 @@ class HexBotConsole(App[None]):
                     yield PortPanel(DEBUG, "UART1 debug port (one control board)", None,
                                     wire.BAUD_DEBUG)
                     yield Static("", id="session-info")
+        yield Static("", id="alert")
         with Horizontal(id="status-bar"):
             yield Static("", id="status")
             yield ProgressBar(id="progress", show_eta=False)
@@ -193,15 +198,23 @@ class HexBotConsole(App[None]):
             # the listener from the first byte: the terminals show the boot texts
             host, endpoints = self._opener([self._from_reader])
         except HexBotError as exc:
-            self.call_from_thread(self._open_failed, str(exc))
+            self.call_from_thread(self._open_failed, str(exc), exc.exit_status)
             return
         self.call_from_thread(self.attach, host, endpoints, start=False, listening=True)
 
-    def _open_failed(self, why: str) -> None:
+    def _open_failed(self, why: str, status: int) -> None:
         self.busy = ""
-        self.last_result = f"[red]cannot open session: {why}[/]"
+        self.last_result = "[red]cannot open session[/]"
+        self.show_alert(f"cannot open session: {why}", status)
         self._update_status()
-        self.notify(why, title="Session", severity="error", timeout=10)
+
+    def show_alert(self, text: str, status: int | None) -> None:
+        """Keep ``text`` in full above the status line (None: clear it);
+        quitting then exits with ``status``."""
+        alert = self.main_query("#alert", Static)
+        alert.update(escape(text))
+        alert.display = bool(text)
+        self.failure_status = status if text else None
 
     def attach(self, host: Host, endpoints: Endpoints | None, *, start: bool = True,
                listening: bool = False) -> None:
@@ -304,7 +317,11 @@ class HexBotConsole(App[None]):
         self.terminal(msg.port).add(Entry(msg.t, "state", wall=msg.wall,
                                           text=f"{msg.state.value} {msg.detail}"))
         self.main_query(f"#port-{msg.port}", PortPanel).show_state(msg.state, msg.detail)
-        if msg.state is LinkState.LOST:
+        ch = self.host.channels.get(msg.port) if self.host is not None else None
+        if msg.state is LinkState.LOST and ch is not None and not ch.link.retries:
+            restart = "; ctrl+r restarts it" if self._opener is not None else ""
+            self.show_alert(f"{msg.port}: {msg.detail}{restart}", LinkUnavailableError.exit_status)
+        elif msg.state is LinkState.LOST:
             self.notify(f"{msg.port}: {msg.detail}; retrying", title="Port lost",
                         severity="warning")
         self._update_status()
@@ -619,6 +636,23 @@ class HexBotConsole(App[None]):
         """``/``: the terminals' search box (escape leaves it)."""
         self.show_tab("terminals")
         self.terminal(IR).query_one(".term-search", Input).focus()
+
+    def action_restart_session(self) -> None:
+        """ctrl+r: close the session's ports and open them again (a fresh
+        embedded simulator); terminals keep their lines."""
+        if self._opener is None:
+            self.notify("this console was given its ports: nothing to restart",
+                        severity="warning")
+            return
+        if self.session is not None:
+            self.session.wake()
+        if self.host is not None:
+            self.host.close()
+        self.host = self.session = None
+        self.show_alert("", None)
+        self.busy = "starting"
+        self._update_status()
+        self._open_session()
 
     def action_clear_terminals(self) -> None:
         for port in (IR, DEBUG):

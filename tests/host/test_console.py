@@ -378,3 +378,53 @@ async def test_replay_shows_a_recorded_session_and_cancels():
         await pilot.press("escape")
         assert await until(pilot, lambda: not app.busy, timeout=5)
         assert "Replay: cancelled" in app.last_result
+
+
+@sync
+async def test_a_bad_scenario_file_stays_visible_and_fails_the_exit_status(log_dir, tmp_path):
+    """Issue 13, defect 10: the status line cut the file:line error, and
+    quitting exited 0."""
+    bad = tmp_path / "bad.toml"
+    bad.write_text('name = "bad"\nbase = 1\n\n[[module]]\nid = 1\nposition = [0, 0]\n'
+                   'colour = "red"\n')
+    args = cli_console.parse(["--scenario", str(bad), "--sim-speed", "5"])
+    app = HexBotConsole(opener=cli_console.make_opener(args))
+    async with app.run_test(size=(80, 24)) as pilot:
+        alert = app.query_one("#alert")
+        assert await until(pilot, lambda: alert.display, timeout=60)
+        text = str(alert.render())
+        assert f"{bad}:7:" in text.replace("\n", ""), text
+        await pilot.press("3", "1")  # visible on every tab
+        assert alert.display
+    assert app.failure_status == 4
+
+
+@sync
+async def test_a_stopped_simulator_is_said_and_restarted(pair_args):
+    """Issue 13, defect 10: when the embedded simulator dies the console
+    retried forever without saying so. Its core failing is simulated by
+    making the cluster's ``run`` raise (a test double on the real path)."""
+    app = HexBotConsole(opener=cli_console.make_opener(pair_args))
+    async with app.run_test(size=(100, 30)) as pilot:
+        assert await until(pilot, lambda: app.host is not None, timeout=60)
+        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        cluster = app.host.simulator
+        first_host = app.host
+
+        def fault(seconds: float) -> None:
+            raise RuntimeError("core fault at pc 0x1234")
+        cluster.simulator.run = fault
+        alert = app.query_one("#alert")
+        assert await until(pilot, lambda: alert.display, timeout=30)
+        assert ("the simulator stopped: RuntimeError: core fault at pc 0x1234; ctrl+r "
+                "restarts it") in str(alert.render()).replace("\n", " ")
+        assert app.port_states[IR][0] is LinkState.LOST
+        assert app.failure_status == 4
+        await pilot.pause(0.5)
+        assert app.port_states[IR][0] is LinkState.LOST  # no silent new cluster
+        await pilot.press("ctrl+r")
+        assert await until(pilot, lambda: app.host is not None and app.host is not first_host
+                           and app.port_states[IR][0] is LinkState.CONNECTED, timeout=60)
+        assert await until(pilot, lambda: not app.busy, timeout=60)
+        assert "Simulator: done: 2 modules booted" in app.last_result
+        assert not alert.display and app.failure_status is None
