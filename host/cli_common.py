@@ -12,6 +12,8 @@ from hexbot.host.cli_progress import meter
 from hexbot.host.events import HostEvent, HostWarning, Listener, Observed, PortChanged
 from hexbot.host.link import LinkState
 from hexbot.host.session import Session, listening_id
+from hexbot.protocol import wire
+from hexbot.protocol.parser import Garbage
 
 
 @contextmanager
@@ -64,3 +66,6 @@ def _wait_booted(sess: Session, scenario: str, ids: list[int]) -> None:
         heard = sess.wait_booted(ids)
     print(f"simulator: {scenario}, {len(heard)} of {len(ids)} modules booted in "
           f"{sess.now() - started:.1f} s", file=sys.stderr)
+    if not heard and any(isinstance(o.event, Garbage) for o in sess.host.since(0)):
+        print(f"warning: only garbled bytes heard: the modules speak {wire.BAUD_IR} 8N1 "
+              "(check --baud, --parity, --data-bits, --stop-bits)", file=sys.stderr)

@@ -77,3 +77,11 @@ def test_bad_options_fail_before_any_port_opens(argv, why):
     proc = hexbot("send", *argv, "--port", "/nonexistent/tty")
     assert proc.returncode in (1, 2)  # never 4: the port was never tried
     assert why in proc.stderr
+
+
+def test_a_wrong_baud_rate_is_caught_on_the_simulator():
+    """Issue 13, defect 7: 9600 baud was accepted and replies still arrived."""
+    proc = hexbot("send", "Status", "--module", "2", "--scenario", "pair", "--baud", "9600")
+    assert proc.returncode == 3, proc.stderr
+    assert "0 of 2 modules booted" in proc.stderr
+    assert "only garbled bytes heard: the modules speak 300 8N1" in proc.stderr
