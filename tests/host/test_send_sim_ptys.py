@@ -13,7 +13,8 @@ from hexbot.host.simproc import SimProcess
 
 
 def hexbot(*argv: str, timeout: float = 120) -> subprocess.CompletedProcess:
-    return subprocess.run([sys.executable, "-m", "hexbot.cli", *argv, "--no-log"],
+    log = [] if argv[:1] == ("ports",) else ["--no-log"]
+    return subprocess.run([sys.executable, "-m", "hexbot.cli", *argv, *log],
                           capture_output=True, text=True, timeout=timeout)
 
 
@@ -85,3 +86,13 @@ def test_a_wrong_baud_rate_is_caught_on_the_simulator():
     assert proc.returncode == 3, proc.stderr
     assert "0 of 2 modules booted" in proc.stderr
     assert "only garbled bytes heard: the modules speak 300 8N1" in proc.stderr
+
+
+def test_ports_lists_serial_ports_simulator_urls_and_running_sim_ptys():
+    with SimProcess("single", speed=0) as sim:
+        proc = hexbot("ports", "--json")
+        assert proc.returncode == 0, proc.stderr
+        listed = json.loads(proc.stdout)
+    assert "hexbot-sim://pair?speed=0" in listed["simulator_urls"]
+    (mine,) = [s for s in listed["running"] if s["pid"] == sim._proc.pid]
+    assert mine["ptys"][0] == sim.ports.ir and sim.ports.uart1[1] in mine["ptys"]
