@@ -80,8 +80,9 @@ class ClusterModel:
         return self.modules.get(f"{module_id:02d}")
 
     def _row(self, role: str | None, module_id: int | None) -> ModuleState | None:
-        """The row of ``module_id``; None for a reply without an id."""
-        if module_id is None:
+        """The row of ``module_id``; None for a reply without an id (or with
+        id 0: a comm board without its control board, or collided replies)."""
+        if not module_id:
             return None
         key = f"{module_id:02d}"
         row = self.modules.get(key)
@@ -116,7 +117,8 @@ class ClusterModel:
             return True
         if isinstance(ev, StatusReport):
             row = self._row(ev.role if ev.role != "-" else None, ev.module_id)
-            assert row is not None  # a status always names its module
+            if row is None:
+                return True
             row.role = ev.role
             row.localized = ev.localized
             row.last_seen = t

@@ -59,7 +59,7 @@ class OutcomeKind(enum.Enum):
     ACKNOWLEDGED = "acknowledged"
     REFUSED = "refused"
     TIMED_OUT = "timed out"
-    GARBLED = "garbled"  # too few replies, and bytes that decode as nothing (a collision)
+    GARBLED = "garbled"  # too few replies, and bytes no module can have sent (a collision)
     PORT_LOST = "port lost"
     CANCELLED = "cancelled"
 
@@ -94,7 +94,7 @@ class Outcome:
     refusals: tuple[Refusal, ...] = ()
     waited: float = 0.0  # session seconds from sending to the verdict
     detail: str = ""  # port lost: why
-    garbage: tuple[Observed, ...] = ()  # undecodable bytes heard while waiting
+    garbage: tuple[Observed, ...] = ()  # undecodable or unattributable, heard while waiting
 
     @property
     def ok(self) -> bool:
@@ -120,9 +120,8 @@ class Outcome:
         if self.kind is OutcomeKind.PORT_LOST:
             return f"{head}: port lost ({self.detail})" if self.detail else f"{head}: port lost"
         if self.kind is OutcomeKind.GARBLED:
-            size = sum(len(g.event.raw) for g in self.garbage)
-            return (f"{head}: garbled reply: {size} bytes decode as no reply "
-                    f"(replies collided?); {n} decoded")
+            what = "; ".join(_garbled(g.event) for g in self.garbage)
+            return f"{head}: garbled reply: {what} (replies collided?); {n} decoded"
         return f"{head}: cancelled"
 
     def lines(self) -> list[str]:
@@ -167,11 +166,15 @@ class _Collector:
     garbage: list[Observed] = field(default_factory=list)
     checked: int = 0
     roll_call: bool = False  # every module's answer counts
+    anonymous_ok: bool = False  # a module without id (ID=00 at boot) is on this port
 
     def take(self, journal: list[Observed]) -> None:
         for obs in journal[self.checked:]:
             if obs.port == self.port and isinstance(obs.event, Garbage):
                 self.garbage.append(obs)
+            if self._is_reply(obs) and _module_of(obs.event) == 0 and not self.anonymous_ok:
+                self.garbage.append(obs)  # no module here has id 0: replies collided
+                continue
             if self.roll_call and self._is_reply(obs):
                 self.replies.append(obs)
             elif self._is_reply(obs):
@@ -208,6 +211,12 @@ def _module_of(event: object) -> int | None:
     if isinstance(event, StatusReport):
         return event.module_id
     return getattr(event, "module", None)
+
+
+def _garbled(event: object) -> str:
+    if isinstance(event, StatusReport):
+        return "STA from id 0, which no module here has"
+    return f"{len(getattr(event, 'raw', b''))} bytes that decode as no reply"
 
 
 def _refusal(obs: Observed) -> Refusal | None:
@@ -390,7 +399,7 @@ class Session:
         except LinkUnavailableError as exc:
             return Outcome(command, OutcomeKind.PORT_LOST, detail=str(exc))
         got = _Collector(code, set(ids) if ids is not None else None, need, port,
-                         checked=mark, roll_call=roll_call)
+                         checked=mark, roll_call=roll_call, anonymous_ok=self._anonymous(port))
         waiting = self.waiting = Waiting(
             str(command) if isinstance(command, Command) else f"frame {command.hex(' ')}",
             need, started, timeout)
@@ -442,6 +451,16 @@ class Session:
             last_rank = None
         return frame + timing.reply_timeout_s(code, max(need, 1), command.args,
                                               last_rank=last_rank)
+
+    def _anonymous(self, port: str) -> bool:
+        """Whether a module without an id answers on ``port``: a comm board
+        that got no id from its control board says ``COMM. LISTENING ID=00``
+        at boot and then sends ``STA`` with id 0. Otherwise a STA with id 0 is
+        two replies that collided (their bytes AND on the IR link)."""
+        return any(obs.port == port and isinstance(obs.event, Text)
+                   and obs.event.phrase == wire.TEXT_COMM_LISTENING.rstrip()
+                   and re.search(r"\bID=0+\b", obs.event.tail)
+                   for obs in self.host.since(0))
 
     def port_lost(self, port: str = IR) -> str | None:
         """Why ``port`` is lost or closed; None while it is connected."""

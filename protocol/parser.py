@@ -307,9 +307,7 @@ class ReplyParser:
                 return body
             schema = None
         ident, role, loc, x, y, yref, err = body[:_STATUS_FIELDS]
-        # Ids are 1..63 (DIP switches): an id 0 is two replies that collided.
-        if (chr(role) not in "MS-" or loc > 1 or yref > 5
-                or not 1 <= ident <= wire.MAX_MODULE_ID):
+        if chr(role) not in "MS-" or loc > 1 or yref > 5 or ident > wire.MAX_MODULE_ID:
             return None
         end = 3 + len(body) + len(EOL)
         ev = StatusReport(raw=buf[:end], module_id=ident, role=chr(role), localized=bool(loc),

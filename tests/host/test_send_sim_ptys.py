@@ -29,9 +29,9 @@ def test_collided_status_replies_are_a_decoding_failure(pair):
     collide on the IR link (the bytes AND) into ``STA`` with id 0."""
     proc = hexbot("send", "70", "--port", pair.ports.ir)
     assert proc.returncode == 1, proc.stdout + proc.stderr
-    assert "garbled reply" in proc.stderr and "replies collided" in proc.stderr
-    assert "STA id 0" not in proc.stdout
-    assert "GARBAGE" in proc.stdout  # what was heard is shown, as garbage
+    assert ("Status (70): garbled reply: STA from id 0, which no module here has "
+            "(replies collided?)") in proc.stderr
+    assert "STA id 0 (no id: replies that collided" in proc.stdout  # shown as heard
 
 
 def test_ref_then_localize_in_two_sends_on_a_running_simulator(pair):
@@ -96,3 +96,15 @@ def test_ports_lists_serial_ports_simulator_urls_and_running_sim_ptys():
     assert "hexbot-sim://pair?speed=0" in listed["simulator_urls"]
     (mine,) = [s for s in listed["running"] if s["pid"] == sim._proc.pid]
     assert mine["ptys"][0] == sim.ports.ir and sim.ports.uart1[1] in mine["ptys"]
+
+
+def test_monitor_on_the_embedded_simulator_starts_with_the_boot_texts():
+    """Issue 13, item 11: monitor started with a GARBAGE line (boot bytes
+    lost before the port was read); the URL's cluster starts with its port."""
+    proc = hexbot("monitor", "--scenario", "pair", "--sim-speed", "0", "--duration", "3",
+                  "--json")
+    assert proc.returncode == 0, proc.stderr
+    rows = [json.loads(line) for line in proc.stdout.splitlines()]
+    ir = [r for r in rows if r["port"] == "ir"]
+    assert ir[0]["kind"] == "text" and ir[0]["phrase"] == "COMM. BOARD READY"
+    assert not any(r["kind"] == "garbage" for r in rows[:3])
