@@ -22,6 +22,7 @@ OUT = ROOT / "docs" / "img"
 SHOTS: dict[str, tuple[tuple[int, int], list[str]]] = {
     "console-terminals-80x24": ((80, 24), []),
     "console-terminals-wide": ((140, 36), []),
+    "console-terminals-hex": ((100, 30), ["m", "m"]),
     "console-composer": ((110, 32), ["2", "tab", *"cw", "enter"]),
     "console-modules": ((100, 24), ["3"]),
     "console-lattice": ((100, 30), ["4"]),

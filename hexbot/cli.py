@@ -28,6 +28,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "console": ("hexbot.host.cli_console", "the Textual console (default: on the simulator)"),
     "send": ("hexbot.host.cli_send", "send one message and check its acknowledgement"),
     "monitor": ("hexbot.host.cli_monitor", "print decoded events from the ports"),
+    "ports": ("hexbot.host.cli_ports", "list serial ports, simulator URLs and running sim ptys"),
     "run": ("hexbot.host.cli_run", "run a HexBot script (.hbs) of commands and expectations"),
     "replay": ("hexbot.host.cli_replay", "play a session capture back through the parser"),
     "flash": ("hexbot.host.flash.cli", "program a board's ATmega162 through avrdude (ISP)"),

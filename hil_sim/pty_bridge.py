@@ -10,22 +10,36 @@ flush their input when they open a port, as on real hardware, so a client
 that must see the boot texts asks for ``wait_for_client`` (``--wait-client``):
 the simulation starts only once the IR port is open.
 Bytes from the IR port enter the simulator through ``pc_write``, which paces
-them at 300 baud of simulated time; the line settings a client asks for are
-ignored, as a pty has no baud rate.
+them at 300 baud of simulated time. A pty keeps the baud rate a client sets
+(the bridge reads it from the master side): a client at another rate than
+the modules' (300 on IR, 4800 on a debug port) reads and sends garbled
+bytes, as on hardware (:mod:`hexbot.hil_sim.uart_line`). Linux forces a
+pty to 8 data bits without parity whatever the client asks, so parity and
+word size cannot be checked here (the ``hexbot-sim://`` URL checks them),
+and a pty has no modem lines (setting DTR fails with "Inappropriate ioctl";
+the URL accepts them).
 """
 
 from __future__ import annotations
 
 import errno
 import os
+import termios
 import time
 import tty
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from hexbot.errors import LinkUnavailableError
+from hexbot.protocol import wire
 
 from .simulator import Simulator
+from .uart_line import LineSettings, resample
+
+#: termios speed constants -> bits per second
+_SPEEDS = {getattr(termios, f"B{n}"): n for n in (
+    50, 75, 110, 134, 150, 200, 300, 600, 1200, 1800, 2400, 4800, 9600, 19200, 38400,
+    57600, 115200, 230400) if hasattr(termios, f"B{n}")}
 
 
 @dataclass
@@ -33,18 +47,36 @@ class _Port:
     master: int
     slave: int
     name: str
+    wire: LineSettings = LineSettings(300)  # what the modules' UART speaks
     dropped: int = 0
     early: bytes = b""  # read while waiting for a client, not yet passed on
 
+    def client_line(self) -> LineSettings:
+        """The baud rate the client set on its end (8N1: a pty has no other)."""
+        try:
+            speed = termios.tcgetattr(self.master)[5]  # ospeed of the slave side
+        except termios.error:
+            return self.wire
+        return LineSettings(_SPEEDS.get(speed, self.wire.baud))
+
+    def from_client(self, data: bytes) -> bytes:
+        return resample(data, self.client_line(), self.wire)
+
+    def to_client(self, data: bytes) -> bytes:
+        return resample(data, self.wire, self.client_line())
+
     @classmethod
-    def open(cls) -> _Port:
+    def open(cls, baud: int = 300) -> _Port:
         try:
             master, slave = os.openpty()
         except OSError as exc:
             raise LinkUnavailableError(f"cannot create a pseudo-terminal: {exc}") from exc
         tty.setraw(slave)  # no echo, no line editing, no CR/LF translation
+        attrs = termios.tcgetattr(slave)  # the modules' rate until a client sets its own
+        attrs[4] = attrs[5] = getattr(termios, f"B{baud}")
+        termios.tcsetattr(slave, termios.TCSANOW, attrs)
         os.set_blocking(master, False)
-        return cls(master, slave, os.ttyname(slave))
+        return cls(master, slave, os.ttyname(slave), LineSettings(baud))
 
     def read(self) -> bytes:
         chunks = [self.early]
@@ -119,8 +151,8 @@ class PtyBridge:
     closed: bool = False
 
     def __post_init__(self) -> None:
-        self.ir = _Port.open()
-        self.debug = {m: _Port.open() for m in sorted(self.sim.modules)}
+        self.ir = _Port.open(wire.BAUD_IR)
+        self.debug = {m: _Port.open(wire.BAUD_DEBUG) for m in sorted(self.sim.modules)}
 
     def names(self) -> dict:
         """The first line ``hexbot sim --pty`` prints (other tools may add keys)."""
@@ -133,21 +165,21 @@ class PtyBridge:
         """Client -> simulator."""
         data = self.ir.read()
         if data:
-            self.sim.pc_write(data)
+            self.sim.pc_write(self.ir.from_client(data))
         for module_id, port in self.debug.items():
             data = port.read()
             if data:
-                self.sim.debug_write(module_id, data)
+                self.sim.debug_write(module_id, port.from_client(data))
 
     def pump_out(self) -> None:
         """Simulator -> client."""
         data = self.sim.pc_read()
         if data:
-            self.ir.write(data)
+            self.ir.write(self.ir.to_client(data))
         for module_id, port in self.debug.items():
             data = self.sim.debug_read(module_id)
             if data:
-                port.write(data)
+                port.write(port.to_client(data))
 
     def wait_for_client(self, keep_waiting: Callable[[], bool]) -> bool:
         """Block until a client opened the IR port (see ``_Port.wait_for_client``)."""

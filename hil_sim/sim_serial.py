@@ -19,8 +19,12 @@ the URL scheme first: :func:`hexbot.hil_sim.urlhandler.register`). URL forms:
     module ID's control-board debug port (UART1, 4800 baud) on a cluster
     this process already opened (``hexbot_sim.uart1_url(ID)`` makes it).
 
-Line settings are accepted and ignored, as on a pty: the simulated
-transceiver speaks 300 baud 8N1. What only a simulator knows (plant
+Line settings and modem lines are accepted as a USB adapter accepts them.
+The simulated transceiver speaks 300 baud 8N1 (a debug port 4800 8N1): a
+port set otherwise reads and sends what a real UART would, garbled bytes
+(:mod:`hexbot.hil_sim.uart_line`), so a wrong setting shows here before it
+is met on the bench. Modem lines are not wired on HexBot's converter:
+setting DTR/RTS does nothing, CTS/DSR/CD read high. What only a simulator knows (plant
 verdicts, true positions, actuators) is offered through ``port.hexbot_sim``
 (:class:`~hexbot.protocol.simulation.SimulatorAccess`); nothing else about
 this port differs from hardware. The cluster is not thread-safe: every
@@ -40,7 +44,9 @@ from urllib.parse import parse_qs, urlsplit
 from serial.serialutil import PortNotOpenError, SerialBase, SerialException
 
 from hexbot.errors import HexBotError
+from hexbot.hil_sim.uart_line import LineSettings, resample
 from hexbot.hil_sim.urlhandler import SCHEME
+from hexbot.protocol import wire
 from hexbot.protocol.simulation import Placement, PlantVerdict, verdict_from_record
 
 SLICE_S = 0.01  # simulated time per step: well under one 300-baud byte (33 ms)
@@ -77,6 +83,7 @@ class SimCluster:
         self._subscribers: list[Callable[[PlantVerdict], None]] = []
         self._tickers: list[Callable[[], None]] = []
         self._closed = threading.Event()
+        self.failure = ""  # why the simulator stopped on its own ("" while it runs)
         self._thread: threading.Thread | None = None
         if speed > 0:
             self._thread = threading.Thread(target=self._pace, daemon=True,
@@ -176,8 +183,18 @@ class SimCluster:
 
     def _run(self, seconds: float) -> None:
         with self._lock:
-            self.simulator.run(seconds)
-            fresh = self._collect()
+            if self.failure:
+                raise SerialException(self.failure)
+            try:
+                self.simulator.run(seconds)
+                fresh = self._collect()
+            except Exception as exc:  # noqa: BLE001 - any fault of the simulator ends it
+                # The cluster is gone as a pulled cable is: its ports fail from
+                # now on with the reason, and nobody silently starts another.
+                self.failure = f"the simulator stopped: {type(exc).__name__}: {exc}"
+                self._closed.set()
+                self.changed.notify_all()
+                raise SerialException(self.failure) from exc
             self.changed.notify_all()
         for verdict in fresh:
             for callback in list(self._subscribers):
@@ -199,7 +216,10 @@ class SimCluster:
     def _pace(self) -> None:
         wall0, sim0 = time.monotonic(), self.now()
         while not self._closed.is_set():
-            self._run(SLICE_S)
+            try:
+                self._run(SLICE_S)
+            except SerialException:
+                return  # failure recorded: the ports report it
             ahead = (self.now() - sim0) / self.speed - (time.monotonic() - wall0)
             if ahead > 0:
                 self._closed.wait(ahead)
@@ -240,8 +260,8 @@ def _attach(url: str) -> tuple[SimCluster, int | None, bool]:
         raise SerialException(f"{url}: seed must be an integer and speed a number") from exc
     try:
         return SimCluster(target, seed, speed, options.get("firmware")), None, True
-    except HexBotError as exc:  # bad scenario, missing firmware or C extension
-        raise SerialException(f"{url}: {exc}") from exc
+    except HexBotError as exc:  # bad scenario (file:line), missing firmware or C extension
+        raise SerialException(str(exc)) from exc
 
 
 class Serial(SerialBase):
@@ -255,7 +275,9 @@ class Serial(SerialBase):
         if self._port is None:
             raise SerialException("port must be configured before it can be used")
         self.hexbot_sim, self._uart1, self._owner = _attach(self._port)
+        self._received = bytearray()  # resampled, for a port set unlike the line
         self.is_open = True
+        self._reconfigure_port()
 
     def close(self) -> None:
         if not self.is_open:
@@ -265,24 +287,52 @@ class Serial(SerialBase):
             self.hexbot_sim.close()
 
     def _reconfigure_port(self, force_update: bool = False) -> None:
-        pass  # a simulated wire has no line settings to change (as a pty)
+        """Any settings a USB adapter takes are taken; they decide what this
+        end of the simulated wire reads and sends."""
+        try:
+            self._line = LineSettings(int(self._baudrate), int(self._bytesize), self._parity,
+                                      float(self._stopbits))
+        except ValueError as exc:
+            raise SerialException(f"{self._port}: {exc}") from exc
+        baud = wire.BAUD_IR if getattr(self, "_uart1", None) is None else wire.BAUD_DEBUG
+        self._wire = LineSettings(baud)  # what the modules' UARTs speak
+
+    @property
+    def line_matches(self) -> bool:
+        return self._line == self._wire
+
+    def _resampled(self) -> None:
+        """Move what the wire carried into ``_received`` as this port reads it."""
+        data = self.hexbot_sim.take(self._uart1, len(self.hexbot_sim.buffer(self._uart1)))
+        self._received += resample(data, self._wire, self._line)
 
     @property
     def in_waiting(self) -> int:
         self._check_open()
-        return len(self.hexbot_sim.buffer(self._uart1))
+        if self.line_matches:
+            return len(self.hexbot_sim.buffer(self._uart1))
+        self._resampled()
+        return len(self._received)
 
     def read(self, size: int = 1) -> bytes:
         self._check_open()
         if size <= 0:
             return b""
-        self.hexbot_sim.wait_bytes(self._uart1, size, self._timeout)
-        return self.hexbot_sim.take(self._uart1, size)
+        if self.line_matches:
+            self.hexbot_sim.wait_bytes(self._uart1, size, self._timeout)
+            return self.hexbot_sim.take(self._uart1, size)
+        self._resampled()
+        if not self._received:
+            self.hexbot_sim.wait_bytes(self._uart1, 1, self._timeout)
+            self._resampled()
+        data = bytes(self._received[:size])
+        del self._received[:size]
+        return data
 
     def write(self, data: bytes) -> int:
         self._check_open()
         data = bytes(data)
-        self.hexbot_sim.write(self._uart1, data)
+        self.hexbot_sim.write(self._uart1, resample(data, self._line, self._wire))
         return len(data)
 
     def flush(self) -> None:
@@ -291,6 +341,7 @@ class Serial(SerialBase):
     def reset_input_buffer(self) -> None:
         self._check_open()
         self.hexbot_sim.take(self._uart1, len(self.hexbot_sim.buffer(self._uart1)))
+        self._received.clear()
 
     def reset_output_buffer(self) -> None:
         self._check_open()
@@ -325,4 +376,4 @@ class Serial(SerialBase):
         if not self.is_open:
             raise PortNotOpenError()
         if self.hexbot_sim._closed.is_set():
-            raise SerialException("the simulated cluster was closed")
+            raise SerialException(self.hexbot_sim.failure or "the simulated cluster was closed")

@@ -8,9 +8,12 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 
 from hexbot.host import endpoints
-from hexbot.host.events import HostEvent, HostWarning, Listener, PortChanged
+from hexbot.host.cli_progress import meter
+from hexbot.host.events import HostEvent, HostWarning, Listener, Observed, PortChanged
 from hexbot.host.link import LinkState
-from hexbot.host.session import Session
+from hexbot.host.session import Session, listening_id
+from hexbot.protocol import wire
+from hexbot.protocol.parser import Garbage
 
 
 @contextmanager
@@ -32,9 +35,7 @@ def session(args: argparse.Namespace, *, wait_s: float = 5.0, verbose_states: bo
         sim = host.simulator
         sess = Session(host, sim.module_ids() if sim is not None else ())
         if sim is not None and wait_boot:
-            print(f"simulator: {ends.scenario or ends.ir.url}, waiting for the modules to boot",
-                  file=sys.stderr)
-            sess.wait_booted(sim.module_ids())
+            _wait_booted(sess, ends.scenario or ends.ir.url, sim.module_ids())
         yield sess
     finally:
         host.close()
@@ -46,3 +47,25 @@ def _print_state(event: HostEvent) -> None:
     elif isinstance(event, PortChanged) and event.state in (LinkState.LOST, LinkState.CONNECTED):
         print(f"{event.port}: {event.state.value} {event.detail}".rstrip(),  # type: ignore[attr-defined]
               file=sys.stderr, flush=True)
+
+
+def _wait_booted(sess: Session, scenario: str, ids: list[int]) -> None:
+    """Wait for a simulated cluster's boot texts with "n of N booted" on a
+    terminal, then one line saying how it went."""
+    started = sess.now()
+    seen: set[int] = set()
+    with meter(f"simulator {scenario}: modules booted", len(ids)) as bar:
+        def booted(event: HostEvent) -> None:
+            ident = listening_id(event.event) if isinstance(event, Observed) else None
+            if ident is not None and ident not in seen:
+                seen.add(ident)
+                bar.advance()
+        sess.host.add_listener(booted)
+        for obs in sess.host.since(0):  # texts heard before the listener was added
+            booted(obs)
+        heard = sess.wait_booted(ids)
+    print(f"simulator: {scenario}, {len(heard)} of {len(ids)} modules booted in "
+          f"{sess.now() - started:.1f} s", file=sys.stderr)
+    if not heard and any(isinstance(o.event, Garbage) for o in sess.host.since(0)):
+        print(f"warning: only garbled bytes heard: the modules speak {wire.BAUD_IR} 8N1 "
+              "(check --baud, --parity, --data-bits, --stop-bits)", file=sys.stderr)

@@ -13,6 +13,7 @@ from pathlib import Path
 
 from hexbot.host import endpoints
 from hexbot.host.capture import read_capture
+from hexbot.host.cli_args import seconds
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.events import Listener
 from hexbot.host.host import Host
@@ -20,7 +21,7 @@ from hexbot.host.session_log import CAPTURE_NAME
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--timeout", type=float, default=None, metavar="S",
+    parser.add_argument("--timeout", type=seconds, default=None, metavar="S",
                         help="seconds to wait for the replies to a single command "
                              "(default: the protocol's bound for the function)")
     parser.add_argument("--replay", type=Path, metavar="CAPTURE",
@@ -63,5 +64,6 @@ def run(args: argparse.Namespace) -> int:
         records = list(read_capture(path))  # bad files fail here, before the UI starts
         HexBotConsole(Host(), replay=records, start_ports=False).run()
         return 0
-    HexBotConsole(opener=make_opener(args), reply_timeout=args.timeout).run()
-    return 0
+    app = HexBotConsole(opener=make_opener(args), reply_timeout=args.timeout)
+    app.run()
+    return app.failure_status or 0  # the session could not go on: say so to the shell

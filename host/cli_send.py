@@ -3,9 +3,15 @@
 Exit 0 when the replies the addressing implies arrived and acknowledge the
 command (from each ``--module``, which is selected first with code 69);
 otherwise the reason on stderr and the exit status of its kind: 1 refused
-(ERR, unused code, control board time-out), 3 no reply in time, 4 port lost.
-How long to wait comes from the protocol (each function's own duration);
-``--timeout`` overrides it.
+(ERR, unused code, control board time-out) or garbled (bytes that decode
+as no reply: replies collided), 3 no reply in time, 4 port lost. How long
+to wait comes from the protocol (each function's own duration);
+``--timeout`` overrides it. Everything the port heard after the first frame
+is printed in the order it arrived; ``--linger`` keeps printing.
+
+Each ``send`` opens its port anew; to build state across several sends
+(Ref, then Localize) keep a simulator running (``hexbot sim SCENARIO
+--pty``) and pass its pty as ``--port``, as with real modules.
 """
 
 from __future__ import annotations
@@ -14,29 +20,40 @@ import argparse
 import json
 import sys
 
+from hexbot.errors import FrameError
+from hexbot.host.cli_args import seconds, seconds_or_zero
 from hexbot.host.cli_common import session
+from hexbot.host.cli_progress import session_waits
 from hexbot.host.commands import parse_command
-from hexbot.host.describe import describe_event, event_json
+from hexbot.host.describe import describe_event, describe_tx, event_json
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.events import Observed
-from hexbot.host.session import select
+from hexbot.host.session import Session, select
+from hexbot.protocol import frames
+from hexbot.protocol.frames import Command
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("function", metavar="CODE", help="function code or name (hexbot codes)")
+    parser.add_argument("function", metavar="CODE", nargs="?",
+                        help="function code or name (hexbot codes)")
     parser.add_argument("args", nargs="*", metavar="ARG", help="argument bytes")
+    parser.add_argument("--raw", metavar="HEX",
+                        help="send these bytes as they are instead of CODE (e.g. "
+                             "2A464E4E4E4E4E4E4E4E23); any ACK/ERR/STA answers them")
+    parser.add_argument("--dry-run", action="store_true",
+                        help="print the frames' bytes and send nothing")
     parser.add_argument("--module", type=int, action="append", metavar="ID",
                         help="select this module first (code 69) and expect its reply; "
-                             "repeat for several")
+                             "repeat for several; 0 = every module")
     parser.add_argument("--expect", type=int, default=None, metavar="N",
                         help="replies to wait for without --module (default: what the "
                              "addressing implies; 1 before any Select)")
-    parser.add_argument("--timeout", type=float, default=None, metavar="S",
+    parser.add_argument("--timeout", type=seconds, default=None, metavar="S",
                         help="seconds to wait for the replies (default: as long as the "
                              "protocol says the function takes)")
     parser.add_argument("--json", action="store_true", help="print replies as JSON lines")
-    parser.add_argument("--linger", type=float, default=0.0, metavar="S",
-                        help="after the ACK, keep printing events for S seconds "
+    parser.add_argument("--linger", type=seconds_or_zero, default=0.0, metavar="S",
+                        help="after the replies, keep printing events for S seconds "
                              "(e.g. localization reports)")
     parser.add_argument("--unchecked", action="store_true",
                         help="send codes/arguments outside the table's ranges (tests the "
@@ -45,28 +62,79 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    command = parse_command([args.function, *args.args], strict=not args.unchecked)
+    steps = _steps(args)  # every frame checked before a port opens
+    if args.dry_run:
+        for frame in steps:
+            data = frame if isinstance(frame, bytes) else frames.encode_pc(
+                frame, strict=not args.unchecked)
+            print(f"{describe_tx(data)}: {data.hex(' ')}")
+        return 0
+    # --module 0 selects all: the session's addressing decides who answers
+    modules = None if args.module in (None, [0]) else args.module
     with session(args) as sess:
-        mark = sess.host.mark()
-        steps = [(select(*args.module), args.module)] if args.module else []
-        steps.append((command, args.module))
-        for cmd, modules in steps:
-            out = sess.exchange(cmd, modules=modules,
-                                count=None if modules else args.expect,
-                                timeout=args.timeout, strict=not args.unchecked)
-            if not args.linger:
-                for obs in out.replies:
-                    _print(obs, args.json)
-            elif not out.ok:
-                for obs in sess.host.since(mark):
-                    _print(obs, args.json)
+        printer = _Printer(sess, sess.host.mark(), args.json)
+        for frame in steps:
+            with session_waits(sess):
+                out = sess.exchange(frame, modules=modules,
+                                    count=None if modules else args.expect,
+                                    timeout=_timeout(sess, frame, args.timeout),
+                                    strict=not args.unchecked)
+            printer.catch_up()
             out.raise_for_status()
-        if args.linger > 0:
-            sess.sleep(args.linger)
-            for obs in sess.host.since(mark):  # in the order they arrived
-                _print(obs, args.json)
-    print(f"ok: {command}", file=sys.stderr)
+        printer.linger(args.linger)
+    print(f"ok: {describe_tx(steps[-1]) if isinstance(steps[-1], bytes) else steps[-1]}",
+          file=sys.stderr)
     return 0
+
+
+def _steps(args: argparse.Namespace) -> list[Command | bytes]:
+    """The frames to send: Select(--module...) first, then the command."""
+    if (args.raw is None) == (args.function is None):
+        raise FrameError("give a function (CODE [ARG...]) or --raw HEX, not both")
+    if args.raw is not None:
+        if args.args:
+            raise FrameError("--raw takes no ARG words")
+        try:
+            last: Command | bytes = bytes.fromhex(args.raw.replace(":", " "))
+        except ValueError:
+            raise FrameError(f"--raw: not hex bytes: {args.raw!r}") from None
+        if not last:
+            raise FrameError("--raw: no bytes")
+    else:
+        last = parse_command([args.function, *args.args], strict=not args.unchecked)
+    return ([select(*args.module)] if args.module else []) + [last]
+
+
+def _timeout(sess: Session, frame: Command | bytes, given: float | None) -> float | None:
+    """A raw frame has no protocol time-out of its own: the decoded frame's,
+    or the Status bound when the bytes are no frame."""
+    if given is not None or not isinstance(frame, bytes):
+        return given
+    try:
+        command = frames.decode_pc(frame)
+    except FrameError:
+        command = frames.make("Status")
+    return sess.reply_timeout(command, sess.selection, 1)
+
+
+class _Printer:
+    """Prints the journal from a mark on, in the order it arrived."""
+
+    def __init__(self, sess: Session, mark: int, as_json: bool) -> None:
+        self.sess, self.next, self.as_json = sess, mark, as_json
+
+    def catch_up(self) -> None:
+        for obs in self.sess.host.since(self.next):
+            _print(obs, self.as_json)
+            self.next = obs.seq + 1
+
+    def linger(self, seconds: float) -> None:
+        """Print events as they come for ``seconds`` of session time."""
+        clock = self.sess.clock
+        end = clock.now() + seconds
+        while (left := end - clock.now()) > 0:
+            clock.wait(lambda: self.sess.host.mark() > self.next, left)
+            self.catch_up()
 
 
 def _print(obs: Observed, as_json: bool) -> None:
@@ -75,5 +143,3 @@ def _print(obs: Observed, as_json: bool) -> None:
               flush=True)
     else:
         print(f"{obs.t:8.3f} {obs.port:<5} {describe_event(obs.event)}", flush=True)
-
-

@@ -1,10 +1,11 @@
 """What the host knows about the cluster, built only from parsed replies.
 
 A module is known by its id once it speaks in addressed mode (``M03:``)
-or reports its status; before that (legacy mode, thesis prefix ``M:``) the
-only handle is its role letter, so legacy replies update a row keyed by the
-letter. Localization reports carry no prefix at all: each complete report
-(``LOCALIZED``, ``Side``, ``Yref``, ``Pos``) becomes a :class:`Placement`,
+or reports its status. A reply without an id (legacy mode, thesis prefix
+``M:``: every module answers at once and the replies may have collided)
+cannot be attributed and changes no row: the terminals show it, the model
+does not invent a module from it. Localization reports carry no prefix at
+all: each complete report (``LOCALIZED``, ``Side``, ``Yref``, ``Pos``) becomes a :class:`Placement`,
 named by the ACK 66 the firmware sends right after it, or by a later
 status reply at the same position.
 """
@@ -32,7 +33,7 @@ LOCALIZE_CODE = lookup("Localize").code
 
 @dataclass
 class ModuleState:
-    key: str  # "03" for id 3, or "M"/"S" for a legacy-mode speaker
+    key: str  # "03" for id 3
     module_id: int | None = None
     role: str = "-"
     localized: bool = False
@@ -79,12 +80,11 @@ class ClusterModel:
         return self.modules.get(f"{module_id:02d}")
 
     def _row(self, role: str | None, module_id: int | None) -> ModuleState | None:
-        if module_id is not None:
-            key = f"{module_id:02d}"
-        elif role is not None:
-            key = role
-        else:
+        """The row of ``module_id``; None for a reply without an id (or with
+        id 0: a comm board without its control board, or collided replies)."""
+        if not module_id:
             return None
+        key = f"{module_id:02d}"
         row = self.modules.get(key)
         if row is None:
             row = self.modules[key] = ModuleState(key=key, module_id=module_id)
@@ -117,7 +117,8 @@ class ClusterModel:
             return True
         if isinstance(ev, StatusReport):
             row = self._row(ev.role if ev.role != "-" else None, ev.module_id)
-            assert row is not None  # a status always names its module
+            if row is None:
+                return True
             row.role = ev.role
             row.localized = ev.localized
             row.last_seen = t
@@ -156,9 +157,9 @@ class ClusterModel:
         return False
 
     def _name_placement(self, x: int, y: int, yref: int, module_id: int, t: float) -> None:
-        for p in self.placements.values():
-            if p.module_id == module_id and (p.x, p.y) != (x, y):
-                p.module_id = None  # it moved away from there
+        for cell, p in list(self.placements.items()):
+            if p.module_id == module_id and cell != (x, y):
+                del self.placements[cell]  # it moved away: the cell is empty now
         p = self.placements.get((x, y))
         if p is None:
             self.placements[(x, y)] = Placement(x, y, yref, None, t, module_id)

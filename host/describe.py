@@ -55,7 +55,9 @@ def describe_event(ev: Event) -> str:  # noqa: C901 - one line per event kind
         return f"{who(ev.role, ev.module)}ERR {code_name(ev.code)}: {error_name(ev.reason)}"
     if isinstance(ev, StatusReport):
         loc = f"at ({ev.x:+03d},{ev.y:+03d}) yref {ev.yref}" if ev.localized else "not localized"
-        return (f"STA id {ev.module_id} role {ev.role} {loc} "
+        unknown = (" (no id: replies that collided, or a comm board without its control "
+                   "board)" if ev.module_id == 0 else "")
+        return (f"STA id {ev.module_id}{unknown} role {ev.role} {loc} "
                 f"last error {error_name(ev.error)}")
     if isinstance(ev, ControlMessage):
         return f"MSG {code_name(ev.code)} args {' '.join(str(a) for a in ev.args)}"

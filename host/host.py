@@ -147,7 +147,8 @@ class Host:
         self._listeners.append(listener)
 
     def close(self) -> None:
-        for ch in self.channels.values():
+        # the last added first: an embedded simulator's debug port lives on the IR port's cluster
+        for ch in reversed(list(self.channels.values())):
             ch.link.close()
         if self.log:
             self.log.close()

@@ -18,6 +18,7 @@ so the same session gives the same trace.
 from __future__ import annotations
 
 import enum
+import errno
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -26,6 +27,7 @@ import serial
 
 from hexbot.errors import LinkUnavailableError
 from hexbot.hil_sim import urlhandler
+from hexbot.host.port_lock import busy_reason
 from hexbot.protocol.simulation import SimulatorAccess
 from hexbot.protocol.timing import BAUD_IR
 
@@ -74,9 +76,12 @@ class PortSettings:
             return serial.serial_for_url(
                 self.url, baudrate=self.baud, parity=_PARITY[self.parity],
                 bytesize=self.data_bits, stopbits=_STOP[self.stop_bits], timeout=timeout,
-                write_timeout=2.0,
+                write_timeout=2.0, exclusive=True,  # two readers would split the bytes
             )
         except (serial.SerialException, OSError, ValueError) as exc:
+            if getattr(exc, "errno", None) == errno.EWOULDBLOCK:  # pyserial: the flock is taken
+                raise LinkUnavailableError(f"cannot open {self.url}: "
+                                           f"{busy_reason(self.url)}") from exc
             raise LinkUnavailableError(f"cannot open {self.url}: {exc}") from exc
 
 
@@ -191,6 +196,12 @@ class Link:
     def connected(self) -> bool:
         return self.state is LinkState.CONNECTED
 
+    @property
+    def retries(self) -> bool:
+        """Whether a lost port is opened again. Not an in-process simulator:
+        opening its URL again would silently start a fresh cluster."""
+        return not self.settings.url.startswith(urlhandler.SCHEME + "://")
+
     def write(self, data: bytes) -> None:
         """Write all bytes now; LinkUnavailableError if the port is not open
         or fails (the reader thread then reconnects)."""
@@ -261,6 +272,8 @@ class Link:
                 self._set_state(LinkState.CONNECTED, self.settings.describe())
             port.timeout = self.poll_s
             self._read_until_failure(port)
+            if not self.retries:
+                return  # lost for good: the state says why
             if not self._stop.is_set():
                 self._stop.wait(self.retry_s)
 

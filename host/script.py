@@ -112,12 +112,19 @@ def _options(words: list[str], where: str, known: dict[str, int]) -> dict[str, l
 
 
 def parse_script(text: str, name: str = "<script>") -> list[Step]:
-    steps = []
+    """Every line checked; a ScenarioError lists every bad line (one per
+    line of its message, ``file:line: problem``), not only the first."""
+    steps, problems = [], []
     for number, raw in enumerate(text.splitlines(), start=1):
         line = raw.split("#", 1)[0].strip()
         if not line:
             continue
-        steps.append(_parse_line(line, f"{name}:{number}", number))
+        try:
+            steps.append(_parse_line(line, f"{name}:{number}", number))
+        except ScenarioError as exc:
+            problems.append(str(exc))
+    if problems:
+        raise ScenarioError("\n".join(problems))
     return steps
 
 

@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 from hexbot.errors import (
     CancelledError,
     CommandRefusedError,
+    FrameError,
     HexBotTimeoutError,
     LinkUnavailableError,
 )
@@ -42,7 +43,7 @@ from hexbot.host.link import LinkState
 from hexbot.protocol import frames, timing, wire
 from hexbot.protocol.codes import CODES, ErrorCode, lookup
 from hexbot.protocol.frames import Command
-from hexbot.protocol.parser import Ack, ErrorReply, StatusReport, Text
+from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
 
 SELECT = lookup("Select").code
 STATUS = lookup("Status").code
@@ -58,6 +59,7 @@ class OutcomeKind(enum.Enum):
     ACKNOWLEDGED = "acknowledged"
     REFUSED = "refused"
     TIMED_OUT = "timed out"
+    GARBLED = "garbled"  # too few replies, and bytes no module can have sent (a collision)
     PORT_LOST = "port lost"
     CANCELLED = "cancelled"
 
@@ -92,6 +94,7 @@ class Outcome:
     refusals: tuple[Refusal, ...] = ()
     waited: float = 0.0  # session seconds from sending to the verdict
     detail: str = ""  # port lost: why
+    garbage: tuple[Observed, ...] = ()  # undecodable or unattributable, heard while waiting
 
     @property
     def ok(self) -> bool:
@@ -116,6 +119,9 @@ class Outcome:
             return f"{head}: {who} within {self.waited:.1f} s ({n} received)"
         if self.kind is OutcomeKind.PORT_LOST:
             return f"{head}: port lost ({self.detail})" if self.detail else f"{head}: port lost"
+        if self.kind is OutcomeKind.GARBLED:
+            what = "; ".join(_garbled(g.event) for g in self.garbage)
+            return f"{head}: garbled reply: {what} (replies collided?); {n} decoded"
         return f"{head}: cancelled"
 
     def lines(self) -> list[str]:
@@ -131,7 +137,20 @@ class Outcome:
             raise HexBotTimeoutError(self.reason)
         if self.kind is OutcomeKind.PORT_LOST:
             raise LinkUnavailableError(self.reason)
+        if self.kind is OutcomeKind.GARBLED:
+            raise FrameError(self.reason)
         raise CancelledError(self.reason)
+
+
+@dataclass
+class Waiting:
+    """What the session is waiting for right now (for progress displays)."""
+
+    what: str
+    need: int
+    started: float  # session seconds
+    timeout: float
+    replied: int = 0
 
 
 @dataclass
@@ -144,11 +163,18 @@ class _Collector:
     port: str
     replies: list[Observed] = field(default_factory=list)
     extra: list[Observed] = field(default_factory=list)
+    garbage: list[Observed] = field(default_factory=list)
     checked: int = 0
     roll_call: bool = False  # every module's answer counts
+    anonymous_ok: bool = False  # a module without id (ID=00 at boot) is on this port
 
     def take(self, journal: list[Observed]) -> None:
         for obs in journal[self.checked:]:
+            if obs.port == self.port and isinstance(obs.event, Garbage):
+                self.garbage.append(obs)
+            if self._is_reply(obs) and _module_of(obs.event) == 0 and not self.anonymous_ok:
+                self.garbage.append(obs)  # no module here has id 0: replies collided
+                continue
             if self.roll_call and self._is_reply(obs):
                 self.replies.append(obs)
             elif self._is_reply(obs):
@@ -187,6 +213,12 @@ def _module_of(event: object) -> int | None:
     return getattr(event, "module", None)
 
 
+def _garbled(event: object) -> str:
+    if isinstance(event, StatusReport):
+        return "STA from id 0, which no module here has"
+    return f"{len(getattr(event, 'raw', b''))} bytes that decode as no reply"
+
+
 def _refusal(obs: Observed) -> Refusal | None:
     ev = obs.event
     if isinstance(ev, ErrorReply):
@@ -220,6 +252,8 @@ class Session:
         self.selection: tuple[int, ...] | None = LEGACY
         self.all_selected = False  # the last Select was Select(0): ranks are id - 1
         self.cancel = threading.Event()
+        #: the exchange under way, read by progress displays (None: idle)
+        self.waiting: Waiting | None = None
 
     # --- time ----------------------------------------------------------------
 
@@ -365,14 +399,21 @@ class Session:
         except LinkUnavailableError as exc:
             return Outcome(command, OutcomeKind.PORT_LOST, detail=str(exc))
         got = _Collector(code, set(ids) if ids is not None else None, need, port,
-                         checked=mark, roll_call=roll_call)
+                         checked=mark, roll_call=roll_call, anonymous_ok=self._anonymous(port))
+        waiting = self.waiting = Waiting(
+            str(command) if isinstance(command, Command) else f"frame {command.hex(' ')}",
+            need, started, timeout)
 
         def ready() -> bool:
             with self.host.lock:
                 got.take(self.host.since(0))
+            waiting.replied = len(got.replies)
             return got.complete or self.cancel.is_set() or self._lost(port) is not None
 
-        self.host.clock.wait(ready, timeout)
+        try:
+            self.host.clock.wait(ready, timeout)
+        finally:
+            self.waiting = None
         if roll_call and got.replies:
             self.collect(mark, max(QUIET_S, 2 * timing.ACK_SLOT_S), timeout)
             with self.host.lock:
@@ -411,6 +452,16 @@ class Session:
         return frame + timing.reply_timeout_s(code, max(need, 1), command.args,
                                               last_rank=last_rank)
 
+    def _anonymous(self, port: str) -> bool:
+        """Whether a module without an id answers on ``port``: a comm board
+        that got no id from its control board says ``COMM. LISTENING ID=00``
+        at boot and then sends ``STA`` with id 0. Otherwise a STA with id 0 is
+        two replies that collided (their bytes AND on the IR link)."""
+        return any(obs.port == port and isinstance(obs.event, Text)
+                   and obs.event.phrase == wire.TEXT_COMM_LISTENING.rstrip()
+                   and re.search(r"\bID=0+\b", obs.event.tail)
+                   for obs in self.host.since(0))
+
     def port_lost(self, port: str = IR) -> str | None:
         """Why ``port`` is lost or closed; None while it is connected."""
         return self._lost(port)
@@ -440,6 +491,9 @@ class Session:
         if lost is not None:
             return Outcome(command, OutcomeKind.PORT_LOST, replies, extra, missing,
                            waited=waited, detail=lost)
+        if got.garbage:
+            return Outcome(command, OutcomeKind.GARBLED, replies, extra, missing,
+                           waited=waited, garbage=tuple(got.garbage))
         return Outcome(command, OutcomeKind.TIMED_OUT, replies, extra, missing, waited=waited)
 
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import copy
 import threading
+import time
 from collections.abc import Callable
 from pathlib import Path
 
@@ -20,9 +21,17 @@ from textual import on, work
 from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, ScrollableContainer, Vertical
-from textual.widgets import Footer, Header, ProgressBar, Static, TabbedContent, TabPane
+from textual.widgets import (
+    Footer,
+    Header,
+    Input,
+    ProgressBar,
+    Static,
+    TabbedContent,
+    TabPane,
+)
 
-from hexbot.errors import CancelledError, HexBotError
+from hexbot.errors import CancelledError, HexBotError, LinkUnavailableError
 from hexbot.host import workflows
 from hexbot.host.capture import Record
 from hexbot.host.console.composer import Composer
@@ -53,6 +62,8 @@ Step = Callable[[], str]
 SIM_LOG_LINES = 3
 #: Cluster views are redrawn at most this often (seconds).
 REFRESH_S = 0.05
+#: How often the status line shows a wait's progress (seconds).
+WAIT_TICK_S = 0.25
 
 
 class HexBotConsole(App[None]):
@@ -74,8 +85,11 @@ class HexBotConsole(App[None]):
         ("clear_error", "Clear error (72)", "clear the last error of the selected modules"),
         ("cancel", "Cancel operation", "stop the running workflow"),
         ("cycle_mode", "Terminal view: decoded/text/hex", "cycle how terminals show bytes"),
+        ("cycle_stamps", "Time stamps: session/wall clock", "seconds since start or time of day"),
+        ("search", "Search the terminals", "type to keep only matching lines"),
         ("save_terminals", "Save terminals", "write both terminals to the session folder"),
         ("clear_terminals", "Clear terminals", "clear both terminals and their counters"),
+        ("restart_session", "Restart the simulator", "open the session's ports anew"),
         ("help", "Help", "keys and workflows"),
     )
 
@@ -89,8 +103,11 @@ class HexBotConsole(App[None]):
         Binding("o", "all_off", "All off"),
         Binding("escape", "cancel", "Cancel", show=False),
         Binding("m", "cycle_mode", "View", show=False),
+        Binding("c", "cycle_stamps", "Time stamps", show=False),
+        Binding("slash", "search", "Search", show=False),
         Binding("ctrl+s", "save_terminals", "Save", show=False),
         Binding("ctrl+l", "clear_terminals", "Clear", show=False),
+        Binding("ctrl+r", "restart_session", "Restart simulator", show=False),
         Binding("1", "show_tab('terminals')", "Terminals", show=False),
         Binding("2", "show_tab('compose')", "Composer", show=False),
         Binding("3", "show_tab('modules')", "Modules", show=False),
@@ -120,6 +137,9 @@ class HexBotConsole(App[None]):
         self.port_states: dict[str, tuple[LinkState, str]] = {}
         self.sim_log: list[PlantVerdict] = []  # the plant's verdicts, newest last
         self._refresh_pending = False
+        self.step_progress = (0, 1)  # (steps done, steps) of the running operation
+        #: exit status for `hexbot console` when the session could not go on
+        self.failure_status: int | None = None
 
     # --- layout ---------------------------------------------------------------
 
@@ -144,6 +164,7 @@ class HexBotConsole(App[None]):
                     yield PortPanel(DEBUG, "UART1 debug port (one control board)", None,
                                     wire.BAUD_DEBUG)
                     yield Static("", id="session-info")
+        yield Static("", id="alert")
         with Horizontal(id="status-bar"):
             yield Static("", id="status")
             yield ProgressBar(id="progress", show_eta=False)
@@ -151,6 +172,7 @@ class HexBotConsole(App[None]):
 
     def on_mount(self) -> None:
         self.main_query("#progress", ProgressBar).display = False
+        self.set_interval(WAIT_TICK_S, self._show_wait)
         self.on_resize()
         if self.host is not None:
             self.attach(self.host, None, start=self.start_ports)
@@ -176,15 +198,23 @@ class HexBotConsole(App[None]):
             # the listener from the first byte: the terminals show the boot texts
             host, endpoints = self._opener([self._from_reader])
         except HexBotError as exc:
-            self.call_from_thread(self._open_failed, str(exc))
+            self.call_from_thread(self._open_failed, str(exc), exc.exit_status)
             return
         self.call_from_thread(self.attach, host, endpoints, start=False, listening=True)
 
-    def _open_failed(self, why: str) -> None:
+    def _open_failed(self, why: str, status: int) -> None:
         self.busy = ""
-        self.last_result = f"[red]cannot open session: {why}[/]"
+        self.last_result = "[red]cannot open session[/]"
+        self.show_alert(f"cannot open session: {why}", status)
         self._update_status()
-        self.notify(why, title="Session", severity="error", timeout=10)
+
+    def show_alert(self, text: str, status: int | None) -> None:
+        """Keep ``text`` in full above the status line (None: clear it);
+        quitting then exits with ``status``."""
+        alert = self.main_query("#alert", Static)
+        alert.update(escape(text))
+        alert.display = bool(text)
+        self.failure_status = status if text else None
 
     def attach(self, host: Host, endpoints: Endpoints | None, *, start: bool = True,
                listening: bool = False) -> None:
@@ -255,10 +285,10 @@ class HexBotConsole(App[None]):
             self.post_message(Parsed(event.port, event))
         elif isinstance(event, Traffic):
             self.post_message(TrafficMsg(event.port, event.direction.value, event.t,
-                                         event.data))
+                                         event.data, time.time()))
         elif isinstance(event, PortChanged):
             self.post_message(PortState(event.port, event.state,  # type: ignore[arg-type]
-                                        event.detail, event.t))
+                                        event.detail, event.t, time.time()))
         elif isinstance(event, SimVerdict):
             self.post_message(SimEvent(event.verdict))
 
@@ -266,7 +296,7 @@ class HexBotConsole(App[None]):
         return self.main_query("#ir-term" if port == IR else "#debug-term", Terminal)
 
     def on_traffic(self, msg: TrafficMsg) -> None:
-        self.terminal(msg.port).add(Entry(msg.t, msg.direction, data=msg.data))
+        self.terminal(msg.port).add(Entry(msg.t, msg.direction, data=msg.data, wall=msg.wall))
 
     def on_parsed(self, msg: Parsed) -> None:
         obs = msg.observed
@@ -284,10 +314,14 @@ class HexBotConsole(App[None]):
 
     def on_port_state(self, msg: PortState) -> None:
         self.port_states[msg.port] = (msg.state, msg.detail)
-        self.terminal(msg.port).add(Entry(msg.t, "state",
+        self.terminal(msg.port).add(Entry(msg.t, "state", wall=msg.wall,
                                           text=f"{msg.state.value} {msg.detail}"))
         self.main_query(f"#port-{msg.port}", PortPanel).show_state(msg.state, msg.detail)
-        if msg.state is LinkState.LOST:
+        ch = self.host.channels.get(msg.port) if self.host is not None else None
+        if msg.state is LinkState.LOST and ch is not None and not ch.link.retries:
+            restart = "; ctrl+r restarts it" if self._opener is not None else ""
+            self.show_alert(f"{msg.port}: {msg.detail}{restart}", LinkUnavailableError.exit_status)
+        elif msg.state is LinkState.LOST:
             self.notify(f"{msg.port}: {msg.detail}; retrying", title="Port lost",
                         severity="warning")
         self._update_status()
@@ -327,7 +361,7 @@ class HexBotConsole(App[None]):
                          f"{len(self.host.model.placements)} placed")
         parts.append(f"sel {self.selection_text()}")
         if self.busy:
-            parts.append(f"[b]{self.busy}[/] (esc cancels)")
+            parts.append(f"[b]{escape(self.busy)}[/]{self.wait_text()} (esc cancels)")
         elif self.last_result:
             parts.append(self.last_result)
         self.main_query("#status", Static).update(" | ".join(parts))
@@ -400,6 +434,7 @@ class HexBotConsole(App[None]):
         self.session.cancel.clear()
         self.busy = title
         bar = self.main_query("#progress", ProgressBar)
+        self.step_progress = (0, len(steps))
         bar.update(total=len(steps), progress=0)
         bar.display = True
         self._update_status()
@@ -427,8 +462,28 @@ class HexBotConsole(App[None]):
             result = f"{title}: {detail}"
         self.call_from_thread(self._finished, result, ok, len(steps))
 
+    def wait_text(self) -> str:
+        """``: 3 of 7 replied, 12.4 s of 61 s`` while the session waits."""
+        w = self.session.waiting if self.session is not None else None
+        if w is None:
+            return ""
+        elapsed = max(0.0, self.session.now() - w.started)  # type: ignore[union-attr]
+        return f": {w.replied} of {w.need} replied, {elapsed:.1f} s of {w.timeout:.0f} s"
+
+    def _show_wait(self) -> None:
+        """Tick: a long wait (a localization, ~50 s) moves the bar by replies
+        and shows the time it has been waiting and its time-out."""
+        if not self.busy or self.session is None:
+            return
+        w = self.session.waiting
+        done, total = (w.replied, w.need) if w is not None else self.step_progress
+        self.main_query("#progress", ProgressBar).update(total=total, progress=done)
+        self._update_status()
+
     def _progress(self, n: int, label: str) -> None:
-        self.main_query("#progress", ProgressBar).update(progress=n)
+        self.step_progress = (n, self.step_progress[1])
+        self.main_query("#progress", ProgressBar).update(total=self.step_progress[1],
+                                                         progress=n)
         self.busy = label
         self._update_status()
 
@@ -443,6 +498,11 @@ class HexBotConsole(App[None]):
         self._update_status()
 
     def action_cancel(self) -> None:
+        """Escape: leave a text input first (so letter keys act again),
+        otherwise cancel the running operation."""
+        if isinstance(self.focused, Input) and self.screen is self.screen_stack[0]:
+            self.set_focus(None)
+            return
         if self.busy:
             self.cancel_event.set()
             if self.session is not None:
@@ -567,6 +627,33 @@ class HexBotConsole(App[None]):
             mode = self.terminal(port).cycle_mode()
         self.notify(f"terminals show {mode}")
 
+    def action_cycle_stamps(self) -> None:
+        for port in (IR, DEBUG):
+            stamps = self.terminal(port).cycle_stamps()
+        self.notify(f"time stamps: {'wall clock' if stamps == 'wall' else 'since start'}")
+
+    def action_search(self) -> None:
+        """``/``: the terminals' search box (escape leaves it)."""
+        self.show_tab("terminals")
+        self.terminal(IR).query_one(".term-search", Input).focus()
+
+    def action_restart_session(self) -> None:
+        """ctrl+r: close the session's ports and open them again (a fresh
+        embedded simulator); terminals keep their lines."""
+        if self._opener is None:
+            self.notify("this console was given its ports: nothing to restart",
+                        severity="warning")
+            return
+        if self.session is not None:
+            self.session.wake()
+        if self.host is not None:
+            self.host.close()
+        self.host = self.session = None
+        self.show_alert("", None)
+        self.busy = "starting"
+        self._update_status()
+        self._open_session()
+
     def action_clear_terminals(self) -> None:
         for port in (IR, DEBUG):
             self.terminal(port).clear()
@@ -577,9 +664,9 @@ class HexBotConsole(App[None]):
         self.notify("saved " + ", ".join(str(p) for p in paths))
 
     def action_help(self) -> None:
-        keys = [(b.key, b.description) for b in self.BINDINGS if isinstance(b, Binding)]
+        keys = [(key_names(self, b), b.description) for b in self.BINDINGS
+                if isinstance(b, Binding)]
         keys.append(("ctrl+p", "command palette: workflows, tabs, every function"))
-        keys.append(("/", "terminals: type in the search box to filter lines"))
         self.push_screen(HelpScreen(keys))
 
     def on_unmount(self) -> None:
@@ -589,3 +676,9 @@ class HexBotConsole(App[None]):
             self.host.close()
         if self.endpoints is not None:
             self.endpoints.close()
+
+
+def key_names(app: App, binding: Binding) -> str:
+    """A binding's keys as people write them: ``f1, ?`` (not ``f1,question_mark``)."""
+    return ", ".join(app.get_key_display(Binding(key.strip(), binding.action))
+                     for key in binding.key.split(","))

@@ -32,9 +32,10 @@ with decoded replies, a modules table and the lattice.
   module's body joint is computed from its orientation; Table 3-1 timings.
 - **All off** (`o`): code 20 (TurnOffAll) to every module.
 
-Long operations show progress in the status line; `escape` cancels.
+Long operations show progress in the status line (replies so far,
+seconds waited and the time-out); `escape` cancels.
 Every byte in and out is captured in the session folder shown in the
-status line; `hexbot replay FOLDER` plays it back.
+Ports tab (`5`); `hexbot replay FOLDER` plays it back.
 """
 
 

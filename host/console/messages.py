@@ -13,9 +13,11 @@ from hexbot.protocol.simulation import PlantVerdict
 class Traffic(Message):
     """Bytes sent (``tx``) or received (``rx``) on a port."""
 
-    def __init__(self, port: str, direction: str, t: float, data: bytes) -> None:
+    def __init__(self, port: str, direction: str, t: float, data: bytes,
+                 wall: float | None = None) -> None:
         super().__init__()
         self.port, self.direction, self.t, self.data = port, direction, t, data
+        self.wall = wall  # the PC's clock when the reader got the bytes
 
 
 class Parsed(Message):
@@ -27,9 +29,11 @@ class Parsed(Message):
 
 
 class PortState(Message):
-    def __init__(self, port: str, state: LinkState, detail: str, t: float) -> None:
+    def __init__(self, port: str, state: LinkState, detail: str, t: float,
+                 wall: float | None = None) -> None:
         super().__init__()
         self.port, self.state, self.detail, self.t = port, state, detail, t
+        self.wall = wall
 
 
 class SimEvent(Message):

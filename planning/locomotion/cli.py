@@ -10,8 +10,10 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 
 from hexbot.errors import ScenarioError
+from hexbot.host.cli_progress import meter
 from hexbot.planning.locomotion import render
 from hexbot.planning.locomotion.scenarios import (
     load_ruleset,
@@ -28,7 +30,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     run.add_argument("ruleset", help="salvador-free, salvador-pyramids, salvador, otero, or a file")
     run.add_argument("scenario", help="flat, a shipped map (see 'list'), or a .map file")
     run.add_argument("--n", type=int, default=None, help="modules in the strip")
-    run.add_argument("--rounds", type=int, default=10_000, help="round limit (10000)")
+    run.add_argument("--rounds", type=_positive, default=10_000, help="round limit (10000)")
     run.add_argument(
         "--until-advance", type=int, default=None, metavar="K",
         help="stop when K modules have come to rest past the strip's initial cells",
@@ -44,7 +46,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     bank.add_argument("--rulesets", default="salvador-pyramids,salvador",
                       help="comma-separated rule sets (default: salvador-pyramids,salvador)")
     bank.add_argument("--n", default="5,10,20", help="comma-separated strip sizes (5,10,20)")
-    bank.add_argument("--rounds", type=int, default=3000, help="round limit per run (3000)")
+    bank.add_argument("--rounds", type=_positive, default=3000, help="round limit per run (3000)")
     bank.add_argument("--directions", action="store_true",
                       help="also run the north, west and south versions of every map")
     bank.add_argument("--json", action="store_true", help="JSON instead of a Markdown table")
@@ -53,7 +55,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     rnd.add_argument("ruleset", help="salvador, otero, ... or a file")
     rnd.add_argument("--seeds", default="0:100", help="seed range FIRST:END (0:100)")
     rnd.add_argument("--n", default="5,12,20", help="comma-separated strip sizes (5,12,20)")
-    rnd.add_argument("--rounds", type=int, default=2500, help="round limit per run (2500)")
+    rnd.add_argument("--rounds", type=_positive, default=2500, help="round limit per run (2500)")
     rnd.add_argument("--json", action="store_true", help="print one JSON object")
     tables = sub.add_parser("tables", help="our rounds next to Tables 1-5 of Salvador's thesis")
     tables.add_argument("--only", default=None, help="comma-separated: table1,...,table5")
@@ -71,8 +73,6 @@ def run(args: argparse.Namespace) -> int:
         return _tables(args)
     if args.action == "random":
         return _random(args)
-    if args.rounds < 0:
-        raise ScenarioError("--rounds must not be negative")
     if args.until_advance is not None and args.until_advance < 1:
         raise ScenarioError("--until-advance must be at least 1")
     if args.render and not args.render.lower().endswith((".png", ".gif")):
@@ -104,7 +104,30 @@ def run(args: argparse.Namespace) -> int:
             print(f"deadlock: {d.message}; modules not at rest: {d.moving_states}")
         print("moves per module:", " ".join(map(str, result.moves_per_module)))
         print(render.ascii_map(result.positions, result.states, result.obstacles))
-    return 0 if result.status in ("advanced", "reached", "rounds-exhausted") else 3
+    return run_status(result.status, has_goal=args.until_advance is not None
+                      or sc.threshold is not None)
+
+
+def run_status(status: str, *, has_goal: bool) -> int:
+    """The exit status of a run (docs/console.md, Exit statuses): 0 the goal
+    was reached (or, without a goal, the rounds ran out as asked); 1 the
+    rules failed (deadlock, broken invariant); 3 the rounds ran out before
+    the goal, as a time-out does."""
+    if status in ("advanced", "reached"):
+        return 0
+    if status == "rounds-exhausted":
+        return 3 if has_goal else 0
+    return 1
+
+
+def _positive(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
+    return value
 
 
 def _int_list(text: str, what: str) -> list[int]:
@@ -145,16 +168,36 @@ def _random(args: argparse.Namespace) -> int:
 
     seeds = _seed_range(args.seeds)
     rs = load_ruleset(args.ruleset)
-    report = randommaps.sweep(rs, seeds, _int_list(args.n, "--n"), args.rounds)
+    sizes = _int_list(args.n, "--n")
+    report, done = randommaps.SweepReport(), 0
+    # One seed at a time: a bar on the terminal, and Ctrl-C keeps what finished.
+    with meter(f"random maps, {rs.name}", len(seeds)) as bar:
+        try:
+            for seed in seeds:
+                part = randommaps.sweep(rs, [seed], sizes, args.rounds)
+                report.runs += part.runs
+                report.outcomes.update(part.outcomes)
+                report.violations += part.violations
+                done += 1
+                bar.advance()
+        except KeyboardInterrupt:
+            pass
+    finished = f"{seeds.start}:{seeds.start + done}"
+    interrupted = done < len(seeds)
     if args.json:
-        print(json.dumps({"ruleset": rs.name, "seeds": args.seeds, **report.to_dict()}))
+        print(json.dumps({"ruleset": rs.name, "seeds": finished, "interrupted": interrupted,
+                          **report.to_dict()}))
     else:
         counts = ", ".join(f"{k} {v}" for k, v in sorted(report.outcomes.items()))
-        print(f"rule set {rs.name}, random maps {args.seeds}: {report.runs} runs: {counts}")
+        print(f"rule set {rs.name}, random maps {finished}: {report.runs} runs: {counts}")
         for v in report.violations:
             print(f"  random-{v['seed']} n = {v['n']}: {v['kind']} in round {v['round']} "
                   f"at {[tuple(c) for c in v['cells'][:3]]} ({'; '.join(v['rules'])})")
-    return 3 if report.violations else 0
+    if interrupted:
+        print(f"interrupted: {done} of {len(seeds)} seeds done (results above are theirs)",
+              file=sys.stderr)
+        return 130
+    return 1 if report.violations else 0
 
 
 def _tables(args: argparse.Namespace) -> int:

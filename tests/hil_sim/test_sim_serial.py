@@ -15,7 +15,7 @@ urlhandler.register()
 
 
 def _boot_text(url: str) -> tuple[bytes, float]:
-    with serial.serial_for_url(url, timeout=timing.boot_seconds([1, 2])) as port:
+    with serial.serial_for_url(url, 300, timeout=timing.boot_seconds([1, 2])) as port:
         data = port.read(10_000)  # a time-out in simulated seconds
         return data, port.hexbot_sim.now()
 
@@ -32,7 +32,7 @@ def test_the_same_seed_gives_the_same_bytes():
 
 
 def test_a_frame_gets_its_reply_and_the_access_is_typed():
-    with serial.serial_for_url("hexbot-sim://single?speed=0", timeout=10) as port:
+    with serial.serial_for_url("hexbot-sim://single?speed=0", 300, timeout=10) as port:
         port.read_until(b"ID=01 FW=0.1.0\n\r")
         port.write(b"*FNNNNNNNN#")  # Status (70), legacy mode
         port.timeout = 3
@@ -44,15 +44,15 @@ def test_a_frame_gets_its_reply_and_the_access_is_typed():
 
 
 def test_a_paced_port_runs_on_its_own():
-    with serial.serial_for_url("hexbot-sim://single?speed=50", timeout=5) as port:
+    with serial.serial_for_url("hexbot-sim://single?speed=50", 300, timeout=5) as port:
         assert port.read_until(b"COMM. BOARD READY").endswith(b"COMM. BOARD READY")
         assert not port.hexbot_sim.stepped
 
 
 def test_the_debug_port_of_a_module_opens_on_the_same_cluster():
-    with serial.serial_for_url("hexbot-sim://pair?speed=0", timeout=3) as ir:
+    with serial.serial_for_url("hexbot-sim://pair?speed=0", 300, timeout=3) as ir:
         url = ir.hexbot_sim.uart1_url(2)
-        with serial.serial_for_url(url, timeout=0) as debug:
+        with serial.serial_for_url(url, 4800, timeout=0) as debug:
             assert debug.hexbot_sim is ir.hexbot_sim
             ir.read(10_000)  # three simulated seconds of boot
             assert debug.in_waiting > 0  # the control board's boot text on UART1
@@ -61,7 +61,7 @@ def test_the_debug_port_of_a_module_opens_on_the_same_cluster():
 
 
 def test_plant_verdicts_are_typed():
-    with serial.serial_for_url("hexbot-sim://pair?speed=0", timeout=timing.boot_seconds([2])
+    with serial.serial_for_url("hexbot-sim://pair?speed=0", 300, timeout=timing.boot_seconds([2])
                                ) as port:
         port.read(10_000)
         # Table 3-1's example: module 2 CW about its joint 4, module 1 supports

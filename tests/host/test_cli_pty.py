@@ -154,3 +154,24 @@ def test_a_module_with_another_protocol_schema_is_warned_about(responder, log_di
 def test_a_module_with_this_schema_gives_no_warning(responder, log_dir, capsys):
     assert main(["send", "Status", "--module", "2", "--port", responder.path]) == 0
     assert "warning" not in capsys.readouterr().err
+
+
+def test_a_port_held_by_another_program_is_busy_and_names_it(responder, log_dir, capsys):
+    """Issue 13, defect 7: two programs on one port split its bytes silently."""
+    holder = subprocess.Popen(
+        [sys.executable, "-c",
+         "import serial, sys, time\n"
+         f"p = serial.Serial({responder.path!r}, 300, exclusive=True)\n"
+         "print('locked', flush=True)\n"
+         "time.sleep(60)\n"],
+        stdout=subprocess.PIPE, text=True)
+    try:
+        assert holder.stdout.readline().strip() == "locked"
+        rc = main(["send", "Status", "--port", responder.path, "--timeout", "1"])
+    finally:
+        holder.kill()
+        holder.wait()
+    err = capsys.readouterr().err
+    assert rc == 4, err
+    assert f"port busy, held by PID {holder.pid} (" in err and "exclusive=True" in err
+    assert responder.received == []

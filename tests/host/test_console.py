@@ -14,6 +14,7 @@ from hexbot.host.console.modules_view import ModulesView
 from hexbot.host.console.terminal import Terminal
 from hexbot.host.host import IR, Host
 from hexbot.host.link import LinkState, PortSettings
+from hexbot.protocol import frames
 from hexbot.protocol.simulation import Placement
 
 
@@ -94,6 +95,42 @@ async def test_terminal_search_views_and_save(responder, tmp_path):
 
 
 @sync
+async def test_replies_without_id_add_no_module(responder):
+    """Issue 13, defect 2: before any Select every module answers ``M: ACK``
+    at once; the console made a module row ``M`` and counted it."""
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        await until(pilot, lambda: app.port_states.get(IR, (None,))[0] is LinkState.CONNECTED)
+        app.send_command(frames.make("TurnOffAll"))
+        assert await until(pilot, lambda: ir_text(app).count("M ACK 20 TurnOffAll") == 7)
+        await pilot.pause(0.2)
+        assert modules_rows(app) == []
+        assert "0 modules, 0 placed" in str(app.query_one("#status").render())
+
+
+@sync
+async def test_keys_search_help_names_and_escape_leaves_inputs(responder):
+    """Issue 13, defect 8: ``/`` was listed but unbound, help showed
+    ``f1,question_mark``, escape did not leave a text input."""
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        await pilot.press("2")
+        await pilot.click("#fn-filter")
+        await pilot.press("escape")  # leave the filter: keys act again
+        await pilot.press("1")
+        assert app.query_one("#tabs").active == "terminals"
+        assert app.query_one("#fn-filter").value == ""
+        await pilot.press("slash")
+        assert app.focused is app.query_one("#ir-term .term-search")
+        await pilot.press(*"ack", "escape", "c")  # c: wall-clock time stamps
+        assert app.query_one("#ir-term", Terminal).stamps == "wall"
+        await pilot.press("f1")
+        help_text = app.screen.query_one("Markdown").source
+        assert "`f1, ?` Help" in help_text and "question_mark" not in help_text
+        assert "`/` Search" in help_text
+
+
+@sync
 async def test_composer_refuses_out_of_range_argument(responder):
     app = _app(responder)
     async with app.run_test(size=(100, 30)) as pilot:
@@ -132,6 +169,10 @@ async def test_cancel_stops_a_long_operation(silent_responder):
         await until(pilot, lambda: app.port_states.get(IR, (None,))[0] is LinkState.CONNECTED)
         await pilot.press("t")
         assert await until(pilot, lambda: bool(app.busy))
+        # issue 13, defect 9: a long wait shows replies, elapsed time and time-out
+        status = app.query_one("#status")
+        assert await until(pilot, lambda: "0 of 1 replied, " in str(status.render())
+                           and " s of 30 s" in str(status.render()))
         await pilot.press("escape")
         assert await until(pilot, lambda: not app.busy, timeout=5)
         assert "cancelled" in app.last_result
@@ -337,3 +378,53 @@ async def test_replay_shows_a_recorded_session_and_cancels():
         await pilot.press("escape")
         assert await until(pilot, lambda: not app.busy, timeout=5)
         assert "Replay: cancelled" in app.last_result
+
+
+@sync
+async def test_a_bad_scenario_file_stays_visible_and_fails_the_exit_status(log_dir, tmp_path):
+    """Issue 13, defect 10: the status line cut the file:line error, and
+    quitting exited 0."""
+    bad = tmp_path / "bad.toml"
+    bad.write_text('name = "bad"\nbase = 1\n\n[[module]]\nid = 1\nposition = [0, 0]\n'
+                   'colour = "red"\n')
+    args = cli_console.parse(["--scenario", str(bad), "--sim-speed", "5"])
+    app = HexBotConsole(opener=cli_console.make_opener(args))
+    async with app.run_test(size=(80, 24)) as pilot:
+        alert = app.query_one("#alert")
+        assert await until(pilot, lambda: alert.display, timeout=60)
+        text = str(alert.render())
+        assert f"{bad}:7:" in text.replace("\n", ""), text
+        await pilot.press("3", "1")  # visible on every tab
+        assert alert.display
+    assert app.failure_status == 4
+
+
+@sync
+async def test_a_stopped_simulator_is_said_and_restarted(pair_args):
+    """Issue 13, defect 10: when the embedded simulator dies the console
+    retried forever without saying so. Its core failing is simulated by
+    making the cluster's ``run`` raise (a test double on the real path)."""
+    app = HexBotConsole(opener=cli_console.make_opener(pair_args))
+    async with app.run_test(size=(100, 30)) as pilot:
+        assert await until(pilot, lambda: app.host is not None, timeout=60)
+        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        cluster = app.host.simulator
+        first_host = app.host
+
+        def fault(seconds: float) -> None:
+            raise RuntimeError("core fault at pc 0x1234")
+        cluster.simulator.run = fault
+        alert = app.query_one("#alert")
+        assert await until(pilot, lambda: alert.display, timeout=30)
+        assert ("the simulator stopped: RuntimeError: core fault at pc 0x1234; ctrl+r "
+                "restarts it") in str(alert.render()).replace("\n", " ")
+        assert app.port_states[IR][0] is LinkState.LOST
+        assert app.failure_status == 4
+        await pilot.pause(0.5)
+        assert app.port_states[IR][0] is LinkState.LOST  # no silent new cluster
+        await pilot.press("ctrl+r")
+        assert await until(pilot, lambda: app.host is not None and app.host is not first_host
+                           and app.port_states[IR][0] is LinkState.CONNECTED, timeout=60)
+        assert await until(pilot, lambda: not app.busy, timeout=60)
+        assert "Simulator: done: 2 modules booted" in app.last_result
+        assert not alert.display and app.failure_status is None

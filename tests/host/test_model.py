@@ -29,11 +29,35 @@ def test_model_tracks_acks_errors_status_and_localization():
     assert model.module(3).last_error == ""
 
 
-def test_legacy_reply_keyed_by_role_and_boot_tail_by_id():
+def test_reply_without_id_invents_no_module_and_boot_tail_names_by_id():
+    """Defect 2 of issue 13: a legacy-mode reply (no id: every module answers
+    at once, replies may collide) made a row named ``S``/``M``."""
     model = ClusterModel()
-    _feed(model, parser.reply_ack(20, "S") + wire.PREAMBLE + b"COMM. BOARD READY ID=07\n\r")
-    assert model.modules["S"].last_ack == 20
+    _feed(model, parser.reply_ack(20, "S") + parser.reply_ack(20, "M")
+          + wire.PREAMBLE + b"COMM. BOARD READY ID=07\n\r")
+    assert list(model.modules) == ["07"]
     assert model.module(7).boot == "ID=07"
+    assert model.acks == 2  # still counted as traffic
+
+
+def test_status_with_id_0_makes_no_module():
+    """Defect 3: two STA replies ANDed on the IR link gave ``STA id 0`` (a
+    comm board without its control board sends id 0 too: no row either)."""
+    model = ClusterModel()
+    _feed(model, parser.reply_status(0, "M", False, 0, 0, 0, 0, prefix_role="M"))
+    assert model.modules == {}
+
+
+def test_a_module_that_moved_leaves_an_empty_cell():
+    """Defect 2: after a move and a new localization the old cell was drawn
+    ``/??\\`` and counted as placed."""
+    model = ClusterModel()
+    for ident, (x, y) in ((1, (0, 0)), (2, (0, 1))):
+        _feed(model, parser.reply_status(ident, "M", True, x, y, 0, 0, prefix_role="M"))
+    model.moved(2)
+    _feed(model, wire.PREAMBLE + b"LOCALIZED\n\rSide: 4\n\rYref: 2\n\rPos: -01+01\n\r"
+          + parser.reply_ack(66, "M", 2))
+    assert [(c.x, c.y, c.module_id) for c in model.cells()] == [(-1, 1, 2), (0, 0, 1)]
 
 
 def test_capture_round_trip_and_errors(tmp_path):

@@ -137,3 +137,25 @@ def test_a_lost_port_ends_the_script_at_once_with_exit_4(responder, log_dir, tmp
     err = capsys.readouterr().err
     assert rc == 4, err  # not 1 (a failed step) and not after the 60 s wait
     assert "t.hbs: port lost" in err
+
+
+def test_the_checker_reports_every_bad_line(tmp_path, capsys):
+    """Issue 13, item 11: one error per run meant one edit-run cycle per typo."""
+    text = "select 1\nJxOpen 7\nRef\nFrobnicate\nwait soon\n"
+    assert main(["run", str(_write(tmp_path, text)), "--check"]) == 1
+    err = capsys.readouterr().err
+    assert "t.hbs:2: " in err and "must be 1..6, got 7" in err
+    assert "t.hbs:4: unknown function 'Frobnicate'" in err
+    assert "t.hbs:5: seconds must be a number" in err
+
+
+def test_run_help_states_the_simulator_speed_it_uses(tmp_path, log_dir, capsys):
+    """Issue 13, item 11: the help said one default speed, run used another."""
+    import subprocess
+    import sys
+
+    helptext = subprocess.run([sys.executable, "-m", "hexbot.cli", "run", "--help"],
+                              capture_output=True, text=True).stdout
+    assert "0 for send/run/plan" in " ".join(helptext.split())
+    assert main(["run", str(_write(tmp_path, "select 2\n")), "--scenario", "pair"]) == 0
+    assert "ir: connected hexbot-sim://pair?speed=0 " in capsys.readouterr().err

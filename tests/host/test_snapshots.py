@@ -19,6 +19,7 @@ CAPTURE = Path(__file__).parent / "data" / "flower7_session.hbcap"
 SCREENS = {
     "terminals_80x24": ((80, 24), []),
     "terminals_wide": ((140, 36), []),
+    "terminals_hex": ((100, 30), ["m", "m"]),
     "composer_cw": ((110, 32), ["2", "tab", *"cw", "enter"]),
     "modules": ((100, 24), ["3"]),
     "lattice": ((100, 30), ["4"]),

@@ -37,7 +37,7 @@ def test_rounds_exhausted_and_text_output(capsys):
 def test_deadlock_exit_code_and_report(capsys):
     code, out, _ = run_cli(capsys, "run", "salvador-free", "flat", "--n", "1", "--json")
     data = json.loads(out)
-    assert code == 3
+    assert code == 1  # the rules failed (docs/console.md, Exit statuses)
     assert data["status"] == "deadlock"
     assert data["deadlock"]["round"] == 1
 
@@ -47,7 +47,7 @@ def test_render(tmp_path, capsys, suffix):
     out = tmp_path / f"run.{suffix}"
     code, _, _ = run_cli(capsys, "run", "salvador-pyramids", "pyramid", "--n", "5",
                          "--rounds", "30", "--render", str(out))
-    assert code == 0
+    assert code == 3  # 30 rounds do not get past the pyramid (a time-out); drawn anyway
     head = out.read_bytes()[:4]
     assert head == (b"\x89PNG" if suffix == "png" else b"GIF8")
 
@@ -76,3 +76,14 @@ def test_bank_json(capsys):
     assert {r["scenario"] for r in rows} >= {"pyramid", "maze", "histogram-1"}
     assert all(r["status"] in ("reached", "deadlock", "violation", "rounds-exhausted")
                for r in rows)
+
+
+def test_rounds_out_before_the_goal_is_a_time_out_and_zero_rounds_a_usage_error(capsys):
+    """Issue 13, item 11: exit statuses were inconsistent and undocumented."""
+    code, out, _ = run_cli(capsys, "run", "salvador-free", "flat", "--n", "6", "--rounds", "3",
+                           "--until-advance", "5")
+    assert code == 3 and "status: rounds-exhausted after 3 rounds" in out
+    with pytest.raises(SystemExit) as info:
+        run_cli(capsys, "run", "salvador-free", "flat", "--rounds", "0")
+    assert info.value.code == 2
+    assert "--rounds: must be at least 1, got 0" in capsys.readouterr().err

@@ -55,7 +55,8 @@ def test_cli_random_prints_json_and_fails_on_a_violation(capsys, tmp_path):
     assert out["runs"] == 3 and out["violations"] == []
     old = tmp_path / "old.rules"
     old.write_text(without_tag(shipped("salvador"), "ORPHAN"))
-    assert main(["locomotion", "random", str(old), "--seeds", "153:154", "--n", "12"]) == 3
+    # a broken invariant: failed (1)
+    assert main(["locomotion", "random", str(old), "--seeds", "153:154", "--n", "12"]) == 1
     assert "random-153 n = 12: disconnected" in capsys.readouterr().out
 
 

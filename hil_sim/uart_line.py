@@ -1,0 +1,116 @@
+"""What a UART receives when the two ends of a serial line disagree.
+
+The simulated modules speak 300 baud 8N1 on the IR transceiver (4800 8N1
+on a debug port). A PC port set to another baud rate, parity, word size or
+stop bits does not get the modules' bytes on real hardware: it samples the
+line at its own bit time and reads other bytes (or framing errors). So that
+a wrong setting is caught in the simulator before it is met on the bench,
+the simulated ports pass bytes through :func:`resample`, which draws the
+sender's waveform (start bit, data bits LSB first, parity, stop bits, idle
+high between bursts) and samples it as the receiver's UART does: wait for
+a falling edge, sample each bit in its middle, re-arm after the middle of
+the stop bit.
+
+Decisions (documented in docs/simulator.md): a byte with a parity or
+framing error is delivered as sampled (a port in raw mode without INPCK
+does so); each call is one burst that starts and ends idle (reads and
+writes are bursts: the time between them is not modelled).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+#: parity bit for a data word, by pyserial's parity letters
+_PARITY = {
+    "N": None,
+    "E": lambda word: bin(word).count("1") % 2,
+    "O": lambda word: 1 - bin(word).count("1") % 2,
+    "M": lambda word: 1,
+    "S": lambda word: 0,
+}
+
+
+@dataclass(frozen=True)
+class LineSettings:
+    baud: int
+    data_bits: int = 8
+    parity: str = "N"  # N E O M S
+    stop_bits: float = 1
+
+    def __post_init__(self) -> None:
+        if self.baud <= 0:
+            raise ValueError(f"baud must be positive, got {self.baud}")
+        if self.parity not in _PARITY:
+            raise ValueError(f"parity must be one of {''.join(_PARITY)}, got {self.parity!r}")
+        if self.data_bits not in (5, 6, 7, 8):
+            raise ValueError(f"data bits must be 5..8, got {self.data_bits}")
+
+    @property
+    def frame_bits(self) -> float:
+        """Bits on the wire per byte: start, data, parity, stop."""
+        return 1 + self.data_bits + (self.parity != "N") + self.stop_bits
+
+    def describe(self) -> str:
+        return f"{self.baud} {self.data_bits}{self.parity}{self.stop_bits:g}"
+
+
+def _waveform(data: bytes, tx: LineSettings) -> list[tuple[float, int]]:
+    """(start time, level) of every bit, in seconds from the burst's start."""
+    bit = 1.0 / tx.baud
+    out: list[tuple[float, int]] = []
+    t = 0.0
+    parity = _PARITY[tx.parity]
+    for byte in data:
+        word = byte & ((1 << tx.data_bits) - 1)
+        levels = [0] + [(word >> i) & 1 for i in range(tx.data_bits)]
+        if parity is not None:
+            levels.append(parity(word))
+        for level in levels:
+            out.append((t, level))
+            t += bit
+        out.append((t, 1))  # stop bits, then idle until the next start bit
+        t += bit * tx.stop_bits
+    out.append((t, 1))
+    return out
+
+
+def resample(data: bytes, tx: LineSettings, rx: LineSettings) -> bytes:
+    """The bytes a receiver set to ``rx`` reads from ``data`` sent as ``tx``."""
+    if tx == rx or not data:
+        return bytes(data)
+    wave = _waveform(data, tx)
+    end = wave[-1][0]
+    starts = [t for t, _ in wave]
+
+    def level(t: float) -> int:
+        lo, hi = 0, len(starts) - 1  # the last bit that started at or before t
+        while lo < hi:
+            mid = (lo + hi + 1) // 2
+            if starts[mid] <= t:
+                lo = mid
+            else:
+                hi = mid - 1
+        return wave[lo][1] if t < end else 1
+
+    bit = 1.0 / rx.baud
+    out = bytearray()
+    i, t = 0, 0.0
+    while True:
+        # the line low at or after t: the first low bit that has not ended by t
+        # (the waveform ends idle high, so a low bit always has a successor)
+        while i < len(wave) - 1 and (wave[i][1] != 0 or wave[i + 1][0] <= t):
+            i += 1
+        if i >= len(wave) - 1:
+            break
+        edge = max(t, wave[i][0])
+        if level(edge + bit / 2) != 0:  # a glitch, not a start bit
+            t = edge + bit / 2
+            continue
+        word = 0
+        for k in range(rx.data_bits):
+            word |= level(edge + bit * (1.5 + k)) << k
+        out.append(word)
+        # re-arm after the middle of the (first) stop bit
+        t = edge + bit * (rx.frame_bits - rx.stop_bits + 0.5)
+    return bytes(out)

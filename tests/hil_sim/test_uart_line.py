@@ -1,0 +1,77 @@
+"""Simulated serial lines garble bytes when the two ends disagree, as real
+UARTs do (issue 13, defect 7): on the hexbot-sim:// URL and on the ptys of
+``hexbot sim --pty``."""
+
+from __future__ import annotations
+
+import serial
+
+from hexbot.hil_sim import urlhandler
+from hexbot.hil_sim.uart_line import LineSettings, resample
+from hexbot.protocol import timing
+from hexbot.protocol.parser import Text, parse_all
+
+REPLY = b"\n\r\n\rM02: ACKD\n\r"
+LINE = LineSettings(300)
+
+
+def test_the_same_settings_pass_bytes_unchanged_and_stop_bits_do_not_matter():
+    assert resample(REPLY, LINE, LINE) == REPLY
+    assert resample(REPLY, LINE, LineSettings(300, stop_bits=2)) == REPLY
+
+
+def test_a_fast_receiver_reads_breaks_and_a_wrong_parity_reads_other_bytes():
+    fast = resample(REPLY, LINE, LineSettings(9600))
+    assert len(fast) > len(REPLY) and fast.count(0) > len(REPLY)  # low bits read as NULs
+    assert resample(REPLY, LINE, LineSettings(300, parity="E")) != REPLY
+    assert resample(REPLY, LINE, LineSettings(300, data_bits=7)) != REPLY
+    # and the other way: a frame sent at 9600 is a glitch to a 300-baud module
+    assert b"*F" not in resample(b"*FNNNNNNNN#", LineSettings(9600), LINE)
+
+
+def _boot_texts(**settings) -> list[str]:
+    urlhandler.register()
+    with serial.serial_for_url("hexbot-sim://single?speed=0", timeout=timing.boot_seconds([1]),
+                               **settings) as port:
+        port.dtr, port.rts = False, True  # accepted as a USB adapter accepts them
+        assert port.cts and port.dsr
+        data = port.read(200)
+    return [e.phrase for e in parse_all(data) if isinstance(e, Text)]
+
+
+def test_the_url_port_reads_the_boot_only_with_the_modules_settings():
+    assert "COMM. LISTENING" in _boot_texts(baudrate=300)
+    assert _boot_texts(baudrate=9600) == []
+    assert _boot_texts(baudrate=300, parity="E") == []
+
+
+def test_a_pty_client_at_the_wrong_baud_reads_garbage():
+    from hexbot.host.simproc import SimProcess
+
+    with SimProcess("single", speed=0) as sim:
+        with serial.Serial(sim.ports.ir, 300, timeout=30) as port:
+            boot = port.read_until(b"COMM. LISTENING")
+        with serial.Serial(sim.ports.ir, 9600, timeout=1.0) as port:
+            port.write(b"*FNNNNNNNN#")  # Status, but at 9600: a glitch to the module
+            wrong = port.read(400)
+        with serial.Serial(sim.ports.ir, 300, timeout=10) as port:
+            port.write(b"*FNNNNNNNN#")
+            right = port.read_until(b"STA\x01")
+    assert boot.endswith(b"COMM. LISTENING")
+    assert b"STA" not in wrong
+    assert right.endswith(b"STA\x01")
+
+
+def test_the_bridge_reads_the_rate_a_pty_client_set():
+    from hexbot.hil_sim.pty_bridge import _Port
+
+    port = _Port.open(300)
+    try:
+        assert port.to_client(REPLY) == REPLY  # nobody set anything: the modules' rate
+        with serial.Serial(port.name, 9600) as client:
+            assert port.client_line() == LineSettings(9600)
+            assert port.to_client(REPLY) == resample(REPLY, LINE, LineSettings(9600))
+            client.baudrate = 300
+            assert port.to_client(REPLY) == REPLY
+    finally:
+        port.close()
