@@ -82,6 +82,7 @@ ARTIFACTS: tuple[Generated, ...] = (
     Generated(DOCS / "firmware.md", "pin-map", docs_table.render_pin_table),
     Generated(DOCS / "firmware.md", "timing", docs_table.render_timing_table),
     Generated(mavlink_xml.XML_PATH, None, mavlink_xml.render),
+    Generated(mavlink_xml.MINIMAL_PATH, None, mavlink_xml.render_minimal),
     *_mavgen_outputs(),
 )
 

@@ -138,8 +138,10 @@ def describe_mavlink_tx(data: bytes) -> str | None:
     if not isinstance(msg, hexbot_mavlink.MAVLink_hexbot_command_message):
         return f"MAV {msg.get_type()} seq {msg.get_seq()}"
     fn = CODES.get(msg.code)
-    nargs = len(fn.args) if fn is not None else 0
-    call = f"{fn.name}({', '.join(map(str, msg.args[:nargs]))})" if fn else f"code{msg.code}"
+    args = list(msg.args[:len(fn.args)] if fn is not None else [])
+    while msg.code == SELECT and len(args) > 1 and args[-1] == 0:
+        args.pop()  # Select's further ids are optional
+    call = f"{fn.name}({', '.join(map(str, args))})" if fn else f"code{msg.code}"
     to = f"to {msg.target_system}" if msg.target_system else "to the selected"
     return f"MAV {to} seq {msg.get_seq()}: {call}"
 

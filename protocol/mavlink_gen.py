@@ -47,6 +47,7 @@ def generate() -> dict[Path, str]:
         tmp_path = Path(tmp)
         xml = tmp_path / f"{mavlink_xml.DIALECT}.xml"
         xml.write_text(mavlink_xml.render())
+        (tmp_path / mavlink_xml.MINIMAL).write_text(mavlink_xml.render_minimal())
         _mavgen("C", tmp_path / "c", xml)
         for path in sorted((tmp_path / "c").rglob("*.h")):
             out[C_DIR / path.relative_to(tmp_path / "c")] = path.read_text()

@@ -12,17 +12,17 @@ extern "C" {
 
 #ifndef MAVLINK_TEST_ALL
 #define MAVLINK_TEST_ALL
-
+static void mavlink_test_minimal(uint8_t, uint8_t, mavlink_message_t *last_msg);
 static void mavlink_test_hexbot(uint8_t, uint8_t, mavlink_message_t *last_msg);
 
 static void mavlink_test_all(uint8_t system_id, uint8_t component_id, mavlink_message_t *last_msg)
 {
-
+    mavlink_test_minimal(system_id, component_id, last_msg);
     mavlink_test_hexbot(system_id, component_id, last_msg);
 }
 #endif
 
-
+#include "../minimal/testsuite.h"
 
 
 static void mavlink_test_hexbot_command(uint8_t system_id, uint8_t component_id, mavlink_message_t *last_msg)
