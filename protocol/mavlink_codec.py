@@ -19,6 +19,7 @@ that system were missed before it (a gap in the sequence).
 from __future__ import annotations
 
 import enum
+import io
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 
@@ -110,7 +111,8 @@ class MavlinkEncoder:
     """HEXBOT_COMMAND frames from the PC, numbered by pymavlink's sequence."""
 
     def __init__(self, system: int = PC_SYSTEM, component: int = PC_COMPONENT) -> None:
-        self.mav = hexbot_mavlink.MAVLink(None, srcSystem=system, srcComponent=component)
+        self._out = io.BytesIO()  # pymavlink's send() writes here and numbers the frame
+        self.mav = hexbot_mavlink.MAVLink(self._out, srcSystem=system, srcComponent=component)
 
     def encode(self, command: Command, *, target: int = 0, strict: bool = True) -> bytes:
         """The command as one MAVLink 2 frame to module ``target`` (0: the
@@ -122,8 +124,10 @@ class MavlinkEncoder:
         args = [0 if (command.code == SELECT and a == wire.UNUSED) else a
                 for a in command.args]
         args += [0] * (wire.PC_ARGS - len(args))
-        msg = hexbot_mavlink.MAVLink_hexbot_command_message(target, command.code, args)
-        return bytes(msg.pack(self.mav))
+        self._out.seek(0)
+        self._out.truncate()
+        self.mav.hexbot_command_send(target, command.code, args)
+        return self._out.getvalue()
 
 
 def describe_mavlink_tx(data: bytes) -> str | None:
