@@ -20,6 +20,8 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
     "host": ("hexbot.bench.host", "capture writing, replay, console rendering (JSON)"),
     "planning": ("hexbot.bench.planning", "hex reconfiguration planners: time and moves"),
     "locomotion": ("hexbot.bench.locomotion", "square-lattice locomotion engine (JSON)"),
+    "ir-noise": ("hexbot.bench.ir_noise",
+                 "wrong and lost commands on a noisy IR link, legacy vs MAVLink"),
     "pyramid-search": (
         "hexbot.bench.pyramid_search",
         "random symmetric staircases against Table 2 of the locomotion thesis (JSON)",

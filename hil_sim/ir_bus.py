@@ -22,8 +22,15 @@ by its channel selector (Table 3-5). The medium decides, byte by byte:
   with the framing error flag.
 * Fault injection per directed link: each data bit flips with probability
   ``bit_error_rate``; the whole byte vanishes with probability ``byte_loss``.
-  One ``random.Random(seed)`` serves the medium, drawn in a fixed order, so a
-  run is reproducible.
+  Besides: a framing error (``framing_error_rate``: the stop bit reads low,
+  the receiving USART flags the byte and our firmware drops it); a spurious
+  start bit on the idle line after a byte (``spurious_byte_rate``: the
+  receiver reads one more byte, mostly ones with the noise pulse's zeros);
+  a burst (``burst_rate`` per byte: the next ``BURST_BITS`` bit times are
+  noise, each bit right or wrong by chance, across byte boundaries, the
+  stop bit included). One ``random.Random(seed)`` serves the medium, drawn
+  in a fixed order, so a run is reproducible; the extended faults draw only
+  when set, so older seeds keep their sequences.
 
 The medium knows nothing of simavr: it talks to the world through the small
 ``Air`` protocol below, which the simulator implements.
@@ -42,6 +49,9 @@ from .geometry import CENTRE, Cell, facing, neighbor
 from .scenario import PC, Faults
 
 Endpoint = int | str  # module id or "pc"
+#: Length of a noise burst in bit times (start, 8 data and stop bit make a
+#: byte): 40 ms at 300 baud, the flicker of a lamp or a passing hand.
+BURST_BITS = 12
 
 
 @dataclass(frozen=True)
@@ -123,6 +133,7 @@ class IrMedium:
     _pc_pending: list[_Arrival] = field(default_factory=list)
     _pc_ready: bytearray = field(default_factory=bytearray)
     _longest_frame: int = 0
+    _burst_left: dict[tuple[Endpoint, Endpoint], int] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         self.rng = random.Random(self.seed)
@@ -164,8 +175,10 @@ class IrMedium:
             if mask:
                 value ^= mask
                 self._event(byte, receiver, "ir-bit-error", mask=mask)
-        rx = PC_FRAME if receiver == PC else self.air.rx_frame(receiver)  # type: ignore[arg-type]
         framing_error = False
+        if faults.extended:
+            value, framing_error = self._extended(byte, receiver, faults, value)
+        rx = PC_FRAME if receiver == PC else self.air.rx_frame(receiver)  # type: ignore[arg-type]
         if not byte.frame.matches(rx):
             value = self.rng.randrange(256)
             framing_error = True
@@ -194,6 +207,41 @@ class IrMedium:
             self._last[receiver] = arrival
         if not self.air.deliver(receiver, arrival.value, arrival.framing_error):
             self._event(byte, receiver, "ir-dropped", reason="receiver off (RXEN) or overrun")
+        self._spurious(byte, receiver, faults)
+
+    def _extended(self, byte: AirByte, receiver: Endpoint, faults: Faults,
+                  value: int) -> tuple[int, bool]:
+        """Burst and framing error on one byte: (value, framing error)."""
+        link = (byte.sender, receiver)
+        left = self._burst_left.get(link, 0)
+        if faults.burst_rate > 0 and not left and self.rng.random() < faults.burst_rate:
+            left = BURST_BITS
+            self._event(byte, receiver, "ir-burst", bits=BURST_BITS)
+        broken_stop = False
+        if left:
+            # bit times of this byte: start, data 0..7, stop
+            noise = [self.rng.random() < 0.5 for _ in range(min(left, 10))]
+            self._burst_left[link] = left - len(noise)
+            for slot, wrong in enumerate(noise):
+                if wrong and 1 <= slot <= 8:
+                    value ^= 1 << (slot - 1)
+                broken_stop |= wrong and slot in (0, 9)  # a start or stop bit read wrong
+        if faults.framing_error_rate > 0 and self.rng.random() < faults.framing_error_rate:
+            broken_stop = True
+        if broken_stop:
+            self._event(byte, receiver, "ir-framing-error")
+        return value, broken_stop
+
+    def _spurious(self, byte: AirByte, receiver: Endpoint, faults: Faults) -> None:
+        """A noise pulse on the idle line after ``byte`` reads as a byte."""
+        if not faults.spurious_byte_rate or self.rng.random() >= faults.spurious_byte_rate:
+            return
+        value = 0xFF & ~(1 << self.rng.randrange(8))  # the pulse's zero, idle ones after
+        self._event(byte, receiver, "ir-spurious-byte", value=value)
+        if receiver == PC:
+            self._pc_pending.append(_Arrival(byte.end, byte.end, {"noise"}, value, False))
+        else:
+            self.air.deliver(receiver, value, False)  # type: ignore[arg-type]
 
     def settle(self, now: int) -> None:
         """Move PC bytes that nothing can collide with any more to the PC's buffer."""

@@ -14,6 +14,9 @@ A scenario is a TOML file (built-ins in ``hil_sim/scenarios/``)::
     [faults]                      # optional; applies to every IR link
     bit_error_rate = 0.0          # probability that each data bit flips
     byte_loss = 0.0               # probability that a byte vanishes
+    framing_error_rate = 0.0      # probability that a byte's stop bit is broken
+    spurious_byte_rate = 0.0      # probability of an extra byte on the idle line after a byte
+    burst_rate = 0.0              # probability that a noise burst starts at a byte
 
     [[faults.link]]               # optional; overrides for one directed link
     from = 1                      # module id or "pc"
@@ -58,7 +61,8 @@ _TOP_KEYS = {"name", "description", "seed", "base", "firmware", "faults", "modul
              "clock_spread_ppm"}
 _MODULE_KEYS = {"id", "position", "orientation", "firmware", "clock_ppm"}
 _FIRMWARE_KEYS = {"comm", "control"}
-_FAULT_KEYS = {"bit_error_rate", "byte_loss"}
+_FAULT_KEYS = {"bit_error_rate", "byte_loss", "framing_error_rate", "spurious_byte_rate",
+               "burst_rate"}
 _LINK_KEYS = _FAULT_KEYS | {"from", "to"}
 
 
@@ -68,10 +72,19 @@ class Faults:
 
     bit_error_rate: float = 0.0
     byte_loss: float = 0.0
+    framing_error_rate: float = 0.0  # the receiver sees a broken stop bit (USART FE)
+    spurious_byte_rate: float = 0.0  # a noise pulse after a byte reads as one more byte
+    burst_rate: float = 0.0  # a burst of noise over the next bits (ir_bus.BURST_BITS)
 
     @property
     def active(self) -> bool:
-        return self.bit_error_rate > 0 or self.byte_loss > 0
+        return self.bit_error_rate > 0 or self.byte_loss > 0 or self.extended
+
+    @property
+    def extended(self) -> bool:
+        """Faults beyond flips and drops (drawn only when set, so that runs
+        without them keep their random sequence)."""
+        return self.framing_error_rate > 0 or self.spurious_byte_rate > 0 or self.burst_rate > 0
 
 
 @dataclass(frozen=True)

@@ -10,7 +10,7 @@ from pathlib import Path
 from hexbot.host.capture import read_capture
 from hexbot.host.describe import describe_event, describe_tx, event_json
 from hexbot.host.session_log import CAPTURE_NAME
-from hexbot.protocol.parser import ReplyParser
+from hexbot.protocol.mavlink_codec import FramedParser
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -26,7 +26,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     path = args.capture / CAPTURE_NAME if args.capture.is_dir() else args.capture
-    parsers: dict[str, ReplyParser] = {}
+    parsers: dict[str, FramedParser] = {}
     start = time.monotonic()
     last_t = 0.0
 
@@ -43,7 +43,7 @@ def run(args: argparse.Namespace) -> int:
             time.sleep(max(0.0, rec.t - (time.monotonic() - start)))
         last_t = rec.t
         if rec.kind == "rx":
-            parser = parsers.setdefault(rec.port, ReplyParser())
+            parser = parsers.setdefault(rec.port, FramedParser())  # both framings
             for ev in parser.feed(rec.data):
                 emit(rec.t, rec.port, "<", describe_event(ev), event_json(ev))
         elif rec.kind == "tx" and not args.no_tx:

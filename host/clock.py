@@ -104,11 +104,14 @@ class SteppedClock:
         end = self.simulator.now() + max(0.0, timeout)
         self._pump()
         while not ready():
-            left = end - self.simulator.now()
+            before = self.simulator.now()
+            left = end - before
             if left <= 1e-9:
                 return False
             self.simulator.advance(min(STEP_S, left))
             self._pump()
+            if self.simulator.now() <= before:
+                return ready()  # less than one cycle was left: the deadline is here
         return True
 
     def wake(self) -> None:

@@ -6,11 +6,13 @@ the decoded session log, so all of them read the same.
 
 from __future__ import annotations
 
+from dataclasses import asdict
 from typing import Any
 
 from hexbot.errors import FrameError
 from hexbot.protocol import frames
 from hexbot.protocol.codes import CODES, ErrorCode
+from hexbot.protocol.mavlink_codec import MavInfo, describe_mavlink_tx
 from hexbot.protocol.parser import (
     Ack,
     ControlMessage,
@@ -48,7 +50,14 @@ def error_name(reason: int) -> str:
         return f"reason {reason}"
 
 
-def describe_event(ev: Event) -> str:  # noqa: C901 - one line per event kind
+def describe_event(ev: Event) -> str:
+    """One line; a reply that came as MAVLink shows its decoded message beside."""
+    line = _describe(ev)
+    mav = getattr(ev, "mav", None)
+    return f"{line}  [{mav.describe()}]" if mav is not None else line
+
+
+def _describe(ev: Event) -> str:  # noqa: C901 - one line per event kind
     if isinstance(ev, Ack):
         return f"{who(ev.role, ev.module)}{ev.describe()}"
     if isinstance(ev, ErrorReply):
@@ -81,6 +90,8 @@ def event_json(ev: Event) -> dict[str, Any]:
         if name == "raw":
             continue
         value = getattr(ev, name)
+        if isinstance(value, MavInfo):
+            value = {**asdict(value), "fields": dict(value.fields)}
         out[name] = list(value) if isinstance(value, tuple) else value
     if isinstance(ev, (Ack, ErrorReply, ControlMessage)):
         fn = CODES.get(ev.code)
@@ -92,7 +103,10 @@ def event_json(ev: Event) -> dict[str, Any]:
 
 
 def describe_tx(data: bytes) -> str:
-    """What the PC sent: ``Select(3)`` for a valid frame, else hex."""
+    """What the PC sent: ``Select(3)`` for a valid frame (``MAV to 3 seq 7:
+    Status()`` for a MAVLink one), else hex."""
+    if (sent := describe_mavlink_tx(data)) is not None:
+        return sent
     try:
         return str(frames.decode_pc(data))
     except FrameError:

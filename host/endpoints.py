@@ -21,6 +21,7 @@ from hexbot.host.host import DEBUG, IR, Host
 from hexbot.host.link import PortSettings
 from hexbot.host.session_log import SessionLog, new_session_dir
 from hexbot.protocol import wire
+from hexbot.protocol.mavlink_codec import Framing
 
 DEFAULT_SCENARIO = "flower7"
 
@@ -46,6 +47,10 @@ def add_port_arguments(parser: argparse.ArgumentParser, *, debug: bool = True) -
     g.add_argument("--sim-speed", type=float, default=None, metavar="X",
                    help="simulator speed, times real time (0 = virtual time, as fast as it "
                         "goes; default: 0 for send/run/plan, 1 for console/monitor)")
+    g.add_argument("--framing", choices=[f.value for f in Framing], default="legacy",
+                   help="commands as legacy '*'...'#' frames or MAVLink 2 frames (dialect "
+                        "protocol/hexbot.xml); auto: probe with a Status request first "
+                        "(replies of both framings are always read)")
     g.add_argument("--retry", type=float, default=1.0, metavar="S",
                    help="seconds between reconnection attempts (default 1)")
     lg = parser.add_argument_group("session log")
@@ -107,6 +112,7 @@ def open_host(args: argparse.Namespace, endpoints: Endpoints,
     if not args.no_log:
         log = SessionLog(new_session_dir(args.log_dir))
     host = Host(log)
+    host.set_framing(Framing(getattr(args, "framing", Framing.LEGACY.value)))
     for listener in listeners:
         host.add_listener(listener)
     try:

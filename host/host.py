@@ -38,7 +38,8 @@ from hexbot.host.session_log import SessionLog
 from hexbot.protocol import frames
 from hexbot.protocol.frames import Command
 from hexbot.protocol.header import schema_mismatch
-from hexbot.protocol.parser import Event, ReplyParser, StatusReport
+from hexbot.protocol.mavlink_codec import FramedParser, Framing, MavlinkEncoder
+from hexbot.protocol.parser import Event, StatusReport
 from hexbot.protocol.simulation import PlantVerdict, SimulatorAccess
 
 #: Port names: the central IR transceiver and one control board's UART1.
@@ -52,7 +53,7 @@ class Channel:
     def __init__(self, host: Host, name: str, settings: PortSettings, retry_s: float) -> None:
         self.host = host
         self.name = name
-        self.parser = ReplyParser()
+        self.parser = FramedParser()  # legacy replies and MAVLink frames alike
         self._last_rx = 0.0
         self._unflushed = False
         self.link = Link(settings, self._on_data, self._on_state, self._on_idle, retry_s=retry_s)
@@ -97,6 +98,9 @@ class Host:
         self.warnings: list[str] = []
         self._schema_checked: set[int] = set()
         self.clock: Clock = WallClock(self.changed)
+        #: how commands go out on the IR port (AUTO: the session probes first)
+        self.framing = Framing.LEGACY
+        self._mavlink: MavlinkEncoder | None = None
         if log is not None:
             log.capture.use_clock(lambda: self.clock.now())
 
@@ -110,6 +114,15 @@ class Host:
         if self.log:
             self.log.port(name, settings.describe())
         return ch
+
+    def set_framing(self, framing: Framing) -> None:
+        """Legacy frames, MAVLink 2 frames, or AUTO (decided by the session's
+        probe); replies of both framings are always understood."""
+        self.framing = framing
+        if framing is Framing.MAVLINK and self._mavlink is None:
+            self._mavlink = MavlinkEncoder()
+        if self.log:
+            self.log.note("host", f"framing {framing.value}")
 
     def start(self, wait_s: float = 0.0) -> Host:
         """Start every port and choose the clock; with ``wait_s`` raise
@@ -235,7 +248,7 @@ class Host:
         listeners. Nothing is written to a port. Returns records played."""
         import time
 
-        parsers: dict[str, ReplyParser] = {}
+        parsers: dict[str, FramedParser] = {}
         start, n, last = time.monotonic(), 0, 0.0
         stop = cancel or threading.Event()
         for rec in records:
@@ -247,7 +260,7 @@ class Host:
             n += 1
             if rec.kind == "rx":
                 self._notify(Traffic(rec.port, TrafficDirection.RX, rec.t, rec.data))
-                for ev in parsers.setdefault(rec.port, ReplyParser()).feed(rec.data):
+                for ev in parsers.setdefault(rec.port, FramedParser()).feed(rec.data):
                     self.observe(rec.t, rec.port, ev)
             elif rec.kind == "tx":
                 self._notify(Traffic(rec.port, TrafficDirection.TX, rec.t, rec.data))
@@ -271,11 +284,22 @@ class Host:
         except KeyError:
             raise LinkUnavailableError(f"no {port} port configured") from None
 
-    def send(self, command: Command | bytes, port: str = IR, *, strict: bool = True) -> int:
+    def encode(self, command: Command, port: str = IR, *, strict: bool = True,
+               target: int = 0) -> bytes:
+        """The command's frame in this host's framing (MAVLink on the IR port
+        only: a debug port speaks board frames). ``target``: a MAVLink
+        target_system (0: the modules the last Select chose)."""
+        if port == IR and self.framing is Framing.MAVLINK and self._mavlink is not None:
+            return self._mavlink.encode(command, target=target, strict=strict)
+        return frames.encode_pc(command, strict=strict)
+
+    def send(self, command: Command | bytes, port: str = IR, *, strict: bool = True,
+             target: int = 0) -> int:
         """Send a command (or raw bytes); returns the journal mark taken just
         before, so replies can be awaited from there."""
-        data = command if isinstance(command, bytes) else frames.encode_pc(command,
-                                                                           strict=strict)
+        data = command if isinstance(command, bytes) else self.encode(command, port,
+                                                                      strict=strict,
+                                                                      target=target)
         mark = self.mark()
         self.channel(port).write(data)
         return mark

@@ -43,6 +43,7 @@ from hexbot.host.link import LinkState
 from hexbot.protocol import frames, timing, wire
 from hexbot.protocol.codes import CODES, ErrorCode, lookup
 from hexbot.protocol.frames import Command
+from hexbot.protocol.mavlink_codec import MAX_FRAME_LEN, Framing, MavStatus
 from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
 
 SELECT = lookup("Select").code
@@ -361,12 +362,19 @@ class Session:
 
     def exchange(self, command: Command | bytes, *, modules: Iterable[int] | None = None,
                  count: int | None = None, timeout: float | None = None,
-                 settle: float = SETTLE_S, strict: bool = True, port: str = IR) -> Outcome:
+                 settle: float = SETTLE_S, strict: bool = True, port: str = IR,
+                 target: int = 0) -> Outcome:
         """Send ``command`` and wait for the replies its addressing implies
         (or one from each of ``modules``, or ``count`` of any module).
         ``command`` may be raw bytes (a corrupted frame on purpose): then any
         ACK, ERR or STA is its reply and ``timeout`` must be given. With
-        ``settle``, listen that much longer for replies nobody asked for."""
+        ``settle``, listen that much longer for replies nobody asked for.
+        ``target`` (MAVLink framing): the one module that runs and answers
+        the command, whatever the last Select said."""
+        if self.host.framing is Framing.AUTO and port == IR:
+            self.settle_framing()
+        if target and not isinstance(command, bytes) and self.host.framing is Framing.MAVLINK:
+            modules = (target,) if modules is None else modules
         if isinstance(command, bytes):
             if timeout is None:
                 raise ValueError("a raw frame has no protocol time-out: give timeout=")
@@ -395,7 +403,7 @@ class Session:
         self.cancel.clear()
         started = self.now()
         try:
-            mark = self.host.send(command, port, strict=strict)
+            mark = self.host.send(command, port, strict=strict, target=target)
         except LinkUnavailableError as exc:
             return Outcome(command, OutcomeKind.PORT_LOST, detail=str(exc))
         got = _Collector(code, set(ids) if ids is not None else None, need, port,
@@ -427,10 +435,25 @@ class Session:
             with self.host.lock:
                 got.take(self.host.since(0))
         outcome = self._judge(command, got, ids, started, port)
-        if outcome.ok and isinstance(command, Command) and command.code == SELECT:
+        if outcome.ok and isinstance(command, Command) and command.code == SELECT and not target:
             self.selection = ids
             self.all_selected = command.args[0] == 0
         return outcome
+
+    def settle_framing(self) -> Framing:
+        """``--framing auto``: a MAVLink Status request to one known module
+        (or to all); MAVLink if a HEXBOT_STATUS answers, legacy otherwise."""
+        self.host.set_framing(Framing.MAVLINK)
+        ids = sorted(self.cluster or self.known)
+        probe = frames.make("Status")
+        if ids:
+            out = self.exchange(probe, target=ids[0])
+        else:
+            out = self.exchange(probe, count=1)
+        spoke = out.ok and any(isinstance(r.event, MavStatus) for r in out.replies)
+        if not spoke:
+            self.host.set_framing(Framing.LEGACY)
+        return self.host.framing
 
     def request(self, command: Command, **kwargs) -> Outcome:
         """:meth:`exchange`, raising the outcome's error unless acknowledged."""
@@ -442,8 +465,11 @@ class Session:
         return self.host.send(command, port, strict=strict)
 
     def reply_timeout(self, command: Command, ids: tuple[int, ...] | None, need: int) -> float:
-        """Transmission of the frame plus the protocol's bound for its replies."""
-        frame = timing.wire_seconds(wire.PC_FRAME_LEN, timing.BAUD_IR)
+        """Transmission of the frame plus the protocol's bound for its replies
+        (MAVLink replies are never longer than the legacy ones they replace:
+        they fit the same slots)."""
+        length = MAX_FRAME_LEN if self.host.framing is Framing.MAVLINK else wire.PC_FRAME_LEN
+        frame = timing.wire_seconds(length, timing.BAUD_IR)
         code = command.code if command.code in CODES else STATUS
         if ids and command.code != SELECT and self.all_selected:
             last_rank = max(ids) - 1  # after Select(0) a module's rank is its id - 1

@@ -4,6 +4,9 @@
   (format in :mod:`hexbot.host.capture`); ``hexbot replay`` reads it.
 - ``decoded.log``: the same session for people: one line per sent command
   and per parsed event, e.g. ``   12.345 ir  < M03 ACK 65 Ref``.
+- ``session.tlog``: every MAVLink 2 frame of the IR port, both directions,
+  in pymavlink's telemetry-log format (:mod:`hexbot.host.tlog`); print it
+  with ``mavlogdump.py --dialect hexbot session.tlog`` (docs/protocol.md).
 
 Both files are flushed on every line.
 """
@@ -13,15 +16,18 @@ from __future__ import annotations
 import datetime as dt
 import os
 import threading
+import time
 from pathlib import Path
 from typing import TextIO
 
 from hexbot.host.capture import CaptureWriter
 from hexbot.host.describe import describe_event, describe_tx
+from hexbot.host.tlog import TlogWriter
 from hexbot.protocol.parser import Event
 
 CAPTURE_NAME = "capture.hbcap"
 DECODED_NAME = "decoded.log"
+TLOG_NAME = "session.tlog"
 
 
 def default_log_root() -> Path:
@@ -53,6 +59,7 @@ class SessionLog:
         self._lock = threading.Lock()
         self._decoded: TextIO | None = (self.folder / DECODED_NAME).open(
             "w", encoding="utf-8", newline="\n")
+        self.tlog = TlogWriter(self.folder / TLOG_NAME, time.time())  # the capture's start
 
     @property
     def capture_path(self) -> Path:
@@ -68,6 +75,7 @@ class SessionLog:
     def sent(self, port: str, data: bytes) -> float:
         t = self.capture.record(port, "tx", data)
         self._line(t, port, ">", describe_tx(data))
+        self.tlog.sent(t, data)
         return t
 
     def received(self, port: str, data: bytes) -> float:
@@ -75,6 +83,8 @@ class SessionLog:
 
     def event(self, t: float, port: str, ev: Event) -> None:
         self._line(t, port, "<", describe_event(ev))
+        if getattr(ev, "mav", None) is not None:
+            self.tlog.received(t, ev.raw)
 
     def state(self, port: str, text: str) -> float:
         t = self.capture.record(port, "state", text=text)
@@ -93,6 +103,7 @@ class SessionLog:
 
     def close(self) -> None:
         self.capture.close()
+        self.tlog.close()
         with self._lock:
             if self._decoded is not None:
                 self._decoded.close()

@@ -13,7 +13,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
-from hexbot.protocol import docs_table, header, pins_header
+from hexbot.protocol import docs_table, header, mavlink_gen, mavlink_xml, pins_header
 
 DOCS = Path(__file__).resolve().parent.parent / "docs"
 
@@ -53,12 +53,37 @@ class Generated:
         return self.path
 
 
+@dataclass(frozen=True)
+class MavgenOutput(Generated):
+    """A file pymavlink's mavgen writes from the dialect: its day stamp
+    alone does not make a copy stale."""
+
+    def expected(self, current: str) -> str:
+        fresh = self.render()
+        return current if mavlink_gen.same_but_date(current, fresh) else fresh
+
+    def write(self) -> Path:
+        current = self.path.read_text() if self.path.exists() else ""
+        self.path.parent.mkdir(parents=True, exist_ok=True)
+        self.path.write_text(self.expected(current))
+        return self.path
+
+
+def _mavgen_outputs() -> tuple[Generated, ...]:
+    files = mavlink_gen.generate()
+    return tuple(MavgenOutput(path, None, lambda p=path: mavlink_gen.generate()[p])
+                 for path in files)
+
+
 ARTIFACTS: tuple[Generated, ...] = (
     Generated(header.HEADER_PATH, None, header.render),
     Generated(pins_header.PATH, None, pins_header.render),
     Generated(DOCS / "protocol.md", "function-table", docs_table.render_table),
     Generated(DOCS / "firmware.md", "pin-map", docs_table.render_pin_table),
     Generated(DOCS / "firmware.md", "timing", docs_table.render_timing_table),
+    Generated(mavlink_xml.XML_PATH, None, mavlink_xml.render),
+    Generated(mavlink_xml.MINIMAL_PATH, None, mavlink_xml.render_minimal),
+    *_mavgen_outputs(),
 )
 
 

@@ -47,3 +47,16 @@ def test_core_benchmark_measures_raw_simavr_outside_the_extension(capsys):
     assert result["raw_simavr"]["cycles_per_s"] > 0
     assert result["raw_loop_m162"]["cycles_per_s"] > 0
     assert not hasattr(importlib.import_module("hexbot.hil_sim._avr"), "raw_simavr_run")
+
+
+def test_ir_noise_trial_counts_from_the_actuator_log():
+    from hexbot.bench.ir_noise import trial
+
+    clean = trial("mavlink", 0.0, seed=3, commands=12)
+    assert (clean["executed"], clean["wrong"], clean["lost"]) == (12, 0, 0)
+    noisy = trial("legacy", 3e-2, seed=3, commands=30)
+    assert noisy["executed"] + noisy["wrong"] + noisy["lost"] >= 30
+    assert noisy["lost"] > 0 and noisy["goodput_per_min"] < clean["goodput_per_min"]
+    assert trial("legacy", 3e-2, seed=3, commands=30) == noisy  # seeded
+    with pytest.raises(ValueError, match="framing"):
+        trial("morse", 0.0, seed=3, commands=1)

@@ -16,6 +16,7 @@
 #include "hexbot_codes.h"
 #include "leds.h"
 #include "localize.h"
+#include "mavframe.h"
 #include "reply.h"
 #include "state.h"
 #include "system.h"
@@ -42,6 +43,8 @@ module_state_t g_state;
 static frame_rx_t pc_rx;
 static uint8_t pending[HB_PC_FRAME_LEN];
 static uint8_t have_pending;
+static uint8_t pending_framing; /* FRAMING_LEGACY or FRAMING_MAVLINK */
+static uint8_t pending_target;  /* MAVLink target_system: 0 = as Select says */
 static tick_t last_ir_byte;
 static uint8_t control_ready; /* 'R' seen from the control board */
 static const uint8_t *boot_next; /* boot text still to queue (see boot_texts) */
@@ -77,6 +80,21 @@ static uint8_t junk_before_hash_code(const uint8_t *f)
            (table_board(f[1]) == HB_BOARD_NONE || !table_args_ok(f[1], f + 2));
 }
 
+/* A MAVLink byte (the frame began with 0xFD): a command for us becomes
+ * the pending frame, in legacy layout. 0 when the byte was not MAVLink's
+ * after all (the header broke on it): it may start a legacy frame. */
+static uint8_t mav_byte(uint8_t b)
+{
+    mav_result_t r = mav_push(b, pending, &pending_target);
+    if (r == MAV_COMMAND) {
+        pending_framing = FRAMING_MAVLINK;
+        have_pending = 1;
+    } else if (r == MAV_DROPPED) {
+        g_state.last_error = HB_ERR_BAD_FRAME;
+    }
+    return r != MAV_REJECTED;
+}
+
 /* Keep both links moving; 1 when a complete PC frame is pending. */
 static uint8_t poll_inputs(void)
 {
@@ -87,14 +105,20 @@ static uint8_t poll_inputs(void)
     }
     if (frame_expire(&pc_rx) == FRAME_DROPPED)
         g_state.last_error = HB_ERR_BAD_FRAME;
+    mav_expire(last_ir_byte);
     while ((b = uart_getc(IR)) >= 0) {
         last_ir_byte = tick_now();
+        /* Framing by the first byte: 0xFD starts MAVLink, '*' legacy. */
+        if (pc_rx.len == 0 && (mav_busy() || b == MAV_START) && mav_byte((uint8_t)b))
+            continue;
         frame_result_t r = frame_push(&pc_rx, (uint8_t)b);
         if (r == FRAME_DONE && junk_before_hash_code(pc_rx.buf)) {
             frame_resume(&pc_rx, HB_PC_FRAME_LEN - 2);
             g_state.last_error = HB_ERR_BAD_FRAME;
         } else if (r == FRAME_DONE) {
             memcpy(pending, pc_rx.buf, sizeof pending);
+            pending_framing = FRAMING_LEGACY;
+            pending_target = 0;
             have_pending = 1;
         } else if (r == FRAME_DROPPED) {
             g_state.last_error = HB_ERR_BAD_FRAME;
@@ -192,21 +216,8 @@ static void localize(uint8_t code, tick_t started)
         reply_err_now(code, HB_ERR_NOT_HEARD);
         return;
     }
-    if (r == LOC_LEARNED) {
-        reply_preamble();
-        reply_line_P(PSTR("LOCALIZED"));
-        uart_puts_P(IR, PSTR("Side: "));
-        uart_putc(IR, (uint8_t)('0' + g_state.heard_side));
-        uart_puts_P(IR, PSTR("\n\rYref: "));
-        uart_putc(IR, (uint8_t)('0' + g_state.yref));
-        uart_puts_P(IR, PSTR("\n\rPos: "));
-        int8_t c[2] = {g_state.x, g_state.y};
-        for (uint8_t i = 0; i < 2; i++) {
-            uart_putc(IR, c[i] < 0 ? '-' : '+');
-            reply_dec2((uint8_t)(c[i] < 0 ? -c[i] : c[i]));
-        }
-        uart_puts_P(IR, PSTR("\n\r"));
-    }
+    if (r == LOC_LEARNED)
+        reply_localized();
     reply_ack_now(code);
 }
 
@@ -280,15 +291,16 @@ static void comm_function(uint8_t code, const uint8_t *a, tick_t received)
     reply_ack(code);
 }
 
-static void handle_frame(const uint8_t *f, tick_t received)
+static void handle_frame(const uint8_t *f, tick_t received, uint8_t framing, uint8_t target)
 {
     uint8_t code = f[1];
     const uint8_t *a = &f[2];
+    reply_begin(framing, target != 0, code);
     if (code == HB_FN_SELECT) {
         select_modules(a);
         return;
     }
-    if (g_state.addressed && !g_state.selected)
+    if (!reply_direct() && g_state.addressed && !g_state.selected)
         return;
     uint8_t board = table_board(code);
     if (board == HB_BOARD_NONE)
@@ -381,7 +393,7 @@ int main(void)
             have_pending = 0;
             uint8_t frame[HB_PC_FRAME_LEN];
             memcpy(frame, pending, sizeof frame);
-            handle_frame(frame, tick_now());
+            handle_frame(frame, tick_now(), pending_framing, pending_target);
         } else {
             if (comm_ir_channel() != IR_CENTRE && tick_since(last_ir_byte) > HB_IRSEL_HOLD_TICKS)
                 comm_ir_select(IR_CENTRE);

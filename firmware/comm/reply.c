@@ -4,6 +4,7 @@
 #include <avr/pgmspace.h>
 
 #include "comm_board.h"
+#include "mavframe.h"
 #include "state.h"
 #include "system.h"
 #include "uart.h"
@@ -11,16 +12,35 @@
 #define IR UART1
 
 static poll_fn poll_hook;
+/* The request being answered: its framing, whether it named this module
+ * (MAVLink target_system = id: no Select, no slot) and its code. */
+static uint8_t framing;
+static uint8_t direct;
+static uint8_t request_code;
 
 void reply_init(poll_fn poll)
 {
     poll_hook = poll;
 }
 
+void reply_begin(uint8_t request_framing, uint8_t to_me, uint8_t code)
+{
+    framing = request_framing;
+    direct = to_me;
+    request_code = code;
+}
+
+uint8_t reply_direct(void)
+{
+    return direct;
+}
+
 void reply_wait_turn(uint8_t slots)
 {
     tick_t delay;
-    if (g_state.addressed)
+    if (direct)
+        delay = 0;
+    else if (g_state.addressed)
         delay = (tick_t)g_state.rank * slots * HB_ACK_SLOT_TICKS;
     else if (g_state.role == HB_ROLE_SUBSTRATE)
         delay = slots > 1u ? (tick_t)slots * HB_ACK_SLOT_TICKS : HB_SUBSTRATE_ACK_DELAY_TICKS;
@@ -106,6 +126,11 @@ uint8_t reply_boot_text(uint8_t *buf, uint8_t which)
 
 void reply_ack_now(uint8_t code)
 {
+    if (framing == FRAMING_MAVLINK) {
+        comm_ir_select(IR_CENTRE);
+        mav_send_ack(request_code, code);
+        return;
+    }
     prefix();
     uart_puts_P(IR, PSTR("ACK"));
     uart_putc(IR, code);
@@ -115,6 +140,11 @@ void reply_ack_now(uint8_t code)
 void reply_err_now(uint8_t code, uint8_t reason)
 {
     g_state.last_error = reason;
+    if (framing == FRAMING_MAVLINK) {
+        comm_ir_select(IR_CENTRE);
+        mav_send_err(code, reason);
+        return;
+    }
     prefix();
     uart_puts_P(IR, PSTR("ERR"));
     uart_putc(IR, code);
@@ -138,6 +168,11 @@ void reply_err(uint8_t code, uint8_t reason)
 void reply_status(void)
 {
     reply_wait_turn(HB_SLOTS_STATUS);
+    if (framing == FRAMING_MAVLINK) {
+        comm_ir_select(IR_CENTRE);
+        mav_send_status();
+        return;
+    }
     prefix();
     uart_puts_P(IR, PSTR("STA"));
     uart_putc(IR, g_state.id);
@@ -151,4 +186,26 @@ void reply_status(void)
     uart_putc(IR, g_state.last_error);
     uart_puts_P(IR, PSTR(HB_SCHEMA_HASH_TEXT)); /* the protocol it was built from */
     eol();
+}
+
+void reply_localized(void)
+{
+    if (framing == FRAMING_MAVLINK) {
+        comm_ir_select(IR_CENTRE);
+        mav_send_localized();
+        return;
+    }
+    reply_preamble();
+    reply_line_P(PSTR("LOCALIZED"));
+    uart_puts_P(IR, PSTR("Side: "));
+    uart_putc(IR, (uint8_t)('0' + g_state.heard_side));
+    uart_puts_P(IR, PSTR("\n\rYref: "));
+    uart_putc(IR, (uint8_t)('0' + g_state.yref));
+    uart_puts_P(IR, PSTR("\n\rPos: "));
+    int8_t c[2] = {g_state.x, g_state.y};
+    for (uint8_t i = 0; i < 2; i++) {
+        uart_putc(IR, c[i] < 0 ? '-' : '+');
+        reply_dec2((uint8_t)(c[i] < 0 ? -c[i] : c[i]));
+    }
+    uart_puts_P(IR, PSTR("\n\r"));
 }

@@ -34,6 +34,18 @@ _Static_assert(REPLY_BYTES_BOOT ==
 
 typedef uint8_t (*poll_fn)(void);
 
+/* Framing of a request, and so of its replies */
+#define FRAMING_LEGACY 0u  /* '*' B1..B9 '#', text replies */
+#define FRAMING_MAVLINK 1u /* MAVLink 2 HEXBOT_COMMAND, HEXBOT_* replies */
+
+/** Answer the request with @p code in @p request_framing from now on;
+ *  @p to_me: a MAVLink target_system naming this module (answer at once,
+ *  whatever the Select state). Boot texts stay legacy. */
+void reply_begin(uint8_t request_framing, uint8_t to_me, uint8_t code);
+
+/** The request named this module (no Select needed). */
+uint8_t reply_direct(void);
+
 /** @p poll keeps input moving while a reply waits for its slot. */
 void reply_init(poll_fn poll);
 
@@ -51,6 +63,9 @@ void reply_err(uint8_t code, uint8_t reason);
 
 /** STA reply, in the status slot. */
 void reply_status(void);
+
+/** The localization report (LOCALIZED, Side, Yref, Pos / HEXBOT_LOCALIZED). */
+void reply_localized(void);
 
 /** A text line from flash (no preamble), LF CR appended. */
 void reply_line_P(const char *text);

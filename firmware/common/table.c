@@ -4,7 +4,11 @@
 
 #include "hexbot_codes.h"
 
-uint8_t table_board(uint8_t code)
+/* gcc would turn these switches into lookup tables in .data, i.e. SRAM
+ * (72 bytes each); compare and branch in flash instead. */
+#define IN_FLASH __attribute__((optimize("no-tree-switch-conversion")))
+
+IN_FLASH uint8_t table_board(uint8_t code)
 {
     switch (code) {
 #define X(c, board, nargs) \
@@ -26,4 +30,17 @@ uint8_t table_args_ok(uint8_t code, const uint8_t *args)
     HB_ARG_RANGES(X)
 #undef X
     return 1;
+}
+
+IN_FLASH uint8_t table_nargs(uint8_t code)
+{
+    switch (code) {
+#define X(c, board, nargs) \
+    case c:                \
+        return nargs;
+        HB_FUNCTIONS(X)
+#undef X
+    default:
+        return 0;
+    }
 }

@@ -11,4 +11,7 @@ uint8_t table_board(uint8_t code);
  *  Select's optional ids (args 2..8) are the caller's business. */
 uint8_t table_args_ok(uint8_t code, const uint8_t *args);
 
+/** How many argument bytes @p code uses (0 for unused codes). */
+uint8_t table_nargs(uint8_t code);
+
 #endif /* TABLE_H */

@@ -147,3 +147,36 @@ def test_three_senders_at_once_give_the_pc_one_broken_byte():
     m.settle(5 * BYTE)
     assert m.pc_take() == bytes([0xF8])
     assert len(events) == 2
+
+
+def _run(faults: Faults, seed: int = 3, n: int = 200):
+    air = pair_air()
+    m, events = medium(air, seed=seed, faults_for=lambda s, r: faults)
+    for i in range(n):
+        m.transmit(AirByte(1, 3 * i * BYTE, (3 * i + 1) * BYTE, 0x55, IR))
+    return air.got, events
+
+
+def test_framing_errors_reach_the_receiver_flagged():
+    got, events = _run(Faults(framing_error_rate=1.0), n=5)
+    assert [(value, fe) for _, value, fe in got] == [(0x55, True)] * 5
+    assert [e["event"] for e in events] == ["ir-framing-error"] * 5
+
+
+def test_a_spurious_start_bit_on_the_idle_line_adds_a_byte():
+    got, events = _run(Faults(spurious_byte_rate=1.0), n=3)
+    values = [value for _, value, _ in got]
+    assert values[0::2] == [0x55] * 3
+    assert all(bin(v).count("1") == 7 for v in values[1::2])  # idle ones, the pulse's zero
+    assert sum(e["event"] == "ir-spurious-byte" for e in events) == 3
+
+
+def test_a_burst_spans_byte_boundaries_and_breaks_stop_bits():
+    got, events = _run(Faults(burst_rate=0.05), seed=11)
+    bursts = sum(e["event"] == "ir-burst" for e in events)
+    assert 3 <= bursts <= 25
+    hit = [i for i, (_, value, fe) in enumerate(got) if value != 0x55 or fe]
+    # each burst covers BURST_BITS = 12 bit times: its byte and the next one
+    assert any(b == a + 1 for a, b in zip(hit, hit[1:], strict=False))
+    assert any(fe for _, _, fe in got)
+    assert _run(Faults(burst_rate=0.05), seed=11) == (got, events)  # seeded
