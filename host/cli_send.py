@@ -31,6 +31,7 @@ from hexbot.host.events import Observed
 from hexbot.host.session import Session, select
 from hexbot.protocol import frames
 from hexbot.protocol.frames import Command
+from hexbot.protocol.mavlink_codec import Framing
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -72,6 +73,8 @@ def run(args: argparse.Namespace) -> int:
     # --module 0 selects all: the session's addressing decides who answers
     modules = None if args.module in (None, [0]) else args.module
     with session(args) as sess:
+        if sess.host.framing is Framing.AUTO:  # the probe's reply is not the command's
+            print(f"framing: {sess.settle_framing().value}", file=sys.stderr)
         printer = _Printer(sess, sess.host.mark(), args.json)
         for frame in steps:
             with session_waits(sess):
