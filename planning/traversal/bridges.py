@@ -62,7 +62,8 @@ class Group:
     pocket_length: int
     temp_support: Cell | None = None
     support: Cell | None = None
-    support_path: tuple[Cell, ...] = ()  # CCW rolls about the Bridge, TempSupport -> Support
+    reverse: bool = True  # TempSupport -> Support: CCW about the Bridge, else on clockwise
+    through: bool = False  # the Bridge module leaves through the pocket (it is the last)
     shape: str = ""
     pass_cells: dict[Cell, Cell] = field(default_factory=dict)
 
@@ -191,20 +192,21 @@ def set_bridging_cells(bmap_surface: frozenset[Cell], layer: Layer, span: tuple[
     if kind == "BASIC":
         return Group(kind, span, (x, y), pocket, length)
     neck = t.f in bmap_surface and t.h in bmap_surface
-    if kind == "SINGLE" or neck or length <= 2:
+    if kind == "SINGLE" or neck:
         return Group(kind, span, (t.g,), pocket - {t.g}, length)
+    if length <= 2:
+        return Group(kind, span, (inside[-1],), pocket - {inside[-1]}, length)
     if kind == "LEFT":
         temp, bridge, support = inside[0], t.g, inside[-2]
     else:
         bridge, temp, support = t.g, inside[1], inside[-1]
-    path = _ccw_path(bmap_surface, bridge, temp, support, model)
-    if path is None:
-        if kind == "RIGHT":  # the first module rolls on to the Support cell itself
-            temp, path = support, ()
-        else:  # LEFT: it waits in the TempSupport cell and leaves from there
-            support, path = temp, ()
+    reverse = _ccw_path(bmap_surface, bridge, temp, support, model) is not None
+    if kind == "RIGHT" and not reverse:
+        # The TempSupport module cannot reach the Support cell past the held
+        # Bridge: one Bridge module, which leaves last through the pocket.
+        return Group(kind, span, (bridge,), pocket - {bridge}, length, through=True)
     return Group(kind, span, (bridge,), pocket - {bridge}, length, temp_support=temp,
-                 support=support, support_path=path)
+                 support=support, reverse=reverse)
 
 
 def three_candidates(surface: frozenset[Cell],

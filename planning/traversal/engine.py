@@ -44,6 +44,7 @@ class Module:
     avoid: set[Cell] = field(default_factory=set)
     rule: str = "start"  # the part of MOVEMODULE that made its last move
     resume_rule: str = ""
+    to_support_rule: str = ""
 
 
 @dataclass
@@ -161,11 +162,10 @@ class Engine:
             assert group is not None
             if not self.occupied(group.bridge[0]):
                 return None
-            if not group.support_path:
-                m.phase = "support"
-                return None
-            m.phase, m.direction, m.pivot = "to-support", "CCW", group.bridge[0]
-            rule = "reverse-to-support"
+            m.phase = "to-support"
+            if group.reverse:
+                m.direction, m.pivot = "CCW", group.bridge[0]
+            rule = m.to_support_rule = "reverse-to-support" if group.reverse else "on-to-support"
         elif m.phase == "support":
             group = m.group
             assert group is not None
@@ -174,7 +174,7 @@ class Engine:
             m.phase, m.direction, m.pivot = "resume", "CW", group.bridge[0]
             m.resume_rule = "leave-support"
         elif m.phase == "to-support":
-            rule = "reverse-to-support"
+            rule = m.to_support_rule
         if m.phase == "resume":
             if not self.quiet(m):
                 return None
@@ -208,7 +208,8 @@ class Engine:
                 return  # RIGHT: the first module rolls on to the TempSupport cell
             m.phase, m.group, m.count = "bridge", group, 0
             m.served.add(id(group))
-            m.avoid |= group.pocket
+            if not group.through:
+                m.avoid |= group.pocket
         elif kind == "TempSupport":
             m.phase, m.group = "temp", group
             m.served.add(id(group))
@@ -247,8 +248,8 @@ class Engine:
                     continue
                 if swept & {orolled.src, orolled.dst}:
                     return fail("swept cells empty", [m, other], "their rotations cross")
-                if any(distance(p, q) == 1 for p in (rolled.src, rolled.dst)
-                       for q in (orolled.src, orolled.dst)):
+                if distance(rolled.src, orolled.src) == 1 or \
+                        distance(rolled.dst, orolled.dst) == 1:
                     return fail("moving modules never adjacent", [m, other],
                                 f"{list(rolled.src)}->{list(rolled.dst)} and "
                                 f"{list(orolled.src)}->{list(orolled.dst)}")
