@@ -21,7 +21,7 @@ from pathlib import Path
 
 from hexbot.errors import ScenarioError
 from hexbot.planning.configuration import is_connected
-from hexbot.planning.traversal.bridges import BridgeMap, find_bridge_cells, letters
+from hexbot.planning.traversal.bridges import BridgeMap, find_bridge_cells
 from hexbot.planning.traversal.surface import Surface, map_text
 from hexbot.protocol.lattice import SIDES, Cell, neighbor
 
