@@ -36,6 +36,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
         "square-lattice locomotion rule engine (Salvador, Otero rule sets)",
     ),
     "plan": ("hexbot.planning.cli_plan", "plan a hex reconfiguration (thesis or robust planner)"),
+    "traverse": ("hexbot.planning.traversal.cli",
+                 "cross a surface with bridges, layering algorithm (Ivanov & Walter)"),
 }
 
 

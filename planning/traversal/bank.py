@@ -33,7 +33,8 @@ DEPTH = 10  # rows of surface under the lowest top
 
 @dataclass
 class Feature:
-    """A pocket at column ``at``: ``case`` in CASES or ``THREE``, ``length`` cells."""
+    """A pocket: ``case`` in CASES with ``length`` perimeter cells, or ``THREE``:
+    a 3-cell opening over a channel three cells wide and ``length`` rows deep."""
 
     case: str
     length: int
@@ -111,9 +112,14 @@ def build(features: list[Feature], n: int, *, gap: int = 7, name: str = "surface
         h = tops[p]
         opening, x, y = _opening(feature.case, p, h, tops)
         dug |= set(opening)
+        if feature.case == "THREE":  # a straight channel, three wide, ``length`` rows deep
+            dug |= {(p + k, h - row) for row in range(1, feature.length) for k in range(3)}
         length = _measure(tops, dug, n, x, y, feature.case)
         if length is None:
             raise ScenarioError(f"feature {feature.case} at column {p}: bad opening")
+        if feature.case == "THREE":
+            p += gap + 3
+            continue
         while length < feature.length:
             length = _dig_one(tops, dug, n, x, y, feature.case, length, feature.length, p)
         if length != feature.length:
@@ -131,10 +137,13 @@ def _dig_one(tops, dug, n, x, y, case, length, target, p) -> int:
     """Dig the first cell (or pair of touching cells: a one-cell dent is not part
     of the perimeter) that makes the pocket longer without passing ``target``."""
     top_y = min(x[1], y[1])
+    # a 3-cell opening gets a straight channel three cells wide (no narrow part
+    # inside: without its 3-bridge the modules roll through all of it)
+    lo, hi = (p, p + 2) if case == "THREE" else (p - 4, p + 8)
 
     def candidates(around: set[Cell]) -> list[Cell]:
         return sorted((c for c in {neighbor(d, s) for d in around for s in SIDES} - around
-                       if c[1] < top_y and p - 4 <= c[0] <= p + 8
+                       if c[1] < top_y and lo <= c[0] <= hi
                        and c[1] <= tops.get(c[0], -99)),
                       key=lambda c: (-c[1], abs(c[0] - p - 1), c[0]))
 
@@ -194,12 +203,12 @@ def bank() -> dict[str, tuple[Surface, str]]:
                              f"one {case} pocket of perimeter length {length}, 4 modules")
             except ScenarioError as exc:
                 print(f"bank: no {name}: {exc}", file=sys.stderr)
-    for length in (3, 5, 9, 14):
-        name = f"three-{length}"
-        out[name] = (build([Feature("THREE", length)], 4, name=name),
-                     f"one 3-cell opening over a pocket of perimeter length {length}")
+    for depth in (2, 4, 8):
+        name = f"three-deep{depth}"
+        out[name] = (build([Feature("THREE", depth)], 4, name=name),
+                     f"a 3-cell opening over a channel three wide and {depth} rows deep")
     out["fig14"] = (build([Feature("BASIC", 5), Feature("SINGLE", 1), Feature("LEFT", 5),
-                           Feature("THREE", 9), Feature("RIGHT", 5), Feature("BASIC", 2),
+                           Feature("THREE", 4), Feature("RIGHT", 5), Feature("BASIC", 2),
                            Feature("SINGLE", 3)], 11, name="fig14", steps=[0, 0, -1, 1]),
                     "a long surface with every bridge type and eleven modules (Fig. 14)")
     return out
