@@ -20,6 +20,8 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
     "host": ("hexbot.bench.host", "capture writing, replay, console rendering (JSON)"),
     "planning": ("hexbot.bench.planning", "hex reconfiguration planners: time and moves"),
     "locomotion": ("hexbot.bench.locomotion", "square-lattice locomotion engine (JSON)"),
+    "traversal": ("hexbot.bench.traversal",
+                  "layering traversal: FINDBRIDGECELLS on 1e3-1e5 perimeter cells, 1,000 modules"),
     "pyramid-search": (
         "hexbot.bench.pyramid_search",
         "random symmetric staircases against Table 2 of the locomotion thesis (JSON)",

@@ -16,6 +16,6 @@ under the paper's deformable model or HexBot's Table 4-3),
 :mod:`.layers` (perimeter tracing and numbering), :mod:`.bridges`,
 :mod:`.engine`, :mod:`.bank` (the map bank and random surfaces),
 :mod:`.experiments` (the paper's figures), :mod:`.render`,
-:mod:`.execute` (the rounds on the simulator or modules), :mod:`.cli`.
+:mod:`.cli`.
 See docs/traversal.md.
 """

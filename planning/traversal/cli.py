@@ -34,15 +34,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="instead of a map: the paper's Figs. 12-13 experiment (and the "
                              "SINGLE-bridge one), a table or --json")
     parser.add_argument("--plot", metavar="OUT.png", help="with --sweep: draw the figures")
-    hil = parser.add_argument_group("execution (embedded simulator by default, or --port)")
-    hil.add_argument("--execute", action="store_true",
-                     help="build the scenario (surface and movers), localize it and run the "
-                          "rounds' rotations through the session, verifying every move")
-    hil.add_argument("--verify", choices=("auto", "plant", "localize", "status"),
-                     default="auto", help="how each move is checked (as hexbot plan)")
-    from hexbot.host.endpoints import add_port_arguments
-
-    add_port_arguments(parser, debug=False)
 
 
 def resolve_map(text: str) -> Surface:
@@ -112,10 +103,6 @@ def run(args: argparse.Namespace) -> int:
         from hexbot.planning.traversal.render import render_gif
 
         render_gif(bmap, result, args.render)
-    if args.execute:
-        from hexbot.planning.traversal.execute import run_execute
-
-        return run_execute(args, bmap, result)
     print(json.dumps(result_json(bmap, result)) if args.json else summary(bmap, result))
     if result.status != "reached":
         print(f"hexbot traverse: {result.status}: {result.reason}", file=sys.stderr)
