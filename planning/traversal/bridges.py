@@ -258,12 +258,16 @@ def _pass_cells(surface: frozenset[Cell], layer: Layer, group: Group, model: str
     bridge: a Bridge module counts the modules entering it. False when the
     way over does not come back to the perimeter beyond the pocket."""
     i, j = group.span
-    held = surface | set(group.bridge) | ({group.support} if group.support else set())
+    extra = set(group.bridge) | ({group.support} if group.support else set())
+
+    def held(cell: Cell) -> bool:  # no copy of the surface: O(span) per bridge
+        return cell in surface or cell in extra
+
     start = max(i - 2, 0)
     cell, pivot = layer.cells[start], layer.pivots[start]
     route = [cell]
     for _ in range(4 * (j - i) + 32):
-        rolled = next_rotation(cell, pivot, "CW", held.__contains__, model)
+        rolled = next_rotation(cell, pivot, "CW", held, model)
         if rolled is None:
             return False
         cell, pivot = rolled.dst, rolled.substrate
