@@ -22,6 +22,8 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
     "locomotion": ("hexbot.bench.locomotion", "square-lattice locomotion engine (JSON)"),
     "ir-noise": ("hexbot.bench.ir_noise",
                  "wrong and lost commands on a noisy IR link, legacy vs MAVLink"),
+    "traversal": ("hexbot.bench.traversal",
+                  "layering traversal: FINDBRIDGECELLS on 1e3-1e5 perimeter cells, 1,000 modules"),
     "pyramid-search": (
         "hexbot.bench.pyramid_search",
         "random symmetric staircases against Table 2 of the locomotion thesis (JSON)",

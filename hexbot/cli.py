@@ -38,6 +38,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
     ),
     "plan": ("hexbot.planning.cli_plan", "plan a hex reconfiguration (thesis or robust planner)"),
     "sweep": ("hexbot.sweep.cli", "run a sweep file on Dask (`sweep report RESULTS`: its tables)"),
+    "traverse": ("hexbot.planning.traversal.cli",
+                 "cross a surface with bridges, layering algorithm (Ivanov & Walter)"),
 }
 
 

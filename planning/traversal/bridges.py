@@ -1,0 +1,315 @@
+"""FINDBRIDGECELLS: narrow pockets and the cells that bridge them.
+
+Step 3 finds the non-consecutive perimeter (NCP) pairs of ``layer1`` (cells
+that touch but whose perimeter numbers are not consecutive) and keeps the
+outermost ones as bridge identifiers (BI). Step 4 (SETBRIDGINGCELLS)
+classifies each BI by the cells ``d`` and ``e`` on its line (Fig. 5):
+neither a surface cell SINGLE, both BASIC, ``d`` only LEFT, ``e`` only
+RIGHT, and places Bridge, TempSupport and Support cells; step 5 finds
+3-cell bridges across openings of three free cells, whose middle cell lies
+in ``layer2``. Bridges covered by a larger one are dropped. The letters
+follow Fig. 5 with the pocket on the clockwise side of ``x -> y``; the
+derivation of each placement is in docs/traversal.md.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from hexbot.planning.traversal.layers import Layer, layer1, layer2
+from hexbot.planning.traversal.motion import next_rotation, rotation_to
+from hexbot.planning.traversal.surface import Surface
+from hexbot.protocol.lattice import SIDES, Cell, distance, neighbor, side_towards, wrap
+
+KINDS = ("SINGLE", "BASIC", "LEFT", "RIGHT", "THREE")
+SHAPES = ("straight", "curved-symmetric", "curved-left", "curved-right")
+MIN_THREE_SPAN = 4  # a 3-bridge must cut off at least three perimeter cells
+
+
+@dataclass(frozen=True)
+class Letters:
+    """The cells around a BI pair ``x, y`` named as in Fig. 5."""
+
+    x: Cell
+    y: Cell
+    a: Cell
+    b: Cell
+    c: Cell
+    d: Cell
+    e: Cell
+    f: Cell
+    g: Cell
+    h: Cell
+
+
+def letters(x: Cell, y: Cell) -> Letters:
+    k = side_towards(x, y)
+    if k is None:
+        raise ValueError(f"{x} and {y} are not adjacent")
+    return Letters(x, y, a=neighbor(x, k - 2), b=neighbor(x, k - 1), c=neighbor(y, k - 1),
+                   d=neighbor(x, k + 3), e=neighbor(y, k), f=neighbor(x, k + 2),
+                   g=neighbor(x, k + 1), h=neighbor(y, k + 1))
+
+
+@dataclass
+class Group:
+    """One bridge: the cells where modules stop, and what they wait for."""
+
+    kind: str
+    span: tuple[int, int]  # layer1 numbers of the BI pair (or of the 3-bridge's ends)
+    bridge: tuple[Cell, ...]
+    pocket: frozenset[Cell]  # perimeter cells cut off by the bridge
+    pocket_length: int
+    temp_support: Cell | None = None
+    support: Cell | None = None
+    reverse: bool = True  # TempSupport -> Support: CCW about the Bridge, else on clockwise
+    through: bool = False  # the Bridge module leaves through the pocket (it is the last)
+    shape: str = ""
+    pass_cells: dict[Cell, Cell] = field(default_factory=dict)
+
+    @property
+    def cells(self) -> tuple[Cell, ...]:
+        extra = tuple(c for c in (self.temp_support, self.support) if c is not None)
+        return self.bridge + tuple(dict.fromkeys(extra))
+
+    def passes_needed(self, cell: Cell, n: int) -> int:
+        """Passing modules a Bridge module waits for: n - 1, except that the module
+        of a TempSupport/Support pair never passes over its Bridge (n - 2)."""
+        return n - 1 - (1 if self.support is not None else 0)
+
+    def as_json(self) -> dict:
+        out: dict = {"kind": self.kind, "cells": [list(c) for c in self.bridge],
+                     "span": list(self.span), "pocket_length": self.pocket_length}
+        if self.temp_support is not None:
+            out["temp_support"] = list(self.temp_support)
+            out["support"] = list(self.support) if self.support else None
+        if self.shape:
+            out["shape"] = self.shape
+        return out
+
+
+@dataclass
+class BridgeMap:
+    """The preprocessing result every module computes from the same map."""
+
+    surface: Surface
+    model: str
+    layer1: Layer
+    layer2: Layer
+    ncp: list[tuple[int, int]]
+    bis: list[tuple[int, int]]
+    groups: list[Group]
+    dropped: list[Group]
+
+    def role_of(self) -> dict[Cell, tuple[str, Group]]:
+        roles: dict[Cell, tuple[str, Group]] = {}
+        for group in self.groups:
+            for cell in group.bridge:
+                roles[cell] = ("Bridge", group)
+            if group.temp_support is not None:
+                roles.setdefault(group.temp_support, ("TempSupport", group))
+            if group.support is not None and group.support != group.temp_support:
+                roles[group.support] = ("Support", group)
+        return roles
+
+
+def ncp_pairs(layer: Layer) -> list[tuple[int, int]]:
+    """Pairs of perimeter numbers (i < j) of touching, non-consecutive cells."""
+    pairs = []
+    for i, cell in enumerate(layer.cells):
+        for side in SIDES:
+            other = neighbor(cell, side)
+            if other not in layer.visits or other == cell:
+                continue
+            mine, theirs = layer.visits[cell], layer.visits[other]
+            if any(abs(p - q) == 1 for p in mine for q in theirs):
+                continue
+            pairs.extend((i, j) for j in theirs if j > i + 1)
+    return sorted(set(pairs))
+
+
+def outermost(spans: list[tuple[int, int]]) -> list[tuple[int, int]]:
+    """Spans not inside (nor crossing into) an earlier, larger one."""
+    kept: list[tuple[int, int]] = []
+    reach = -1
+    for i, j in sorted(spans, key=lambda s: (s[0], -s[1])):
+        if i >= reach:
+            kept.append((i, j))
+            reach = j
+        # else: inside (or crossing) a kept span
+    return kept
+
+
+def theorem1_problems(surface: frozenset[Cell], x: Cell, y: Cell) -> list[str]:
+    """Theorem 1: a, b, c, g free; x touches d or f; y touches e or h."""
+    t = letters(x, y)
+    problems = [f"{name} {list(getattr(t, name))} is a surface cell"
+                for name in "abcg" if getattr(t, name) in surface]
+    if t.d not in surface and t.f not in surface:
+        problems.append("x touches neither d nor f")
+    if t.e not in surface and t.h not in surface:
+        problems.append("y touches neither e nor h")
+    return problems
+
+
+def classify(surface: frozenset[Cell], x: Cell, y: Cell) -> str:
+    t = letters(x, y)
+    d, e = t.d in surface, t.e in surface
+    return "BASIC" if d and e else "SINGLE" if not (d or e) else "LEFT" if d else "RIGHT"
+
+
+def _ccw_path(surface: frozenset[Cell], bridge: Cell, start: Cell, goal: Cell,
+              model: str) -> tuple[Cell, ...] | None:
+    """Counterclockwise rolls about ``bridge`` from ``start`` to ``goal``, or None
+    when the model does not allow one of them on the bare surface."""
+    occupied = (surface | {bridge}).__contains__
+    cell, path = start, []
+    for _ in range(6):
+        if cell == goal:
+            return tuple(path)
+        side = side_towards(cell, bridge)
+        if side is None:
+            return None
+        rotation = rotation_to(wrap(side + 1), "CCW")
+        rolled = next_rotation(cell, bridge, "CCW", occupied, model)
+        if rolled is None or rolled.rotation != rotation:
+            return None
+        cell = rolled.dst
+        path.append(cell)
+    return None
+
+
+def set_bridging_cells(bmap_surface: frozenset[Cell], layer: Layer, span: tuple[int, int],
+                       model: str) -> Group:
+    """SETBRIDGINGCELLS for one BI (Fig. 8 plus the placements derived in the docs)."""
+    i, j = span
+    x, y = layer.cells[i], layer.cells[j]
+    t = letters(x, y)
+    kind = classify(bmap_surface, x, y)
+    inside = layer.cells[i + 1: j]
+    pocket = frozenset(inside)
+    length = len(pocket)
+    if kind == "BASIC":
+        return Group(kind, span, (x, y), pocket, length)
+    neck = t.f in bmap_surface and t.h in bmap_surface
+    if kind == "SINGLE" or neck:
+        return Group(kind, span, (t.g,), pocket - {t.g}, length)
+    if length <= 2:
+        return Group(kind, span, (inside[-1],), pocket - {inside[-1]}, length)
+    if kind == "LEFT":
+        temp, bridge, support = inside[0], t.g, inside[-2]
+    else:
+        bridge, temp, support = t.g, inside[1], inside[-1]
+    reverse = _ccw_path(bmap_surface, bridge, temp, support, model) is not None
+    if kind == "RIGHT" and not reverse:
+        # The TempSupport module cannot reach the Support cell past the held
+        # Bridge: one Bridge module, which leaves last through the pocket.
+        return Group(kind, span, (bridge,), pocket - {bridge}, length, through=True)
+    return Group(kind, span, (bridge,), pocket - {bridge}, length, temp_support=temp,
+                 support=support, reverse=reverse)
+
+
+def three_candidates(surface: frozenset[Cell],
+                     layer: Layer) -> list[tuple[int, int, Cell, str]]:
+    """(i, j, w, shape): perimeter cells ``u = i`` and ``v = j`` two apart, the
+    free common neighbour ``w`` off layer1 (a layer2 cell), and surface cells
+    touching ``u`` and ``v`` four apart, so that ``u, w, v`` is the whole
+    width of a 3-cell opening between them."""
+    out = []
+    for i, u in enumerate(layer.cells):
+        for s1 in SIDES:
+            for s2 in (s1, wrap(s1 + 1)):
+                w = neighbor(u, s1)
+                v = neighbor(w, s2)
+                if v not in layer.visits or w in surface or w in layer.visits:
+                    continue
+                shape = _opening_shape(surface, u, w, v)
+                if shape is None:
+                    continue
+                out.extend((i, j, w, shape) for j in layer.visits[v] if j - i >= MIN_THREE_SPAN)
+    return out
+
+
+def _opening_shape(surface: frozenset[Cell], u: Cell, w: Cell, v: Cell) -> str | None:
+    """The shape of the geodesic anchor-u-w-v-anchor (None: no such anchors).
+
+    Directions s0..s3 of its four steps: all equal is ``straight``; mirror
+    symmetric about ``w`` (as many bends at each end) is ``curved-symmetric``;
+    otherwise the end with the bend names it (``curved-left`` at ``u``)."""
+    shapes = []
+    for su in (neighbor(u, s) for s in SIDES):
+        if su not in surface or distance(su, w) != 2:
+            continue
+        for sv in (neighbor(v, s) for s in SIDES):
+            if sv not in surface or distance(sv, w) != 2 or distance(su, sv) != 4:
+                continue
+            steps = [side_towards(p, q) for p, q in ((su, u), (u, w), (w, v), (v, sv))]
+            if len(set(steps)) == 1:
+                shapes.append("straight")
+            elif (steps[0] == steps[1]) == (steps[2] == steps[3]):
+                shapes.append("curved-symmetric")
+            else:
+                shapes.append("curved-left" if steps[0] != steps[1] else "curved-right")
+    return min(shapes, key=SHAPES.index) if shapes else None
+
+
+def _pass_cells(surface: frozenset[Cell], layer: Layer, group: Group, model: str) -> bool:
+    """For each Bridge cell, the last cell next to it on the way over the held
+    bridge: a Bridge module counts the modules entering it. False when the
+    way over does not come back to the perimeter beyond the pocket."""
+    i, j = group.span
+    extra = set(group.bridge) | ({group.support} if group.support else set())
+
+    def held(cell: Cell) -> bool:  # no copy of the surface: O(span) per bridge
+        return cell in surface or cell in extra
+
+    start = max(i - 2, 0)
+    cell, pivot = layer.cells[start], layer.pivots[start]
+    route = [cell]
+    for _ in range(4 * (j - i) + 32):
+        rolled = next_rotation(cell, pivot, "CW", held, model)
+        if rolled is None:
+            return False
+        cell, pivot = rolled.dst, rolled.substrate
+        route.append(cell)
+        if cell in layer.visits and max(layer.visits[cell]) > j:
+            break
+    else:
+        return False
+    for b in group.bridge:
+        near = [c for c in route if distance(c, b) == 1]
+        if not near:
+            return False
+        group.pass_cells[b] = near[-1]
+    return True
+
+
+def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: bool = True,
+                      three: bool = True) -> BridgeMap:
+    """FINDBRIDGECELLS (Fig. 7) on a map."""
+    s = surface.surface
+    first = layer1(s, surface.modules, surface.goals, model)
+    second = layer2(s, first, model)
+    pairs = ncp_pairs(first)
+    bis = outermost(pairs)
+    candidates: list[Group] = []
+    if bridges:
+        for span in bis:
+            candidates.append(set_bridging_cells(s, first, span, model))
+        if three:
+            for i, j, w, shape in three_candidates(s, first):
+                u, v = first.cells[i], first.cells[j]
+                inside = frozenset(first.cells[i + 1: j])
+                candidates.append(Group("THREE", (i, j), (u, w, v), inside - {u, v},
+                                        len(inside), shape=shape))
+    keep_spans = set(outermost([g.span for g in candidates]))
+    groups, dropped = [], []
+    seen: set[tuple[int, int]] = set()
+    for group in sorted(candidates, key=lambda g: (g.span[0], -g.span[1], g.kind == "THREE")):
+        if group.span in keep_spans and group.span not in seen and _pass_cells(
+                s, first, group, model):
+            groups.append(group)
+            seen.add(group.span)
+        else:
+            dropped.append(group)
+    return BridgeMap(surface, model, first, second, pairs, bis, groups, dropped)

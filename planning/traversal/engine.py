@@ -1,0 +1,327 @@
+"""MOVEMODULE (Fig. 10) for every module, in synchronous rounds, with the
+invariants checked every round.
+
+Each module knows only the map, the bridge map computed from it, ``n``, its
+own cell and memory, and which of its six neighbour cells are occupied
+(now and one round ago: a cell that changed means a module in motion). No
+messages. Per round, every module decides from the state at the start of
+the round; the engine then checks all decided moves together and applies
+them. A broken invariant stops the run with the round, the modules and the
+rule that moved them.
+
+Decisions the paper leaves open (docs/traversal.md, "MOVEMODULE"):
+- a module may start, or leave a Bridge or Support cell, when none of its
+  neighbour cells changed in the last round; this yields the 2-cell spacing;
+- a Bridge module counts the modules that pass as the entries into the last
+  cell next to it on the way over the bridge (``Group.pass_cells``);
+- a module leaving a Bridge cell never enters the pocket it closed;
+- a module that reaches a goal cell stops when the next goal cell is
+  occupied or when it is the last one.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+from hexbot.planning.traversal.bridges import BridgeMap, Group
+from hexbot.planning.traversal.motion import Rolled, next_rotation, required_empty
+from hexbot.protocol.lattice import SIDES, Cell, distance, neighbor
+
+STATUSES = ("reached", "deadlock", "violation")
+
+
+@dataclass
+class Module:
+    ident: int
+    cell: Cell
+    pivot: Cell
+    phase: str = "chain"  # chain moving bridge resume temp to-support support done
+    direction: str = "CW"
+    group: Group | None = None
+    count: int = 0
+    served: set[int] = field(default_factory=set)  # id() of groups served
+    avoid: set[Cell] = field(default_factory=set)
+    rule: str = "start"  # the part of MOVEMODULE that made its last move
+    resume_rule: str = ""
+    to_support_rule: str = ""
+
+
+@dataclass
+class MoveRecord:
+    module: int
+    src: Cell
+    dst: Cell
+    substrate: Cell
+    substrate_module: int | None  # None: a surface cell
+    joint: int
+    direction: str
+    rule: str
+
+    def as_json(self) -> dict[str, Any]:
+        return {"module": self.module, "from": list(self.src), "to": list(self.dst),
+                "joint": self.joint, "direction": self.direction,
+                "substrate": list(self.substrate), "rule": self.rule}
+
+
+@dataclass
+class Violation:
+    round: int
+    invariant: str
+    modules: list[int]
+    rules: list[str]
+    detail: str
+
+    def as_json(self) -> dict[str, Any]:
+        return {"round": self.round, "invariant": self.invariant, "modules": self.modules,
+                "rules": self.rules, "detail": self.detail}
+
+    def describe(self) -> str:
+        return (f"round {self.round}: {self.invariant}: modules {self.modules} "
+                f"(rules {', '.join(self.rules)}): {self.detail}")
+
+
+@dataclass
+class Result:
+    status: str
+    rounds: list[list[MoveRecord]]
+    final: dict[int, Cell]
+    violation: Violation | None = None
+    reason: str = ""
+    initial: dict[int, Cell] = field(default_factory=dict)
+
+    @property
+    def time_steps(self) -> int:
+        return max((k + 1 for k, r in enumerate(self.rounds) if r), default=0)
+
+    @property
+    def moves(self) -> int:
+        return sum(len(r) for r in self.rounds)
+
+
+class Engine:
+    """One run of the traversal on a bridge map."""
+
+    def __init__(self, bmap: BridgeMap, *, stall_rounds: int | None = None,
+                 max_rounds: int | None = None) -> None:
+        self.bmap = bmap
+        self.surface = bmap.surface.surface
+        self.model = bmap.model
+        layer = bmap.layer1
+        self.n = bmap.surface.n
+        self.goal_order = [c for c in layer.cells if c in bmap.surface.goals]
+        self.next_goal = {c: (self.goal_order[k + 1] if k + 1 < len(self.goal_order) else None)
+                          for k, c in enumerate(self.goal_order)}
+        self.roles = bmap.role_of()
+        self.modules = [Module(k + 1, layer.cells[k], layer.pivots[k]) for k in range(self.n)]
+        self.chain_cells = [m.cell for m in self.modules]
+        self.at: dict[Cell, Module] = {m.cell: m for m in self.modules}
+        self.changed: set[Cell] = set()
+        self.entered: set[Cell] = set()
+        self.stall_rounds = stall_rounds or 8 * self.n + 40
+        self.max_rounds = max_rounds or 20 * (len(layer) + 4 * self.n) + 200
+
+    # -- what a module senses -------------------------------------------------
+    def occupied(self, cell: Cell) -> bool:
+        return cell in self.surface or cell in self.at
+
+    def quiet(self, m: Module) -> bool:
+        """None of the module's neighbour cells changed in the last round."""
+        return not any(neighbor(m.cell, s) in self.changed for s in SIDES)
+
+    def sensing(self, m: Module):
+        """Occupancy as module ``m`` knows it: its neighbours by contact, farther
+        cells only from the map of the surface."""
+        def occupied(cell: Cell) -> bool:
+            if distance(cell, m.cell) == 1:
+                return self.occupied(cell)
+            return cell in self.surface
+        return occupied
+
+    # -- MOVEMODULE ---------------------------------------------------------------
+    def decide(self, m: Module) -> Rolled | None:
+        """The module's move this round, or None (it waits)."""
+        rule = "roll"
+        if m.phase == "done":
+            return None
+        if m.phase == "chain":
+            k = m.ident - 1
+            if k > 0 and (self.chain_cells[k - 1] in self.at or not self.quiet(m)):
+                return None
+            m.phase, rule = "moving", "start"
+        elif m.phase == "bridge":
+            group = m.group
+            assert group is not None
+            if group.pass_cells.get(m.cell) in self.entered:
+                m.count += 1
+            if m.count < group.passes_needed(m.cell, self.n):
+                return None
+            m.phase, m.resume_rule = "resume", "leave-bridge"
+        elif m.phase == "temp":
+            group = m.group
+            assert group is not None
+            if not self.occupied(group.bridge[0]):
+                return None
+            m.phase = "to-support"
+            if group.reverse:
+                m.direction, m.pivot = "CCW", group.bridge[0]
+            rule = m.to_support_rule = "reverse-to-support" if group.reverse else "on-to-support"
+        elif m.phase == "support":
+            group = m.group
+            assert group is not None
+            if self.occupied(group.bridge[0]):
+                return None
+            m.phase, m.direction, m.pivot = "resume", "CW", group.bridge[0]
+            m.resume_rule = "leave-support"
+        elif m.phase == "to-support":
+            rule = m.to_support_rule
+        if m.phase == "resume":
+            if not self.quiet(m):
+                return None
+            m.phase, rule = "moving", m.resume_rule
+        rolled = next_rotation(m.cell, m.pivot, m.direction, self.sensing(m), self.model,
+                               m.avoid.__contains__)
+        m.rule = rule
+        return rolled
+
+    def arrive(self, m: Module) -> None:
+        """What the cell just entered asks of the module (Fig. 10, lines 5-13)."""
+        cell = m.cell
+        if cell in self.next_goal:
+            ahead = self.next_goal[cell]
+            if ahead is None or ahead in self.at:
+                m.phase = "done"
+                return
+        role = self.roles.get(cell)
+        if m.phase == "to-support":
+            assert m.group is not None
+            if cell == m.group.support:
+                m.phase = "support"
+            return
+        if role is None or id(role[1]) in m.served:
+            return
+        kind, group = role
+        if kind == "Bridge":
+            if group.temp_support is not None and not (
+                    self.occupied(group.temp_support)
+                    or (group.support is not None and self.occupied(group.support))):
+                return  # RIGHT: the first module rolls on to the TempSupport cell
+            m.phase, m.group, m.count = "bridge", group, 0
+            m.served.add(id(group))
+            if not group.through:
+                m.avoid |= group.pocket
+        elif kind == "TempSupport":
+            m.phase, m.group = "temp", group
+            m.served.add(id(group))
+
+    # -- invariants -------------------------------------------------------------
+    def check(self, rnd: int, actions: list[tuple[Module, Rolled]]) -> Violation | None:
+        movers = {m.cell: m for m, _ in actions}
+
+        def fail(invariant: str, mods: list[Module], detail: str) -> Violation:
+            return Violation(rnd, invariant, [x.ident for x in mods], [x.rule for x in mods],
+                             detail)
+
+        targets: dict[Cell, Module] = {}
+        for m, rolled in actions:
+            if rolled.dst in targets:
+                return fail("one module per cell", [targets[rolled.dst], m],
+                            f"both move into {list(rolled.dst)}")
+            targets[rolled.dst] = m
+            if self.occupied(rolled.dst):
+                return fail("one module per cell", [m], f"{list(rolled.dst)} is occupied")
+            if not self.occupied(rolled.substrate):
+                return fail("no move without a substrate", [m],
+                            f"substrate {list(rolled.substrate)} is empty")
+            if rolled.substrate in movers:
+                return fail("a mover never rolls on a moving module",
+                            [m, movers[rolled.substrate]],
+                            f"substrate {list(rolled.substrate)} moves in the same round")
+            for cell in required_empty(rolled.rotation, rolled.src, self.model)[1:]:
+                if self.occupied(cell):
+                    return fail("swept cells empty", [m], f"{list(cell)} is occupied "
+                                f"({self.model} model)")
+        for m, rolled in actions:
+            swept = set(required_empty(rolled.rotation, rolled.src, self.model))
+            for other, orolled in actions:
+                if other is m:
+                    continue
+                if swept & {orolled.src, orolled.dst}:
+                    return fail("swept cells empty", [m, other], "their rotations cross")
+                if distance(rolled.src, orolled.src) == 1 or \
+                        distance(rolled.dst, orolled.dst) == 1:
+                    return fail("moving modules never adjacent", [m, other],
+                                f"{list(rolled.src)}->{list(rolled.dst)} and "
+                                f"{list(orolled.src)}->{list(orolled.dst)}")
+        return None
+
+    def connected(self) -> list[int]:
+        """Modules not connected to the surface through other modules."""
+        reached = {c for c in self.at if any(neighbor(c, s) in self.surface for s in SIDES)}
+        frontier = list(reached)
+        while frontier:
+            cell = frontier.pop()
+            for s in SIDES:
+                nb = neighbor(cell, s)
+                if nb in self.at and nb not in reached:
+                    reached.add(nb)
+                    frontier.append(nb)
+        return sorted(self.at[c].ident for c in self.at if c not in reached)
+
+    # -- the rounds ---------------------------------------------------------------
+    def run(self) -> Result:
+        initial = {m.ident: m.cell for m in self.modules}
+        rounds: list[list[MoveRecord]] = []
+        idle = 0
+        for rnd in range(1, self.max_rounds + 1):
+            if all(m.phase == "done" for m in self.modules):
+                return self._result("reached", rounds, initial)
+            actions = [(m, r) for m in self.modules if (r := self.decide(m)) is not None]
+            violation = self.check(rnd, actions)
+            if violation is not None:
+                return self._result("violation", rounds, initial, violation=violation,
+                                    reason=violation.describe())
+            records = []
+            for m, rolled in actions:
+                sub = self.at.get(rolled.substrate)
+                records.append(MoveRecord(m.ident, rolled.src, rolled.dst, rolled.substrate,
+                                          sub.ident if sub else None, rolled.rotation.joint,
+                                          rolled.rotation.direction, m.rule))
+            for m, _ in actions:
+                del self.at[m.cell]
+            for m, rolled in actions:
+                m.cell, m.pivot = rolled.dst, rolled.substrate
+                self.at[m.cell] = m
+            self.changed = {r.src for r in records} | {r.dst for r in records}
+            self.entered = {r.dst for r in records}
+            for m, _ in actions:
+                self.arrive(m)
+            rounds.append(records)
+            loose = self.connected()
+            if loose:
+                v = Violation(rnd, "connected to the surface", loose,
+                              [self._by_id(i).rule for i in loose],
+                              "modules lost contact with the surface")
+                return self._result("violation", rounds, initial, violation=v,
+                                    reason=v.describe())
+            idle = 0 if records else idle + 1
+            if idle >= self.stall_rounds:
+                waiting = [f"{m.ident}:{m.phase}@{list(m.cell)}" for m in self.modules
+                           if m.phase != "done"]
+                return self._result("deadlock", rounds[: len(rounds) - idle], initial,
+                                    reason=f"no module moved for {idle} rounds; waiting: "
+                                           + ", ".join(waiting))
+        return self._result("deadlock", rounds, initial,
+                            reason=f"not done after {self.max_rounds} rounds")
+
+    def _by_id(self, ident: int) -> Module:
+        return self.modules[ident - 1]
+
+    def _result(self, status: str, rounds: list[list[MoveRecord]], initial: dict[int, Cell],
+                violation: Violation | None = None, reason: str = "") -> Result:
+        return Result(status, rounds, {m.ident: m.cell for m in self.modules}, violation,
+                      reason, initial)
+
+
+def traverse(bmap: BridgeMap, **options: Any) -> Result:
+    return Engine(bmap, **options).run()

@@ -1,0 +1,105 @@
+"""The paper's measurements, reproduced (Section VI).
+
+- Figs. 12-13: four modules, one pocket behind a 3-cell opening whose
+  perimeter grows; time steps and module moves with the 3-bridge and
+  without it (1- and 2-cell bridges still formed).
+- SINGLE bridges: one dent in a flat surface, n modules, with and without
+  bridges: the paper says each SINGLE bridge adds 2 time steps and saves
+  n - 1 moves.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from typing import Any
+
+from hexbot.errors import ScenarioError
+from hexbot.planning.traversal.bank import Feature, build
+from hexbot.planning.traversal.bridges import find_bridge_cells
+from hexbot.planning.traversal.engine import traverse
+
+SWEEP_DEPTHS = tuple(range(2, 11))  # the block is DEPTH rows deep
+SINGLE_N = (3, 4, 5, 6, 8, 10)
+
+
+def pocket_sweep(depths=SWEEP_DEPTHS, n: int = 4) -> list[dict[str, Any]]:
+    rows = []
+    for depth in depths:
+        surface = build([Feature("THREE", depth)], n, name=f"three-deep{depth}")
+        bmap = find_bridge_cells(surface)
+        three = [g for g in bmap.groups if g.kind == "THREE"]
+        if not three:
+            raise ScenarioError(f"depth {depth}: no 3-bridge found")
+        row: dict[str, Any] = {"pocket": three[0].pocket_length, "depth": depth}
+        for label, three in (("with", True), ("without", False)):
+            result = traverse(find_bridge_cells(surface, three=three))
+            row[label] = {"status": result.status, "time_steps": result.time_steps,
+                          "moves": result.moves}
+        rows.append(row)
+    return rows
+
+
+def single_effect(ns=SINGLE_N) -> list[dict[str, Any]]:
+    rows = []
+    for n in ns:
+        surface = build([Feature("SINGLE", 1)], n, name=f"single-1-n{n}")
+        bridged = traverse(find_bridge_cells(surface))
+        bare = traverse(find_bridge_cells(surface, bridges=False))
+        rows.append({"n": n, "bridged": [bridged.time_steps, bridged.moves],
+                     "bare": [bare.time_steps, bare.moves],
+                     "extra_time": bridged.time_steps - bare.time_steps,
+                     "saved_moves": bare.moves - bridged.moves,
+                     "status": [bridged.status, bare.status]})
+    return rows
+
+
+def table(sweep: list[dict[str, Any]], singles: list[dict[str, Any]]) -> str:
+    lines = ["| pocket perimeter | time steps with 3-bridge | without | moves with | without |",
+             "|---:|---:|---:|---:|---:|"]
+    for row in sweep:
+        w, wo = row["with"], row["without"]
+        lines.append(f"| {row['pocket']} | {w['time_steps']} | {wo['time_steps']} | "
+                     f"{w['moves']} | {wo['moves']} |")
+    lines += ["", "| n | time with SINGLE bridge | without | extra time | moves with | "
+              "without | moves saved (n - 1) |", "|---:|---:|---:|---:|---:|---:|---:|"]
+    for row in singles:
+        lines.append(f"| {row['n']} | {row['bridged'][0]} | {row['bare'][0]} | "
+                     f"{row['extra_time']} | {row['bridged'][1]} | {row['bare'][1]} | "
+                     f"{row['saved_moves']} ({row['n'] - 1}) |")
+    return "\n".join(lines)
+
+
+def plot(sweep: list[dict[str, Any]], path: str) -> None:
+    from hexbot.extras import require
+
+    require("matplotlib", "plot", "drawing figures").use("Agg")
+    import matplotlib.pyplot as plt
+
+    xs = [r["pocket"] for r in sweep]
+    fig, axes = plt.subplots(1, 2, figsize=(10, 3.6))
+    for ax, key, title in ((axes[0], "time_steps", "Fig. 12: time steps"),
+                           (axes[1], "moves", "Fig. 13: module moves")):
+        ax.plot(xs, [r["without"][key] for r in sweep], "o-", color="#1f77b4",
+                label="traverse the pocket")
+        ax.plot(xs, [r["with"][key] for r in sweep], "s-", color="#d62728",
+                label="3-module bridge")
+        ax.set_xlabel("pocket perimeter (cells)")
+        ax.set_title(title)
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+
+
+def run_sweep(args: argparse.Namespace) -> int:
+    sweep, singles = pocket_sweep(), single_effect()
+    if args.json:
+        print(json.dumps({"pocket_sweep": sweep, "single": singles}))
+    else:
+        print(table(sweep, singles))
+    if args.plot:
+        plot(sweep, args.plot)
+    bad = [r for r in sweep if "reached" not in (r["with"]["status"],)]
+    return 1 if bad else 0

@@ -1,0 +1,79 @@
+"""FINDBRIDGECELLS on the bank: the cases of Fig. 5, the placements derived in
+docs/traversal.md, 3-bridges covering 1-2 bridges, and Theorem 1 on random
+surfaces."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from hexbot.errors import ScenarioError
+from hexbot.planning.traversal.bank import random_surface
+from hexbot.planning.traversal.bridges import find_bridge_cells, letters, theorem1_problems
+from hexbot.planning.traversal.cli import resolve_map
+
+
+@pytest.mark.parametrize("case", ["single", "basic", "left", "right"])
+@pytest.mark.parametrize("length", [1, 2, 3, 5, 8])
+def test_each_pocket_is_classified_with_its_length(case, length):
+    if case == "single" and length == 2:
+        pytest.skip("no SINGLE pocket of length 2 exists under the deformable model (docs)")
+    bmap = find_bridge_cells(resolve_map(f"{case}-{length}"))
+    assert [(g.kind, g.pocket_length) for g in bmap.groups] == [(case.upper(), length)]
+
+
+def test_basic_bridges_both_bi_cells_and_counts_passes_above_them():
+    bmap = find_bridge_cells(resolve_map("basic-5"))
+    (group,) = bmap.groups
+    i, j = group.span
+    x, y = bmap.layer1.cells[i], bmap.layer1.cells[j]
+    assert group.bridge == (x, y)
+    t = letters(x, y)
+    assert group.pass_cells == {x: t.b, y: t.c}
+
+
+def test_left_long_pocket_uses_temp_support_bridge_support():
+    bmap = find_bridge_cells(resolve_map("left-5"))
+    (group,) = bmap.groups
+    i, j = group.span
+    inside = bmap.layer1.cells[i + 1: j]
+    t = letters(bmap.layer1.cells[i], bmap.layer1.cells[j])
+    assert group.temp_support == inside[0]  # cellAt(pn(x) + 1)
+    assert group.bridge == (t.g,) == (inside[-1],)  # cellAt(pn(y) - 1)
+    assert group.support == inside[-2]
+
+
+def test_short_left_and_right_pockets_take_one_bridge_cell():
+    for name in ("left-2", "right-2"):
+        bmap = find_bridge_cells(resolve_map(name))
+        (group,) = bmap.groups
+        i, j = group.span
+        assert group.bridge == (bmap.layer1.cells[j - 1],) and group.temp_support is None
+
+
+def test_a_three_bridge_covers_the_small_bridges_inside():
+    surface = resolve_map("three-deep4")
+    with_three = find_bridge_cells(surface)
+    assert [g.kind for g in with_three.groups] == ["THREE"]
+    assert with_three.groups[0].shape == "straight"
+    assert any(g.kind != "THREE" for g in with_three.dropped)
+    assert [g.kind for g in find_bridge_cells(surface, three=False).groups] == ["BASIC"]
+
+
+def test_fig14_surface_has_every_kind():
+    kinds = {g.kind for g in find_bridge_cells(resolve_map("fig14")).groups}
+    assert kinds == {"SINGLE", "BASIC", "LEFT", "RIGHT", "THREE"}
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.integers(min_value=0, max_value=10**6))
+def test_theorem1_holds_for_every_bi_of_random_surfaces(seed):
+    surface = random_surface(seed)
+    try:
+        bmap = find_bridge_cells(surface)
+    except ScenarioError:  # digging closed the chain's perimeter: not a surface to test
+        return
+    for i, j in bmap.bis:
+        x, y = bmap.layer1.cells[i], bmap.layer1.cells[j]
+        assert theorem1_problems(surface.surface, x, y) == [], (seed, x, y)

@@ -1,0 +1,55 @@
+"""hexbot traverse: the --json schema, exit statuses, --render."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from hexbot.cli import main
+
+
+def _json(capsys, *argv):
+    status = main(["traverse", *argv, "--json"])
+    return status, json.loads(capsys.readouterr().out)
+
+
+def test_json_schema_on_a_bridged_pocket(capsys):
+    status, out = _json(capsys, "left-5")
+    assert status == 0 and out["status"] == "reached"
+    assert out["time_steps"] == len(out["rounds"]) and out["moves"] == sum(
+        len(r["moves"]) for r in out["rounds"])
+    assert out["bridges"][0]["kind"] == "LEFT" and out["bridges"][0]["cells"]
+    move = out["rounds"][0]["moves"][0]
+    assert set(move) >= {"from", "to", "joint", "direction"} and move["direction"] in ("CW",
+                                                                                        "CCW")
+
+
+def test_violation_exits_1_with_the_reason(capsys):
+    status = main(["traverse", "basic-5", "--no-bridges"])
+    captured = capsys.readouterr()
+    assert status == 1 and "violation: round" in captured.err
+
+
+def test_bad_map_is_a_one_line_error(tmp_path, capsys):
+    bad = tmp_path / "bad.txt"
+    bad.write_text("M . G\nS Q S\n")
+    assert main(["traverse", str(bad)]) == 1
+    assert f"{bad}:2: unknown token 'Q'" in capsys.readouterr().err
+
+
+def test_no_3_bridges_changes_the_bridges(capsys):
+    _, with_three = _json(capsys, "three-deep4")
+    _, without = _json(capsys, "three-deep4", "--no-3-bridges")
+    assert [b["kind"] for b in with_three["bridges"]] == ["THREE"]
+    assert "THREE" not in [b["kind"] for b in without["bridges"]]
+
+
+def test_render_writes_an_animated_gif(tmp_path):
+    pytest.importorskip("matplotlib")
+    from PIL import Image
+
+    out = tmp_path / "run.gif"
+    assert main(["traverse", "single-1", "--render", str(out)]) == 0
+    with Image.open(out) as gif:
+        assert gif.n_frames > 10
