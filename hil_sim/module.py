@@ -1,4 +1,5 @@
-"""One HexBot module: its two MCUs and the board pin maps the simulator reads.
+"""One HexBot module: its two MCUs (plus an optional wireless board) and the
+board pin maps the simulator reads.
 
 A module is a communication MCU and a control MCU joined UART0 to UART0, with
 its id on the control board's DIP switches (port C). It reads actuators,
@@ -73,6 +74,7 @@ class Module:
     comm: Mcu
     control: Mcu
     body: Body
+    rf12: Mcu | None = None  # the wireless board, if the module has one
     control_ports: dict[str, int] = field(default_factory=lambda: dict.fromkeys(CONTROL_PORTS, 0))
     comm_ports: dict[str, int] = field(default_factory=lambda: dict.fromkeys(COMM_PORTS, 0))
     # Selector history: parallel lists of change cycles and channel (side/0/None).

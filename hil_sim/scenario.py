@@ -10,6 +10,9 @@ A scenario is a TOML file (built-ins in ``hil_sim/scenarios/``)::
     [firmware]                    # optional; default: firmware/build/*.elf
     comm = "firmware/build/comm.elf"       # relative to the scenario file
     control = "firmware/build/control.elf"
+    rf12 = "firmware/build/rf12.elf"        # optional: a wireless board on every module
+
+    radio_range = 100             # optional: RF12 range in lattice cells (see radio.py)
 
     [faults]                      # optional; applies to every IR link
     bit_error_rate = 0.0          # probability that each data bit flips
@@ -58,9 +61,12 @@ MAX_CLOCK_PPM = round(CLOCK_TOLERANCE * 1e6)  # an RC clock further off cannot t
 PC = "pc"
 
 _TOP_KEYS = {"name", "description", "seed", "base", "firmware", "faults", "module",
-             "clock_spread_ppm"}
+             "clock_spread_ppm", "radio_range"}
 _MODULE_KEYS = {"id", "position", "orientation", "firmware", "clock_ppm"}
-_FIRMWARE_KEYS = {"comm", "control"}
+_FIRMWARE_KEYS = {"comm", "control", "rf12"}
+#: RF12 range in lattice cells unless the scenario says otherwise: ~10 m at a
+#: ~10 cm module pitch, a low figure for the chip at full power indoors.
+DEFAULT_RADIO_RANGE = 100
 _FAULT_KEYS = {"bit_error_rate", "byte_loss", "framing_error_rate", "spurious_byte_rate",
                "burst_rate"}
 _LINK_KEYS = _FAULT_KEYS | {"from", "to"}
@@ -91,6 +97,7 @@ class Faults:
 class Firmware:
     comm: Path
     control: Path
+    rf12: Path | None = None  # the wireless board, if the module has one
 
 
 @dataclass(frozen=True)
@@ -114,6 +121,7 @@ class Scenario:
     path: Path | None = None
     description: str = ""
     clock_spread_ppm: float = 0.0
+    radio_range: int = DEFAULT_RADIO_RANGE
 
     def clocks(self, seed: int) -> dict[tuple[int, str], float]:
         """Clock error in ppm of every MCU, by (module id, "comm"/"control"):
@@ -137,8 +145,10 @@ class Scenario:
     def with_firmware(self, folder: Path) -> Scenario:
         """The same cluster with every module on ``folder``'s comm.elf and
         control.elf: one firmware build against another on the same scenario."""
-        images = Firmware(Path(folder) / "comm.elf", Path(folder) / "control.elf")
-        return replace(self, modules=[replace(m, firmware=images) for m in self.modules])
+        return replace(self, modules=[
+            replace(m, firmware=replace(m.firmware, comm=Path(folder) / "comm.elf",
+                                        control=Path(folder) / "control.elf"))
+            for m in self.modules])
 
 
 def default_firmware_dir() -> Path:
@@ -276,6 +286,11 @@ def parse_scenario(text: str, path: Path) -> Scenario:
         raise fail(lines.find("", -1, "clock_spread_ppm"),
                    f"clock_spread_ppm must not be negative, not {spread:g}")
 
+    radio_range = data.get("radio_range", DEFAULT_RADIO_RANGE)
+    if not isinstance(radio_range, int) or isinstance(radio_range, bool) or radio_range < 0:
+        raise fail(lines.find("", -1, "radio_range"),
+                   f"radio_range must be a whole number of cells >= 0, not {radio_range!r}")
+
     return Scenario(
         name=name,
         modules=modules,
@@ -286,6 +301,7 @@ def parse_scenario(text: str, path: Path) -> Scenario:
         path=path,
         description=str(data.get("description", "")),
         clock_spread_ppm=spread,
+        radio_range=radio_range,
     )
 
 

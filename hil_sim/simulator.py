@@ -22,13 +22,14 @@ from collections.abc import Callable
 from typing import Any
 
 from hexbot.errors import HexBotError, HexBotTimeoutError, ScenarioError
-from hexbot.protocol.pins import DIP_PORT
+from hexbot.protocol.pins import DIP_PORT, RF12_IRQ_PIN, RF12_SPI_PINS
 from hexbot.protocol.timing import BAUD_BOARD, BAUD_DEBUG, BAUD_IR, CLOCK_TOLERANCE, F_CPU
 
 from .geometry import CENTRE, Cell, to_global
 from .ir_bus import PC_FRAME, AirByte, Frame, IrMedium
 from .module import Mcu, Module, decode_actuators
 from .plant import Plant, Timing
+from .radio import RadioMedium
 from .scenario import PC, Scenario, load_scenario
 
 DEBUG_FRAME = Frame(float(BAUD_DEBUG))
@@ -121,6 +122,8 @@ class Simulator:
                 ppm = clocks[(spec.id, board)]
                 if ppm:
                     self.cluster.set_clock(index, hz * (1 + ppm / 1e6))
+            if spec.firmware.rf12 is not None:
+                self._add_rf12(module, spec.firmware.rf12)
         self.medium = IrMedium(
             self, self.seed, faults_for=scenario.faults_for, emit=self._emit
         )
@@ -130,9 +133,30 @@ class Simulator:
         self._pc_tx_free = 0  # cycle the PC's transmitter is free again
         self._debug_tx: dict[int, deque[tuple[int, int]]] = {m: deque() for m in self.modules}
         self._debug_tx_free: dict[int, int] = dict.fromkeys(self.modules, 0)
-        self._debug_rx: dict[int, bytearray] = {m: bytearray() for m in self.modules}
+        # control boards by module id, wireless boards by (module id, "rf12")
+        self._debug_rx: dict[int | tuple[int, str], bytearray] = {
+            m: bytearray() for m in self.modules}
+        self._debug_rx.update({(m, "rf12"): bytearray()
+                               for m, mod in self.modules.items() if mod.rf12})
         self._pc_rx = bytearray()
         self._cycle = 0
+        self.radio = RadioMedium(
+            self.cluster, {m.id: m.rf12.index for m in self.modules.values() if m.rf12},
+            self.position, scenario.radio_range, self.seed, self._emit,
+        )
+
+    def _add_rf12(self, module: Module, image: Any) -> None:
+        """The module's wireless board: an MCU with an RF12 part on its SPI pins
+        (nominal clock; its UART1 is a debug port like the control board's)."""
+        if not image.is_file():
+            raise ScenarioError(f"module {module.id}: rf12 image {image} does not exist "
+                                "(build it with `make -C firmware`)")
+        index = self.cluster.add_mcu(str(image), f"rf12{module.id}")
+        (port, sel), (_, sdi), (_, sdo), (_, sck) = RF12_SPI_PINS
+        self.cluster.attach_rf12(index, (port, sel, sdi, sdo, sck), RF12_IRQ_PIN)
+        self.cluster.watch_uart(index, 1)
+        module.rf12 = Mcu(self.cluster, index, f"rf12{module.id}")
+        self._boards[index] = (module, "rf12")
 
     @classmethod
     def from_name(cls, name: str, seed: int | None = None, **kwargs: Any) -> Simulator:
@@ -160,6 +184,9 @@ class Simulator:
             for queue in self._debug_tx.values():
                 if queue:
                     stop = min(stop, queue[0][0])
+            radio_end = self.radio.next_end() if self.radio.radios else None
+            if radio_end is not None and radio_end > self._cycle:
+                stop = min(stop, radio_end)  # deliver radio bytes on their exact cycle
             reached = self.cluster.run(max(stop, self._cycle + 1))
             self._cycle = max(reached, self._cycle)
             self._collect()
@@ -230,9 +257,12 @@ class Simulator:
             self._debug_tx[module_id].append((start, value))
         self._debug_tx_free[module_id] = start
 
-    def debug_read(self, module_id: int) -> bytes:
-        data = bytes(self._debug_rx[module_id])
-        self._debug_rx[module_id].clear()
+    def debug_read(self, module_id: int, board: str = "control") -> bytes:
+        """What the board's UART1 debug port sent (``board="rf12"``: the
+        wireless board's)."""
+        key = module_id if board == "control" else (module_id, board)
+        data = bytes(self._debug_rx[key])
+        self._debug_rx[key].clear()
         return data
 
     # --- state -----------------------------------------------------------------
@@ -314,9 +344,10 @@ class Simulator:
                     frame = frame_of(module.comm.uart_config(1))
                     air.extend(AirByte(module.id, s, e, b, frame) for s, e, b in taken)
             else:
-                debug = self.cluster.uart_take(module.control.index, 1)
+                mcu = module.control if board == "control" else module.rf12
+                debug = self.cluster.uart_take(mcu.index, 1)
                 if debug:
-                    self._debug_received(module, debug)
+                    self._debug_received(module, debug, board)
         while self._pc_tx and self._pc_tx[0][1] <= now:
             start, end, value = self._pc_tx.popleft()
             air.append(AirByte(PC, start, end, value, PC_FRAME))
@@ -324,19 +355,23 @@ class Simulator:
         for byte in air:
             self.medium.transmit(byte)
         self.medium.settle(now)
+        self.radio.step(now)
 
         for module_id, queue in self._debug_tx.items():
             while queue and queue[0][0] <= now:
                 _, value = queue.popleft()
                 self._debug_send(self.modules[module_id], value)
 
-    def _debug_received(self, module: Module, taken: list[tuple[int, int, int]]) -> None:
-        frame = frame_of(module.control.uart_config(1))
+    def _debug_received(self, module: Module, taken: list[tuple[int, int, int]],
+                        board: str) -> None:
+        mcu = module.control if board == "control" else module.rf12
+        frame = frame_of(mcu.uart_config(1))
+        rx = self._debug_rx[module.id if board == "control" else (module.id, board)]
         for _start, end, value in taken:
             if frame.matches(DEBUG_FRAME):
-                self._debug_rx[module.id].append(value)
+                rx.append(value)
             else:
-                self._debug_rx[module.id].append(self._garbage.randrange(256))
+                rx.append(self._garbage.randrange(256))
                 self._emit(end, {"event": "debug-garbled", "module": module.id,
                                  "reason": f"control UART1 at {frame}, port at {DEBUG_FRAME}"})
 

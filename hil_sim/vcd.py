@@ -62,7 +62,7 @@ class VcdWriter:
 
     def on_changes(self, changes: list[tuple[int, int, str, str, int]]) -> None:
         for cycle, module_id, board, port, value in changes:
-            ports = self._ports[(module_id, board)]
+            ports = self._ports.setdefault((module_id, board), {})  # also rf12
             ports[port] = value
             t = round(cycle * 1_000_000 / self.sim.hz)
             for s in self.signals[module_id]:

@@ -40,6 +40,16 @@ LED_JOINT_PINS: tuple[Pin, ...] = (("D", 7), ("A", 7), ("E", 2), ("C", 5), ("C",
 SELECTOR_PINS: tuple[Pin, ...] = (("A", 2), ("A", 1), ("A", 0))
 COMM_PORTS = ("A", "C", "D", "E")
 
+# --- wireless board (Appendix A, "Wireless SPI") ----------------------------------
+
+#: Bit-banged SPI to the RF12: nSEL, SDI (to the radio), SDO (from it), SCK,
+#: all on one port, and the radio's nIRQ (active low). firmware/board/
+#: rf12_board.c names the same pins (not yet generated from here).
+RF12_SPI_PINS: tuple[Pin, ...] = (("B", 4), ("B", 5), ("B", 6), ("B", 7))
+RF12_IRQ_PIN: Pin = ("D", 5)
+#: Mode jumper (pull-up): open = transmit test, closed (low) = receive test.
+RF12_MODE_PIN: Pin = ("A", 0)
+
 #: Every LED by the name the simulator and its traces use: led_jN (joint N),
 #: led_sNa (side N positive), led_sNb (side N negative).
 LED_PINS: dict[str, Pin] = {

@@ -29,15 +29,20 @@ void rf12_init(void)
 {
     for (uint8_t i = 0; i < sizeof init_words / sizeof init_words[0]; i++)
         rf12_board_xfer(init_words[i]);
+    /* Read the status: it clears the power-on interrupt, which otherwise
+     * holds nIRQ low and makes the first receive read an empty FIFO. */
+    rf12_board_xfer(0x0000);
 }
 
+/* Busy-wait (the listing's way): at 4.8 kbps a byte must be written every
+ * 1.7 ms, and sleeping until the next 10 ms tick would let the transmit
+ * register underrun. The tick interrupt still bounds the wait. */
 static uint8_t wait_irq(tick_t ticks)
 {
     tick_t start = tick_now();
     while (!rf12_board_irq()) {
         if (tick_since(start) >= ticks)
             return 0;
-        sys_idle();
     }
     return 1;
 }
@@ -85,6 +90,8 @@ int8_t rf12_receive_packet(uint8_t *data)
     rf12_board_xfer(0x82D9);  /* receiver on */
     rf12_board_xfer(0xCA81);  /* FIFO reset: wait for the sync word again */
     rf12_board_xfer(0xCA83);  /* FIFO fill on sync */
+    rf12_board_xfer(0x0000);  /* clear interrupts latched before (the init's
+                                 transmitter underruns): nIRQ means data now */
     for (uint8_t i = 0; i < RF12_PAYLOAD; i++) {
         b = recv_byte(i == 0 ? PACKET_TIMEOUT_TICKS : IRQ_TIMEOUT_TICKS);
         if (b < 0 && i == 0)

@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cluster.h"
+#include "rf12_part.h"
 
 static int logger_installed;
 
@@ -33,8 +34,11 @@ void cluster_free(cluster_t *c)
 {
 	if (!c)
 		return;
-	for (int i = 0; i < c->n; i++)
+	for (int i = 0; i < c->n; i++) {
+		rf12_t *radio = c->mcu[i]->rf12; /* the MCU's io list points into it */
 		m162_free(c->mcu[i]);
+		rf12_free(radio);
+	}
 	free(c->mcu);
 	free(c);
 }
@@ -116,13 +120,17 @@ void cluster_set_clock(cluster_t *c, int mcu, uint32_t hz)
 	m162_set_clock(c->mcu[mcu], hz, c->cycle);
 }
 
-/* Work done between quanta.  Returns 1 if a watched USART finished a byte
- * nobody has been told about. */
+/* Work done between quanta.  Returns 1 if a watched USART or a radio
+ * finished a byte nobody has been told about. */
 static int boundary(cluster_t *c)
 {
 	int news = 0;
 	for (int i = 0; i < c->n; i++) {
 		m162_t *m = c->mcu[i];
+		if (m->rf12 && rf12_news(m->rf12)) { /* the radio medium routes it */
+			news = 1;
+			m->changed = 1;
+		}
 		for (int k = 0; k < M162_NUARTS; k++) {
 			m162_usart_t *s = &m->usart[k];
 			if (!s->keep_log)

@@ -21,6 +21,10 @@
  * Time is counted in cycles of the nominal clock (the ELF's frequency); an
  * MCU may run on its own clock (m162_set_clock), and everything the cluster
  * reports (byte and pin-log cycles) is converted to cluster cycles.
+ *
+ * An MCU may carry an RF12 radio (rf12_part.h); run() returns at the first
+ * boundary after one of its bytes left the air, for Python's medium
+ * (hil_sim/radio.py) to route it.
  */
 #ifndef HEXBOT_CLUSTER_H
 #define HEXBOT_CLUSTER_H

@@ -132,6 +132,7 @@ typedef struct m162_t {
 	size_t pinlog_len, pinlog_cap;
 	uint64_t pinlog_dropped;
 	struct m162_porthook_t { struct m162_t *m; int idx; } porthook[M162_NPORTS];
+	struct rf12_t *rf12; /* an RF12 radio on its pins (rf12_part.c), or NULL */
 	char last_error[256];
 	uint64_t crash_cycle;
 	unsigned sp_low_count; /* instructions in a row with SP below SRAM */
@@ -154,6 +155,9 @@ uint64_t m162_to_cluster(const m162_t *m, uint64_t local_cycle);
 uint32_t m162_to_cluster_span(const m162_t *m, uint32_t local_cycles);
 /* Change the MCU's clock at cluster cycle now (hz > 0). */
 void m162_set_clock(m162_t *m, uint32_t hz, uint64_t now);
+/* Drive external levels on the pins of port (0..4 = A..E) in mask: they
+ * win over the internal pull-ups, as a part's outputs do. */
+void m162_drive_input(m162_t *m, int port, uint8_t mask, uint8_t value);
 const char *m162_state_name(int state); /* "running", "sleeping", "crashed", "done", "stopped" */
 static inline m162_t *m162_of(avr_t *avr) { return (m162_t *)avr->custom.data; }
 

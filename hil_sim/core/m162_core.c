@@ -734,6 +734,20 @@ static void m162_reapply_external(m162_t *m)
 	}
 }
 
+void m162_drive_input(m162_t *m, int port, uint8_t mask, uint8_t value)
+{
+	avr_ioport_t *ports[M162_NPORTS] = { &m->mcu.porta, &m->mcu.portb, &m->mcu.portc,
+		&m->mcu.portd, &m->mcu.porte };
+	avr_ioport_t *io = ports[port];
+	/* An external driver wins over the internal pull-up: simavr's "external"
+	 * state is re-applied whenever PORTx/DDRx change. */
+	io->external.pull_mask |= mask;
+	io->external.pull_value = (io->external.pull_value & ~mask) | (value & mask);
+	for (int b = 0; b < 8; b++)
+		if (mask & (1 << b))
+			avr_raise_irq(io->io.irq + b, (value >> b) & 1);
+}
+
 static void m162_fixup_reset(avr_io_t *io)
 {
 	m162_t *m = (m162_t *)((char *)io - offsetof(m162_t, fixup_io));

@@ -9,6 +9,7 @@
 #include <Python.h>
 
 #include "cluster.h"
+#include "rf12_part.h"
 #include "sim_core_config.h"
 
 typedef struct {
@@ -360,16 +361,7 @@ static PyObject *Cluster_set_input(ClusterObject *self, PyObject *args)
 		PyErr_SetString(PyExc_ValueError, "mask and value must be 0..255");
 		return NULL;
 	}
-	avr_ioport_t *ports[M162_NPORTS] = { &mc->mcu.porta, &mc->mcu.portb, &mc->mcu.portc,
-		&mc->mcu.portd, &mc->mcu.porte };
-	avr_ioport_t *io = ports[p];
-	/* An external driver wins over the internal pull-up: simavr's "external"
-	 * state is re-applied whenever PORTx/DDRx change. */
-	io->external.pull_mask |= (uint8_t)mask;
-	io->external.pull_value = (io->external.pull_value & ~mask) | (value & mask);
-	for (int b = 0; b < 8; b++)
-		if (mask & (1 << b))
-			avr_raise_irq(io->io.irq + b, (value >> b) & 1);
+	m162_drive_input(mc, p, (uint8_t)mask, (uint8_t)value);
 	Py_RETURN_NONE;
 }
 
@@ -565,6 +557,116 @@ static PyObject *Cluster_set_signature(ClusterObject *self, PyObject *args)
 	Py_RETURN_NONE;
 }
 
+/* ---------------------------------------------------------------- */
+/* RF12 radios (rf12_part.h) */
+
+static PyObject *airbyte_tuple(const rf12_airbyte_t *b)
+{
+	return Py_BuildValue("(KKiO(iii))", (unsigned long long)b->start,
+			(unsigned long long)b->end, b->byte, b->cut ? Py_True : Py_False,
+			b->channel.band, b->channel.freq, b->channel.rate);
+}
+
+static rf12_t *radio_arg(ClusterObject *self, PyObject *args)
+{
+	m162_t *mc = m162_arg(self, args);
+	if (mc && !mc->rf12) {
+		PyErr_Format(PyExc_ValueError, "MCU %s has no RF12 radio (attach_rf12 first)", mc->name);
+		return NULL;
+	}
+	return mc ? mc->rf12 : NULL;
+}
+
+static PyObject *Cluster_attach_rf12(ClusterObject *self, PyObject *args)
+{
+	long m;
+	const char *spi, *irq_port;
+	rf12_pins_t p;
+	if (!PyArg_ParseTuple(args, "l(siiii)(si)", &m, &spi, &p.sel, &p.sdi, &p.sdo, &p.sck,
+			&irq_port, &p.irq))
+		return NULL;
+	m162_t *mc = get_m162(self, m);
+	p.spi_port = mc ? port_index(spi) : -1;
+	p.irq_port = p.spi_port >= 0 ? port_index(irq_port) : -1;
+	if (p.irq_port < 0)
+		return NULL;
+	int bits[] = { p.sel, p.sdi, p.sdo, p.sck, p.irq };
+	for (size_t i = 0; i < sizeof bits / sizeof bits[0]; i++)
+		if (bits[i] < 0 || bits[i] > 7) {
+			PyErr_SetString(PyExc_ValueError, "pin bits must be 0..7");
+			return NULL;
+		}
+	if (mc->rf12) {
+		PyErr_Format(PyExc_ValueError, "MCU %s already has an RF12 radio", mc->name);
+		return NULL;
+	}
+	if (!rf12_attach(mc, p))
+		return PyErr_NoMemory();
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_radio_take(ClusterObject *self, PyObject *args)
+{
+	rf12_t *r = radio_arg(self, args);
+	if (!r)
+		return NULL;
+	rf12_airbyte_t buf[RF12_LOG_SIZE];
+	int n = rf12_take(r, buf, RF12_LOG_SIZE);
+	PyObject *list = PyList_New(n);
+	for (int i = 0; list && i < n; i++) {
+		PyObject *t = airbyte_tuple(&buf[i]);
+		if (!t) {
+			Py_DECREF(list);
+			return NULL;
+		}
+		PyList_SET_ITEM(list, i, t);
+	}
+	return list;
+}
+
+static PyObject *Cluster_radio_carrier(ClusterObject *self, PyObject *args)
+{
+	rf12_t *r = radio_arg(self, args);
+	if (!r)
+		return NULL;
+	rf12_airbyte_t b;
+	if (!rf12_carrier(r, &b))
+		Py_RETURN_NONE;
+	return airbyte_tuple(&b);
+}
+
+static PyObject *Cluster_radio_deliver(ClusterObject *self, PyObject *args)
+{
+	long m, byte;
+	unsigned long long due;
+	if (!PyArg_ParseTuple(args, "lKl", &m, &due, &byte))
+		return NULL;
+	PyObject *mt = Py_BuildValue("(l)", m);
+	rf12_t *r = mt ? radio_arg(self, mt) : NULL;
+	Py_XDECREF(mt);
+	if (!r)
+		return NULL;
+	if (byte < 0 || byte > 255) {
+		PyErr_SetString(PyExc_ValueError, "byte must be 0..255");
+		return NULL;
+	}
+	rf12_deliver(r, due, (uint8_t)byte);
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_radio_state(ClusterObject *self, PyObject *args)
+{
+	rf12_t *r = radio_arg(self, args);
+	if (!r)
+		return NULL;
+	return Py_BuildValue("{s:O,s:O,s:(iii),s:K,s:K}",
+			"receiving", rf12_receiving(r) ? Py_True : Py_False,
+			"transmitting", r->tx_on ? Py_True : Py_False,
+			"channel", r->channel.band, r->channel.freq, r->channel.rate,
+			"rx_dropped", (unsigned long long)r->rx_dropped,
+			"log_dropped", (unsigned long long)r->log_dropped);
+}
+
 static PyMethodDef Cluster_methods[] = {
 	{ "add_mcu", (PyCFunction)(void (*)(void))Cluster_add_mcu, METH_VARARGS | METH_KEYWORDS,
 		"add_mcu(elf_path, name, core='atmega162') -> index: load an ELF on a new MCU" },
@@ -586,6 +688,16 @@ static PyMethodDef Cluster_methods[] = {
 	{ "clock", (PyCFunction)Cluster_clock, METH_VARARGS, "clock(mcu) -> its clock in Hz" },
 	{ "changed", (PyCFunction)Cluster_changed, METH_NOARGS,
 		"changed() -> MCUs with new pin-log records or watched bytes since the last call" },
+	{ "attach_rf12", (PyCFunction)Cluster_attach_rf12, METH_VARARGS,
+		"attach_rf12(mcu, (port, nsel, sdi, sdo, sck), (port, nirq)): an RF12 radio on these pins" },
+	{ "radio_take", (PyCFunction)Cluster_radio_take, METH_VARARGS,
+		"radio_take(mcu) -> [(start, end, byte, cut, (band, freq, rate))] bytes that left the air" },
+	{ "radio_carrier", (PyCFunction)Cluster_radio_carrier, METH_VARARGS,
+		"radio_carrier(mcu) -> the byte on the air now, as radio_take's records, or None" },
+	{ "radio_deliver", (PyCFunction)Cluster_radio_deliver, METH_VARARGS,
+		"radio_deliver(mcu, due_cycle, byte): a byte from the air, complete at due_cycle" },
+	{ "radio_state", (PyCFunction)Cluster_radio_state, METH_VARARGS,
+		"radio_state(mcu) -> {receiving, transmitting, channel, rx_dropped, log_dropped}" },
 	{ "set_input", (PyCFunction)Cluster_set_input, METH_VARARGS,
 		"set_input(mcu, port, mask, value): drive external levels on pins" },
 	{ "pin_log", (PyCFunction)Cluster_pin_log, METH_VARARGS,

@@ -1,9 +1,10 @@
 """The RF12 wireless board image: power-on LEDs, the radio's configuration
 words on the bit-banged SPI, and the packet format of the transmit test.
 
-The simulator has no RF12 radio: we run the image as a module's control MCU
-(its UART1 is then the debug port), decode the SPI words from the pin log,
-and play the radio's nIRQ line ourselves."""
+Here the image runs as a module's control MCU with no radio on its pins: we
+decode the SPI words from the pin log and play the radio's nIRQ line
+ourselves. tests/hil_sim/test_radio.py runs it on wireless boards with the
+simulated RF12 and the air between them."""
 
 from __future__ import annotations
 
@@ -11,10 +12,12 @@ import pytest
 from fwsim import BUILD, scenario_file
 
 from hexbot.hil_sim import Simulator, load_scenario
+from hexbot.protocol.pins import RF12_SPI_PINS
 
 INIT_WORDS = [0x80D7, 0x8239, 0xA640, 0xC647, 0x94A0, 0xC2AC, 0xCA81, 0xCED4,
-              0xC483, 0x9850, 0xCC67, 0xE000, 0xC800, 0xC400]
-SEL, SDI, SCK = 1 << 4, 1 << 5, 1 << 7
+              0xC483, 0x9850, 0xCC67, 0xE000, 0xC800, 0xC400,
+              0x0000]  # status read: clears the power-on interrupt
+SEL, SDI, _SDO, SCK = (1 << bit for _port, bit in RF12_SPI_PINS)
 
 
 @pytest.fixture
