@@ -43,10 +43,13 @@ COMM_PORTS = ("A", "C", "D", "E")
 # --- wireless board (Appendix A, "Wireless SPI") ----------------------------------
 
 #: Bit-banged SPI to the RF12: nSEL, SDI (to the radio), SDO (from it), SCK,
-#: all on one port, and the radio's nIRQ (active low). firmware/board/
-#: rf12_board.c names the same pins (not yet generated from here).
+#: all on one port, and the radio's nIRQ (active low).
 RF12_SPI_PINS: tuple[Pin, ...] = (("B", 4), ("B", 5), ("B", 6), ("B", 7))
 RF12_IRQ_PIN: Pin = ("D", 5)
+#: nFFS (held high: FIFO access through commands) and the green and red LEDs
+#: (active high), on the nIRQ's port.
+RF12_FFS_PIN: Pin = ("D", 4)
+RF12_LED_PINS: tuple[Pin, ...] = (("D", 6), ("D", 7))
 #: Mode jumper (pull-up): open = transmit test, closed (low) = receive test.
 RF12_MODE_PIN: Pin = ("A", 0)
 

@@ -30,6 +30,29 @@ def _mask(name: str, table: list[pins.Pin] | tuple[pins.Pin, ...]) -> list[str]:
             for port in PORTS if pins.port_mask(table, port)]
 
 
+def _rf12() -> list[str]:
+    """The wireless board's pins as port-tagged bit numbers (its driver
+    bit-bangs whole ports, as the comm board's selector does)."""
+    spi_port = _one_port(pins.RF12_SPI_PINS, "the RF12 SPI lines")
+    ctrl = (pins.RF12_FFS_PIN, pins.RF12_IRQ_PIN, *pins.RF12_LED_PINS)
+    ctrl_port = _one_port(ctrl, "nFFS, nIRQ and the LEDs of the wireless board")
+    mode_port, mode_bit = pins.RF12_MODE_PIN
+    names = ("SEL", "SDI", "SDO", "SCK")
+    return [
+        "/* Wireless board (Appendix A, \"Wireless SPI\") */",
+        f"#define HB_RF12_SPI_PORT_{spi_port}",
+        *[f"#define HB_RF12_{n}_BIT {bit}" for n, (_, bit) in zip(names, pins.RF12_SPI_PINS,
+                                                                 strict=True)],
+        f"#define HB_RF12_CTRL_PORT_{ctrl_port}",
+        f"#define HB_RF12_NFFS_BIT {pins.RF12_FFS_PIN[1]}",
+        f"#define HB_RF12_NIRQ_BIT {pins.RF12_IRQ_PIN[1]}",
+        f"#define HB_RF12_LED_G_BIT {pins.RF12_LED_PINS[0][1]}",
+        f"#define HB_RF12_LED_R_BIT {pins.RF12_LED_PINS[1][1]}",
+        f"#define HB_RF12_MODE_PORT_{mode_port}",
+        f"#define HB_RF12_MODE_BIT {mode_bit}",
+    ]
+
+
 def render() -> str:
     joint_port = _one_port(pins.JOINT_PINS, "the joints")
     sel_port = _one_port(pins.SELECTOR_PINS, "the selector lines")
@@ -75,6 +98,8 @@ def render() -> str:
         "/* IR channel (0 centre, 1..6 side) -> selector index Y */",
         "#define HB_IR_CHANNEL_Y {"
         + ", ".join(str(lattice.SIDE_CHANNEL[c]) for c in range(7)) + "}",
+        "",
+        *_rf12(),
         "",
         "#endif /* HEXBOT_PINS_H */",
         "",

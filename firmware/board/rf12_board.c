@@ -10,15 +10,20 @@
 
 #include <avr/io.h>
 
-#define SEL PB4
-#define SDI PB5
-#define SDO PB6
-#define SCK PB7
-#define NFFS PD4
-#define NIRQ PD5
-#define LED_G PD6
-#define LED_R PD7
-#define MODE_JUMPER PA0
+#include "pins.h"
+
+#if !defined(HB_RF12_SPI_PORT_B) || !defined(HB_RF12_CTRL_PORT_D) || !defined(HB_RF12_MODE_PORT_A)
+#error "the driver bit-bangs SPI on PORTB, nFFS/nIRQ/LEDs on PORTD, the jumper on PORTA"
+#endif
+#define SEL HB_RF12_SEL_BIT
+#define SDI HB_RF12_SDI_BIT
+#define SDO HB_RF12_SDO_BIT
+#define SCK HB_RF12_SCK_BIT
+#define NFFS HB_RF12_NFFS_BIT
+#define NIRQ HB_RF12_NIRQ_BIT
+#define LED_G HB_RF12_LED_G_BIT
+#define LED_R HB_RF12_LED_R_BIT
+#define MODE_JUMPER HB_RF12_MODE_BIT
 
 void rf12_board_init(void)
 {

@@ -4,8 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0x4584a85cUL
-#define HB_SCHEMA_HASH_TEXT "4584a85c"
+#define HB_SCHEMA_HASH 0x9aed8100UL
+#define HB_SCHEMA_HASH_TEXT "9aed8100"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */

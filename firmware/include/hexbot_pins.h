@@ -52,4 +52,18 @@
 /* IR channel (0 centre, 1..6 side) -> selector index Y */
 #define HB_IR_CHANNEL_Y {2, 0, 3, 5, 6, 4, 1}
 
+/* Wireless board (Appendix A, "Wireless SPI") */
+#define HB_RF12_SPI_PORT_B
+#define HB_RF12_SEL_BIT 4
+#define HB_RF12_SDI_BIT 5
+#define HB_RF12_SDO_BIT 6
+#define HB_RF12_SCK_BIT 7
+#define HB_RF12_CTRL_PORT_D
+#define HB_RF12_NFFS_BIT 4
+#define HB_RF12_NIRQ_BIT 5
+#define HB_RF12_LED_G_BIT 6
+#define HB_RF12_LED_R_BIT 7
+#define HB_RF12_MODE_PORT_A
+#define HB_RF12_MODE_BIT 0
+
 #endif /* HEXBOT_PINS_H */
