@@ -64,7 +64,8 @@ def result_json(bmap: BridgeMap, result: Result) -> dict[str, Any]:
         "time_steps": result.time_steps,
         "moves": result.moves,
         "modules": bmap.surface.n,
-        "bridges": [g.as_json() for g in bmap.groups],
+        "bridges": [g.as_json() for g in bmap.groups]
+        + ([{"kind": "FILL", "cells": [list(c) for c in bmap.fills]}] if bmap.fills else []),
         "rounds": [{"moves": [m.as_json() for m in moves]} for moves in result.rounds],
     }
     if result.violation is not None:
@@ -84,6 +85,8 @@ def summary(bmap: BridgeMap, result: Result) -> str:
                    if group.temp_support else "")
         lines.append(f"  {group.kind}{extra}: Bridge {list(group.bridge)}{support}, "
                      f"pocket length {group.pocket_length}")
+    if bmap.fills:
+        lines.append(f"  FILL (hexbot model, held for good): {[list(c) for c in bmap.fills]}")
     lines.append(f"{result.status}: {result.time_steps} time steps, {result.moves} moves")
     return "\n".join(lines)
 
