@@ -40,12 +40,18 @@ def test_a_map_too_big_for_legacy_select_is_refused():
 
 
 @needs_firmware
-def test_flat_is_crossed_on_the_simulator(capsys):
-    status = main(["traverse", "hil-flat", "--execute", "--json", "--no-log"])
+@pytest.mark.parametrize(("name", "modules", "fills"),
+                         [("hil-flat", 10, 0),  # 2 movers on 8 surface modules
+                          ("hil-basic-2", 29, 2),  # the paper's 2-cell BASIC bridge
+                          ("hil-three", 33, 3)])  # the paper's straight 3-bridge
+def test_maps_are_crossed_on_the_simulator(capsys, name, modules, fills):
+    status = main(["traverse", name, "--execute", "--json", "--no-log"])
     out = json.loads(capsys.readouterr().out)
     assert status == 0, out["execution"]["failure"]
     run = out["execution"]
-    assert run["reached"] and run["localized"] == 10
+    # deeper than the 4 hops of one Localize wave for the pockets: all localized
+    assert run["reached"] and run["localized"] == modules
+    assert sum(len(b["cells"]) for b in out["bridges"] if b["kind"] == "FILL") == fills
     planned = [(m["module"], m["to"]) for r in out["rounds"] for m in r["moves"]]
     assert [(m["module"], m["to"]) for m in run["moves"]] == planned
     assert all(m["ok"] and m["verified_by"] == "plant" for m in run["moves"])
