@@ -28,7 +28,7 @@ import enum
 from dataclasses import dataclass
 
 from hexbot.errors import CommandRefusedError, HexBotTimeoutError
-from hexbot.host.session import Session, select
+from hexbot.host.session import OutcomeKind, Session, select
 from hexbot.protocol import frames
 from hexbot.protocol.codes import ErrorCode, Role
 from hexbot.protocol.parser import StatusReport
@@ -72,13 +72,25 @@ class RotationResult:
 
 
 def localize(session: Session, reference: int) -> dict[int, Pose]:
-    """Make ``reference`` the origin, localize the whole cluster with one
-    code 66, read everyone's status; returns every module's pose. Fails
-    when a module answers NOT_HEARD or is not localized afterwards."""
+    """Make ``reference`` the origin, localize the whole cluster with code 66,
+    read everyone's status; returns every module's pose. One 66 reaches 4
+    hops (docs/firmware.md); while some modules answer only NOT_HEARD and
+    the last wave localized more of them, another 66 spreads the
+    localization further (the localized ones keep theirs). Fails when a
+    wave adds nobody or a module is not localized afterwards."""
     session.request(select(reference))
     session.request(frames.make("Ref"))
-    session.request(select(0))
-    session.request(frames.make("Localize"))
+    unheard: set[int | None] | None = None
+    while True:
+        session.request(select(0))
+        out = session.exchange(frames.make("Localize"))
+        refusals = out.refusals if out.kind is OutcomeKind.REFUSED else ()
+        still = {r.module for r in refusals}
+        if not refusals or any(r.error is not ErrorCode.NOT_HEARD for r in refusals) or (
+                unheard is not None and len(still) >= len(unheard)):
+            out.raise_for_status()
+            break
+        unheard = still
     return poses(session)
 
 

@@ -207,6 +207,9 @@ def bank() -> dict[str, tuple[Surface, str]]:
         name = f"three-deep{depth}"
         out[name] = (build([Feature("THREE", depth)], 4, name=name),
                      f"a 3-cell opening over a channel three wide and {depth} rows deep")
+    # under the hexbot model the 3-wide opening takes four Fill cells: one more module
+    out["three-deep2-n5"] = (build([Feature("THREE", 2)], 5, name="three-deep2-n5"),
+                             "three-deep2 with five modules (crossed under --motion hexbot)")
     out["fig14"] = (build([Feature("BASIC", 5), Feature("SINGLE", 1), Feature("LEFT", 5),
                            Feature("THREE", 4), Feature("RIGHT", 5), Feature("BASIC", 2),
                            Feature("SINGLE", 3)], 11, name="fig14", steps=[0, 0, -1, 1]),

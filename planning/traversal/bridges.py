@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from hexbot.planning.traversal.fill import fill_cells
 from hexbot.planning.traversal.layers import Layer, layer1, layer2
 from hexbot.planning.traversal.motion import next_rotation, rotation_to
 from hexbot.planning.traversal.surface import Surface
@@ -100,6 +101,12 @@ class BridgeMap:
     bis: list[tuple[int, int]]
     groups: list[Group]
     dropped: list[Group]
+    fills: tuple[Cell, ...] = ()  # hexbot model: cells the first modules hold for good
+
+    @property
+    def crossing(self) -> int:
+        """Modules that go on to the goal (those in Fill cells stay)."""
+        return self.surface.n - len(self.fills)
 
     def role_of(self) -> dict[Cell, tuple[str, Group]]:
         roles: dict[Cell, tuple[str, Group]] = {}
@@ -286,8 +293,11 @@ def _pass_cells(surface: frozenset[Cell], layer: Layer, group: Group, model: str
 
 def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: bool = True,
                       three: bool = True) -> BridgeMap:
-    """FINDBRIDGECELLS (Fig. 7) on a map."""
-    s = surface.surface
+    """FINDBRIDGECELLS (Fig. 7) on a map; under the hexbot model on the
+    surface with its Fill cells held (:mod:`.fill`)."""
+    fills = fill_cells(surface.surface, surface.modules, surface.goals, model) \
+        if model == "hexbot" else ()
+    s = surface.surface | frozenset(fills)
     first = layer1(s, surface.modules, surface.goals, model)
     second = layer2(s, first, model)
     pairs = ncp_pairs(first)
@@ -312,4 +322,4 @@ def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: b
             seen.add(group.span)
         else:
             dropped.append(group)
-    return BridgeMap(surface, model, first, second, pairs, bis, groups, dropped)
+    return BridgeMap(surface, model, first, second, pairs, bis, groups, dropped, fills)

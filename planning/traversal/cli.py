@@ -3,7 +3,9 @@
 MAP is a text map (planning/traversal/maps/*.txt or any file), the name of
 a map of the bank (``fig14``, ``left-5``) or ``random:SEED``. Exit status
 0 when every module reached its goal; 1 (reason on stderr) on a deadlock,
-a broken invariant, a bad map or a failed execution.
+a broken invariant, a bad map or a failed execution. ``--execute`` runs
+the rounds on a cluster (:mod:`.execute`), by default the embedded
+simulator with a scenario written from the map.
 """
 
 from __future__ import annotations
@@ -15,6 +17,8 @@ from pathlib import Path
 from typing import Any
 
 from hexbot.errors import ScenarioError
+from hexbot.host.endpoints import add_port_arguments
+from hexbot.host.workflows import Verify
 from hexbot.planning.traversal.bridges import BridgeMap, find_bridge_cells
 from hexbot.planning.traversal.engine import Result, traverse
 from hexbot.planning.traversal.motion import MODELS
@@ -23,9 +27,9 @@ from hexbot.planning.traversal.surface import Surface, load_map
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("map", nargs="?", help="text map, bank name or random:SEED")
-    parser.add_argument("--motion", choices=MODELS, default="deformable",
+    parser.add_argument("--motion", choices=MODELS, default=None,
                         help="motion model: the paper's deformable modules (default) or "
-                             "HexBot's rotations of Table 4-3")
+                             "HexBot's rotations of Table 4-3 (the default with --execute)")
     parser.add_argument("--no-bridges", action="store_true", help="form no bridge at all")
     parser.add_argument("--no-3-bridges", action="store_true", help="only 1- and 2-cell bridges")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
@@ -34,6 +38,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="instead of a map: the paper's Figs. 12-13 experiment (and the "
                              "SINGLE-bridge one), a table or --json")
     parser.add_argument("--plot", metavar="OUT.png", help="with --sweep: draw the figures")
+    hil = parser.add_argument_group(
+        "execution (on the embedded simulator by default, or on --port: real modules or a pty)")
+    hil.add_argument("--execute", action="store_true",
+                     help="run the rounds on a cluster of the map's surface modules and movers "
+                          "(without --port/--scenario: a scenario written from the map), "
+                          "localized first, every move verified")
+    hil.add_argument("--verify", choices=[v.value for v in Verify], default="auto",
+                     help="how each move is checked (see hexbot plan --help)")
+    add_port_arguments(parser, debug=False)
 
 
 def resolve_map(text: str) -> Surface:
@@ -64,7 +77,8 @@ def result_json(bmap: BridgeMap, result: Result) -> dict[str, Any]:
         "time_steps": result.time_steps,
         "moves": result.moves,
         "modules": bmap.surface.n,
-        "bridges": [g.as_json() for g in bmap.groups],
+        "bridges": [g.as_json() for g in bmap.groups]
+        + ([{"kind": "FILL", "cells": [list(c) for c in bmap.fills]}] if bmap.fills else []),
         "rounds": [{"moves": [m.as_json() for m in moves]} for moves in result.rounds],
     }
     if result.violation is not None:
@@ -84,6 +98,8 @@ def summary(bmap: BridgeMap, result: Result) -> str:
                    if group.temp_support else "")
         lines.append(f"  {group.kind}{extra}: Bridge {list(group.bridge)}{support}, "
                      f"pocket length {group.pocket_length}")
+    if bmap.fills:
+        lines.append(f"  FILL (hexbot model, held for good): {[list(c) for c in bmap.fills]}")
     lines.append(f"{result.status}: {result.time_steps} time steps, {result.moves} moves")
     return "\n".join(lines)
 
@@ -96,7 +112,9 @@ def run(args: argparse.Namespace) -> int:
     if not args.map:
         raise ScenarioError("give a MAP (or --sweep)")
     surface = resolve_map(args.map)
-    bmap = find_bridge_cells(surface, args.motion, bridges=not args.no_bridges,
+    if args.execute:
+        return run_execute(args, surface)
+    bmap = find_bridge_cells(surface, args.motion or "deformable", bridges=not args.no_bridges,
                              three=not args.no_3_bridges)
     result = traverse(bmap)
     if args.render:
@@ -106,5 +124,47 @@ def run(args: argparse.Namespace) -> int:
     print(json.dumps(result_json(bmap, result)) if args.json else summary(bmap, result))
     if result.status != "reached":
         print(f"hexbot traverse: {result.status}: {result.reason}", file=sys.stderr)
+        return 1
+    return 0
+
+
+def run_execute(args: argparse.Namespace, surface: Surface) -> int:
+    """Compute the rounds on the map, then run them on the cluster."""
+    import tempfile
+
+    from hexbot.host.cli_common import session
+    from hexbot.planning.execute import execute
+    from hexbot.planning.traversal.execute import cluster_of, rounds_plan, scenario_toml
+
+    cluster = cluster_of(surface)
+    bmap = find_bridge_cells(cluster.surface, args.motion or "hexbot",
+                             bridges=not args.no_bridges, three=not args.no_3_bridges)
+    result = traverse(bmap)
+    if result.status != "reached":
+        print(f"hexbot traverse: {result.status}, nothing executed: {result.reason}",
+              file=sys.stderr)
+        return 1
+    plan = rounds_plan(cluster, result)
+    with tempfile.TemporaryDirectory(prefix="hexbot-traverse-") as folder:
+        if not args.port and not args.scenario:
+            path = Path(folder) / f"traverse-{surface.name}.toml"
+            path.write_text(scenario_toml(cluster, result.initial), encoding="utf-8")
+            args.scenario = str(path)
+        with session(args) as sess:
+            if not args.json:
+                print(summary(bmap, result))
+                print(f"executing through {sess.host.channel().settings.url}: "
+                      f"{plan.move_count} moves, verify {args.verify}")
+            report = execute(plan, sess, cluster.reference, verify=Verify(args.verify),
+                             log=None if args.json else print)
+    if args.json:
+        print(json.dumps({**result_json(bmap, result), "execution": report.as_json()}))
+    else:
+        done = sum(m.ok for m in report.moves)
+        print(f"executed {done}/{plan.move_count} moves in {report.seconds:.1f} s; "
+              f"goal {'reached' if report.reached else 'NOT reached'} (localized)")
+    if not report.reached:
+        reason = report.failure.splitlines()[0] if report.failure else "not reached"
+        print(f"hexbot traverse: execution stopped: {reason}", file=sys.stderr)
         return 1
     return 0

@@ -113,6 +113,8 @@ class Engine:
         self.next_goal = {c: (self.goal_order[k + 1] if k + 1 < len(self.goal_order) else None)
                           for k, c in enumerate(self.goal_order)}
         self.roles = bmap.role_of()
+        self.fills = bmap.fills
+        self.crossing = bmap.crossing
         self.modules = [Module(k + 1, layer.cells[k], layer.pivots[k]) for k in range(self.n)]
         self.chain_cells = [m.cell for m in self.modules]
         self.at: dict[Cell, Module] = {m.cell: m for m in self.modules}
@@ -131,11 +133,14 @@ class Engine:
 
     def sensing(self, m: Module):
         """Occupancy as module ``m`` knows it: its neighbours by contact, farther
-        cells only from the map of the surface."""
+        cells only from the map of the surface and the Fill cells the modules
+        ahead of it hold (module k passes after the first k - 1 are held)."""
+        held = set(self.fills[: m.ident - 1])
+
         def occupied(cell: Cell) -> bool:
             if distance(cell, m.cell) == 1:
                 return self.occupied(cell)
-            return cell in self.surface
+            return cell in self.surface or cell in held
         return occupied
 
     # -- MOVEMODULE ---------------------------------------------------------------
@@ -154,7 +159,7 @@ class Engine:
             assert group is not None
             if group.pass_cells.get(m.cell) in self.entered:
                 m.count += 1
-            if m.count < group.passes_needed(m.cell, self.n):
+            if m.count < group.passes_needed(m.cell, self.crossing):
                 return None
             m.phase, m.resume_rule = "resume", "leave-bridge"
         elif m.phase == "temp":
@@ -187,6 +192,9 @@ class Engine:
     def arrive(self, m: Module) -> None:
         """What the cell just entered asks of the module (Fig. 10, lines 5-13)."""
         cell = m.cell
+        if cell in self.fills:  # hexbot model: a rigid module stays where it got stuck
+            m.phase, m.rule = "done", "fill"
+            return
         if cell in self.next_goal:
             ahead = self.next_goal[cell]
             if ahead is None or ahead in self.at:

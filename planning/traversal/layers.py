@@ -20,6 +20,14 @@ from hexbot.planning.traversal.motion import next_rotation
 from hexbot.protocol.lattice import SIDES, Cell, neighbor, wrap
 
 
+class Stuck(ScenarioError):
+    """The probing module has no move left at ``cell``; ``walk`` is its way there."""
+
+    def __init__(self, cell: Cell, walk: Layer) -> None:
+        super().__init__(f"the probing module is stuck at {list(cell)}")
+        self.cell, self.walk = cell, walk
+
+
 @dataclass
 class Layer:
     """Cells in the order the probing module enters them (index = perimeter number)."""
@@ -63,7 +71,7 @@ def closed_walk(cell: Cell, occupied: Callable[[Cell], bool], model: str,
     for _ in range(limit):
         rolled = next_rotation(cells[-1], pivots[-1], "CW", occupied, model)
         if rolled is None:
-            raise ScenarioError(f"the probing module is stuck at {list(cells[-1])}")
+            raise Stuck(cells[-1], Layer(cells, pivots))
         state = (rolled.dst, rolled.substrate)
         if state in seen:  # the walk closed (the start may lie just off the loop)
             first = seen[state]
@@ -85,7 +93,12 @@ def layer1(surface: frozenset[Cell], modules: Iterable[Cell], goals: Iterable[Ce
            model: str) -> Layer:
     """The surface perimeter from the tail of the chain to the farthest goal."""
     modules, goals = set(modules), set(goals)
-    walk = closed_walk(min(modules), surface.__contains__, model, 8 * len(surface) + 64)
+    try:
+        walk = closed_walk(min(modules), surface.__contains__, model, 8 * len(surface) + 64)
+    except Stuck as stuck:  # past the goals, an open walk is enough (under the surface)
+        if not (modules | goals) <= set(stuck.walk.cells):
+            raise
+        walk = stuck.walk
     marks = [c in modules for c in walk.cells]
     size = len(walk)
     starts = [i for i in range(size) if marks[i] and not marks[i - 1]]
@@ -119,7 +132,10 @@ def layer2(surface: frozenset[Cell], first: Layer, model: str) -> Layer:
                   and start_pivot(neighbor(first.cells[0], s), occupied) is not None), None)
     if start is None:
         return Layer([], [])
-    walk = closed_walk(start, occupied, model, 8 * len(occupied_cells) + 64)
+    try:
+        walk = closed_walk(start, occupied, model, 8 * len(occupied_cells) + 64)
+    except Stuck as stuck:  # hexbot model: layer2 only serves 3-bridge patterns
+        walk = stuck.walk
     near_end = {neighbor(first.cells[-1], s) for s in SIDES}
     last = max((k for k, c in enumerate(walk.cells) if c in near_end), default=len(walk) - 1)
     return segment(walk, 0, last)

@@ -80,9 +80,27 @@ def test_same_map_same_rounds():
                                                           for r in b.rounds]
 
 
-def test_hexbot_motion_crosses_flat_and_says_where_it_cannot_follow_a_step():
-    assert traverse(find_bridge_cells(resolve_map("flat"), "hexbot")).status == "reached"
+@pytest.mark.parametrize(("name", "fills", "paper_kind"),
+                         [("flat", 0, None), ("basic-2", 2, "BASIC"),
+                          ("three-deep2-n5", 4, "THREE")])
+def test_hexbot_motion_crosses_pockets_with_fill_cells(name, fills, paper_kind):
+    bmap = find_bridge_cells(resolve_map(name), "hexbot")
+    assert len(bmap.fills) == fills
+    if paper_kind:  # the pocket the paper closes with a 2- or 3-bridge
+        paper = find_bridge_cells(resolve_map(name))
+        assert [g.kind for g in paper.groups] == [paper_kind]
+    result = traverse(bmap)  # every invariant is checked each round
+    assert result.status == "reached", result.reason
+    # the first modules stay in Fill cells; the others end on the last goals
+    held = [c for c in result.final.values() if c in bmap.fills]
+    at_goal = [c for c in result.final.values() if c in bmap.surface.goals]
+    assert len(held) + len(at_goal) == bmap.surface.n and len(at_goal) >= bmap.crossing
+    goals = [c for c in bmap.layer1.cells if c in bmap.surface.goals]
+    assert set(at_goal) == set(goals[len(goals) - len(at_goal):])
+
+
+def test_hexbot_motion_refuses_a_step_rigid_modules_cannot_descend():
     from hexbot.errors import ScenarioError
 
-    with pytest.raises(ScenarioError, match="probing module is stuck at"):
+    with pytest.raises(ScenarioError, match="cannot be crossed by rigid modules"):
         find_bridge_cells(resolve_map("steps"), "hexbot")
