@@ -471,8 +471,10 @@ class Session:
         length = MAX_FRAME_LEN if self.host.framing is Framing.MAVLINK else wire.PC_FRAME_LEN
         frame = timing.wire_seconds(length, timing.BAUD_IR)
         code = command.code if command.code in CODES else STATUS
-        if ids and command.code != SELECT and self.all_selected:
-            last_rank = max(ids) - 1  # after Select(0) a module's rank is its id - 1
+        select_all = command.code == SELECT and list(command.args[:1]) == [0]
+        if ids and (select_all or (command.code != SELECT and self.all_selected)):
+            # Select(0) and what follows it: a module's rank is its id - 1
+            last_rank = max(ids) - 1
         else:
             last_rank = None
         return frame + timing.reply_timeout_s(code, max(need, 1), command.args,

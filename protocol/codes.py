@@ -11,6 +11,8 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass, field
 
+from hexbot.protocol.wire import MAX_SELECT_ID
+
 
 class Board(enum.Enum):
     """Which microcontroller of a module executes a function."""
@@ -79,8 +81,9 @@ T3 = Arg("t3", "delay before the magnets stop", 0, 255, "tick")
 ROT_JOINT = Arg("i", "rotation joint (body frame)", 1, 6)
 CHANNEL = Arg("i", "IR channel: 0 centre (PC), 1..6 side", 0, 6)
 LYREF_DIR = Arg("i", "0 show Yref, 1 CCW sweep, 2 CW sweep (thesis: -1)", 0, 2)
-MODULE_ID = Arg("id", "module id (DIP switches), 0 = all modules", 0, 63)
-MODULE_ID_OPT = Arg("id", "further module id, 1..63; 'N' (78) = none", 1, 63)
+MODULE_ID = Arg("id", "module id (DIP switches), 0 = all modules", 0, MAX_SELECT_ID)
+MODULE_ID_OPT = Arg("id", f"further module id, 1..{MAX_SELECT_ID}; 'N' (78) = none", 1,
+                    MAX_SELECT_ID)
 ROLE = Arg("role", "1 mobile (M), 2 substrate (S)", 1, 2)
 
 NO_ARGS: tuple[Arg, ...] = ()
@@ -221,6 +224,7 @@ class ErrorCode(enum.IntEnum):
     BAD_FRAME = 5  # end byte missing: the frame was truncated or corrupted
     NO_ROLE = 6  # a combined rotation reached a module without a role
     NOT_HEARD = 7  # localization: no neighbour message heard on any side
+    BUSY = 8  # frames came faster than the module ran them: the newest was dropped
 
 
 class Role(enum.IntEnum):

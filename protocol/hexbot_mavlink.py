@@ -499,8 +499,10 @@ HEXBOT_ERROR_NO_ROLE = 6
 enums["HEXBOT_ERROR"][6] = EnumEntry("HEXBOT_ERROR_NO_ROLE", """no role""")
 HEXBOT_ERROR_NOT_HEARD = 7
 enums["HEXBOT_ERROR"][7] = EnumEntry("HEXBOT_ERROR_NOT_HEARD", """not heard""")
-HEXBOT_ERROR_ENUM_END = 8
-enums["HEXBOT_ERROR"][8] = EnumEntry("HEXBOT_ERROR_ENUM_END", """""")
+HEXBOT_ERROR_BUSY = 8
+enums["HEXBOT_ERROR"][8] = EnumEntry("HEXBOT_ERROR_BUSY", """busy""")
+HEXBOT_ERROR_ENUM_END = 9
+enums["HEXBOT_ERROR"][9] = EnumEntry("HEXBOT_ERROR_ENUM_END", """""")
 
 # HEXBOT_ROLE
 enums["HEXBOT_ROLE"] = Enum()
@@ -1646,7 +1648,7 @@ class MAVLink(object):
         PC to module: run a function of the table (legacy frame '*' B1..B9
         '#').
 
-        target_system             : Module id (DIP switches, 1..63); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame. (type:uint8_t)
+        target_system             : Module id (DIP switches, 1..255); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame. (type:uint8_t)
         code                      : Function code (B1). (type:uint8_t, values:HEXBOT_FUNCTION)
         args                      : Argument bytes B2..B9; unused ones 0. (type:uint8_t)
 
@@ -1658,7 +1660,7 @@ class MAVLink(object):
         PC to module: run a function of the table (legacy frame '*' B1..B9
         '#').
 
-        target_system             : Module id (DIP switches, 1..63); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame. (type:uint8_t)
+        target_system             : Module id (DIP switches, 1..255); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame. (type:uint8_t)
         code                      : Function code (B1). (type:uint8_t, values:HEXBOT_FUNCTION)
         args                      : Argument bytes B2..B9; unused ones 0. (type:uint8_t)
 

@@ -15,6 +15,7 @@ from pathlib import Path
 from xml.sax.saxutils import escape
 
 from hexbot.protocol.codes import CODES, ErrorCode, Role
+from hexbot.protocol.wire import MAX_MODULE_ID
 
 XML_PATH = Path(__file__).resolve().parent / "hexbot.xml"
 DIALECT = "hexbot"
@@ -76,8 +77,8 @@ def _messages() -> list[str]:
         (MSG_COMMAND, "HEXBOT_COMMAND",
          "PC to module: run a function of the table (legacy frame '*' B1..B9 '#').", [
              _field("uint8_t", "target_system",
-                    "Module id (DIP switches, 1..63); 0 = the modules the last Select "
-                    "chose (all after Select(0)), as a legacy frame."),
+                    f"Module id (DIP switches, 1..{MAX_MODULE_ID}); 0 = the modules the last "
+                    "Select chose (all after Select(0)), as a legacy frame."),
              _field("uint8_t", "code", "Function code (B1).", fn),
              _field("uint8_t[8]", "args", "Argument bytes B2..B9; unused ones 0."),
          ]),

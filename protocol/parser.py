@@ -9,7 +9,8 @@ valid event so that garbage never swallows it.
 Reply grammar (``\\n\\r`` = LF CR, as the firmware ends its lines)::
 
     preamble   LF CR LF CR                        (sync only, no event)
-    prefix     ('M'|'S') [two-digit id] ': '      (applies to the next reply)
+    prefix     ('M'|'S') [id] ': '                (applies to the next reply; id
+                                                  two digits, three from 100)
     ack        'ACK' code LF CR                   code 'N' = did nothing,
                                                   '~' = control board time-out
     error      'ERR' code reason LF CR
@@ -37,7 +38,7 @@ from hexbot.protocol.codes import CODES, ErrorCode
 EOL = wire.EOL
 
 #: Phrases that start a text line; the firmware may append a short tail
-#: such as `` ID=03 FW=0.1.0``.
+#: such as `` ID=03 FW=0.1.0`` (`` ID=200`` from id 100 on).
 KNOWN_TEXTS = (
     wire.TEXT_COMM_READY,
     wire.TEXT_CTR_READY,
@@ -150,7 +151,9 @@ PARTIAL = "partial"
 _STATUS_FIELDS = 7  # id, role, localized, x, y, yref, last error
 _SCHEMA_DIGITS = 8
 _HEX = re.compile(rb"[0-9a-f]{8}")
-_PREFIX = re.compile(rb"([MS])(\d\d)?: ")
+_ID = rb"\d{%d,%d}" % (wire.ID_MIN_DIGITS, wire.ID_MAX_DIGITS)
+_PREFIX = re.compile(rb"([MS])(" + _ID + rb")?: ")
+_PREFIX_PARTIAL = re.compile(rb"[MS](\d{0,%d}|" % wire.ID_MAX_DIGITS + _ID + rb":|:)")
 
 
 def _fixed(buf: bytes, head: bytes, nbody: int) -> bytes | str | None:
@@ -266,8 +269,8 @@ class ReplyParser:
             self._role = m.group(1).decode()
             self._module = int(m.group(2)) if m.group(2) else None
             return m.end(), None
-        # Partial: "M", "M:", "M0", "M03", "M03:"
-        if re.fullmatch(rb"[MS](\d{0,2}|\d\d:|:)", buf):
+        # Partial: "M", "M:", "M0", "M03", "M03:", "M200:"
+        if _PREFIX_PARTIAL.fullmatch(buf):
             return PARTIAL
         return None
 
@@ -307,7 +310,7 @@ class ReplyParser:
                 return body
             schema = None
         ident, role, loc, x, y, yref, err = body[:_STATUS_FIELDS]
-        if chr(role) not in "MS-" or loc > 1 or yref > 5 or ident > wire.MAX_MODULE_ID:
+        if chr(role) not in "MS-" or loc > 1 or yref > 5:  # the id byte takes any value
             return None
         end = 3 + len(body) + len(EOL)
         ev = StatusReport(raw=buf[:end], module_id=ident, role=chr(role), localized=bool(loc),
@@ -398,5 +401,5 @@ def reply_status(module_id: int, role: str, localized: bool, x: int, y: int, yre
 def _prefix(role: str | None, module: int | None) -> bytes:
     if role is None:
         return b""
-    ident = f"{module:02d}" if module is not None else ""
+    ident = f"{module:0{wire.ID_MIN_DIGITS}d}" if module is not None else ""
     return f"{role}{ident}: ".encode()

@@ -21,10 +21,10 @@ JOINT_PINS: tuple[Pin, ...] = (("A", 2), ("A", 3), ("A", 5), ("A", 4), ("A", 0),
 MAGNET_POS_PINS: tuple[Pin, ...] = (("B", 0), ("D", 3), ("B", 6), ("D", 4), ("B", 1), ("B", 7))
 #: ...and the "(2)" line negative; both high would short the driver.
 MAGNET_NEG_PINS: tuple[Pin, ...] = (("D", 6), ("D", 5), ("D", 7), ("B", 4), ("B", 5), ("D", 2))
-#: DIP switches PC0..PC7; the module id is PC0..PC5 (PC6, PC7 must be off).
+#: DIP switches PC0..PC7: the module id, all eight bits.
 DIP_PORT = "C"
 DIP_SWITCHES = 8  # a cluster has up to 2**8 - 1 modules (id 0: no switch on)
-DIP_ID_MASK = 0x3F
+DIP_ID_MASK = (1 << DIP_SWITCHES) - 1
 CONTROL_PORTS = ("A", "B", "D")  # the ports the simulator reads actuators from
 
 # --- communication board (Tables 3-3 and 3-5) -------------------------------------

@@ -73,7 +73,7 @@ SUBSTRATE_ACK_DELAY_TICKS = 100  # thesis: the substrate waits 1 s (legacy mode)
 ACK_SLOT_TICKS = 60  # addressed mode: rank r answers r slots after rank 0
 ACK_SLOT_S = ACK_SLOT_TICKS * TICK_S
 
-ADDRESSED_PREFIX = b"M03: "  # longest prefix: role letter, two-digit id
+ADDRESSED_PREFIX = b"M" + b"n" * wire.ID_MAX_DIGITS + b": "  # longest: role letter, id
 ACK_BODY = b"ACK" + bytes([0]) + wire.EOL
 ERR_BODY = b"ERR" + bytes([0, 0]) + wire.EOL
 STATUS_FIELDS = 7  # id, role, localized, x, y, yref, last error
@@ -106,13 +106,15 @@ SLOTS_LOCALIZE = reply_slots(REPLY_BYTES_LOCALIZE)
 #: long as its text at 300 baud plus a guard.
 BOOT_SLOTS = 8
 BOOT_FIRST_SLOT_TICKS = 200
-#: Bytes of the slot text (preamble, CTR. BOARD READY ID=nn, CTR. LISTENING,
-#: COMM. LISTENING ID=nn FW=) without the version string.
+#: Bytes of the longest slot text (preamble, CTR. BOARD READY ID=nnn, CTR.
+#: LISTENING, COMM. LISTENING ID=nnn FW=) without the version string: every
+#: slot holds a three-digit id's text, whatever the module's own id.
+_ID = "n" * wire.ID_MAX_DIGITS
 BOOT_TEXT_FIXED_BYTES = len(
     wire.PREAMBLE
-    + f"{wire.TEXT_CTR_READY}{wire.BOOT_ID_TAIL}nn".encode() + wire.EOL
+    + f"{wire.TEXT_CTR_READY}{wire.BOOT_ID_TAIL}{_ID}".encode() + wire.EOL
     + wire.TEXT_CTR_LISTENING.encode() + wire.EOL
-    + f"{wire.TEXT_COMM_LISTENING}{wire.BOOT_ID_TAIL}nn{wire.BOOT_FW_TAIL}".encode() + wire.EOL
+    + f"{wire.TEXT_COMM_LISTENING}{wire.BOOT_ID_TAIL}{_ID}{wire.BOOT_FW_TAIL}".encode() + wire.EOL
 )
 #: The slots are counted on each module's own RC clock. They are designed
 #: for clocks within +-CLOCK_SPREAD of nominal (the internal oscillator after

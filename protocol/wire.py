@@ -5,6 +5,8 @@ board debug port (UART1) 4800; all 8N1. Ticks, slots and time-outs are in
 ``timing.py``.
 """
 
+from hexbot.protocol.pins import DIP_SWITCHES
+
 START = ord("*")  # first byte of every message
 END = ord("#")  # last byte of PC and board-to-board messages
 UNUSED = ord("N")  # filler for unused argument bytes; also the "did nothing" ACK
@@ -34,10 +36,18 @@ TEXT_COMM_READY = "COMM. BOARD READY"
 TEXT_CTR_READY = "CTR. BOARD READY"
 TEXT_CTR_LISTENING = "CTR. LISTENING"
 TEXT_COMM_LISTENING = "COMM. LISTENING"
-BOOT_ID_TAIL = " ID="  # + two digits
+BOOT_ID_TAIL = " ID="  # + the id, two or three digits
 BOOT_FW_TAIL = " FW="  # + the firmware version
 
-MAX_MODULE_ID = 63  # DIP switches PC0..PC5; PC6, PC7 must be off
+#: A module id is its control board's 8 DIP switches (PC0..PC7): 1..255, 0 =
+#: no switch on. The legacy Select frame addresses 1..63 only (the thesis'
+#: frame; 'N' = 78 fills its unused bytes); MAVLink frames address every id.
+MAX_MODULE_ID = (1 << DIP_SWITCHES) - 1
+MAX_SELECT_ID = 63
+#: Ids are printed in decimal with at least two digits ("ID=07", "M07: "),
+#: so ids 1..99 keep the thesis' bytes and 100..255 take a third digit.
+ID_MIN_DIGITS = 2
+ID_MAX_DIGITS = len(str(MAX_MODULE_ID))
 LOC_COORD_LIMIT = 99  # MSG1 carries two decimal digits per coordinate
 
 FUSE_LOW = 0x62  # Table 3-6: internal RC 8 MHz, CKDIV8 -> 1 MHz

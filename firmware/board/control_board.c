@@ -69,8 +69,5 @@ void control_magnets_all_off(void)
 
 uint8_t control_module_id(void)
 {
-    uint8_t dip = PINC;
-    if (dip & (uint8_t)~HB_DIP_ID_MASK)
-        return 0;
-    return dip & HB_DIP_ID_MASK;
+    return PINC & HB_DIP_ID_MASK; /* all eight switches: 1..255, 0 = none on */
 }

@@ -17,7 +17,7 @@ void control_magnet_on(uint8_t side, uint8_t pole);
 void control_magnet_off(uint8_t side);
 void control_magnets_all_off(void);
 
-/** Module id from the DIP switches PC0..PC5; 0 if invalid (PC6/PC7 set). */
+/** Module id from the DIP switches PC0..PC7 (1..255; 0 = no switch on). */
 uint8_t control_module_id(void);
 
 #endif /* CONTROL_BOARD_H */

@@ -14,6 +14,7 @@
 #include "comm_board.h"
 #include "frame.h"
 #include "hexbot_codes.h"
+#include "inbox.h"
 #include "leds.h"
 #include "localize.h"
 #include "mavframe.h"
@@ -41,10 +42,6 @@ _Static_assert(REPLY_BYTES_BOOT < 200u, "version string too long for the boot te
 module_state_t g_state;
 
 static frame_rx_t pc_rx;
-static uint8_t pending[HB_PC_FRAME_LEN];
-static uint8_t have_pending;
-static uint8_t pending_framing; /* FRAMING_LEGACY or FRAMING_MAVLINK */
-static uint8_t pending_target;  /* MAVLink target_system: 0 = as Select says */
 static tick_t last_ir_byte;
 static uint8_t control_ready; /* 'R' seen from the control board */
 static const uint8_t *boot_next; /* boot text still to queue (see boot_texts) */
@@ -58,7 +55,7 @@ static void link_byte(uint8_t b)
     if (b != HB_LINK_READY && b != HB_LINK_LISTENING)
         return;
     int16_t id = uart_getc_wait(CTRL, LINK_ID_TICKS);
-    if (id >= 0 && id <= HB_MAX_MODULE_ID)
+    if (id >= 0) /* any byte is an id: 8 DIP switches */
         g_state.id = (uint8_t)id;
     if (b == HB_LINK_READY) {
         control_ready = 1;
@@ -80,23 +77,33 @@ static uint8_t junk_before_hash_code(const uint8_t *f)
            (table_board(f[1]) == HB_BOARD_NONE || !table_args_ok(f[1], f + 2));
 }
 
-/* A MAVLink byte (the frame began with 0xFD): a command for us becomes
- * the pending frame, in legacy layout. 0 when the byte was not MAVLink's
+/* The frame assembled in the inbox slot waits its turn (or is dropped). */
+static void keep_frame(uint8_t framing, uint8_t target)
+{
+    inbox_entry_t *e = inbox_slot();
+    e->framing = framing;
+    e->target = target;
+    if (!inbox_keep())
+        g_state.last_error = HB_ERR_BUSY;
+}
+
+/* A MAVLink byte (the frame began with 0xFD): a command for us goes to
+ * the inbox, in legacy layout. 0 when the byte was not MAVLink's
  * after all (the header broke on it): it may start a legacy frame. */
 static uint8_t mav_byte(uint8_t b)
 {
-    mav_result_t r = mav_push(b, pending, &pending_target);
+    uint8_t target;
+    mav_result_t r = mav_push(b, inbox_slot()->frame, &target);
     if (r == MAV_COMMAND) {
-        pending_framing = FRAMING_MAVLINK;
-        have_pending = 1;
+        keep_frame(FRAMING_MAVLINK, target);
     } else if (r == MAV_DROPPED) {
         g_state.last_error = HB_ERR_BAD_FRAME;
     }
     return r != MAV_REJECTED;
 }
 
-/* Keep both links moving; 1 when a complete PC frame is pending. */
-static uint8_t poll_inputs(void)
+/* Keep the IR link moving: boot text out, PC frames in (to the inbox). */
+static void poll_ir(void)
 {
     int16_t b;
     while (boot_left && uart_try_putc(IR, *boot_next)) {
@@ -116,17 +123,22 @@ static uint8_t poll_inputs(void)
             frame_resume(&pc_rx, HB_PC_FRAME_LEN - 2);
             g_state.last_error = HB_ERR_BAD_FRAME;
         } else if (r == FRAME_DONE) {
-            memcpy(pending, pc_rx.buf, sizeof pending);
-            pending_framing = FRAMING_LEGACY;
-            pending_target = 0;
-            have_pending = 1;
+            memcpy(inbox_slot()->frame, pc_rx.buf, HB_PC_FRAME_LEN);
+            keep_frame(FRAMING_LEGACY, 0);
         } else if (r == FRAME_DROPPED) {
             g_state.last_error = HB_ERR_BAD_FRAME;
         }
     }
+}
+
+/* Keep both links moving; 1 when a PC frame waits in the inbox. */
+static uint8_t poll_inputs(void)
+{
+    int16_t b;
+    poll_ir();
     while ((b = uart_getc(CTRL)) >= 0)
         link_byte((uint8_t)b);
-    return have_pending;
+    return inbox_count() != 0;
 }
 
 /* Sequence delay that gives way to a new PC command. */
@@ -136,7 +148,9 @@ static uint8_t wait_or_abort(tick_t n)
 }
 
 /* Forward a control-board function; returns the echo, HB_TIMEOUT, or the
- * wrong byte the control board answered. */
+ * wrong byte the control board answered. The IR link is read meanwhile
+ * (its 31-byte ring holds less than a second at 300 baud): frames that
+ * arrive go to the inbox and run after this one. */
 static uint8_t forward(uint8_t code, const uint8_t *a)
 {
     uart_putc(CTRL, HB_START);
@@ -145,6 +159,7 @@ static uint8_t forward(uint8_t code, const uint8_t *a)
     uart_putc(CTRL, HB_END);
     tick_t start = tick_now();
     while (tick_since(start) < HB_CONTROL_ACK_TIMEOUT_TICKS) {
+        poll_ir();
         int16_t b = uart_getc(CTRL);
         if (b < 0) {
             sys_idle();
@@ -223,12 +238,12 @@ static void localize(uint8_t code, tick_t started)
 
 static void select_modules(const uint8_t *a)
 {
-    if (a[0] > HB_MAX_MODULE_ID) {
+    if (a[0] > HB_MAX_SELECT_ID) {
         g_state.last_error = HB_ERR_ARG_RANGE;
         return; /* nobody can tell whether it was meant: stay as we are */
     }
     for (uint8_t k = 1; k < HB_PC_ARGS; k++) {
-        if (a[k] != HB_UNUSED && (a[k] == 0 || a[k] > HB_MAX_MODULE_ID)) {
+        if (a[k] != HB_UNUSED && (a[k] == 0 || a[k] > HB_MAX_SELECT_ID)) {
             g_state.last_error = HB_ERR_ARG_RANGE;
             return;
         }
@@ -386,14 +401,12 @@ int main(void)
     reply_init(poll_inputs);
 
     boot();
-    have_pending = 0; /* nothing sent during boot is for us */
+    inbox_clear(); /* nothing sent during boot is for us */
 
     for (;;) {
-        if (poll_inputs()) {
-            have_pending = 0;
-            uint8_t frame[HB_PC_FRAME_LEN];
-            memcpy(frame, pending, sizeof frame);
-            handle_frame(frame, tick_now(), pending_framing, pending_target);
+        inbox_entry_t next;
+        if (poll_inputs() && inbox_take(&next)) {
+            handle_frame(next.frame, tick_now(), next.framing, next.target);
         } else {
             if (comm_ir_channel() != IR_CENTRE && tick_since(last_ir_byte) > HB_IRSEL_HOLD_TICKS)
                 comm_ir_select(IR_CENTRE);

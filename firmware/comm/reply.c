@@ -4,6 +4,7 @@
 #include <avr/pgmspace.h>
 
 #include "comm_board.h"
+#include "id_text.h"
 #include "mavframe.h"
 #include "state.h"
 #include "system.h"
@@ -69,8 +70,10 @@ static void prefix(void)
 {
     reply_preamble();
     uart_putc(IR, g_state.role == HB_ROLE_SUBSTRATE ? 'S' : 'M');
-    if (g_state.addressed)
-        reply_dec2(g_state.id);
+    if (g_state.addressed) {
+        uint8_t digits[ID_TEXT_MAX];
+        uart_write(IR, digits, id_text(digits, g_state.id));
+    }
     uart_puts_P(IR, PSTR(": "));
 }
 
@@ -94,14 +97,13 @@ static uint8_t *text_P(uint8_t *p, const char *s)
     return p;
 }
 
-/* One boot line: text, optional " ID=nn", optional " FW=x", LF CR. */
+/* One boot line: text, optional " ID=nn" (nnn from 100), optional " FW=x", LF CR. */
 static uint8_t *boot_line(uint8_t *p, const char *text, uint8_t with_id, uint8_t with_fw)
 {
     p = text_P(p, text);
     if (with_id) {
         p = text_P(p, PSTR(HB_TEXT_ID_TAIL));
-        *p++ = (uint8_t)('0' + (g_state.id / 10u) % 10u);
-        *p++ = (uint8_t)('0' + g_state.id % 10u);
+        p += id_text(p, g_state.id);
     }
     if (with_fw)
         p = text_P(p, PSTR(BOOT_FW_TAIL));

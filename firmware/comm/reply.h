@@ -18,18 +18,19 @@
 
 /* Boot texts (reply_boot_text), in the thesis' order; one bit each. */
 #define BOOT_COMM_READY 0x01u     /* "COMM. BOARD READY FW=x" */
-#define BOOT_CTR_READY 0x02u      /* "CTR. BOARD READY ID=nn" */
+#define BOOT_CTR_READY 0x02u      /* "CTR. BOARD READY ID=nn" (nnn from 100) */
 #define BOOT_CTR_LISTENING 0x04u  /* "CTR. LISTENING" */
 #define BOOT_COMM_LISTENING 0x08u /* "COMM. LISTENING ID=nn FW=x" */
 #define BOOT_FW_TAIL HB_TEXT_FW_TAIL HB_FW_VERSION
 #define TEXT_LEN(s) (sizeof(s) - 1u)
-/* What a module sends once its id is known: preamble, then three lines
- * (the protocol counts them without the version: HB_BOOT_TEXT_FIXED_BYTES). */
+/* The most a module sends once its id is known: preamble, then three lines
+ * with a three-digit id (the protocol counts them without the version:
+ * HB_BOOT_TEXT_FIXED_BYTES); ids below 100 send two bytes less. */
 #define REPLY_BYTES_BOOT (HB_BOOT_TEXT_FIXED_BYTES + TEXT_LEN(HB_FW_VERSION))
 _Static_assert(REPLY_BYTES_BOOT ==
-                   4u + TEXT_LEN(HB_TEXT_CTR_READY HB_TEXT_ID_TAIL "nn\n\r") +
+                   4u + TEXT_LEN(HB_TEXT_CTR_READY HB_TEXT_ID_TAIL "nnn\n\r") +
                        TEXT_LEN(HB_TEXT_CTR_LISTENING "\n\r") +
-                       TEXT_LEN(HB_TEXT_COMM_LISTENING HB_TEXT_ID_TAIL "nn" BOOT_FW_TAIL "\n\r"),
+                       TEXT_LEN(HB_TEXT_COMM_LISTENING HB_TEXT_ID_TAIL "nnn" BOOT_FW_TAIL "\n\r"),
                "boot text and HB_BOOT_TEXT_FIXED_BYTES disagree");
 
 typedef uint8_t (*poll_fn)(void);

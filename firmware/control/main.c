@@ -15,6 +15,7 @@
 #include "control_board.h"
 #include "frame.h"
 #include "hexbot_codes.h"
+#include "id_text.h"
 #include "system.h"
 #include "table.h"
 #include "uart.h"
@@ -122,9 +123,9 @@ static uint8_t handshake(void)
 
 static void put_id_tail(void)
 {
+    uint8_t digits[ID_TEXT_MAX];
     uart_puts_P(SRC_DEBUG, PSTR(" ID="));
-    uart_putc(SRC_DEBUG, (uint8_t)('0' + module_id / 10u));
-    uart_putc(SRC_DEBUG, (uint8_t)('0' + module_id % 10u));
+    uart_write(SRC_DEBUG, digits, id_text(digits, module_id));
     uart_puts_P(SRC_DEBUG, PSTR(" FW=" HB_FW_VERSION));
 }
 

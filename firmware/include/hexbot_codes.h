@@ -4,8 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0x9aed8100UL
-#define HB_SCHEMA_HASH_TEXT "9aed8100"
+#define HB_SCHEMA_HASH 0x8c4ca247UL
+#define HB_SCHEMA_HASH_TEXT "8c4ca247"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */
@@ -20,7 +20,8 @@
 #define HB_BAUD_IR          300UL
 #define HB_BAUD_BOARD       4800UL
 #define HB_BAUD_DEBUG       4800UL
-#define HB_MAX_MODULE_ID    63
+#define HB_MAX_MODULE_ID    255
+#define HB_MAX_SELECT_ID    63
 #define HB_LOC_COORD_LIMIT  99
 
 /* Fuses (Table 3-6) and part */
@@ -40,11 +41,11 @@
 #define HB_ACK_SLOT_TICKS   60u
 #define HB_PC_BYTE_TIMEOUT_TICKS 34u
 #define HB_IRSEL_HOLD_TICKS 1000u
-/* Longest replies in addressed mode (preamble, 'M03: ', body) and their slots */
-#define HB_REPLY_BYTES_ACK  15u
-#define HB_REPLY_BYTES_ERR  16u
-#define HB_REPLY_BYTES_STATUS 29u
-#define HB_REPLY_BYTES_LOCALIZE 61u
+/* Longest replies in addressed mode (preamble, 'M255: ', body) and their slots */
+#define HB_REPLY_BYTES_ACK  16u
+#define HB_REPLY_BYTES_ERR  17u
+#define HB_REPLY_BYTES_STATUS 30u
+#define HB_REPLY_BYTES_LOCALIZE 62u
 #define HB_SLOTS_ACK        1u
 #define HB_SLOTS_STATUS     2u
 #define HB_SLOTS_LOCALIZE   4u
@@ -52,8 +53,8 @@
  * HB_BOOT_TEXT_FIXED_BYTES + the length of the version string. */
 #define HB_BOOT_SLOTS       8u
 #define HB_BOOT_FIRST_SLOT_TICKS 200u
-#define HB_BOOT_GUARD_TICKS 123u
-#define HB_BOOT_TEXT_FIXED_BYTES 71u
+#define HB_BOOT_GUARD_TICKS 126u
+#define HB_BOOT_TEXT_FIXED_BYTES 73u
 #define HB_BOOT_SLOT_TICKS(text_bytes) (HB_IR_TICKS(text_bytes) + HB_BOOT_GUARD_TICKS)
 /* Localization (code 66) */
 #define HB_LOC_LISTEN_TICKS 6u
@@ -429,6 +430,7 @@
 #define HB_ERR_BAD_FRAME          5
 #define HB_ERR_NO_ROLE            6
 #define HB_ERR_NOT_HEARD          7
+#define HB_ERR_BUSY               8
 
 /* Roles */
 #define HB_ROLE_NONE       0  /* '-' */

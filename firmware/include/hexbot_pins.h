@@ -42,7 +42,7 @@
 #define HB_LED_MASK_D 0xF0u
 #define HB_LED_MASK_E 0x07u
 /* DIP switches on PINC: the module id bits */
-#define HB_DIP_ID_MASK 0x3Fu
+#define HB_DIP_ID_MASK 0xFFu
 
 /* IR channel selector lines A, B, C on PORTA (Table 3-5: Y = 4C + 2B + A) */
 #define HB_SEL_PORT_A

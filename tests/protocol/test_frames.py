@@ -19,9 +19,9 @@ def valid_commands(draw, board=None):
     args = [draw(st.integers(a.lo, a.hi)) for a in fn.args]
     if fn.name == "Select":
         # 0 (all) stands alone; further ids are optional and distinct.
-        first = draw(st.integers(0, wire.MAX_MODULE_ID))
+        first = draw(st.integers(0, wire.MAX_SELECT_ID))
         more = [] if first == 0 else draw(
-            st.lists(st.integers(1, wire.MAX_MODULE_ID), max_size=7, unique=True)
+            st.lists(st.integers(1, wire.MAX_SELECT_ID), max_size=7, unique=True)
             .filter(lambda ids, f=first: f not in ids)
         )
         args = [first, *more]

@@ -20,6 +20,17 @@ def test_addressed_prefix_carries_module_id():
     assert (ev.role, ev.module, ev.code) == ("M", 7, 25)
 
 
+def test_ids_from_100_take_three_digits_byte_by_byte():
+    parser = ReplyParser()
+    data = (p.reply_ack(20, "M", 255) + p.reply_status(200, "S", False, 0, 0, 0, 0, "S", 0)
+            + p.reply_ack(20, "S", 9))
+    assert p.reply_ack(20, "M", 255).startswith(b"\n\r\n\rM255: ")
+    events = [e for b in data for e in parser.feed(bytes([b]))] + parser.flush()
+    assert [(type(e), getattr(e, "module", None)) for e in events] == [
+        (p.Ack, 255), (p.StatusReport, None), (p.Ack, 9)]
+    assert events[1].module_id == 200 and events[1].prefix_role == "S"
+
+
 def test_timeout_and_nothing_acks():
     a, b = parse_all(b"\n\r\n\rM: ACK~\n\r\n\r\n\rM: ACKN\n\r")
     assert a.timed_out and not a.did_nothing

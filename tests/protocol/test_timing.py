@@ -39,22 +39,26 @@ def test_each_reply_fits_its_slots():
 def test_reply_sizes_are_those_of_the_replies():
     from hexbot.protocol import parser
 
-    longest_err = parser.reply_error(255, 255, "M", 63)
-    status = parser.reply_status(63, "S", True, -99, 99, 5, 7, prefix_role="S", schema=0)
+    longest_err = parser.reply_error(255, 255, "M", 255)  # a three-digit id
+    status = parser.reply_status(255, "S", True, -99, 99, 5, 7, prefix_role="S", schema=0)
     assert timing.REPLY_BYTES_ERR == len(longest_err)
-    assert timing.REPLY_BYTES_ACK == len(parser.reply_ack(255, "M", 63))
+    assert timing.REPLY_BYTES_ACK == len(parser.reply_ack(255, "M", 255))
+    # Ids 1..99 keep the thesis' two digits: one byte less.
+    assert len(parser.reply_ack(255, "M", 63)) == timing.REPLY_BYTES_ACK - 1
     assert timing.REPLY_BYTES_STATUS == len(status)
 
 
-def test_boot_slot_holds_the_slot_text():
-    ident = 12
+def test_boot_slot_holds_the_slot_text_of_a_three_digit_id():
+    ident = 200
     text = (wire.PREAMBLE + f"{wire.TEXT_CTR_READY} ID={ident}".encode() + wire.EOL
             + wire.TEXT_CTR_LISTENING.encode() + wire.EOL
             + f"{wire.TEXT_COMM_LISTENING} ID={ident} FW=0.1.0".encode() + wire.EOL)
     assert timing.BOOT_TEXT_FIXED_BYTES + len("0.1.0") == len(text)
-    assert timing.boot_slot_ticks("0.1.0") == 382  # docs/firmware.md: 3.82 s
+    assert timing.boot_slot_ticks("0.1.0") == 392  # docs/firmware.md: 3.92 s
     guard = timing.BOOT_GUARD_TICKS
     assert timing.boot_slot_ticks("0.1.10") == timing.ir_ticks(len(text) + 1) + guard
+    two_digit = text.replace(b"ID=200", b"ID=12")
+    assert len(two_digit) == len(text) - 2  # ends earlier in the same slot
 
 
 def test_boot_guard_covers_the_clock_spread_at_the_last_slot():

@@ -119,7 +119,8 @@ typedef enum HEXBOT_ERROR
    HEXBOT_ERROR_BAD_FRAME=5, /* bad frame | */
    HEXBOT_ERROR_NO_ROLE=6, /* no role | */
    HEXBOT_ERROR_NOT_HEARD=7, /* not heard | */
-   HEXBOT_ERROR_ENUM_END=8, /*  | */
+   HEXBOT_ERROR_BUSY=8, /* busy | */
+   HEXBOT_ERROR_ENUM_END=9, /*  | */
 } HEXBOT_ERROR;
 #endif
 

@@ -7,7 +7,7 @@
 
 
 typedef struct __mavlink_hexbot_command_t {
- uint8_t target_system; /*<  Module id (DIP switches, 1..63); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.*/
+ uint8_t target_system; /*<  Module id (DIP switches, 1..255); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.*/
  uint8_t code; /*<  Function code (B1).*/
  uint8_t args[8]; /*<  Argument bytes B2..B9; unused ones 0.*/
 } mavlink_hexbot_command_t;
@@ -49,7 +49,7 @@ typedef struct __mavlink_hexbot_command_t {
  * @param component_id ID of this component (e.g. 200 for IMU)
  * @param msg The MAVLink message to compress the data into
  *
- * @param target_system  Module id (DIP switches, 1..63); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.
+ * @param target_system  Module id (DIP switches, 1..255); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.
  * @param code  Function code (B1).
  * @param args  Argument bytes B2..B9; unused ones 0.
  * @return length of the message in bytes (excluding serial stream start sign)
@@ -82,7 +82,7 @@ static inline uint16_t mavlink_msg_hexbot_command_pack(uint8_t system_id, uint8_
  * @param status MAVLink status structure
  * @param msg The MAVLink message to compress the data into
  *
- * @param target_system  Module id (DIP switches, 1..63); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.
+ * @param target_system  Module id (DIP switches, 1..255); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.
  * @param code  Function code (B1).
  * @param args  Argument bytes B2..B9; unused ones 0.
  * @return length of the message in bytes (excluding serial stream start sign)
@@ -118,7 +118,7 @@ static inline uint16_t mavlink_msg_hexbot_command_pack_status(uint8_t system_id,
  * @param component_id ID of this component (e.g. 200 for IMU)
  * @param chan The MAVLink channel this message will be sent over
  * @param msg The MAVLink message to compress the data into
- * @param target_system  Module id (DIP switches, 1..63); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.
+ * @param target_system  Module id (DIP switches, 1..255); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.
  * @param code  Function code (B1).
  * @param args  Argument bytes B2..B9; unused ones 0.
  * @return length of the message in bytes (excluding serial stream start sign)
@@ -190,7 +190,7 @@ static inline uint16_t mavlink_msg_hexbot_command_encode_status(uint8_t system_i
  * @brief Send a hexbot_command message
  * @param chan MAVLink channel to send the message
  *
- * @param target_system  Module id (DIP switches, 1..63); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.
+ * @param target_system  Module id (DIP switches, 1..255); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.
  * @param code  Function code (B1).
  * @param args  Argument bytes B2..B9; unused ones 0.
  */
@@ -261,7 +261,7 @@ static inline void mavlink_msg_hexbot_command_send_buf(mavlink_message_t *msgbuf
 /**
  * @brief Get field target_system from hexbot_command message
  *
- * @return  Module id (DIP switches, 1..63); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.
+ * @return  Module id (DIP switches, 1..255); 0 = the modules the last Select chose (all after Select(0)), as a legacy frame.
  */
 static inline uint8_t mavlink_msg_hexbot_command_get_target_system(const mavlink_message_t* msg)
 {
