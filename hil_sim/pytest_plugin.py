@@ -30,6 +30,13 @@ What only the simulator knows (pins, positions, debug ports) is behind
 :class:`~hexbot.hil_sim.Simulator`).
 
 Without the marker the scenario is ``--hexbot-scenario`` (default ``single``).
+A HexBot script named ``test_*.hbs`` is collected as a test file: one
+test per step (``line 12: Localize``), run in order on one booted session of
+the scenario its ``# scenario: NAME`` line names (else
+``--hexbot-scenario``); after a failed step the rest are skipped. pytest's
+``--junitxml`` then lists every step with its time, as ``hexbot run
+--junit`` does.
+
 ``hexbot_sim_factory(scenario, seed=None)`` builds more simulators in one
 test (say, to compare two runs). ``--hexbot-events-dir DIR`` writes each
 test's events as JSON lines to ``DIR/<test name>.jsonl``.
@@ -43,6 +50,7 @@ from __future__ import annotations
 import json
 import re
 from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -117,24 +125,21 @@ def hexbot_sim(request: pytest.FixtureRequest, hexbot_sim_factory: Callable[...,
     return hexbot_sim_factory(*_marked(request))
 
 
-@pytest.fixture
-def hexbot_session(request: pytest.FixtureRequest, _hexbot_events: list[Any]) -> Iterator[Any]:
+@contextmanager
+def booted_session(scenario: str, seed: int | None) -> Iterator[Any]:
     """A :class:`~hexbot.host.session.Session` on a stepped ``hexbot-sim://``
-    port of the marked scenario, every module booted; closed after the test."""
+    port of ``scenario``, every module booted; closed on exit."""
     from hexbot.errors import HexBotTimeoutError
     from hexbot.host.endpoints import sim_url
     from hexbot.host.host import IR, Host
     from hexbot.host.link import PortSettings
     from hexbot.host.session import Session
 
-    scenario, seed = _marked(request)
     host = Host(None)  # no session log
     try:
         host.add_port(IR, PortSettings(sim_url(str(scenario), seed, 0.0)))
         host.start(5.0)
-        access = host.simulator
-        _hexbot_events.append(access.simulator)
-        ids = access.module_ids()
+        ids = host.simulator.module_ids()
         session = Session(host, ids)
         missing = set(ids) - session.wait_booted(ids)
         if missing:
@@ -142,3 +147,21 @@ def hexbot_session(request: pytest.FixtureRequest, _hexbot_events: list[Any]) ->
         yield session
     finally:
         host.close()
+
+
+@pytest.fixture
+def hexbot_session(request: pytest.FixtureRequest, _hexbot_events: list[Any]) -> Iterator[Any]:
+    """A :class:`~hexbot.host.session.Session` on a stepped ``hexbot-sim://``
+    port of the marked scenario, every module booted; closed after the test."""
+    with booted_session(*_marked(request)) as session:
+        _hexbot_events.append(session.host.simulator.simulator)
+        yield session
+
+
+def pytest_collect_file(file_path: Path, parent: pytest.Collector) -> pytest.Collector | None:
+    """``test_*.hbs`` scripts are collected as tests, one per step."""
+    if file_path.suffix == ".hbs" and file_path.name.startswith("test_"):
+        from hexbot.hil_sim.pytest_scripts import ScriptFile
+
+        return ScriptFile.from_parent(parent, path=file_path)
+    return None

@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import argparse
 import json
-import time
+import sys
+import threading
 from pathlib import Path
 
 from hexbot.host.capture import read_capture
 from hexbot.host.describe import describe_event, describe_tx, event_json
+from hexbot.host.replay_control import ReplayControl
 from hexbot.host.session_log import CAPTURE_NAME
 from hexbot.protocol.mavlink_codec import FramedParser
 
@@ -19,18 +21,47 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="one JSON object per line")
     parser.add_argument("--port", action="append", metavar="NAME",
                         help="only this port (ir, debug); repeatable")
-    parser.add_argument("--realtime", action="store_true",
-                        help="wait between records as the original session did")
+    parser.add_argument("--speed", type=_positive, metavar="X",
+                        help="pace the records at X times the recorded speed "
+                             "(default: as fast as it prints)")
+    parser.add_argument("--realtime", dest="speed", action="store_const", const=1.0,
+                        help="the same as --speed 1")
+    parser.add_argument("--from", dest="start", type=_seconds, default=0.0, metavar="T",
+                        help="seek: print from T seconds on (earlier bytes still go "
+                             "through the parser, so a reply across T decodes whole)")
+    parser.add_argument("--to", dest="stop", type=_seconds, metavar="T",
+                        help="stop after T seconds")
     parser.add_argument("--no-tx", action="store_true", help="hide what the PC sent")
+
+
+def _seconds(text: str) -> float:
+    value = float(text)
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"must not be negative, got {text}")
+    return value
+
+
+def _positive(text: str) -> float:
+    value = float(text)
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"must be positive, got {text}")
+    return value
 
 
 def run(args: argparse.Namespace) -> int:
     path = args.capture / CAPTURE_NAME if args.capture.is_dir() else args.capture
+    if args.stop is not None and args.stop < args.start:
+        print(f"hexbot replay: error: --to {args.stop:g} is before --from {args.start:g}",
+              file=sys.stderr)
+        return 2  # a usage error, as argparse's own
     parsers: dict[str, FramedParser] = {}
-    start = time.monotonic()
+    control = ReplayControl(args.speed, args.start) if args.speed else None
+    never = threading.Event()
     last_t = 0.0
 
     def emit(t: float, port: str, kind: str, text: str, obj: dict) -> None:
+        if t < args.start:
+            return
         if args.json:
             print(json.dumps({"t": round(t, 3), "port": port, **obj}), flush=True)
         else:
@@ -39,8 +70,10 @@ def run(args: argparse.Namespace) -> int:
     for rec in read_capture(path):
         if args.port and rec.port not in args.port:
             continue
-        if args.realtime and rec.t > last_t:
-            time.sleep(max(0.0, rec.t - (time.monotonic() - start)))
+        if args.stop is not None and rec.t > args.stop:
+            return 0  # a reply cut by the window is not garbage: no flush
+        if control is not None:
+            control.wait_until(rec.t, never)
         last_t = rec.t
         if rec.kind == "rx":
             parser = parsers.setdefault(rec.port, FramedParser())  # both framings

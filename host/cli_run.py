@@ -9,6 +9,7 @@ from pathlib import Path
 
 from hexbot.host.cli_common import session
 from hexbot.host.endpoints import add_port_arguments
+from hexbot.host.junit import write_junit
 from hexbot.host.script import ScriptFailed, ScriptRunner, load_script
 
 
@@ -16,6 +17,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("script", type=Path, help="a .hbs script (see docs/console.md)")
     parser.add_argument("--check", action="store_true",
                         help="only check the script's syntax; send nothing")
+    parser.add_argument("--junit", type=Path, metavar="XML",
+                        help="write JUnit XML for CI: one testcase per step with its time "
+                             "(simulated seconds on the simulator); written also on failure")
     parser.add_argument("--quiet", type=float, default=1.5, metavar="S",
                         help="after a broadcast, answers are over when the link was quiet "
                              "this long (default 1.5; less with a fast simulator)")
@@ -53,5 +57,8 @@ def run(args: argparse.Namespace) -> int:
             print(f"FAILED {exc}", file=sys.stderr)
             print(f"{runner.steps_done} of {len(steps)} steps passed", file=sys.stderr)
             return 1
+        finally:  # a lost port too: CI shows which step could not be judged
+            if args.junit:
+                write_junit(args.junit, str(args.script), runner.results)
     print(f"{args.script}: all {len(steps)} steps passed", file=sys.stderr)
     return 0

@@ -34,6 +34,7 @@ from hexbot.host.events import (
     TrafficDirection,
 )
 from hexbot.host.link import Link, LinkState, PortSettings
+from hexbot.host.replay_control import ReplayControl
 from hexbot.host.session_log import SessionLog
 from hexbot.protocol import frames
 from hexbot.protocol.frames import Command
@@ -240,21 +241,21 @@ class Host:
 
     # --- replay ----------------------------------------------------------------
 
-    def replay(self, records: Iterable[Record], *, realtime: bool = False,
+    def replay(self, records: Iterable[Record], *, control: ReplayControl | None = None,
                cancel: threading.Event | None = None) -> int:
         """Play capture records into the host as if they happened now, with
         their recorded time stamps (the console's ``--replay``): received
         bytes go through a parser, sent bytes and state changes to the
-        listeners. Nothing is written to a port. Returns records played."""
-        import time
-
+        listeners. Nothing is written to a port. ``control`` paces it
+        (speed, pause, seek); without, as fast as it goes. Returns records
+        played."""
         parsers: dict[str, FramedParser] = {}
-        start, n, last = time.monotonic(), 0, 0.0
+        n, last = 0, 0.0
         stop = cancel or threading.Event()
         for rec in records:
             if stop.is_set():
                 break
-            if realtime and stop.wait(max(0.0, rec.t - (time.monotonic() - start))):
+            if control is not None and not control.wait_until(rec.t, stop):
                 break
             last = rec.t
             n += 1

@@ -36,6 +36,7 @@ a reply that arrived during a ``wait`` still counts.
 
 from __future__ import annotations
 
+import enum
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -295,6 +296,21 @@ def _parse_status_expect(args: list[str], where: str) -> dict:
 # --- execution --------------------------------------------------------------
 
 
+class StepStatus(enum.Enum):
+    PASSED = "passed"
+    FAILED = "failed"    # the step did not get what it expected
+    ERROR = "error"      # the port was lost: the step could not be judged
+    NOT_RUN = "not run"  # an earlier step failed
+
+
+@dataclass(frozen=True)
+class StepResult:
+    step: Step
+    status: StepStatus
+    seconds: float = 0.0  # on the session's clock (simulated seconds on a simulator)
+    message: str = ""  # the reply for a pass, the reason for a failure
+
+
 Printer = Callable[[str], None]
 
 
@@ -314,21 +330,50 @@ class ScriptRunner:
         self.timeout = DEFAULT_TIMEOUT
         self.reply_timeout: float | None = None  # None: the protocol's bound per function
         self.mark = self.host.mark()
-        self.steps_done = 0
+        self.results: list[StepResult] = []
+
+    @property
+    def steps_done(self) -> int:
+        return sum(r.status is StepStatus.PASSED for r in self.results)
 
     def run(self, steps: list[Step]) -> None:
-        """Run every step; ScriptFailed at the first failure."""
-        for step in steps:
-            if self.session.cancel.is_set():
-                raise ScriptFailed(f"{self.name}:{step.line}: cancelled")
+        """Run every step; ScriptFailed at the first failure. Each step's
+        result (with its session-clock duration) goes to ``results``; the
+        steps after a failure are recorded as not run."""
+        for index, step in enumerate(steps):
             try:
-                result = self._step(step)
-            except (ScriptFailed, LinkUnavailableError):
-                raise  # a lost port is no failed step: the caller says so
-            except HexBotError as exc:
-                raise ScriptFailed(f"{self.name}:{step.line}: {step.text}: {exc}") from exc
-            self.steps_done += 1
-            self.out(f"{step.line:4d} ok    {step.text}" + (f"  -> {result}" if result else ""))
+                self.run_step(step)
+            except HexBotError:
+                self.results.extend(StepResult(s, StepStatus.NOT_RUN) for s in steps[index + 1:])
+                raise
+
+    def run_step(self, step: Step) -> StepResult:
+        """One step; its result is appended to ``results`` and returned,
+        or ScriptFailed / LinkUnavailableError raised (and recorded)."""
+        started = self.session.now()
+
+        def record(status: StepStatus, message: str = "") -> StepResult:
+            result = StepResult(step, status, self.session.now() - started, message)
+            self.results.append(result)
+            return result
+
+        if self.session.cancel.is_set():
+            record(StepStatus.FAILED, "cancelled")
+            raise ScriptFailed(f"{self.name}:{step.line}: cancelled")
+        try:
+            text = self._step(step)
+        except ScriptFailed as exc:
+            record(StepStatus.FAILED, str(exc))
+            raise
+        except LinkUnavailableError as exc:  # a lost port is no failed step: the caller says so
+            record(StepStatus.ERROR, str(exc))
+            raise
+        except HexBotError as exc:
+            failure = ScriptFailed(f"{self.name}:{step.line}: {step.text}: {exc}")
+            record(StepStatus.FAILED, str(failure))
+            raise failure from exc
+        self.out(f"{step.line:4d} ok    {step.text}" + (f"  -> {text}" if text else ""))
+        return record(StepStatus.PASSED, text)
 
     def _fail(self, step: Step, why: str) -> ScriptFailed:
         return ScriptFailed(f"{self.name}:{step.line}: {step.text}: {why}")

@@ -47,6 +47,7 @@ from hexbot.host.endpoints import Endpoints
 from hexbot.host.events import HostEvent, Listener, Observed, PortChanged, SimVerdict, Traffic
 from hexbot.host.host import DEBUG, IR, Host
 from hexbot.host.link import LinkState, PortSettings
+from hexbot.host.replay_control import ReplayControl
 from hexbot.host.session import Outcome, Session, select
 from hexbot.protocol import frames, wire
 from hexbot.protocol.frames import Command
@@ -108,6 +109,11 @@ class HexBotConsole(App[None]):
         Binding("ctrl+s", "save_terminals", "Save", show=False),
         Binding("ctrl+l", "clear_terminals", "Clear", show=False),
         Binding("ctrl+r", "restart_session", "Restart simulator", show=False),
+        Binding("p", "replay_pause", "Replay: pause / resume", show=False),
+        Binding("left_square_bracket", "replay_speed(False)", "Replay: half speed", show=False),
+        Binding("right_square_bracket", "replay_speed(True)", "Replay: double speed",
+                show=False),
+        Binding("full_stop", "replay_skip", "Replay: skip 10 s ahead", show=False),
         Binding("1", "show_tab('terminals')", "Terminals", show=False),
         Binding("2", "show_tab('compose')", "Composer", show=False),
         Binding("3", "show_tab('modules')", "Modules", show=False),
@@ -131,6 +137,7 @@ class HexBotConsole(App[None]):
         self.reply_timeout = reply_timeout
         self.start_ports = start_ports
         self.replay_records = replay
+        self.replay_control: ReplayControl | None = None  # while a replay plays
         self.cancel_event = threading.Event()
         self.busy = ""
         self.last_result = ""
@@ -260,10 +267,11 @@ class HexBotConsole(App[None]):
             self.start_operation("Simulator", [boot])
         if self.replay_records is not None:
             records = self.replay_records
+            control = self.replay_control = ReplayControl(end=records[-1].t if records else 0.0)
             cancel = self.session.cancel
 
             def replay() -> str:
-                return f"{host.replay(records, realtime=True, cancel=cancel)} records"
+                return f"{host.replay(records, control=control, cancel=cancel)} records"
             replay.__name__ = f"{len(records)} records"
             self.start_operation("Replay", [replay])
 
@@ -360,7 +368,10 @@ class HexBotConsole(App[None]):
             parts.append(f"{len(self.host.model.modules)} modules, "
                          f"{len(self.host.model.placements)} placed")
         parts.append(f"sel {self.selection_text()}")
-        if self.busy:
+        if self.busy.startswith("Replay") and self.replay_control is not None:
+            parts.append(f"[b]Replay[/] {self.replay_control.describe()} "
+                         "(p pause, [ ] speed, . skip)")
+        elif self.busy:
             parts.append(f"[b]{escape(self.busy)}[/]{self.wait_text()} (esc cancels)")
         elif self.last_result:
             parts.append(self.last_result)
@@ -631,6 +642,28 @@ class HexBotConsole(App[None]):
         for port in (IR, DEBUG):
             stamps = self.terminal(port).cycle_stamps()
         self.notify(f"time stamps: {'wall clock' if stamps == 'wall' else 'since start'}")
+
+    def _replaying(self) -> ReplayControl | None:
+        if self.replay_control is None or not self.busy.startswith("Replay"):
+            self.notify("no replay is playing", severity="warning")
+            return None
+        return self.replay_control
+
+    def action_replay_pause(self) -> None:
+        if control := self._replaying():
+            control.toggle_pause()
+            self._update_status()
+
+    def action_replay_speed(self, faster: bool) -> None:
+        """``[`` halves the speed, ``]`` doubles it (x1/8..x64)."""
+        if control := self._replaying():
+            control.faster() if faster else control.slower()
+            self._update_status()
+
+    def action_replay_skip(self) -> None:
+        if control := self._replaying():
+            control.seek(control.position() + 10.0)
+            self._update_status()
 
     def action_search(self) -> None:
         """``/``: the terminals' search box (escape leaves it)."""

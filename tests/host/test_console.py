@@ -428,3 +428,39 @@ async def test_a_stopped_simulator_is_said_and_restarted(pair_args):
         assert await until(pilot, lambda: not app.busy, timeout=60)
         assert "Simulator: done: 2 modules booted" in app.last_result
         assert not alert.display and app.failure_status is None
+
+
+@sync
+async def test_replay_pauses_changes_speed_and_skips_ahead():
+    """Issue 13: replay with speed, pause and seek (keys p, [ ], .)."""
+    from pathlib import Path
+
+    from hexbot.host.capture import read_capture
+
+    records = list(read_capture(Path(__file__).parent / "data" / "flower7_session.hbcap"))
+    app = HexBotConsole(Host(), replay=records, start_ports=False)
+    async with app.run_test(size=(120, 30)) as pilot:
+        assert await until(pilot, lambda: app.busy.startswith("Replay"))
+        control = app.replay_control
+        await pilot.press("p")
+        assert control.paused
+        held = control.position()
+        shown = len(ir_text(app))
+        await pilot.pause(0.5)
+        assert control.position() == held and len(ir_text(app)) == shown
+        assert "paused" in str(app.query_one("#status").render())
+        await pilot.press("right_square_bracket", "right_square_bracket")
+        assert control.speed == 4.0
+        await pilot.press("left_square_bracket")
+        assert control.speed == 2.0
+        # Skipping while paused plays the skipped records at once: the Ref
+        # sent at 5.8 s shows without waiting, and the replay stays paused.
+        assert held < 5.0 and "Ref" not in ir_text(app)
+        await pilot.press("full_stop")
+        assert control.position() == held + 10.0 and control.paused
+        assert await until(pilot, lambda: "Ref" in ir_text(app), timeout=5)
+        assert f"{held + 10:.1f} s of 18.7 s, 2x, paused" in str(
+            app.query_one("#status").render())
+        await pilot.press("p")  # resume: the rest (to 18.7 s) is played, then done
+        assert await until(pilot, lambda: not app.busy, timeout=10)
+        assert f"{len(records)} records" in app.last_result

@@ -1,0 +1,84 @@
+"""CI reports of scripts: `hexbot run --junit` and `test_*.hbs` under pytest,
+both on the simulator's hexbot-sim:// port (virtual time)."""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+import pytest
+
+from hexbot.cli import main
+
+pytest_plugins = ["pytester"]
+
+# Module 2 of the pair answers its status unlocalized: line 4 fails.
+FAILING = """# scenario: pair
+select 2
+status
+expect status 2 localized
+echo never reached
+"""
+
+
+def _cases(xml_path):
+    suite = ET.parse(xml_path).getroot().find("testsuite")
+    return suite, suite.findall("testcase")
+
+
+def test_run_junit_has_one_case_per_step_with_the_failure_reason(tmp_path, log_dir, capsys):
+    script = tmp_path / "status.hbs"
+    script.write_text(FAILING)
+    out = tmp_path / "out.xml"
+    assert main(["run", str(script), "--junit", str(out)]) == 1
+    suite, cases = _cases(out)
+    assert [c.get("name") for c in cases] == [
+        "line 2: select 2", "line 3: status", "line 4: expect status 2 localized",
+        "line 5: echo never reached"]
+    assert (suite.get("tests"), suite.get("failures"), suite.get("skipped")) == ("4", "1", "1")
+    assert cases[0].find("failure") is None and "ACK 69" in cases[0].findtext("system-out")
+    failure = cases[2].find("failure")
+    assert failure is not None
+    assert failure.get("message") == (f"{script}:4: expect status 2 localized: module is "
+                                      "not localized (STA id 2 role M not localized "
+                                      "last error NONE)")
+    assert cases[3].find("skipped") is not None
+    # simulated seconds: the Select waited for its ACK, which takes the IR
+    # link's time on the robot's clock
+    assert float(cases[0].get("time")) > 0.1
+    assert abs(float(suite.get("time")) - sum(float(c.get("time")) for c in cases)) < 0.01
+
+
+def test_run_junit_of_a_passing_script(tmp_path, log_dir):
+    script = tmp_path / "ok.hbs"
+    script.write_text("# scenario: pair\nselect 1\nRef\n")
+    out = tmp_path / "out.xml"
+    assert main(["run", str(script), "--junit", str(out)]) == 0
+    suite, cases = _cases(out)
+    assert (suite.get("tests"), suite.get("failures"), suite.get("errors")) == ("2", "0", "0")
+    assert all(c.find("failure") is None and c.find("skipped") is None for c in cases)
+
+
+@pytest.mark.filterwarnings("ignore::pytest.PytestAssertRewriteWarning")
+def test_pytest_collects_hbs_scripts_one_test_per_step(pytester):
+    pytester.makefile(".hbs", test_status=FAILING)
+    pytester.makefile(".hbs", test_ref="# scenario: pair\nselect 1\nRef\n")
+    pytester.makefile(".hbs", helper="select 1\n")  # not test_*: not collected
+    report = pytester.path / "report.xml"
+    result = pytester.runpytest_subprocess("-p", "no:cacheprovider", f"--junitxml={report}")
+    result.assert_outcomes(passed=4, failed=1, skipped=1)
+    result.stdout.fnmatch_lines(["*test_status.hbs:4: expect status 2 localized: "
+                                 "module is not localized*"])
+    cases = ET.parse(report).getroot().iter("testcase")
+    by_name = {c.get("name"): c for c in cases}
+    assert set(by_name) == {"line 2: select 2", "line 3: status",
+                            "line 4: expect status 2 localized", "line 5: echo never reached",
+                            "line 2: select 1", "line 3: Ref"}
+    assert by_name["line 4: expect status 2 localized"].find("failure") is not None
+    assert by_name["line 5: echo never reached"].find("skipped") is not None
+
+
+def test_pytest_reports_a_bad_script_line_as_a_collection_error(pytester):
+    pytester.makefile(".hbs", test_bad="select 1\nfrobnicate 3\n")
+    result = pytester.runpytest_subprocess("-p", "no:cacheprovider")
+    result.stdout.fnmatch_lines(["*test_bad.hbs:2: *frobnicate*"])
+    assert result.ret == pytest.ExitCode.INTERRUPTED
