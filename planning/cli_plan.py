@@ -42,9 +42,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="firmware commands: combined CW/CCW (67/68, default) or "
                              "single-role MCW..SCCW (21-24)")
     parser.add_argument("--serial", action="store_true",
-                        help="robust mode: one move per time step")
+                        help="robust and exact modes: one move per time step")
     parser.add_argument("--fixed", metavar="X,Y", type=_cell,
-                        help="robust mode: the module fixed to the base, which never moves")
+                        help="robust and exact modes: the module fixed to the base, which never moves")
     parser.add_argument("--budget", type=_seconds, default=DEFAULT_BUDGET, metavar="SECONDS",
                         help="robust and exact modes: give up (exit 1, with the reason) "
                              f"after this many seconds (default {DEFAULT_BUDGET:g})")
@@ -104,7 +104,8 @@ def make_plan(args: argparse.Namespace, initial: Configuration | None = None) ->
     if args.mode == "exact":
         from hexbot.planning.exact import plan_exact
 
-        return plan_exact(initial, goal, fixed=args.fixed, budget=args.budget)
+        return plan_exact(initial, goal, fixed=args.fixed, budget=args.budget,
+                          parallel=not args.serial)
     from hexbot.planning.thesis.planner import FaithfulOptions, plan_faithful
 
     if args.max_steps < 1:
