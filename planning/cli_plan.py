@@ -44,7 +44,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--serial", action="store_true",
                         help="robust and exact modes: one move per time step")
     parser.add_argument("--fixed", metavar="X,Y", type=_cell,
-                        help="robust and exact modes: the module fixed to the base, which never moves")
+                        help="robust and exact modes: the module fixed to the base (never moves)")
     parser.add_argument("--budget", type=_seconds, default=DEFAULT_BUDGET, metavar="SECONDS",
                         help="robust and exact modes: give up (exit 1, with the reason) "
                              f"after this many seconds (default {DEFAULT_BUDGET:g})")
