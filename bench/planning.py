@@ -1,9 +1,21 @@
 """Benchmark of the hex reconfiguration planners: planning time and moves vs module count.
 
-    hexbot bench planning            # table (markdown)
-    hexbot bench planning --json     # one JSON object per line
+    hexbot bench planning                     # per family and size (markdown), the issue's table
+    hexbot bench planning --sizes 10,30 --seeds 5 --json   # one JSON object per pair
+    hexbot bench planning --small             # exact (A*) vs robust on the small bank
+    hexbot bench planning --cases             # the older per-case table (below)
 
-Families (deterministic, no randomness outside the given seeds):
+The per-family table (``--families blob,scramble``, with and without the
+fixed module at (0, 0)): each pair is planned in a fresh process (peak
+memory = that process's maximum resident set, interpreter and libraries
+included) with the robust mode's time budget, then replayed by the
+independent checker (:mod:`hexbot.planning.checker`); a pair counts as planned
+only if the checker accepts it. Bounds: :mod:`hexbot.planning.bounds`
+(moves: assignment; time steps: bottleneck). Families: ``blob`` = two
+independent random blobs grown from (0, 0); ``scramble`` = a blob and the
+cells after 3n random legal moves of it (:mod:`hexbot.planning.generate`).
+
+Families of ``--cases`` (deterministic, no randomness outside the given seeds):
 
 * ``parallelogram``: a w x h parallelogram into a wider, flatter one with the
   same module count, sharing the corner cell (0, 0);
@@ -27,6 +39,7 @@ import json
 import time
 from pathlib import Path
 
+from hexbot.planning.budget import DEFAULT_BUDGET
 from hexbot.planning.config_io import load_configuration
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.generate import parallelogram, random_blob
@@ -128,22 +141,45 @@ def bench_thesis() -> list[dict]:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--sizes", default="10,30,100,300,1000",
-                        help="parallelogram sizes among " + ",".join(map(str, PARALLELOGRAMS)))
-    parser.add_argument("--blob-sizes", default="10,30,100,1000", help="random blob sizes")
+    parser.add_argument("--sizes", default=None,
+                        help="module counts (families: default 10,30,100,300,1000; --cases: "
+                             "parallelogram sizes among " + ",".join(map(str, PARALLELOGRAMS))
+                             + ")")
+    parser.add_argument("--families", default="blob,scramble", help="families to plan")
+    parser.add_argument("--fixed", choices=("both", "yes", "no"), default="both",
+                        help="families: with the module at (0, 0) fixed to the base, without, "
+                             "or both (default)")
+    parser.add_argument("--budget", type=float, default=DEFAULT_BUDGET,
+                        help=f"families: time budget per pair in seconds "
+                             f"(default {DEFAULT_BUDGET:g})")
+    parser.add_argument("--blob-sizes", default="10,30,100,1000",
+                        help="--cases: random blob sizes")
     parser.add_argument("--apart-sizes", default="10,30,100",
-                        help="random blob sizes with the goal apart from the initial")
-    parser.add_argument("--seeds", type=int, default=5, help="random blob pairs per size")
+                        help="--cases: random blob sizes with the goal apart from the initial")
+    parser.add_argument("--seeds", type=int, default=None,
+                        help="pairs per size (families: default per size, see SEEDS; "
+                             "--cases: 5)")
     parser.add_argument("--json", action="store_true", help="JSON lines instead of a table")
+    parser.add_argument("--cases", action="store_true",
+                        help="the per-case table: thesis, parallelograms, blobs, apart")
+    parser.add_argument("--small", action="store_true",
+                        help="only: exact vs robust on the small bank (optimality gap)")
     parser.add_argument("--scan", type=int, metavar="N",
                         help="only: completion over N small random pairs")
 
 
 def run(args: argparse.Namespace) -> int:
+    from hexbot.bench.planning_families import run_families, run_small
+
     if args.scan:
         scan(args.scan)
         return 0
-    sizes = [int(s) for s in args.sizes.split(",") if s]
+    if args.small:
+        return run_small(args)
+    if not args.cases:
+        return run_families(args)
+    args.seeds = 5 if args.seeds is None else args.seeds
+    sizes = [int(s) for s in (args.sizes or "10,30,100,300,1000").split(",") if s]
     blob_sizes = [int(s) for s in args.blob_sizes.split(",") if s]
     apart_sizes = [int(s) for s in args.apart_sizes.split(",") if s]
     rows = (bench_thesis() + bench_parallelograms(sizes) + bench_blobs(blob_sizes, args.seeds)

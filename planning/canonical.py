@@ -31,13 +31,19 @@ from __future__ import annotations
 from collections import deque
 from dataclasses import replace
 
-from hexbot.planning.configuration import Configuration, Module, contact_hops
+from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline
+from hexbot.planning.configuration import (
+    Configuration,
+    Module,
+    articulation_points,
+    contact_hops,
+)
 from hexbot.planning.hexlattice import Cell, distance, rotate_cell, wrap
 from hexbot.planning.moves import Move, orientation_after
 from hexbot.planning.robust import (
     PlanningFailure,
     _moves_from,
-    is_cut,
+    _single_arc,
     reverse_move,
     serial_moves,
     unwind,
@@ -85,7 +91,53 @@ def _path_to(occupied: set[Cell], start: Cell, target: Cell) -> list | None:
     return None
 
 
-def to_strip(config: Configuration, width: int) -> list[Move]:
+def _reaching(occupied: set[Cell], target: Cell) -> set[Cell]:
+    """Empty cells from which a module can roll to ``target`` with every module fixed
+    (one search outward from the target: rotations are reversible over the same cells)."""
+    seen = {target}
+    queue = deque([target])
+    while queue:
+        cell = queue.popleft()
+        for _, _, goal in _moves_from(cell, occupied, cell):
+            if goal not in seen:
+                seen.add(goal)
+                queue.append(goal)
+    return seen
+
+
+#: Modules tried with the local arc test before the linear pass (see :func:`_pick_mover`).
+QUICK = 3
+
+
+def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell) -> tuple[int, list] | None:
+    """The first module of ``order`` that may leave and roll to ``target``, with its path.
+
+    Usually the farthest module qualifies: the first ``QUICK`` modules whose
+    neighbours form one arc (never cut vertices) get a path search each. Otherwise,
+    linear work per moved module: one cut-vertex pass, one search outward from the
+    target, then one path search for the module it points at. The outward search
+    counts the mover as an obstacle (and as a possible substrate), so when it points
+    at no one, each module is searched on its own (rare).
+    """
+    for k, cell in enumerate(order[:QUICK]):
+        if _single_arc(occupied, cell):
+            path = _path_to(occupied, cell, target)
+            if path:
+                return k, path
+    cuts = articulation_points(occupied)
+    reach = _reaching(occupied, target)
+    free = [k for k, c in enumerate(order) if c not in cuts]
+    likely = [k for k in free
+              if any(g in reach for _, _, g in _moves_from(order[k], occupied, order[k]))]
+    for k in likely + [k for k in free if k not in set(likely)]:
+        path = _path_to(occupied, order[k], target)
+        if path:
+            return k, path
+    return None
+
+
+def to_strip(config: Configuration, width: int,
+             deadline: Deadline = NO_DEADLINE) -> list[Move]:
     """Serial moves that gather ``config`` into the strip at its anchor."""
     occupied = set(config.cells)
     ids = {c: m.id for c, m in config.items()}
@@ -94,6 +146,7 @@ def to_strip(config: Configuration, width: int) -> list[Move]:
     moves: list[Move] = []
     order: list[Cell] = []
     for target in strip_cells(anchor, len(config), width):
+        deadline.check("canonical strip")
         if target in occupied:  # cannot happen: every cell right of the anchor is empty
             raise PlanningFailure(f"strip cell {target} is occupied")
         if not order:
@@ -101,20 +154,15 @@ def to_strip(config: Configuration, width: int) -> list[Move]:
             # order is only recomputed when a nearer module had to go instead
             hops = contact_hops(occupied, anchor)
             order = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
-        path = None
-        for k, mover in enumerate(order):
-            if is_cut(occupied, mover):
-                continue
-            path = _path_to(occupied, mover, target)
-            if path:
-                del order[k]
-                if k:
-                    order = []
-                break
-        if path is None:
+        picked = _pick_mover(occupied, order, target)
+        if picked is None:
             raise PlanningFailure(
                 f"no module can reach strip cell {target} (width {width}) after "
                 f"{len(moves)} moves")
+        k, path = picked
+        del order[k]
+        if k:
+            order = []
         module = ids.pop(path[0][0])
         occupied.discard(path[0][0])
         for src, dst, rule, sub in path:
@@ -145,19 +193,23 @@ def _hop_anchors(start: Cell, end: Cell, hop: int = HOP) -> list[Cell]:
 
 
 def shift_strip(config: Configuration, start: Cell, end: Cell, width: int,
-                max_moves: int) -> list[Move]:
+                max_moves: int, deadline: Deadline = NO_DEADLINE) -> list[Move]:
     """Serial moves taking the strip anchored at ``start`` to the one at ``end``."""
     moves: list[Move] = []
     for hop in _hop_anchors(start, end):
         try:
-            part = serial_moves(config, strip_shape(hop, len(config), width), max_moves)
+            part = serial_moves(config, strip_shape(hop, len(config), width), max_moves,
+                                deadline=deadline, method="canonical strip")
+        except BudgetExhausted:
+            raise
         except PlanningFailure:
             if distance(start, hop) <= 1:
                 raise
             # one cell at a time: a unit shift of a convex strip is the easy case
             part, at = [], config
             for unit in _hop_anchors(start, hop, 1):
-                piece = serial_moves(at, strip_shape(unit, len(config), width), max_moves)
+                piece = serial_moves(at, strip_shape(unit, len(config), width), max_moves,
+                                     deadline=deadline, method="canonical strip")
                 part += piece
                 at = replay(at, piece)
         moves += part
@@ -166,10 +218,11 @@ def shift_strip(config: Configuration, start: Cell, end: Cell, width: int,
     return moves
 
 
-def reversed_to_strip(goal: frozenset[Cell], strip: Configuration, width: int) -> list[Move]:
+def reversed_to_strip(goal: frozenset[Cell], strip: Configuration, width: int,
+                      deadline: Deadline = NO_DEADLINE) -> list[Move]:
     """Serial moves from ``strip`` (the goal's strip, with real module ids) to ``goal``."""
     provisional = Configuration.from_cells(goal, first_id=10**6)
-    backward = to_strip(provisional, width)
+    backward = to_strip(provisional, width, deadline)
     end = replay(provisional, backward)
     real = {end[c].id: strip[c].id for c in end}
     return [replace(reverse_move(m), module=real[m.module],
@@ -196,11 +249,12 @@ def _rotate_move(move: Move, steps: int) -> Move:
 
 
 def _via_strip_once(initial: Configuration, goal: frozenset[Cell], width: int,
-                    max_moves: int) -> list[Move]:
-    first = to_strip(initial, width)
+                    max_moves: int, deadline: Deadline = NO_DEADLINE) -> list[Move]:
+    first = to_strip(initial, width, deadline)
     at_strip = replay(initial, first)
-    shift = shift_strip(at_strip, anchor_of(initial.cells), anchor_of(goal), width, max_moves)
-    last = reversed_to_strip(goal, replay(at_strip, shift), width)
+    shift = shift_strip(at_strip, anchor_of(initial.cells), anchor_of(goal), width, max_moves,
+                        deadline)
+    last = reversed_to_strip(goal, replay(at_strip, shift), width, deadline)
     return first + shift + last
 
 
@@ -220,7 +274,8 @@ def strip_estimate(initial: frozenset[Cell], goal: frozenset[Cell], turn: int) -
 
 
 def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10**7,
-              widths: list[int] | None = None, fixed: Cell | None = None) -> list[Move]:
+              widths: list[int] | None = None, fixed: Cell | None = None,
+              deadline: Deadline = NO_DEADLINE) -> list[Move]:
     """Serial moves initial -> strip -> goal's strip -> goal (raises PlanningFailure).
 
     Tries each width of ``widths`` (default :func:`default_widths`) with the strip
@@ -246,7 +301,9 @@ def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10
             try:
                 moves = _via_strip_once(_rotated(initial, -turn),
                                         frozenset(rotate_cell(c, -turn) for c in goal),
-                                        width, max_moves)
+                                        width, max_moves, deadline)
+            except BudgetExhausted:
+                raise
             except PlanningFailure as exc:
                 failures.append(f"width {width}, direction {turn}: {exc}")
                 continue

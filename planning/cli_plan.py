@@ -2,6 +2,11 @@
 
 Exit status 0 when the plan reaches the goal; 1 (reason on stderr) when it
 does not, or when an input file is invalid.
+
+Plans have no size or id limit. Firmware commands address modules by their
+DIP-switch id (1..``MAX_MODULE_ID``): for a configuration with larger ids
+the moves are printed without commands (``"commands": null`` and a
+``"commands_omitted"`` reason in ``--json``), and ``--execute`` refuses.
 """
 
 from __future__ import annotations
@@ -14,14 +19,16 @@ from typing import Any
 from hexbot.errors import ScenarioError
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.workflows import Verify
-from hexbot.planning.commands import command_json, plan_to_commands
+from hexbot.planning.budget import DEFAULT_BUDGET
+from hexbot.planning.commands import MoveCommands, command_json, plan_to_commands
 from hexbot.planning.config_io import load_configuration
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import Cell
 from hexbot.planning.plan import Plan
 from hexbot.planning.robust import step_lower_bound
+from hexbot.protocol.wire import MAX_MODULE_ID
 
-MODES = ("faithful-serial", "faithful-parallel", "robust")
+MODES = ("faithful-serial", "faithful-parallel", "robust", "exact")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -35,9 +42,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="firmware commands: combined CW/CCW (67/68, default) or "
                              "single-role MCW..SCCW (21-24)")
     parser.add_argument("--serial", action="store_true",
-                        help="robust mode: one move per time step")
+                        help="robust and exact modes: one move per time step")
     parser.add_argument("--fixed", metavar="X,Y", type=_cell,
-                        help="robust mode: the module fixed to the base, which never moves")
+                        help="robust and exact modes: the module fixed to the base (never moves)")
+    parser.add_argument("--budget", type=_seconds, default=DEFAULT_BUDGET, metavar="SECONDS",
+                        help="robust and exact modes: give up (exit 1, with the reason) "
+                             f"after this many seconds (default {DEFAULT_BUDGET:g})")
     parser.add_argument("--max-steps", type=int, default=200,
                         help="faithful modes: give up after this many time steps (default 200)")
     hil = parser.add_argument_group(
@@ -63,6 +73,25 @@ def _cell(text: str) -> Cell:
     return (x, y)
 
 
+def _seconds(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(f"expected a number of seconds, got {text!r}") from exc
+    if not value > 0:
+        raise argparse.ArgumentTypeError(f"the budget must be positive, got {text!r}")
+    return value
+
+
+def unaddressable(plan: Plan) -> str:
+    """Why the plan's modules cannot be addressed by firmware commands ("" if they can)."""
+    high = [m.id for m in plan.initial.values() if not 1 <= m.id <= MAX_MODULE_ID]
+    if not high:
+        return ""
+    return (f"{len(high)} module id(s) outside 1..{MAX_MODULE_ID} (e.g. {max(high)}): "
+            "the link cannot address them, so no firmware commands are given")
+
+
 def make_plan(args: argparse.Namespace, initial: Configuration | None = None) -> Plan:
     if initial is None:
         initial = load_configuration(args.initial)
@@ -70,7 +99,13 @@ def make_plan(args: argparse.Namespace, initial: Configuration | None = None) ->
     if args.mode == "robust":
         from hexbot.planning.robust import plan_robust
 
-        return plan_robust(initial, goal, parallel=not args.serial, fixed=args.fixed)
+        return plan_robust(initial, goal, parallel=not args.serial, fixed=args.fixed,
+                           budget=args.budget)
+    if args.mode == "exact":
+        from hexbot.planning.exact import plan_exact
+
+        return plan_exact(initial, goal, fixed=args.fixed, budget=args.budget,
+                          parallel=not args.serial)
     from hexbot.planning.thesis.planner import FaithfulOptions, plan_faithful
 
     if args.max_steps < 1:
@@ -80,9 +115,12 @@ def make_plan(args: argparse.Namespace, initial: Configuration | None = None) ->
 
 
 def plan_json(plan: Plan, style: str = "combined") -> dict[str, Any]:
-    """The ``--json`` object."""
-    commands = plan_to_commands(plan, style)  # type: ignore[arg-type]
+    """The ``--json`` object (``commands`` null when the ids cannot be addressed)."""
+    omitted = unaddressable(plan)
+    commands = _move_commands(plan, style, omitted)
+    extra = {"commands_omitted": omitted} if omitted else {}
     return {
+        **extra,
         "mode": plan.mode,
         "method": plan.method,
         "reached": plan.reached,
@@ -96,7 +134,8 @@ def plan_json(plan: Plan, style: str = "combined") -> dict[str, Any]:
                         "joint": mc.move.joint,
                         "direction": mc.move.direction,
                         "substrate": list(mc.move.substrate),
-                        "commands": [command_json(c) for c in mc.commands],
+                        "commands": (None if omitted
+                                     else [command_json(c) for c in mc.commands]),
                     }
                     for mc in step
                 ]
@@ -104,6 +143,13 @@ def plan_json(plan: Plan, style: str = "combined") -> dict[str, Any]:
             for step in commands
         ],
     }
+
+
+def _move_commands(plan: Plan, style: str, omitted: str) -> list[list[MoveCommands]]:
+    """Per step, per move: its commands (none when the ids cannot be addressed)."""
+    if omitted:
+        return [[MoveCommands(m, ()) for m in step.moves] for step in plan.steps]
+    return plan_to_commands(plan, style)  # type: ignore[arg-type]
 
 
 def plan_text(plan: Plan, style: str = "combined") -> str:
@@ -115,7 +161,10 @@ def plan_text(plan: Plan, style: str = "combined") -> str:
            f"{step_lower_bound(plan.initial.cells, plan.goal)} time steps)"
            if plan.lower_bound is not None else "")
     ]
-    for t, step in enumerate(plan_to_commands(plan, style), start=1):  # type: ignore[arg-type]
+    omitted = unaddressable(plan)
+    if omitted:
+        lines.append(f"note: {omitted}")
+    for t, step in enumerate(_move_commands(plan, style, omitted), start=1):
         lines.append(f"step {t}:")
         for mc in step:
             m = mc.move
@@ -123,7 +172,8 @@ def plan_text(plan: Plan, style: str = "combined") -> str:
                 f"  module {m.module}: {m.src} -> {m.dst}  joint {m.joint} {m.direction}, "
                 f"substrate {m.substrate} (module {m.substrate_module})"
             )
-            lines.append("      " + " ".join(str(c) for c in mc.commands))
+            if mc.commands:
+                lines.append("      " + " ".join(str(c) for c in mc.commands))
     for warning in plan.warnings:
         lines.append(f"warning: {warning}")
     return "\n".join(lines)
@@ -154,6 +204,10 @@ def run_execute(args: argparse.Namespace) -> int:
     from hexbot.planning.execute import configuration_of, execute
 
     wanted = load_configuration(args.initial).cells
+    if len(wanted) > MAX_MODULE_ID:
+        raise ScenarioError(
+            f"{args.initial}: {len(wanted)} modules, but the link addresses module ids "
+            f"1..{MAX_MODULE_ID} only: plan it without --execute")
     with session(args) as sess:
         sim = sess.host.simulator
         reference = args.reference

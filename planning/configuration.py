@@ -148,7 +148,50 @@ def _cut_vertices(cells: Iterable[Cell], count: Callable[[set[Cell]], int]) -> s
 
 
 def articulation_points(cells: Iterable[Cell]) -> set[Cell]:
-    """Modules whose removal disconnects the others (Fig. 4-21)."""
+    """Modules whose removal disconnects the others (Fig. 4-21), in one depth-first
+    pass (Hopcroft-Tarjan low points, iterative: no recursion limit at 10,000 modules).
+
+    The planners call it once per moved module, so it must stay linear; the
+    tests check it against removing each module and counting pieces, and
+    against the thesis' Laplacian count.
+    """
+    cells = set(cells)
+    depth: dict[Cell, int] = {}
+    low: dict[Cell, int] = {}
+    cuts: set[Cell] = set()
+    for root in cells:
+        if root in depth:
+            continue
+        depth[root] = low[root] = 0
+        root_children = 0
+        stack = [(root, None, iter(neighbors(root)))]
+        while stack:
+            cell, parent, rest = stack[-1]
+            for n in rest:
+                if n not in cells or n == parent:
+                    continue
+                if n in depth:
+                    low[cell] = min(low[cell], depth[n])
+                    continue
+                depth[n] = low[n] = depth[cell] + 1
+                stack.append((n, cell, iter(neighbors(n))))
+                break
+            else:
+                stack.pop()
+                if parent is None:
+                    continue
+                low[parent] = min(low[parent], low[cell])
+                if parent == root:
+                    root_children += 1
+                elif low[cell] >= depth[parent]:
+                    cuts.add(parent)
+        if root_children > 1:
+            cuts.add(root)
+    return cuts
+
+
+def articulation_points_by_removal(cells: Iterable[Cell]) -> set[Cell]:
+    """The same, by definition: remove each module and count the pieces (quadratic)."""
     return _cut_vertices(cells, components)
 
 

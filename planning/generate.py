@@ -34,3 +34,53 @@ def parallelogram(width: int, height: int, origin: Cell = (0, 0)) -> frozenset[C
     """``width`` x ``height`` cells along the x and y axes."""
     ox, oy = origin
     return frozenset((ox + x, oy + y) for x in range(width) for y in range(height))
+
+
+def blob_pair(size: int, seed: int,
+              compact: float = 0.8) -> tuple[frozenset[Cell], frozenset[Cell]]:
+    """The benchmark's "blob" family: two independent random blobs of ``size`` cells,
+    both grown from (0, 0), the anchor they share (the fixed module with ``--fixed``)."""
+    return random_blob(size, 2 * seed, compact), random_blob(size, 2 * seed + 1, compact)
+
+
+def scramble(cells: frozenset[Cell], moves: int, seed: int,
+             fixed: Cell | None = (0, 0)) -> frozenset[Cell]:
+    """The benchmark's "scramble" family: the cells after ``moves`` random legal
+    rotations (Table 4-3, never the ``fixed`` module), so the result is reachable
+    from ``cells`` in at most ``moves`` moves. The movers are drawn among the
+    surface modules whose neighbours form one arc (never cut vertices; a check
+    needing no search keeps 10,000 modules fast)."""
+    from hexbot.planning.robust import _moves_from, _single_arc
+
+    rng = random.Random(seed)
+    occupied = set(cells)
+    surface: list[Cell] = []
+    where: dict[Cell, int] = {}
+
+    def update(cell: Cell) -> None:
+        on = cell in occupied and cell != fixed and any(n not in occupied for n in neighbors(cell))
+        if on and cell not in where:
+            where[cell] = len(surface)
+            surface.append(cell)
+        elif not on and cell in where:
+            last = surface.pop()
+            slot = where.pop(cell)
+            if last != cell:
+                surface[slot] = last
+                where[last] = slot
+
+    for cell in sorted(occupied):
+        update(cell)
+    done = 0
+    while done < moves:
+        cell = surface[rng.randrange(len(surface))]
+        options = [goal for _, _, goal in _moves_from(cell, occupied, cell)]
+        if not options or not _single_arc(occupied, cell):
+            continue
+        goal = options[rng.randrange(len(options))]
+        occupied.discard(cell)
+        occupied.add(goal)
+        for c in (cell, goal, *neighbors(cell), *neighbors(goal)):
+            update(c)
+        done += 1
+    return frozenset(occupied)

@@ -20,6 +20,7 @@ caller on to the canonical strip, which stays the complete fallback.
 
 from __future__ import annotations
 
+from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline
 from hexbot.planning.canonical import replay
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import SIDE_OFFSETS, Cell
@@ -88,25 +89,30 @@ def middles(initial: frozenset[Cell], goal: frozenset[Cell]) -> list[frozenset[C
 
 
 def via_middle(initial: Configuration, goal: frozenset[Cell], max_moves: int,
-               fixed: Cell | None = None, budget: int | None = None) -> list[Move]:
+               fixed: Cell | None = None, budget: int | None = None,
+               deadline: Deadline = NO_DEADLINE) -> list[Move]:
     """Serial moves initial -> middle -> goal (raises :class:`PlanningFailure`),
     trying each shape of :func:`middles` in turn."""
     failures = []
     for middle in middles(initial.cells, goal):
         try:
-            return _via(initial, goal, middle, max_moves, fixed, budget)
+            return _via(initial, goal, middle, max_moves, fixed, budget, deadline)
+        except BudgetExhausted:
+            raise
         except PlanningFailure as exc:
             failures.append(str(exc))
     raise PlanningFailure("no middle shape worked (" + "; ".join(failures[:2]) + ")")
 
 
 def _via(initial: Configuration, goal: frozenset[Cell], middle: frozenset[Cell],
-         max_moves: int, fixed: Cell | None, budget: int | None) -> list[Move]:
+         max_moves: int, fixed: Cell | None, budget: int | None,
+         deadline: Deadline = NO_DEADLINE) -> list[Move]:
     if fixed is not None and fixed not in middle:
         # the fixed module would have to move into the ball
         raise PlanningFailure(f"the middle ball does not hold the fixed module at {fixed}")
-    first = serial_moves(initial, middle, max_moves, fixed, budget, aside_limit=None)
+    first = serial_moves(initial, middle, max_moves, fixed, budget, aside_limit=None,
+                         deadline=deadline, method="middle ball")
     at_middle = replay(initial, first)
     last = reversed_plan(at_middle, goal, max_moves - len(first), fixed, budget,
-                         aside_limit=None)
+                         aside_limit=None, deadline=deadline, method="middle ball")
     return first + last

@@ -37,6 +37,7 @@ from collections import Counter, deque
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
+from hexbot.planning.budget import DEFAULT_BUDGET, NO_DEADLINE, Deadline, PlanningFailure
 from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.hexlattice import ROTATIONS, Cell, distance, neighbors
 from hexbot.planning.moves import Move
@@ -48,10 +49,6 @@ _RULES = [(rule, *rule.at((0, 0))) for rule in ROTATIONS]
 
 #: How many times one goal cell may be emptied to make room (bounds the search).
 ASIDE_LIMIT = 3
-
-
-class PlanningFailure(Exception):
-    """The robust planner cannot continue; the message says why."""
 
 
 def _single_arc(occupied: set[Cell], cell: Cell) -> bool:
@@ -104,6 +101,9 @@ class _State:
     goal: frozenset[Cell]
     #: fruitless searches left before giving up (None: unlimited)
     budget: int | None = None
+    deadline: Deadline = NO_DEADLINE
+    #: the method's name, for the reason when its deadline passes
+    method: str = "direct"
 
     def electrons(self) -> list[Cell]:
         return sorted(self.occupied - self.goal)
@@ -172,6 +172,7 @@ def unwind(parent: dict, node: Cell) -> list:
 
 def _journey(state: _State, electron: Cell, accept: Callable[[Cell], bool]) -> list | None:
     """Shortest rotation path of ``electron`` to an empty cell ``accept`` takes."""
+    state.deadline.check(state.method)
     parent: dict[Cell, tuple[Cell, object, Cell] | None] = {electron: None}
     queue = deque([electron])
     while queue:
@@ -255,6 +256,8 @@ def serial_moves(
     fixed: Cell | None = None,
     budget: int | None = None,
     aside_limit: int | None = -1,
+    deadline: Deadline = NO_DEADLINE,
+    method: str = "direct",
 ) -> list[Move]:
     """The serial core; raises :class:`PlanningFailure` when stuck, or after
     ``budget`` journey searches that found nothing, or when more than
@@ -265,7 +268,8 @@ def serial_moves(
     (:func:`must_move`, or promoted when the electrons alone are stuck);
     each journey ends in a void, so the loop ends.
     """
-    state = _State(set(initial.cells), {c: m.id for c, m in initial.items()}, goal, budget)
+    state = _State(set(initial.cells), {c: m.id for c, m in initial.items()}, goal, budget,
+                   deadline, method)
     aside = must_move(goal, state.voids(), fixed, budget if aside_limit == -1 else aside_limit)
     if aside is None:
         raise PlanningFailure("some goal cell can never be entered, even with modules stepping "
@@ -529,12 +533,18 @@ def direct_budget(count: int) -> int:
     return 10 + min(count // 10, 20)
 
 
+#: Share of the remaining time budget each method may use before the next one is
+#: tried (the last method gets whatever is left).
+SHARES = {"direct": 0.5, "direct, backwards": 0.3, "middle ball": 0.3}
+
+
 def plan_robust(
     initial: Configuration,
     goal: frozenset[Cell],
     parallel: bool = True,
     max_moves: int = 10_000_000,
     fixed: Cell | None = None,
+    budget: float | None = DEFAULT_BUDGET,
 ) -> Plan:
     """Plan a connected, collision-free reconfiguration (see the module docstring).
 
@@ -542,44 +552,49 @@ def plan_robust(
     backwards (both with a search budget), through a compact middle ball
     (:mod:`hexbot.planning.middle`, up to ``MIDDLE_LIMIT`` modules), then
     through a canonical strip (:mod:`hexbot.planning.canonical`). ``plan.method``
-    says which one planned.
+    says which one planned. ``budget`` is the time budget in seconds (None:
+    none); each method gets its ``SHARES`` of what is left and gives up with a
+    reason when it is used up.
     """
     from hexbot.planning.canonical import replay, via_strip
     from hexbot.planning.middle import via_middle
 
     goal = frozenset(goal)
+    deadline = Deadline(budget)
     plan = Plan(mode="robust", initial=initial, goal=goal)
     plan.lower_bound = distance_lower_bound(initial.cells, goal)
     reason = check_inputs(initial, goal, fixed)
     if reason:
         plan.reason = reason
         return plan
-    budget = direct_budget(len(initial))
+    searches = direct_budget(len(initial))
+    n = len(initial)
+    methods: list[tuple[str, Callable[[Deadline], list[Move]]]] = [
+        ("direct", lambda d: serial_moves(initial, goal, max_moves, fixed, searches,
+                                          deadline=d)),
+    ]
+    if n <= BACKWARD_LIMIT or fixed is not None:
+        methods.append(("direct, backwards", lambda d: reversed_plan(
+            initial, goal, max_moves, fixed, searches, deadline=d)))
+    if n <= MIDDLE_LIMIT:
+        methods.append(("middle ball", lambda d: via_middle(
+            initial, goal, max_moves, fixed, searches, deadline=d)))
+    methods.append(("canonical strip", lambda d: via_strip(
+        initial, goal, max_moves, fixed=fixed, deadline=d)))
     failures: list[str] = []
     serial: list[Move] | None = None
-    try:
-        serial = serial_moves(initial, goal, max_moves, fixed, budget)
-        plan.method = "direct"
-    except PlanningFailure as exc:
-        failures.append(f"direct: {exc}")
-    if serial is None and (len(initial) <= BACKWARD_LIMIT or fixed is not None):
+    for name, method in methods:
+        if deadline.expired():
+            failures.append(f"{name}: not tried, the time budget of {budget:.3g} s is used up")
+            continue
+        share = deadline.share(SHARES.get(name, 1.0))
         try:
-            serial = reversed_plan(initial, goal, max_moves, fixed, budget)
-            plan.method = "direct, backwards"
+            serial = method(share)
         except PlanningFailure as exc:
-            failures.append(f"backwards: {exc}")
-    if serial is None and len(initial) <= MIDDLE_LIMIT:
-        try:
-            serial = via_middle(initial, goal, max_moves, fixed, budget)
-            plan.method = "middle ball"
-        except PlanningFailure as exc:
-            failures.append(f"middle: {exc}")
-    if serial is None:
-        try:
-            serial = via_strip(initial, goal, max_moves, fixed=fixed)
-            plan.method = "canonical strip"
-        except PlanningFailure as exc:
-            failures.append(f"canonical strip: {exc}")
+            failures.append(f"{name}: {exc}" if not str(exc).startswith(name) else str(exc))
+            continue
+        plan.method = name
+        break
     if serial is None:
         plan.reason = "no plan found: " + "; ".join(failures)
         return plan
@@ -611,12 +626,15 @@ def reversed_plan(
     fixed: Cell | None,
     budget: int | None = None,
     aside_limit: int | None = -1,
+    deadline: Deadline = NO_DEADLINE,
+    method: str = "direct, backwards",
 ) -> list[Move]:
     """Serial moves from ``initial`` to ``goal`` found by planning from the goal back."""
     from hexbot.planning.canonical import replay
 
     start = Configuration.from_cells(goal, first_id=1000)  # provisional ids
-    backward = serial_moves(start, initial.cells, max_moves, fixed, budget, aside_limit)
+    backward = serial_moves(start, initial.cells, max_moves, fixed, budget, aside_limit,
+                            deadline, method)
     config = replay(start, backward)
     real = {config[c].id: initial[c].id for c in config}
     return [

@@ -96,3 +96,48 @@ def test_toml_cells_and_modules():
         parse_toml("cells = [[0, 0], [0, 0]]", "c.toml")
     with pytest.raises(ScenarioError, match="c.toml"):
         parse_toml("cells = [[0, 0]", "c.toml")
+
+
+def _toml(path, cells):
+    path.write_text("cells = [" + ", ".join(f"[{x}, {y}]" for x, y in sorted(cells)) + "]\n")
+    return path
+
+
+def test_json_plans_any_size_and_ids_without_commands_past_the_link(capsys, tmp_path):
+    from hexbot.planning.generate import blob_pair, scramble
+
+    initial, _ = blob_pair(100, 0)
+    goal = scramble(initial, 30, 0)
+    a, b = _toml(tmp_path / "a.toml", initial), _toml(tmp_path / "b.toml", goal)
+    code, out, err = run_plan(capsys, a, b, "--json")
+    data = json.loads(out)
+    assert code == 0 and data["reached"] is True and err == ""
+    assert "1..63" in data["commands_omitted"]
+    moves = [m for step in data["steps"] for m in step["moves"]]
+    assert moves and all(m["commands"] is None for m in moves)
+    assert max(m["module"] for m in moves) <= 100
+
+
+def test_execute_refuses_more_modules_than_the_link_addresses(capsys, tmp_path):
+    from hexbot.planning.generate import random_blob
+
+    cells = random_blob(70, 0)
+    a = _toml(tmp_path / "a.toml", cells)
+    code, _, err = run_plan(capsys, a, a, "--execute")
+    assert code == 1 and "1..63" in err and len(err.strip().splitlines()) == 1
+
+
+def test_budget_used_up_exits_non_zero_with_the_reason(capsys, examples_dir):
+    code, out, err = run_plan(capsys, examples_dir / "test_all_s02_initial.txt",
+                              examples_dir / "test_all_s02_goal.txt", "--json",
+                              "--budget", "0.000001")
+    assert code == 1 and json.loads(out)["reached"] is False
+    assert "time budget" in err and len(err.strip().splitlines()) == 1
+
+
+def test_exact_mode_from_the_cli(capsys, examples_dir):
+    code, out, _ = run_plan(capsys, examples_dir / "test_all_s02_initial.txt",
+                            examples_dir / "test_all_s02_goal.txt", "--mode", "exact",
+                            "--json", "--serial")
+    data = json.loads(out)
+    assert code == 0 and data["mode"] == "exact" and len(data["steps"]) == 17

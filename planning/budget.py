@@ -1,0 +1,55 @@
+"""Time budgets of the planners: every method gives up in time, and says why.
+
+Restricted pivoting makes reachability PSPACE-complete in general, so a
+search may run for ever on a hard pair. Each method checks a
+:class:`Deadline` between journeys and raises :class:`PlanningFailure`
+with the method's name and the budget when it is used up; the caller then
+tries the next method or reports the reason (``hexbot plan`` exits 1).
+"""
+
+from __future__ import annotations
+
+import time
+
+#: Default time budget of one ``hexbot plan`` call, in seconds (10,000 modules fit in it).
+DEFAULT_BUDGET = 300.0
+
+
+class PlanningFailure(Exception):
+    """A planner cannot continue; the message says why."""
+
+
+class BudgetExhausted(PlanningFailure):
+    """A method used up its time budget (loops over alternatives stop at once)."""
+
+
+class Deadline:
+    """A point in time after which a method must give up."""
+
+    def __init__(self, seconds: float | None = DEFAULT_BUDGET) -> None:
+        self.seconds = seconds
+        self._end = None if seconds is None else time.monotonic() + seconds
+
+    def remaining(self) -> float:
+        return float("inf") if self._end is None else self._end - time.monotonic()
+
+    def expired(self) -> bool:
+        return self.remaining() <= 0
+
+    def share(self, fraction: float, at_least: float = 0.0) -> Deadline:
+        """A deadline for one method: ``fraction`` of what is left (at least
+        ``at_least`` seconds, never past this deadline)."""
+        left = self.remaining()
+        if left == float("inf"):
+            return Deadline(None)
+        return Deadline(max(0.0, min(left, max(at_least, fraction * left))))
+
+    def check(self, what: str) -> None:
+        """Raise :class:`PlanningFailure` when the budget is used up."""
+        if self.expired():
+            raise BudgetExhausted(f"{what}: gave up, its time budget of "
+                                  f"{self.seconds:.3g} s is used up")
+
+
+#: A deadline that never expires (library calls without a budget).
+NO_DEADLINE = Deadline(None)

@@ -1,0 +1,121 @@
+"""An independent checker of plans, for tests and the benchmark.
+
+It shares nothing with the planners but the data: the rotation geometry is
+read from :mod:`hexbot.protocol.rotation_geometry` (Table 4-3) through
+``Rotation.at``, connectivity is counted by
+:func:`scipy.sparse.csgraph.connected_components`, and the configuration is
+replayed here as a plain dict. For every time step it checks:
+
+* each move's module stands at its start cell, and the row of Table 4-3 it
+  names (joint, direction) takes that cell to its end cell over its substrate;
+* the substrate is held by a module that does not move in this step, the
+  end cell and the three swept cells are free of modules that stay put, and
+  no two moves of the step need the same cell;
+* the modules that stay put are connected (so every configuration during the
+  step is: each mover touches its substrate all along), the fixed module
+  (bolted to the base) never moves;
+
+and at the end that the goal cells are filled.
+
+Speed: a step of one move removes one module; if its occupied neighbours
+form one contiguous arc the rest stays connected (any path through it can go
+round the arc), so the component count runs only for the other steps.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+
+from hexbot.planning.configuration import Configuration
+from hexbot.planning.plan import Step
+from hexbot.protocol.lattice import SIDES, Cell, neighbor
+from hexbot.protocol.rotation_geometry import Rotation
+
+
+@dataclass(frozen=True)
+class CheckReport:
+    ok: bool
+    problem: str = ""
+    steps: int = 0
+    moves: int = 0
+
+
+def pieces(cells: set[Cell]) -> int:
+    """Connected pieces of ``cells`` (contact graph), by scipy."""
+    if not cells:
+        return 0
+    index = {c: i for i, c in enumerate(cells)}
+    rows, cols = [], []
+    for c, i in index.items():
+        for side in (1, 2, 3):  # each contact once
+            j = index.get(neighbor(c, side))
+            if j is not None:
+                rows.append(i)
+                cols.append(j)
+    graph = coo_matrix((np.ones(len(rows), dtype=np.int8), (rows, cols)),
+                       shape=(len(index), len(index)))
+    return connected_components(graph, directed=False)[0]
+
+
+def _one_arc(cells: set[Cell] | dict, cell: Cell) -> bool:
+    """Do the occupied neighbours of ``cell`` form a single contiguous arc (or ring)?"""
+    around = [neighbor(cell, s) in cells for s in SIDES]
+    starts = sum(1 for k in range(6) if around[k] and not around[k - 1])
+    return starts <= 1
+
+
+def check_plan(initial: Configuration, goal: frozenset[Cell], steps: list[Step],
+               fixed: Cell | None = None) -> CheckReport:
+    """Replay ``steps`` from ``initial`` and report the first illegal thing."""
+    where: dict[Cell, int] = {c: m.id for c, m in initial.items()}
+    bolted = where.get(fixed) if fixed is not None else None
+    moves = 0
+    for t, step in enumerate(steps, start=1):
+        problem = _check_step(where, step, bolted)
+        if problem:
+            return CheckReport(False, f"step {t}: {problem}", t - 1, moves)
+        for m in step.moves:
+            del where[m.src]
+        for m in step.moves:
+            where[m.dst] = m.module
+        moves += len(step.moves)
+    if set(where) != set(goal):
+        missing = sorted(set(goal) - set(where))
+        return CheckReport(False, f"the plan ends {len(missing)} cell(s) short of the goal "
+                                  f"(e.g. {missing[:1]})", len(steps), moves)
+    return CheckReport(True, "", len(steps), moves)
+
+
+def _check_step(where: dict[Cell, int], step: Step, bolted: int | None) -> str:
+    starts = {m.src for m in step.moves}
+    used: dict[Cell, int] = {}
+    for m in step.moves:
+        if where.get(m.src) != m.module:
+            return f"module {m.module} is not at {m.src}"
+        if m.module == bolted:
+            return f"module {m.module} is fixed to the base and may not move"
+        substrate, end, swept = Rotation(m.joint, m.direction).at(m.src)
+        if end != m.dst or substrate != m.substrate:
+            return (f"module {m.module}: {m.direction} about joint {m.joint} from {m.src} "
+                    f"ends in {end} over {substrate}, not {m.dst} over {m.substrate}")
+        if substrate not in where or substrate in starts:
+            return f"module {m.module}: its substrate {substrate} is empty or moving"
+        if where[substrate] != m.substrate_module:
+            return f"module {m.module}: the substrate at {substrate} is not module " \
+                   f"{m.substrate_module}"
+        for cell in (end, *swept):
+            if cell in where and cell not in starts:
+                return f"module {m.module}: cell {cell} is occupied by a module that stays"
+        for cell in (m.src, end, *swept):
+            if used.setdefault(cell, m.module) != m.module:
+                return f"modules {used[cell]} and {m.module} both need cell {cell}"
+    if len(step.moves) == 1 and _one_arc(where, step.moves[0].src):
+        return ""
+    staying = set(where) - starts
+    if pieces(staying) > 1:
+        return "the modules that stay put fall apart during the step"
+    return ""
