@@ -4,8 +4,8 @@ Exit status 0 when the plan reaches the goal; 1 (reason on stderr) when it
 does not, or when an input file is invalid.
 
 Plans have no size or id limit. Firmware commands address modules by their
-DIP-switch id (1..``MAX_MODULE_ID``): for a configuration with larger ids
-the moves are printed without commands (``"commands": null`` and a
+DIP-switch id through the legacy Select frame (1..``MAX_SELECT_ID``): for a
+configuration with larger ids the moves are printed without commands (``"commands": null`` and a
 ``"commands_omitted"`` reason in ``--json``), and ``--execute`` refuses.
 """
 
@@ -26,7 +26,7 @@ from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import Cell
 from hexbot.planning.plan import Plan
 from hexbot.planning.robust import step_lower_bound
-from hexbot.protocol.wire import MAX_MODULE_ID
+from hexbot.protocol.wire import MAX_SELECT_ID
 
 MODES = ("faithful-serial", "faithful-parallel", "robust", "exact")
 
@@ -85,10 +85,10 @@ def _seconds(text: str) -> float:
 
 def unaddressable(plan: Plan) -> str:
     """Why the plan's modules cannot be addressed by firmware commands ("" if they can)."""
-    high = [m.id for m in plan.initial.values() if not 1 <= m.id <= MAX_MODULE_ID]
+    high = [m.id for m in plan.initial.values() if not 1 <= m.id <= MAX_SELECT_ID]
     if not high:
         return ""
-    return (f"{len(high)} module id(s) outside 1..{MAX_MODULE_ID} (e.g. {max(high)}): "
+    return (f"{len(high)} module id(s) outside 1..{MAX_SELECT_ID} (e.g. {max(high)}): "
             "the link cannot address them, so no firmware commands are given")
 
 
@@ -204,10 +204,10 @@ def run_execute(args: argparse.Namespace) -> int:
     from hexbot.planning.execute import configuration_of, execute
 
     wanted = load_configuration(args.initial).cells
-    if len(wanted) > MAX_MODULE_ID:
+    if len(wanted) > MAX_SELECT_ID:
         raise ScenarioError(
             f"{args.initial}: {len(wanted)} modules, but the link addresses module ids "
-            f"1..{MAX_MODULE_ID} only: plan it without --execute")
+            f"1..{MAX_SELECT_ID} only: plan it without --execute")
     with session(args) as sess:
         sim = sess.host.simulator
         reference = args.reference
