@@ -24,7 +24,7 @@ from hexbot.errors import FrameError
 from hexbot.host.cli_args import seconds, seconds_or_zero
 from hexbot.host.cli_common import session
 from hexbot.host.cli_progress import session_waits
-from hexbot.host.commands import parse_command
+from hexbot.host.commands import parse_command, parse_raw
 from hexbot.host.describe import describe_event, describe_tx, event_json
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.events import Observed
@@ -39,8 +39,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="function code or name (hexbot codes)")
     parser.add_argument("args", nargs="*", metavar="ARG", help="argument bytes")
     parser.add_argument("--raw", metavar="HEX",
-                        help="send these bytes as they are instead of CODE (e.g. "
-                             "2A464E4E4E4E4E4E4E4E23); any ACK/ERR/STA answers them")
+                        help="send these bytes as they are instead of CODE: hex (e.g. "
+                             "2A464E4E4E4E4E4E4E4E23) or quoted text ('\"*FNNNNNNNN#\"'); "
+                             "any ACK/ERR/STA answers them")
     parser.add_argument("--dry-run", action="store_true",
                         help="print the frames' bytes and send nothing")
     parser.add_argument("--module", type=int, action="append", metavar="ID",
@@ -97,12 +98,7 @@ def _steps(args: argparse.Namespace) -> list[Command | bytes]:
     if args.raw is not None:
         if args.args:
             raise FrameError("--raw takes no ARG words")
-        try:
-            last: Command | bytes = bytes.fromhex(args.raw.replace(":", " "))
-        except ValueError:
-            raise FrameError(f"--raw: not hex bytes: {args.raw!r}") from None
-        if not last:
-            raise FrameError("--raw: no bytes")
+        last: Command | bytes = parse_raw(args.raw, "--raw")
     else:
         last = parse_command([args.function, *args.args], strict=not args.unchecked)
     return ([select(*args.module)] if args.module else []) + [last]

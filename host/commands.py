@@ -9,6 +9,8 @@ session's job (:mod:`hexbot.host.session`), rotations are a workflow
 
 from __future__ import annotations
 
+import ast
+
 from hexbot.errors import FrameError
 from hexbot.protocol import frames
 from hexbot.protocol.codes import lookup
@@ -35,3 +37,23 @@ def parse_command(words: list[str], *, strict: bool = True) -> Command:
             raise FrameError(f"{words[0]}: argument {w!r} is not a number") from None
     code = fn.code if fn is not None else int(words[0])
     return frames.make(code, *args, strict=strict)
+
+
+def parse_raw(text: str, what: str = "raw") -> bytes:
+    """Bytes to send as they are: hex (``2A 46 4E...``, ``2a:46``, ``2A46``)
+    or, in quotes, text with escapes (``"*FNNNNNNNN#"``, ``'\\x2a...'``).
+    Shared by ``hexbot send --raw`` and the console's composer."""
+    text = text.strip()
+    if len(text) >= 2 and text[0] == text[-1] and text[0] in "'\"":
+        try:
+            data = ast.literal_eval("b" + text)
+        except (SyntaxError, ValueError):
+            raise FrameError(f"{what}: not a text of bytes: {text}") from None
+    else:
+        try:
+            data = bytes.fromhex(text.replace(":", " "))
+        except ValueError:
+            raise FrameError(f"{what}: not hex bytes (or \"text\" in quotes): {text!r}") from None
+    if not data:
+        raise FrameError(f"{what}: no bytes")
+    return data

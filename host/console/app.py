@@ -397,12 +397,12 @@ class HexBotConsole(App[None]):
     def _composer_send(self, msg: Composer.Send) -> None:
         self.send_command(msg.command)
 
-    def send_command(self, command: Command) -> None:
+    def send_command(self, command: Command | bytes) -> None:
         self.main_query(Composer).remember(command)
         self._send_worker(command)
 
     @work(thread=True, group="send")
-    def _send_worker(self, command: Command) -> None:
+    def _send_worker(self, command: Command | bytes) -> None:
         # Writing at 300 baud takes ~0.4 s per frame: never on the UI thread.
         try:
             if self.session is None:

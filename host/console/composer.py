@@ -11,6 +11,8 @@ from textual.message import Message
 from textual.widgets import Button, DataTable, Input, Label, Static
 
 from hexbot.errors import FrameError
+from hexbot.host.commands import parse_raw
+from hexbot.host.describe import describe_tx
 from hexbot.protocol import frames
 from hexbot.protocol.codes import CODES, FunctionCode, executable_codes
 from hexbot.protocol.frames import Command
@@ -37,9 +39,9 @@ def function_rows(query: str) -> list[FunctionCode]:
 
 class Composer(Vertical):
     class Send(Message):
-        """The user asked to send this command."""
+        """The user asked to send this command (or these raw bytes)."""
 
-        def __init__(self, command: Command) -> None:
+        def __init__(self, command: Command | bytes) -> None:
             super().__init__()
             self.command = command
 
@@ -47,7 +49,7 @@ class Composer(Vertical):
         super().__init__(id=id)
         self.function: FunctionCode | None = None
         self.command: Command | None = None
-        self.history: list[Command] = []
+        self.history: list[Command | bytes] = []
 
     def compose(self) -> ComposeResult:
         with Vertical(id="fn-pick"):
@@ -60,6 +62,8 @@ class Composer(Vertical):
                 yield Button("Send", id="fn-send", variant="primary", disabled=True)
                 yield Static("", id="fn-preview")
             yield Vertical(id="fn-args")
+            yield Input(placeholder='raw bytes: hex 2A 46 4E.. or "*FNNNNNNNN#" (enter sends)',
+                        id="raw-input")
             yield Label("history (enter re-sends)", classes="section")
             yield DataTable(id="fn-history", cursor_type="row")
 
@@ -185,14 +189,30 @@ class Composer(Vertical):
         self.post_message(self.Send(self.command))
         return True
 
-    def remember(self, command: Command) -> None:
+    @on(Input.Submitted, "#raw-input")
+    def _send_raw(self, event: Input.Submitted) -> None:
+        """Raw bytes as ``hexbot send --raw`` reads them; a bad entry stays
+        in the input with the reason."""
+        event.stop()
+        try:
+            data = parse_raw(event.value, "raw bytes")
+        except FrameError as exc:
+            self.app.notify(str(exc), title="Not sent", severity="error")
+            return
+        event.input.value = ""
+        self.post_message(self.Send(data))
+
+    def remember(self, command: Command | bytes) -> None:
         """Add a sent command to the history (newest first)."""
         self.history.insert(0, command)
         table = self.query_one("#fn-history", DataTable)
         table.clear()
         for n, cmd in enumerate(self.history[:50]):
-            table.add_row(str(len(self.history) - n), str(cmd),
-                          frames.encode_pc(cmd, strict=False).hex(" "), key=str(n))
+            if isinstance(cmd, bytes):
+                shown, data = f"raw: {describe_tx(cmd)}", cmd
+            else:
+                shown, data = str(cmd), frames.encode_pc(cmd, strict=False)
+            table.add_row(str(len(self.history) - n), shown, data.hex(" "), key=str(n))
 
     @on(DataTable.RowSelected, "#fn-history")
     def _resend(self, event: DataTable.RowSelected) -> None:

@@ -175,3 +175,17 @@ def test_a_port_held_by_another_program_is_busy_and_names_it(responder, log_dir,
     assert rc == 4, err
     assert f"port busy, held by PID {holder.pid} (" in err and "exclusive=True" in err
     assert responder.received == []
+
+
+def test_parse_raw_reads_hex_and_quoted_text():
+    import pytest
+
+    from hexbot.errors import FrameError
+    from hexbot.host.commands import parse_raw
+
+    assert parse_raw("2A:46 4e") == b"*FN"
+    assert parse_raw('"*F\\x4e#"') == b"*FN#"
+    assert parse_raw("'ab'") == b"ab"
+    for bad in ("2A 4", '""', "", '"\\x4"'):
+        with pytest.raises(FrameError):
+            parse_raw(bad)

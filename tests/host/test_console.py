@@ -464,3 +464,31 @@ async def test_replay_pauses_changes_speed_and_skips_ahead():
         await pilot.press("p")  # resume: the rest (to 18.7 s) is played, then done
         assert await until(pilot, lambda: not app.busy, timeout=10)
         assert f"{len(records)} records" in app.last_result
+
+
+@sync
+async def test_composer_sends_raw_hex_and_text_bytes(responder):
+    """Issue 13: raw send from the composer, parsed as `send --raw` parses."""
+    from textual.widgets import Input
+
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        assert await until(pilot, lambda: app.port_states.get(IR, (None,))[0]
+                           is LinkState.CONNECTED)
+        await pilot.press("2")
+        raw = app.query_one("#raw-input", Input)
+        raw.focus()
+        await pilot.press(*"2A 45 04 4E 4E 4E 4E 4E 4E 4E 23", "enter")
+        assert await until(pilot, lambda: "M04 ACK 69 Select" in ir_text(app))
+        assert responder.received == [b"*E\x04NNNNNNN#"] and raw.value == ""
+        raw.value = '"*E\\x04NNNNNNN#"'  # text with an escape, in quotes
+        await pilot.press("enter")
+        assert await until(pilot, lambda: len(responder.received) == 2)
+        assert responder.received[1] == b"*E\x04NNNNNNN#"
+        composer = app.query_one(Composer)
+        assert composer.history[0] == b"*E\x04NNNNNNN#"
+        assert "raw: Select(4)" in str(app.query_one("#fn-history").get_row_at(0)[1])
+        raw.value = "2A 4"  # odd hex: refused, kept for correction, nothing sent
+        await pilot.press("enter")
+        await pilot.pause(0.3)
+        assert raw.value == "2A 4" and len(responder.received) == 2

@@ -62,9 +62,9 @@ def test_dry_run_prints_frames_and_opens_nothing():
                                         "Ref(): 2a 41 4e 4e 4e 4e 4e 4e 4e 4e 23"]
 
 
-def test_raw_bytes_are_sent_as_they_are(pair):
-    proc = hexbot("send", "--module", "2", "--raw", "2a 46 4e 4e 4e 4e 4e 4e 4e 4e 23",
-                  "--port", pair.ports.ir)
+@pytest.mark.parametrize("raw", ["2a 46 4e 4e 4e 4e 4e 4e 4e 4e 23", '"*FNNNNNNNN#"'])
+def test_raw_bytes_are_sent_as_they_are(pair, raw):
+    proc = hexbot("send", "--module", "2", "--raw", raw, "--port", pair.ports.ir)
     assert proc.returncode == 0, proc.stderr
     assert "STA id 2" in proc.stdout
 
