@@ -38,8 +38,9 @@ def describe_holder(pid: int) -> str:
         raw = Path(f"/proc/{pid}/cmdline").read_bytes()
     except OSError:
         return f"PID {pid}"
-    words = [w.decode(errors="replace") for w in raw.split(b"\0") if w]
-    return f"PID {pid} ({' '.join(words)[:120]})" if words else f"PID {pid}"
+    # one line: arguments may hold newlines (python -c '...')
+    words = " ".join(raw.decode(errors="replace").replace("\0", " ").split())
+    return f"PID {pid} ({words[:120]})" if words else f"PID {pid}"
 
 
 def busy_reason(device: str) -> str:

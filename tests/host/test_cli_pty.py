@@ -173,7 +173,9 @@ def test_a_port_held_by_another_program_is_busy_and_names_it(responder, log_dir,
         holder.wait()
     err = capsys.readouterr().err
     assert rc == 4, err
-    assert f"port busy, held by PID {holder.pid} (" in err and "exclusive=True" in err
+    assert f"port busy, held by PID {holder.pid} (" in err and "-c import serial" in err
+    reason = next(line for line in err.splitlines() if "port busy" in line)
+    assert reason.endswith(")")  # the holder's command line, on the same line
     assert responder.received == []
 
 
