@@ -2,7 +2,8 @@
 #
 #   make run    set up, then open the console on the embedded simulated cluster
 #   make test   set up, then lint, check firmware budgets and run the test suite
-#               (pytest-xdist: one test process per core; tests share no ports or files)
+#               (one process; `make test PYTEST_ARGS="-n auto"` runs it on every core
+#               with pytest-xdist: tests share no ports or files)
 #
 # Sub-steps: deps (Debian packages), venv (.venv + pip install -e .[dev]; dev
 # brings the test tools and the plot extra, so the drawing tests run),
@@ -19,6 +20,7 @@ STAMPS := .stamps
 # extension.
 APT_PACKAGES := gcc-avr avr-libc binutils-avr simavr libsimavr-dev libelf-dev \
 	avrdude pkg-config gcc make python3-venv python3-dev
+PYTEST_ARGS ?=
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 
 .PHONY: setup deps venv firmware run test lint clean
@@ -56,7 +58,7 @@ lint: venv
 
 test: setup lint
 	@if [ -f firmware/Makefile ]; then $(MAKE) --no-print-directory -C firmware check-size; fi
-	$(BIN)/python -m pytest
+	$(BIN)/python -m pytest $(PYTEST_ARGS)
 
 clean:
 	rm -rf $(STAMPS) build *.egg-info
