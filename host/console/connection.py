@@ -81,4 +81,6 @@ class PortPanel(Vertical):
         text = f"[{style}]\u25cf {state.value}[/] {detail}"
         if counters:
             text += f"  [dim]{counters}[/]"
-        self.query_one(f"#{self.port}-state", Label).update(text)
+        # A port may change state while the app tears the panel down.
+        for label in self.query(f"#{self.port}-state").results(Label):
+            label.update(text)
