@@ -5,7 +5,6 @@ workflow of plan --execute, each move verified by the plant."""
 from __future__ import annotations
 
 import json
-from pathlib import Path
 
 import pytest
 
@@ -15,11 +14,6 @@ from hexbot.planning.traversal.bridges import find_bridge_cells
 from hexbot.planning.traversal.cli import resolve_map
 from hexbot.planning.traversal.engine import traverse
 from hexbot.planning.traversal.execute import cluster_of, rounds_plan
-
-pytest.importorskip("hexbot.hil_sim._avr")
-FIRMWARE = Path(__file__).resolve().parents[2] / "firmware" / "build"
-needs_firmware = pytest.mark.skipif(not (FIRMWARE / "comm.elf").exists(),
-                                    reason="firmware not built (make -C firmware)")
 
 
 def test_the_rounds_become_a_plan_over_surface_and_movers():
@@ -39,7 +33,6 @@ def test_a_map_too_big_for_legacy_select_is_refused():
         cluster_of(resolve_map("flat"))
 
 
-@needs_firmware
 @pytest.mark.parametrize(("name", "modules", "fills"),
                          [("hil-flat", 10, 0),  # 2 movers on 8 surface modules
                           ("hil-basic-2", 29, 2),  # the paper's 2-cell BASIC bridge
@@ -57,7 +50,6 @@ def test_maps_are_crossed_on_the_simulator(capsys, name, modules, fills):
     assert all(m["ok"] and m["verified_by"] == "plant" for m in run["moves"])
 
 
-@needs_firmware
 def test_a_refused_move_stops_with_one_line(tmp_path, capsys):
     # the same cluster, but mover 1 fixed to the base: the plant refuses its first move
     from hexbot.planning.traversal.execute import scenario_toml
