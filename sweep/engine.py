@@ -21,6 +21,7 @@ from __future__ import annotations
 import logging
 import os
 import time
+import uuid
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
@@ -116,12 +117,16 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
     outcome = SweepOutcome(len(tasks), skipped, 0, 0, 0, False, 0.0)
     in_flight: dict[str, tuple[Task, Any]] = {}
     finished = as_completed()
+    # Keys unique to this run: the scheduler forgets a cancelled key
+    # asynchronously, so a --resume that reused the key of a task cancelled a
+    # moment before could get that cancellation and lose the task.
+    run_token = uuid.uuid4().hex[:8]
 
     def submit_next() -> None:
         task = next(todo, None)
         if task is not None:
             fut = client.submit(execute, spec.kind.target, task.call,
-                                key=f"hexbot-sweep-{spec.kind.name}-{task.id}")
+                                key=f"hexbot-sweep-{spec.kind.name}-{task.id}-{run_token}")
             in_flight[fut.key] = (task, fut)
             finished.add(fut)
 
