@@ -17,7 +17,10 @@ from hexbot.protocol.pins import (  # noqa: F401 - the simulator's view of the b
     COMM_PORTS,
     CONTROL_PORTS,
     JOINT_PINS,
+    LED_JOINT_PINS,
     LED_PINS,
+    LED_SIDE_NEG_PINS,
+    LED_SIDE_POS_PINS,
     MAGNET_NEG_PINS,
     MAGNET_POS_PINS,
     SELECTOR_PINS,
@@ -40,6 +43,16 @@ def decode_actuators(ports: dict[str, int]) -> tuple[Joints, Magnets]:
         pos, neg = _bit(ports, pos_pin), _bit(ports, neg_pin)
         magnets.append(SHORT if pos and neg else POS if pos else NEG if neg else OFF)
     return joints, tuple(magnets)  # type: ignore[return-value]
+
+
+def decode_leds(ddr: dict[str, int], ports: dict[str, int]) -> dict[str, list[int]]:
+    """Comm DDRx and PORTx -> which status LEDs are lit (1) per index 1..6.
+    The LEDs are active low: lit is an output pin driven to 0 (after reset
+    every pin is an input and every LED is dark)."""
+    def lit(pins: tuple[Pin, ...]) -> list[int]:
+        return [int(_bit(ddr, pin) and not _bit(ports, pin)) for pin in pins]
+    return {"led_joints": lit(LED_JOINT_PINS), "led_pos": lit(LED_SIDE_POS_PINS),
+            "led_neg": lit(LED_SIDE_NEG_PINS)}
 
 
 def selector_index(porta: int) -> int:

@@ -22,12 +22,12 @@ from collections.abc import Callable
 from typing import Any
 
 from hexbot.errors import HexBotError, HexBotTimeoutError, ScenarioError
-from hexbot.protocol.pins import DIP_PORT, RF12_IRQ_PIN, RF12_SPI_PINS
+from hexbot.protocol.pins import COMM_PORTS, DIP_PORT, RF12_IRQ_PIN, RF12_SPI_PINS
 from hexbot.protocol.timing import BAUD_BOARD, BAUD_DEBUG, BAUD_IR, CLOCK_TOLERANCE, F_CPU
 
 from .geometry import CENTRE, Cell, to_global
 from .ir_bus import PC_FRAME, AirByte, Frame, IrMedium
-from .module import Mcu, Module, decode_actuators
+from .module import Mcu, Module, decode_actuators, decode_leds
 from .plant import Plant, Timing
 from .radio import RadioMedium
 from .scenario import PC, Scenario, load_scenario
@@ -274,10 +274,19 @@ class Simulator:
         return self.plant.module_at(cell)
 
     def actuators(self, module_id: int) -> dict:
-        """The control board's outputs now: joints open (J1..J6) and magnet polarity
-        per side (1 positive, -1 negative, 0 off, 2 both lines on)."""
-        joints, magnets = decode_actuators(self.modules[module_id].control_ports)
-        return {"joints": list(joints), "magnets": list(magnets)}
+        """The boards' outputs now: joints open (J1..J6) and magnet polarity per
+        side (1 positive, -1 negative, 0 off, 2 both lines on) of the control
+        board, and the comm board's status LEDs lit (joint, side +, side -)."""
+        module = self.modules[module_id]
+        joints, magnets = decode_actuators(module.control_ports)
+        return {"joints": list(joints), "magnets": list(magnets),
+                **decode_leds(*self._comm_registers(module))}
+
+    @staticmethod
+    def _comm_registers(module: Module) -> tuple[dict[str, int], dict[str, int]]:
+        """The comm board's DDRx and PORTx now, read from the core."""
+        regs = {name: module.comm.port(name) for name in COMM_PORTS}
+        return ({n: r[0] for n, r in regs.items()}, {n: r[1] for n, r in regs.items()})
 
     # --- the Air protocol of the IR medium ---------------------------------------
 

@@ -143,7 +143,9 @@ class SimulatorAccess(Protocol):
         """Call ``callback`` whenever virtual time advanced (from the simulating thread)."""
 
     def actuators(self, module_id: int) -> dict[str, list[int]]:
-        """Joints open (J1..J6) and magnet polarity per side of a control board."""
+        """Joints open (J1..J6) and magnet polarity per side of a control board;
+        the comm board's status LEDs lit (``led_joints``, ``led_pos``,
+        ``led_neg``, 1..6)."""
 
     def uart1_url(self, module_id: int) -> str:
         """A URL that opens module ``module_id``'s control-board UART1 debug port

@@ -21,6 +21,7 @@ from textual import on, work
 from textual.app import App, ComposeResult
 from textual.binding import Binding
 from textual.containers import Horizontal, ScrollableContainer, Vertical
+from textual.css.query import NoMatches
 from textual.widgets import (
     Footer,
     Header,
@@ -34,6 +35,7 @@ from textual.widgets import (
 from hexbot.errors import CancelledError, HexBotError, LinkUnavailableError
 from hexbot.host import workflows
 from hexbot.host.capture import Record
+from hexbot.host.console.boards_view import BoardsView
 from hexbot.host.console.composer import Composer
 from hexbot.host.console.connection import PortPanel
 from hexbot.host.console.dialogs import HelpScreen, PromptScreen, RotateScreen
@@ -65,6 +67,7 @@ SIM_LOG_LINES = 3
 REFRESH_S = 0.05
 #: How often the status line shows a wait's progress (seconds).
 WAIT_TICK_S = 0.25
+BOARDS_TICK_S = 0.2  # the Boards tab's poll of the simulated pins
 
 
 class HexBotConsole(App[None]):
@@ -119,6 +122,7 @@ class HexBotConsole(App[None]):
         Binding("3", "show_tab('modules')", "Modules", show=False),
         Binding("4", "show_tab('lattice')", "Lattice", show=False),
         Binding("5", "show_tab('ports')", "Ports", show=False),
+        Binding("6", "show_tab('boards')", "Boards", show=False),
         Binding("q", "quit", "Quit"),
     ]
 
@@ -165,6 +169,8 @@ class HexBotConsole(App[None]):
                 with ScrollableContainer(id="lattice-box"):  # big clusters scroll
                     yield LatticeView(id="lattice-view")
                 yield LatticeLegend(id="lattice-legend")
+            with TabPane("Boards", id="boards"):
+                yield BoardsView(id="boards-view")
             with TabPane("Ports", id="ports"):
                 with Vertical(id="ports-box"):
                     yield PortPanel(IR, "IR transceiver (all modules)", None, wire.BAUD_IR)
@@ -180,6 +186,7 @@ class HexBotConsole(App[None]):
     def on_mount(self) -> None:
         self.main_query("#progress", ProgressBar).display = False
         self.set_interval(WAIT_TICK_S, self._show_wait)
+        self.set_interval(BOARDS_TICK_S, self.refresh_boards)
         self.on_resize()
         if self.host is not None:
             self.attach(self.host, None, start=self.start_ports)
@@ -304,14 +311,20 @@ class HexBotConsole(App[None]):
         return self.main_query("#ir-term" if port == IR else "#debug-term", Terminal)
 
     def on_traffic(self, msg: TrafficMsg) -> None:
+        if not self.screen_stack:  # the reader outlived the app's screens
+            return
         self.terminal(msg.port).add(Entry(msg.t, msg.direction, data=msg.data, wall=msg.wall))
 
     def on_parsed(self, msg: Parsed) -> None:
+        if not self.screen_stack:  # the reader outlived the app's screens
+            return
         obs = msg.observed
         self.terminal(msg.port).add(Entry(obs.t, "event", event=obs.event))
         self.refresh_soon()
 
     def on_sim_event(self, msg: SimEvent) -> None:
+        if not self.screen_stack:  # the reader outlived the app's screens
+            return
         verdict = msg.verdict
         self.sim_log = [*self.sim_log, verdict][-SIM_LOG_LINES:]
         if isinstance(verdict, Refused):
@@ -321,6 +334,8 @@ class HexBotConsole(App[None]):
         self.refresh_soon()
 
     def on_port_state(self, msg: PortState) -> None:
+        if not self.screen_stack:  # the reader outlived the app's screens
+            return
         self.port_states[msg.port] = (msg.state, msg.detail)
         self.terminal(msg.port).add(Entry(msg.t, "state", wall=msg.wall,
                                           text=f"{msg.state.value} {msg.detail}"))
@@ -353,6 +368,21 @@ class HexBotConsole(App[None]):
         self.main_query(LatticeView).refresh_from(model, truth)
         self.main_query(LatticeLegend).refresh_from(model, truth, self.sim_log)
         self._update_status()
+
+    def refresh_boards(self) -> None:
+        """Pins change without a message (a rotation's sequence, an LED test):
+        poll the simulator, only while the Boards tab is shown."""
+        if self.host is None or not self.screen_stack:
+            return
+        try:
+            if self.main_query(TabbedContent).active != "boards":
+                return
+            view = self.main_query(BoardsView)
+        except NoMatches:  # the screen is being torn down
+            return
+        with self.host.lock:
+            model = copy.deepcopy(self.host.model)
+        view.refresh_from(self.host.simulator, model)
 
     def _update_status(self) -> None:
         parts = []

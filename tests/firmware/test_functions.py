@@ -138,6 +138,18 @@ def test_side_and_joint_leds(single: Bench, side: int):
     assert all(led_on(single, n) for n in LED_PINS)
 
 
+def test_the_simulators_actuator_view_reports_the_leds(single: Bench):
+    """What the console's Boards tab shows: SimulatorAccess.actuators() reads
+    the LEDs from the pins (active low, outputs only)."""
+    single.command("LOff")
+    single.command("SideOnN", 4)
+    single.command("JointOn", 2)
+    out = single.sim.actuators(1)
+    assert out["led_neg"] == [0, 0, 0, 1, 0, 0]
+    assert out["led_pos"] == [0] * 6
+    assert out["led_joints"] == [0, 1, 0, 0, 0, 0]
+
+
 def record_actuators(bench: Bench, key: str, *args: int) -> list[tuple[float, tuple, tuple]]:
     """Send one command; return (seconds after the first change, joints, magnets)
     for every distinct actuator state the control board went through."""

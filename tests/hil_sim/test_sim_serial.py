@@ -40,7 +40,8 @@ def test_a_frame_gets_its_reply_and_the_access_is_typed():
         access = port.hexbot_sim
         assert isinstance(access, SimulatorAccess) and access.stepped
         assert access.placements() == {1: Placement((0, 0), 0)}
-        assert access.actuators(1) == {"joints": [0] * 6, "magnets": [0] * 6}
+        assert access.actuators(1) == {"joints": [0] * 6, "magnets": [0] * 6, "led_joints": [0] * 6,
+                                       "led_pos": [0] * 6, "led_neg": [0] * 6}
 
 
 def test_a_paced_port_runs_on_its_own():

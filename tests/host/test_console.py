@@ -492,3 +492,50 @@ async def test_composer_sends_raw_hex_and_text_bytes(responder):
         await pilot.press("enter")
         await pilot.pause(0.3)
         assert raw.value == "2A 4" and len(responder.received) == 2
+
+
+@sync
+async def test_boards_tab_shows_joints_magnets_and_leds_live(pair_args):
+    """The Boards tab (key 6) shows each simulated module's pins as they
+    change: a joint opened and positive side LEDs lit from the console appear
+    within a poll, and closing them clears the marks again."""
+    from hexbot.host.commands import parse_command
+    from hexbot.host.console.boards_view import BoardsView
+
+    app = HexBotConsole(opener=cli_console.make_opener(pair_args))
+    async with app.run_test(size=(120, 30)) as pilot:
+        assert await until(pilot, lambda: app.host is not None, timeout=60)
+        assert await until(pilot, lambda: not app.busy, timeout=60)
+        await pilot.press("6")
+        view = app.query_one(BoardsView)
+        assert await until(pilot, lambda: [r[0] for r in view.rows()] == ["1", "2"])
+        idle = {r[0]: r for r in view.rows()}
+        assert idle["1"][4] == "······" and idle["1"][5] == "······"
+        assert idle["2"][1] == "(-1,+1)"  # the plant's cell of the pair's module 2
+        app.send_command(parse_command(["Select", "1"]))
+        app.send_command(parse_command(["JxOpen", "3"]))
+        app.send_command(parse_command(["SideOnAllP"]))
+
+        def module1() -> tuple[str, ...]:
+            return next(r for r in view.rows() if r[0] == "1")
+        assert await until(pilot, lambda: module1()[4] == "··3···"
+                           and module1()[7] == "++++++", timeout=30), module1()
+        assert next(r for r in view.rows() if r[0] == "2")[4] == "······"  # not selected
+        app.send_command(parse_command(["JxClose", "3"]))
+        app.send_command(parse_command(["SideOffAllP"]))
+        assert await until(pilot, lambda: module1()[4] == "······"
+                           and module1()[7] == "······", timeout=30), module1()
+
+
+@sync
+async def test_boards_tab_says_unavailable_on_a_real_port(responder):
+    from hexbot.host.console.boards_view import UNAVAILABLE, BoardsView
+
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        assert await until(pilot, lambda: app.port_states.get(IR, (None,))[0]
+                           is LinkState.CONNECTED)
+        await pilot.press("6")
+        view = app.query_one(BoardsView)
+        assert await until(pilot, lambda: view.note == UNAVAILABLE)
+        assert view.rows() == []
