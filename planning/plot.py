@@ -16,7 +16,7 @@ from hexbot.planning.plan import Plan
 
 require("matplotlib", "plot", "drawing plans").use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.patches import Polygon  # noqa: E402
+from matplotlib.collections import PolyCollection  # noqa: E402
 
 COLORS = {
     "module": "#f2d04b",  # the thesis' yellow
@@ -29,9 +29,13 @@ COLORS = {
 
 def draw_cells(ax, cells: Iterable[Cell], color: str, alpha: float = 1.0, edge: str = "k",
                fill: bool = True, lw: float = 1.0) -> None:
-    for cell in cells:
-        ax.add_patch(Polygon(vertices(cell), closed=True, facecolor=color if fill else "none",
-                             edgecolor=edge, alpha=alpha, linewidth=lw))
+    # One collection, not a patch per cell: add_patch recomputes the data
+    # limits per call, which made a 160-frame traversal GIF take minutes.
+    polygons = [vertices(cell) for cell in cells]
+    if polygons:
+        ax.add_collection(PolyCollection(polygons, closed=True,
+                                         facecolors=color if fill else "none",
+                                         edgecolors=edge, alpha=alpha, linewidths=lw))
 
 
 def label_cells(ax, labels: dict[Cell, str], size: float = 7) -> None:
