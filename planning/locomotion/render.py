@@ -40,6 +40,7 @@ class Recorder:
     last_only: bool = False  # a PNG needs the final frame only
     max_frames: int = 400  # past twice this, every other frame goes and `every` doubles
     frames: list[tuple[np.ndarray, np.ndarray]] = field(default_factory=list)
+    rounds: list[int] = field(default_factory=list)  # the round of each frame
     states: list[str] = field(default_factory=list)
     box: list[int] = field(default_factory=list)  # x0, y0, x1, y1 over every round seen
     obstacles: set[Cell] = field(default_factory=set)
@@ -57,11 +58,12 @@ class Recorder:
             self.box = [min(self.box[0], int(lo[0])), min(self.box[1], int(lo[1])),
                         max(self.box[2], int(hi[0])), max(self.box[3], int(hi[1]))]
         if self.last_only:
-            self.frames = [frame]
+            self.frames, self.rounds = [frame], [engine.round]
             return
         self.frames.append(frame)
+        self.rounds.append(engine.round)
         if len(self.frames) > 2 * self.max_frames:  # long runs: keep memory bounded
-            self.frames = self.frames[::2]
+            self.frames, self.rounds = self.frames[::2], self.rounds[::2]
             self.every *= 2
 
 
@@ -82,9 +84,31 @@ def ascii_map(positions: list[Cell], states: list[str], obstacles: list[Cell]) -
     )
 
 
+GRID_RGB = (215, 215, 215)
+HEADER_PX = 18  # the band above the lattice: round counter and legend
+
+
+def _annotate(Image, ImageDraw, lattice, round_no: int, total: int,
+              legend: list[tuple[str, tuple[int, int, int]]]):
+    """The lattice picture under a header: ``round k/N`` and a swatch per state."""
+    width = max(lattice.width, 90 + 70 * len(legend))
+    out = Image.new("RGB", (width, lattice.height + HEADER_PX), EMPTY_RGB)
+    out.paste(lattice, (0, HEADER_PX))
+    draw = ImageDraw.Draw(out)
+    draw.text((4, 3), f"round {round_no}/{total}", fill=(0, 0, 0))
+    x = 90
+    for name, rgb in legend:
+        draw.rectangle((x, 4, x + 9, 13), fill=rgb, outline=(0, 0, 0))
+        draw.text((x + 13, 3), name, fill=(0, 0, 0))
+        x += 70
+    return out
+
+
 def save(path: str, rec: Recorder, obstacles: list[Cell], cell_px: int = 0) -> None:
-    """PNG: the last frame. GIF: one frame per recorded round."""
+    """PNG: the last frame. GIF: one frame per recorded round. Each picture
+    has the lattice grid, a round counter and a legend of the states shown."""
     Image = require("PIL.Image", "plot", "--render (PNG, GIF)")
+    ImageDraw = require("PIL.ImageDraw", "plot", "--render (PNG, GIF)")
     suffix = Path(path).suffix.lower()
     if suffix not in (".png", ".gif"):
         raise ScenarioError(f"--render: {path!r} must end in .png or .gif")
@@ -102,17 +126,26 @@ def save(path: str, rec: Recorder, obstacles: list[Cell], cell_px: int = 0) -> N
         [COLOURS.get(s, (120, 120, 120)) for s in rec.states], dtype=np.uint8
     )
 
-    def frame(xy: np.ndarray, st: np.ndarray) -> Image.Image:
+    shown = sorted({int(v) for _, st in rec.frames for v in np.unique(st)})
+    legend = [("obstacle", OBSTACLE_RGB)] + [(rec.states[k], tuple(int(c) for c in palette[k]))
+                                             for k in shown]
+    total = rec.rounds[-1] if rec.rounds else 0
+
+    def frame(xy: np.ndarray, st: np.ndarray, round_no: int) -> Image.Image:
         img = base.copy()
         img[y1 - xy[:, 1], xy[:, 0] - x0] = palette[st]
         big = np.kron(img, np.ones((px, px, 1), dtype=np.uint8))
-        return Image.fromarray(big)
+        if px >= 4:  # the lattice grid: one line between cells
+            big[::px, :] = np.where(big[::px, :] == EMPTY_RGB, GRID_RGB, big[::px, :])
+            big[:, ::px] = np.where(big[:, ::px] == EMPTY_RGB, GRID_RGB, big[:, ::px])
+        return _annotate(Image, ImageDraw, Image.fromarray(big), round_no, total, legend)
 
+    rounds = rec.rounds or list(range(len(rec.frames)))
     try:
         if suffix == ".png":
-            frame(*rec.frames[-1]).save(path)
+            frame(*rec.frames[-1], rounds[-1]).save(path)
         else:
-            images = [frame(*f) for f in rec.frames]
+            images = [frame(*f, r) for f, r in zip(rec.frames, rounds, strict=True)]
             images[0].save(
                 path, save_all=True, append_images=images[1:], duration=80, loop=0
             )

@@ -2,6 +2,7 @@
 
 import json
 
+import numpy as np
 import pytest
 
 from hexbot.cli import main
@@ -50,6 +51,35 @@ def test_render(tmp_path, capsys, suffix):
     assert code == 3  # 30 rounds do not get past the pyramid (a time-out); drawn anyway
     head = out.read_bytes()[:4]
     assert head == (b"\x89PNG" if suffix == "png" else b"GIF8")
+
+
+def test_the_animation_has_a_frame_per_round_a_counter_a_legend_and_the_grid(tmp_path, capsys):
+    from PIL import Image
+
+    from hexbot.planning.locomotion.render import COLOURS, GRID_RGB, HEADER_PX, OBSTACLE_RGB
+
+    out = tmp_path / "run.gif"
+    code, _, _ = run_cli(capsys, "run", "salvador", "flat", "--n", "6", "--rounds", "12",
+                         "--render", str(out))
+    assert code in (0, 3)
+    gif = Image.open(out)
+    assert gif.n_frames == 13  # round 0 (the start) and one per round
+    pictures = []
+    for k in (0, 12):
+        gif.seek(k)
+        pictures.append(gif.convert("RGB"))
+    first, last = pictures
+    def colours(img) -> set[tuple[int, ...]]:
+        return set(map(tuple, np.asarray(img).reshape(-1, 3).tolist()))
+
+    header = colours(first.crop((0, 0, first.width, HEADER_PX)))
+    for rgb in (OBSTACLE_RGB, COLOURS["static"], COLOURS["active"]):  # legend swatches
+        assert rgb in header
+    counter = (0, 0, 85, HEADER_PX)  # "round k/12" changes, the legend does not
+    assert first.crop(counter).tobytes() != last.crop(counter).tobytes()
+    legend = (90, 0, first.width, HEADER_PX)
+    assert first.crop(legend).tobytes() == last.crop(legend).tobytes()
+    assert GRID_RGB in colours(first.crop((0, HEADER_PX, first.width, first.height)))
 
 
 def test_bad_rule_file_error_names_the_line(tmp_path, capsys):
