@@ -38,6 +38,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="planner (default: robust)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--plot", metavar="FILE.png", help="draw one panel per time step")
+    parser.add_argument("--render", metavar="FILE.gif",
+                        help="animate the plan: a frame per time step, grid, counter, legend "
+                             "(plot extra)")
     parser.add_argument("--style", choices=("combined", "single"), default="combined",
                         help="firmware commands: combined CW/CCW (67/68, default) or "
                              "single-role MCW..SCCW (21-24)")
@@ -191,6 +194,10 @@ def run(args: argparse.Namespace) -> int:
         from hexbot.planning.plot import plot_plan
 
         plot_plan(plan, args.plot)
+    if args.render:
+        from hexbot.planning.plot import render_plan
+
+        render_plan(plan, args.render)
     if not plan.reached:
         print(f"hexbot plan: goal not reached: {plan.reason}", file=sys.stderr)
         return 1

@@ -11,12 +11,14 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from hexbot.extras import require
-from hexbot.planning.hexlattice import Cell, cartesian, vertices
+from hexbot.planning.hexlattice import Cell, cartesian, neighbors, vertices
 from hexbot.planning.plan import Plan
 
 require("matplotlib", "plot", "drawing plans").use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.animation import FuncAnimation, PillowWriter  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
+from matplotlib.patches import Patch  # noqa: E402
 
 COLORS = {
     "module": "#f2d04b",  # the thesis' yellow
@@ -91,5 +93,52 @@ def plot_plan(plan: Plan, path: str | Path, max_panels: int = 60, ids: bool = Tr
     fig.tight_layout()
     path = Path(path)
     fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+GRID_EDGE = "#cccccc"
+
+
+def render_plan(plan: Plan, path: str | Path, fps: int = 2, max_frames: int = 400) -> Path:
+    """An animated GIF of the plan: one frame per time step on the lattice grid
+    (every cell the plan touches and their neighbours), movers in green with
+    arrows to their destinations, the goal outlined, a step counter and a legend."""
+    configs = plan.configurations()[:max_frames]
+    every = set().union(*(c.cells for c in configs), plan.goal)
+    grid = every | {n for c in every for n in neighbors(c)}
+    small = len(every) <= 80
+    lw = 0.6 if small else 0.2
+    fig, ax = plt.subplots(figsize=(7, 6))
+    legend = [Patch(facecolor=COLORS["module"], edgecolor="k", label="module"),
+              Patch(facecolor=COLORS["mover"], edgecolor="k", label="moves this step"),
+              Patch(facecolor="none", edgecolor=COLORS["target"], label="its destination"),
+              Patch(facecolor="none", edgecolor=COLORS["goal"], label="goal cell"),
+              Patch(facecolor="none", edgecolor=GRID_EDGE, label="lattice")]
+
+    def draw(t: int) -> None:
+        ax.clear()
+        config = configs[t]
+        moves = plan.steps[t].moves if t < len(plan.steps) else []
+        movers = {m.src for m in moves}
+        draw_cells(ax, grid, "none", fill=False, edge=GRID_EDGE, lw=0.4)
+        draw_cells(ax, config.cells - movers, COLORS["module"], lw=lw)
+        draw_cells(ax, movers, COLORS["mover"], lw=lw)
+        draw_cells(ax, plan.goal, "none", fill=False, edge=COLORS["goal"], lw=1.2 if small else 0.4)
+        draw_cells(ax, {m.dst for m in moves}, "none", fill=False, edge=COLORS["target"], lw=1.6)
+        for m in moves:
+            (x0, y0), (x1, y1) = cartesian(m.src), cartesian(m.dst)
+            ax.annotate("", (x1, y1), (x0, y0), arrowprops={"arrowstyle": "->", "lw": 0.8})
+        if small:
+            label_cells(ax, {c: str(mod.id) for c, mod in config.items()}, 6)
+        frame(ax, grid)
+        ax.set_title(f"{plan.mode}: time step {t}/{len(configs) - 1}, "
+                     f"{len(moves)} move(s) next", fontsize=9)
+        ax.legend(handles=legend, loc="upper left", fontsize=7, ncol=3,
+                  bbox_to_anchor=(0.0, 0.0), frameon=False)
+
+    animation = FuncAnimation(fig, draw, frames=len(configs))
+    path = Path(path)
+    animation.save(str(path), writer=PillowWriter(fps=fps))
     plt.close(fig)
     return path

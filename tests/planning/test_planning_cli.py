@@ -141,3 +141,23 @@ def test_exact_mode_from_the_cli(capsys, examples_dir):
                             "--json", "--serial")
     data = json.loads(out)
     assert code == 0 and data["mode"] == "exact" and len(data["steps"]) == 17
+
+
+def test_render_animates_every_time_step_with_legend_and_grid(capsys, examples_dir, tmp_path):
+    import numpy as np
+    from PIL import Image
+
+    from hexbot.planning.plot import COLORS
+
+    out = tmp_path / "plan.gif"
+    code, text, _ = run_plan(capsys, examples_dir / "test_all_s02_initial.txt",
+                             examples_dir / "test_all_s02_goal.txt", "--mode", "exact",
+                             "--json", "--render", out)
+    steps = len(json.loads(text)["steps"])
+    gif = Image.open(out)
+    assert code == 0 and gif.n_frames == steps + 1  # the start, then after each step
+    gif.seek(1)
+    pixels = np.asarray(gif.convert("RGB")).reshape(-1, 3)
+    seen = set(map(tuple, pixels.tolist()))
+    mover = tuple(int(COLORS["mover"][k:k + 2], 16) for k in (1, 3, 5))
+    assert mover in seen  # this step's movers, and the legend's swatch
