@@ -43,6 +43,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--pty", action="store_true", help="serve the IR and debug ports on pseudo-terminals"
     )
     parser.add_argument(
+        "--rfc2217", type=int, metavar="TCP_PORT",
+        help="serve the IR port over RFC 2217 on localhost:TCP_PORT (0: any free port): "
+             "modem lines, parity and baud as a USB adapter takes them",
+    )
+    parser.add_argument(
         "--speed", type=float, default=1.0,
         help="times real time (default 1; 0 = as fast as possible)",
     )
@@ -77,6 +82,8 @@ def _open(path: Path, stack: ExitStack) -> TextIO:
 def run(args: argparse.Namespace) -> int:
     if args.speed < 0:
         raise HexBotError(f"--speed must be 0 or more, not {args.speed}")
+    if args.rfc2217 is not None:
+        return _serve_rfc2217(args)
     if not args.pty and args.duration is None:
         raise HexBotError("nothing to do: give --pty to serve ports, or --duration to run")
     sim = Simulator(load_scenario(args.scenario), seed=args.seed)
@@ -107,6 +114,39 @@ def run(args: argparse.Namespace) -> int:
         else:
             print(json.dumps({"scenario": sim.scenario.name}), flush=True)
         _loop(sim, bridge, isp, args.speed, args.duration, stop)
+    return 0
+
+
+def _serve_rfc2217(args: argparse.Namespace) -> int:
+    """The IR port of the embedded simulator's URL port, served over RFC 2217."""
+    import serial
+
+    from . import urlhandler
+    from .rfc2217_server import Rfc2217Server
+
+    if args.pty or args.events or args.vcd or args.duration is not None:
+        raise HexBotError("--rfc2217 serves one port until stopped: it does not combine "
+                          "with --pty, --events, --vcd or --duration")
+    urlhandler.register()
+    target = Path(args.scenario)
+    name = str(target.resolve()) if target.suffix == ".toml" else args.scenario
+    query = f"speed={args.speed:g}" + (f"&seed={args.seed}" if args.seed is not None else "")
+    try:
+        port = serial.serial_for_url(f"{urlhandler.SCHEME}://{name}?{query}",
+                                     baudrate=300, timeout=0.1)
+    except serial.SerialException as exc:
+        raise HexBotError(f"cannot start the simulator: {exc}") from exc
+    stop = _Stop()
+    previous = {s: signal.signal(s, stop) for s in (signal.SIGINT, signal.SIGTERM)}
+    server = Rfc2217Server(port, args.rfc2217)
+    try:
+        print(json.dumps({"rfc2217": server.url}), flush=True)
+        server.serve(lambda: not stop.requested)
+    finally:
+        server.close()
+        port.close()
+        for s, h in previous.items():
+            signal.signal(s, h)
     return 0
 
 

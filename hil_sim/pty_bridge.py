@@ -17,7 +17,8 @@ bytes, as on hardware (:mod:`hexbot.hil_sim.uart_line`). Linux forces a
 pty to 8 data bits without parity whatever the client asks, so parity and
 word size cannot be checked here (the ``hexbot-sim://`` URL checks them),
 and a pty has no modem lines (setting DTR fails with "Inappropriate ioctl";
-the URL accepts them).
+the URL accepts them, and ``hexbot sim --rfc2217`` serves the URL port to
+other processes with modem lines and parity).
 """
 
 from __future__ import annotations

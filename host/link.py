@@ -73,10 +73,13 @@ class PortSettings:
         """Open the port; LinkUnavailableError (with the cause) if it cannot."""
         urlhandler.register()
         try:
+            # pyserial's rfc2217:// client has no write time-out (its writes go
+            # to a socket); every other port gets one.
+            writes = {} if self.url.startswith("rfc2217://") else {"write_timeout": 2.0}
             return serial.serial_for_url(
                 self.url, baudrate=self.baud, parity=_PARITY[self.parity],
                 bytesize=self.data_bits, stopbits=_STOP[self.stop_bits], timeout=timeout,
-                write_timeout=2.0, exclusive=True,  # two readers would split the bytes
+                exclusive=True, **writes,  # exclusive: two readers would split the bytes
             )
         except (serial.SerialException, OSError, ValueError) as exc:
             if getattr(exc, "errno", None) == errno.EWOULDBLOCK:  # pyserial: the flock is taken
