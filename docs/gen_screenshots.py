@@ -42,10 +42,34 @@ async def shoot(name: str, size: tuple[int, int], keys: list[str]) -> Path:
         return Path(app.save_screenshot(f"{name}.svg", path=str(OUT)))
 
 
+async def shoot_boards(name: str = "console-boards") -> Path:
+    """The Boards tab needs a live simulator (a recording has no pins): the
+    flower7 cluster, module 1 with joint 3 open and its positive side LEDs on."""
+    from hexbot.host import cli_console
+    from hexbot.host.commands import parse_command
+    from hexbot.host.console.app import HexBotConsole
+    from hexbot.host.console.boards_view import BoardsView
+
+    args = cli_console.parse(["--scenario", "flower7", "--sim-speed", "20", "--no-log"])
+    app = HexBotConsole(opener=cli_console.make_opener(args))
+    async with app.run_test(size=(110, 20)) as pilot:
+        while app.host is None or app.busy:
+            await pilot.pause(0.2)
+        for words in (["Select", "1"], ["JxOpen", "3"], ["SideOnAllP"]):
+            app.send_command(parse_command(words))
+        await pilot.press("6")
+        view = app.query_one(BoardsView)
+        while not any(r[0] == "1" and r[4] == "··3···" and r[7] == "++++++"
+                      for r in view.rows()):
+            await pilot.pause(0.2)
+        return Path(app.save_screenshot(f"{name}.svg", path=str(OUT)))
+
+
 def main() -> None:
     OUT.mkdir(parents=True, exist_ok=True)
     for name, (size, keys) in SHOTS.items():
         print(asyncio.run(shoot(name, size, keys)))
+    print(asyncio.run(shoot_boards()))
 
 
 if __name__ == "__main__":
