@@ -16,7 +16,7 @@ import hashlib
 import re
 from pathlib import Path
 
-from hexbot.protocol import lattice, pins_header, timing, wire
+from hexbot.protocol import lattice, pins_header, radio, timing, wire
 from hexbot.protocol.codes import CODES, ErrorCode, Role, Status
 
 HEADER_PATH = Path(__file__).resolve().parent.parent / "firmware" / "include" / "hexbot_codes.h"
@@ -112,6 +112,15 @@ def _render(schema: str) -> str:
         f"#define HB_MAX_MODULE_ID    {wire.MAX_MODULE_ID}",
         f"#define HB_MAX_SELECT_ID    {wire.MAX_SELECT_ID}",
         f"#define HB_LOC_COORD_LIMIT  {wire.LOC_COORD_LIMIT}",
+        "",
+        "/* RF12 radio (protocol/radio.py): the listing's channel words and packet;",
+        " * the first payload byte counts the link bytes after it */",
+        f"#define HB_RF12_CMD_CONFIG  0x{radio.CMD_CONFIG:04X}u",
+        f"#define HB_RF12_CMD_FREQ    0x{radio.CMD_FREQUENCY:04X}u",
+        f"#define HB_RF12_CMD_RATE    0x{radio.CMD_DATA_RATE:04X}u",
+        f"#define HB_RF12_CMD_SYNC    0x{radio.CMD_SYNC_LOW:04X}u",
+        f"#define HB_RF12_PAYLOAD     {radio.PAYLOAD}u",
+        f"#define HB_RF12_LINK_BYTES  {radio.LINK_BYTES}u",
         "",
         "/* Fuses (Table 3-6) and part */",
         f"#define HB_FUSE_LOW      0x{wire.FUSE_LOW:02X}",

@@ -53,6 +53,18 @@ RF12_LED_PINS: tuple[Pin, ...] = (("D", 6), ("D", 7))
 #: Mode jumper (pull-up): open = transmit test, closed (low) = receive test.
 RF12_MODE_PIN: Pin = ("A", 0)
 
+#: The wireless board's link to its communication board (our decision: the
+#: thesis planned to merge the two boards and left no wiring). The comm board
+#: has no free USART (UART0 is the control board, UART1 the IR multiplexer),
+#: so the wireless board's USART0 (RX0, TX0) joins the multiplexer's centre
+#: input beside the central IR transceiver, wired-AND: the comm board hears
+#: the radio as it hears the PC, whenever its selector is on the centre, and
+#: its replies on the centre reach the wireless board. The line runs at the
+#: IR rate (the listing's 4800 baud UART0 had nothing to talk to).
+RF12_LINK_UART = 0
+RF12_LINK_PINS: tuple[Pin, ...] = (("D", 0), ("D", 1))  # RX0, TX0 of the wireless board
+RF12_LINK_CHANNEL = "centre"  # comm board selector input the line joins (Table 3-5)
+
 #: Every LED by the name the simulator and its traces use: led_jN (joint N),
 #: led_sNa (side N positive), led_sNb (side N negative).
 LED_PINS: dict[str, Pin] = {

@@ -50,6 +50,8 @@ def _rf12() -> list[str]:
         f"#define HB_RF12_LED_R_BIT {pins.RF12_LED_PINS[1][1]}",
         f"#define HB_RF12_MODE_PORT_{mode_port}",
         f"#define HB_RF12_MODE_BIT {mode_bit}",
+        "/* its link to the comm board's IR multiplexer, centre input */",
+        f"#define HB_RF12_LINK_UART {pins.RF12_LINK_UART}u",
     ]
 
 

@@ -4,8 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0x8c4ca247UL
-#define HB_SCHEMA_HASH_TEXT "8c4ca247"
+#define HB_SCHEMA_HASH 0x6e4ab8a0UL
+#define HB_SCHEMA_HASH_TEXT "6e4ab8a0"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */
@@ -23,6 +23,15 @@
 #define HB_MAX_MODULE_ID    255
 #define HB_MAX_SELECT_ID    63
 #define HB_LOC_COORD_LIMIT  99
+
+/* RF12 radio (protocol/radio.py): the listing's channel words and packet;
+ * the first payload byte counts the link bytes after it */
+#define HB_RF12_CMD_CONFIG  0x80D7u
+#define HB_RF12_CMD_FREQ    0xA640u
+#define HB_RF12_CMD_RATE    0xC647u
+#define HB_RF12_CMD_SYNC    0xCED4u
+#define HB_RF12_PAYLOAD     16u
+#define HB_RF12_LINK_BYTES  15u
 
 /* Fuses (Table 3-6) and part */
 #define HB_FUSE_LOW      0x62

@@ -65,5 +65,7 @@
 #define HB_RF12_LED_R_BIT 7
 #define HB_RF12_MODE_PORT_A
 #define HB_RF12_MODE_BIT 0
+/* its link to the comm board's IR multiplexer, centre input */
+#define HB_RF12_LINK_UART 0u
 
 #endif /* HEXBOT_PINS_H */

@@ -2,6 +2,7 @@
  * wireless listing, with every wait on nIRQ bounded. */
 #include "rf12.h"
 
+#include "hexbot_codes.h"
 #include "rf12_board.h"
 #include "system.h"
 
@@ -9,14 +10,14 @@
 #define PACKET_TIMEOUT_TICKS 200u /* wait this long for a packet to start */
 
 static const uint16_t init_words[] = {
-    0x80D7, /* EL, EF, 433 MHz band, 12.0 pF */
+    HB_RF12_CMD_CONFIG, /* 0x80D7: EL, EF, 433 MHz band, 12.0 pF */
     0x8239, /* !er, !ebb, ET, ES, EX, !eb, !ew, DC */
-    0xA640, /* 434 MHz */
-    0xC647, /* 4.8 kbps */
+    HB_RF12_CMD_FREQ,   /* 0xA640: 434 MHz */
+    HB_RF12_CMD_RATE,   /* 0xC647: 4.8 kbps */
     0x94A0, /* VDI, fast, 134 kHz, 0 dBm, -103 dBm */
     0xC2AC, /* AL, !ml, DIG, DQD4 */
     0xCA81, /* FIFO8, sync, !ff, DR */
-    0xCED4, /* sync word 2D D4 */
+    HB_RF12_CMD_SYNC,   /* 0xCED4: sync word 2D D4 */
     0xC483, /* @PWR, no restriction, !st, !fi, OE, EN */
     0x9850, /* !mp, 90 kHz, max output */
     0xCC67, /* PLL settings */
@@ -83,17 +84,26 @@ static int16_t recv_byte(tick_t ticks)
     return (int16_t)(rf12_board_xfer(0xB000) & 0xFFu); /* the listing wrote 0xB0000 */
 }
 
-int8_t rf12_receive_packet(uint8_t *data)
+void rf12_rx_arm(void)
 {
-    uint8_t sum = 0;
-    int16_t b;
     rf12_board_xfer(0x82D9);  /* receiver on */
     rf12_board_xfer(0xCA81);  /* FIFO reset: wait for the sync word again */
     rf12_board_xfer(0xCA83);  /* FIFO fill on sync */
     rf12_board_xfer(0x0000);  /* clear interrupts latched before (the init's
                                  transmitter underruns): nIRQ means data now */
+}
+
+uint8_t rf12_rx_ready(void)
+{
+    return rf12_board_irq();
+}
+
+int8_t rf12_rx_read(uint8_t *data, tick_t first_ticks)
+{
+    uint8_t sum = 0;
+    int16_t b;
     for (uint8_t i = 0; i < RF12_PAYLOAD; i++) {
-        b = recv_byte(i == 0 ? PACKET_TIMEOUT_TICKS : IRQ_TIMEOUT_TICKS);
+        b = recv_byte(i == 0 ? first_ticks : IRQ_TIMEOUT_TICKS);
         if (b < 0 && i == 0)
             goto fail;
         if (b < 0) {
@@ -109,4 +119,10 @@ int8_t rf12_receive_packet(uint8_t *data)
 fail:
     rf12_board_xfer(0xCA81);
     return RF12_RX_NONE;
+}
+
+int8_t rf12_receive_packet(uint8_t *data)
+{
+    rf12_rx_arm();
+    return rf12_rx_read(data, PACKET_TIMEOUT_TICKS);
 }
