@@ -16,6 +16,11 @@ boundary after a byte left the air; :meth:`RadioMedium.step` then routes it:
 - a byte cut short (transmitter switched off mid-byte) is not delivered but
   still occupies the air.
 
+The PC's radio (:class:`PcRadio`, a ``radio=1`` port) is one more radio on
+the air, modelled in Python: it sends the host's bytes in the listing's
+packets (``protocol/radio.py``) and gives back the link bytes of the
+packets it hears with a good sum.
+
 The simulator stops the cluster at the end of every byte on the air
 (:meth:`RadioMedium.next_end`), so a byte reaches its receivers on the cycle
 its last bit ends; by then every byte that overlaps it has started and is
@@ -28,15 +33,19 @@ the same trace.
 from __future__ import annotations
 
 import random
+from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
+from hexbot.protocol import radio as rf
 from hexbot.protocol.lattice import distance
+from hexbot.protocol.timing import BAUD_IR, BYTE_BITS
 
 from .geometry import Cell
 
 Channel = tuple[int, int, int]  # band, frequency word, data rate byte
+PC_RADIO = 0  # the PC radio's sender id on the air (module ids are 1..255)
 
 
 @dataclass(frozen=True)
@@ -52,6 +61,66 @@ class RadioByte:
 
     def overlaps(self, other: RadioByte) -> bool:
         return self.start < other.end and other.start < self.end
+
+
+class PcRadio:
+    """The PC's radio: an RF12 on the listing's channel at ``cell``, fed by
+    the host. It sends the bytes written to it in packets of at most
+    ``LINK_BYTES`` link bytes, and no faster than the wireless board can pass
+    them on to its comm board at the IR rate (as a USB radio with flow
+    control would), so the bridge's 31-byte ring cannot overflow."""
+
+    def __init__(self, cell: Any, hz: int) -> None:
+        self.cell = cell
+        self.channel: Channel = rf.channel()
+        rate = rf.CMD_DATA_RATE
+        self._div = 29 * ((rate & 0x7F) + 1) * (8 if rate & 0x80 else 1)
+        self._hz = hz
+        self._ir_byte = round(BYTE_BITS * hz / BAUD_IR)
+        self.tx: deque[tuple[int, int, int]] = deque()  # (start, end, byte)
+        self._free = 0
+        self.rx = rf.PacketReceiver(gap=2 * self._byte_end(0, 0))
+        self.received = bytearray()
+
+    def _byte_end(self, origin: int, k: int) -> int:
+        """End of byte k of a transmission started at ``origin`` (the chip's
+        arithmetic: 8 bits at 10 MHz / 29 / (R + 1))."""
+        return origin + (k + 1) * 8 * self._hz * self._div // rf.XTAL_HZ
+
+    def write(self, data: bytes, now: int) -> None:
+        origin = max(self._free, now)
+        for payload in rf.payloads(data):
+            air = rf.packet(payload)
+            start = origin
+            for k, value in enumerate(air):
+                end = self._byte_end(origin, k)
+                self.tx.append((start, end, value))
+                start = end
+            # the next packet waits for the bridge to pass this one on
+            origin = max(start, origin + payload[0] * self._ir_byte)
+        self._free = origin
+
+    def transmitting(self, cycle: int) -> bool:
+        return bool(self.tx) and self.tx[0][0] <= cycle
+
+    def carrier(self, now: int) -> RadioByte | None:
+        if self.tx and self.tx[0][0] <= now < self.tx[0][1]:
+            start, end, value = self.tx[0]
+            return RadioByte(PC_RADIO, start, end, value, False, self.channel)
+        return None
+
+    def next_end(self) -> int | None:
+        return self.tx[0][1] if self.tx else None
+
+    def take(self, now: int) -> list[RadioByte]:
+        out = []
+        while self.tx and self.tx[0][1] <= now:
+            start, end, value = self.tx.popleft()
+            out.append(RadioByte(PC_RADIO, start, end, value, False, self.channel))
+        return out
+
+    def hear(self, end: int, value: int) -> None:
+        self.received += self.rx.push(end, value)
 
 
 class RadioMedium:
@@ -78,26 +147,48 @@ class RadioMedium:
         self._routed: dict[int, int] = {}  # sender -> start of its last routed byte
         self.delivered = 0
         self.garbled = 0
+        self.pc: PcRadio | None = None
+
+    def add_pc(self, cell: Any, hz: int) -> PcRadio:
+        """The PC's radio at ``cell`` (added on first use: without it the air
+        and its random sequence are as before)."""
+        if self.pc is None:
+            self.pc = PcRadio(cell, hz)
+        return self.pc
+
+    @property
+    def active(self) -> bool:
+        return bool(self.radios) or self.pc is not None
+
+    def _cell(self, sender: int) -> Cell:
+        return self.pc.cell if sender == PC_RADIO and self.pc else self.position(sender)
 
     def in_range(self, a: int, b: int) -> bool:
-        return distance(self.position(a), self.position(b)) <= self.range_cells
+        return distance(self._cell(a), self._cell(b)) <= self.range_cells
 
-    def _carriers(self) -> list[RadioByte]:
-        return [RadioByte(m, s, e, v, c, ch) for m, i in self.radios.items()
-                if (rec := self.cluster.radio_carrier(i)) is not None
-                for s, e, v, c, ch in [rec]]
+    def _carriers(self, now: int) -> list[RadioByte]:
+        on_air = [RadioByte(m, s, e, v, c, ch) for m, i in self.radios.items()
+                  if (rec := self.cluster.radio_carrier(i)) is not None
+                  for s, e, v, c, ch in [rec]]
+        if self.pc is not None and (byte := self.pc.carrier(now)) is not None:
+            on_air.append(byte)
+        return on_air
 
-    def next_end(self) -> int | None:
+    def next_end(self, now: int) -> int | None:
         """Cluster cycle the next byte on the air ends (None: the air is quiet)."""
-        return min((b.end for b in self._carriers()), default=None)
+        pc_end = self.pc.next_end() if self.pc is not None else None
+        return min([b.end for b in self._carriers(now)] + ([pc_end] if pc_end else []),
+                   default=None)
 
     def step(self, now: int) -> None:
         """Route every byte that left the air by cluster cycle ``now``."""
-        carriers = self._carriers()
+        carriers = self._carriers(now)
         ended: list[RadioByte] = []
         for module, index in self.radios.items():
             for start, end, value, cut, channel in self.cluster.radio_take(index):
                 ended.append(RadioByte(module, start, end, value, cut, channel))
+        if self.pc is not None:
+            ended += self.pc.take(now)
         # a byte ending exactly now may not be logged yet (its MCU stopped
         # just short of the cycle its timer fires on): it is over all the same
         ended += [b for b in carriers if b.end <= now]
@@ -118,7 +209,12 @@ class RadioMedium:
         self._recent = [b for b in self._recent if b.end > horizon]
 
     def _route(self, byte: RadioByte, states: dict[int, dict], on_air: list[RadioByte]) -> None:
-        for receiver, index in self.radios.items():
+        receivers = list(self.radios.items())
+        if self.pc is not None:
+            receivers.append((PC_RADIO, -1))
+            states = {**states, PC_RADIO: {"receiving": not self.pc.transmitting(byte.end),
+                                           "channel": self.pc.channel}}
+        for receiver, index in receivers:
             state = states[receiver]
             if (receiver == byte.sender or not state["receiving"]
                     or tuple(state["channel"]) != byte.channel
@@ -139,4 +235,7 @@ class RadioMedium:
             else:
                 self._colliding.discard(receiver)
             self.delivered += 1
-            self.cluster.radio_deliver(index, byte.end, value)
+            if receiver == PC_RADIO:
+                self.pc.hear(byte.end, value)  # type: ignore[union-attr]
+            else:
+                self.cluster.radio_deliver(index, byte.end, value)

@@ -13,6 +13,7 @@ A scenario is a TOML file (built-ins in ``hil_sim/scenarios/``)::
     rf12 = "firmware/build/rf12.elf"        # optional: a wireless board on every module
 
     radio_range = 100             # optional: RF12 range in lattice cells (see radio.py)
+    pc_radio = [0, 0]             # optional: the cell of the PC's radio (a `radio=1` port)
 
     [faults]                      # optional; applies to every IR link
     bit_error_rate = 0.0          # probability that each data bit flips
@@ -61,7 +62,7 @@ MAX_CLOCK_PPM = round(CLOCK_TOLERANCE * 1e6)  # an RC clock further off cannot t
 PC = "pc"
 
 _TOP_KEYS = {"name", "description", "seed", "base", "firmware", "faults", "module",
-             "clock_spread_ppm", "radio_range"}
+             "clock_spread_ppm", "radio_range", "pc_radio"}
 _MODULE_KEYS = {"id", "position", "orientation", "firmware", "clock_ppm"}
 _FIRMWARE_KEYS = {"comm", "control", "rf12"}
 #: RF12 range in lattice cells unless the scenario says otherwise: ~10 m at a
@@ -122,6 +123,7 @@ class Scenario:
     description: str = ""
     clock_spread_ppm: float = 0.0
     radio_range: int = DEFAULT_RADIO_RANGE
+    pc_radio: Cell = (0, 0)  # where the PC's radio stands (hil_sim/radio.py PcRadio)
 
     def clocks(self, seed: int) -> dict[tuple[int, str], float]:
         """Clock error in ppm of every MCU, by (module id, "comm"/"control"):
@@ -291,6 +293,12 @@ def parse_scenario(text: str, path: Path) -> Scenario:
         raise fail(lines.find("", -1, "radio_range"),
                    f"radio_range must be a whole number of cells >= 0, not {radio_range!r}")
 
+    pc_radio = data.get("pc_radio", [0, 0])
+    if (not isinstance(pc_radio, list) or len(pc_radio) != 2
+            or not all(isinstance(v, int) and not isinstance(v, bool) for v in pc_radio)):
+        raise fail(lines.find("", -1, "pc_radio"),
+                   f"pc_radio must be a cell [x, y] of whole numbers, not {pc_radio!r}")
+
     return Scenario(
         name=name,
         modules=modules,
@@ -302,6 +310,7 @@ def parse_scenario(text: str, path: Path) -> Scenario:
         description=str(data.get("description", "")),
         clock_spread_ppm=spread,
         radio_range=radio_range,
+        pc_radio=(pc_radio[0], pc_radio[1]),
     )
 
 

@@ -6,9 +6,14 @@ opens a simulated cluster in this process and returns a port on the PC's
 IR transceiver, exactly as ``/dev/ttyUSB0`` would be on hardware (register
 the URL scheme first: :func:`hexbot.hil_sim.urlhandler.register`). URL forms:
 
-``hexbot-sim://SCENARIO[?seed=N][&speed=X][&firmware=DIR]``
+``hexbot-sim://SCENARIO[?seed=N][&speed=X][&firmware=DIR][&radio=1]``
     a new cluster of a built-in scenario or a TOML file
-    (``hexbot-sim:///abs/path.toml``). ``speed=0`` is *stepped*: virtual
+    (``hexbot-sim:///abs/path.toml``). ``radio=1`` makes the port the PC's
+    RF12 radio (at the scenario's ``pc_radio`` cell) instead of its IR
+    transceiver: bytes written go out in radio packets, the link bytes of the
+    packets heard come back; modules with a wireless board running the
+    ``rflink`` image pass them to and from their comm board (docs/simulator.md,
+    "The RF12 radio"). The port speaks 300 baud 8N1 like the IR one. ``speed=0`` is *stepped*: virtual
     time advances only while someone waits for bytes (``read`` with a
     time-out, counted in simulated seconds) or calls ``hexbot_sim.advance``,
     so the same calls give the same trace. ``speed=N`` (default 1) runs the
@@ -50,6 +55,8 @@ from hexbot.protocol import wire
 from hexbot.protocol.simulation import Placement, PlantVerdict, verdict_from_record
 
 SLICE_S = 0.01  # simulated time per step: well under one 300-baud byte (33 ms)
+RADIO = "radio"  # the line of a radio=1 port (None: IR, an int: a module's UART1)
+Line = int | str | None
 _instances: dict[int, weakref.ref[SimCluster]] = {}
 _numbers = itertools.count(1)
 
@@ -77,6 +84,7 @@ class SimCluster:
         self._lock = threading.RLock()
         self.changed = threading.Condition(self._lock)
         self._ir = bytearray()
+        self._radio: bytearray | None = None  # once a radio=1 port opened
         self._uart1: dict[int, bytearray] = {m: bytearray() for m in self.simulator.modules}
         self._verdicts: list[PlantVerdict] = []
         self._records_seen = 0
@@ -136,24 +144,31 @@ class SimCluster:
 
     # --- the ports' side ---------------------------------------------------
 
-    def buffer(self, uart1: int | None) -> bytearray:
-        return self._ir if uart1 is None else self._uart1[uart1]
+    def buffer(self, uart1: Line) -> bytearray:
+        if uart1 == RADIO:
+            if self._radio is None:
+                self._radio = bytearray()
+            return self._radio
+        return self._ir if uart1 is None else self._uart1[uart1]  # type: ignore[index]
 
-    def write(self, uart1: int | None, data: bytes) -> None:
+    def write(self, uart1: Line, data: bytes) -> None:
         with self._lock:
-            if uart1 is None:
+            if uart1 == RADIO:
+                self.buffer(RADIO)
+                self.simulator.pc_radio_write(data)
+            elif uart1 is None:
                 self.simulator.pc_write(data)
             else:
-                self.simulator.debug_write(uart1, data)
+                self.simulator.debug_write(uart1, data)  # type: ignore[arg-type]
 
-    def take(self, uart1: int | None, size: int) -> bytes:
+    def take(self, uart1: Line, size: int) -> bytes:
         with self._lock:
             buf = self.buffer(uart1)
             data = bytes(buf[:size])
             del buf[:size]
             return data
 
-    def wait_bytes(self, uart1: int | None, size: int, timeout: float | None) -> None:
+    def wait_bytes(self, uart1: Line, size: int, timeout: float | None) -> None:
         """Until ``size`` bytes wait in the buffer or ``timeout`` passed:
         simulated seconds when stepped, wall seconds when paced."""
         buf = self.buffer(uart1)
@@ -205,6 +220,8 @@ class SimCluster:
     def _collect(self) -> list[PlantVerdict]:
         sim = self.simulator
         self._ir += sim.pc_read()
+        if self._radio is not None:
+            self._radio += sim.pc_radio_read()
         for module_id, buf in self._uart1.items():
             buf += sim.debug_read(module_id)
         fresh = [v for record in sim.events[self._records_seen:]
@@ -225,8 +242,9 @@ class SimCluster:
                 self._closed.wait(ahead)
 
 
-def _attach(url: str) -> tuple[SimCluster, int | None, bool]:
-    """(cluster, UART1 module id or None for the IR port, whether this port owns it)."""
+def _attach(url: str) -> tuple[SimCluster, Line, bool]:
+    """(cluster, UART1 module id, RADIO or None for the IR port, whether this
+    port owns it)."""
     parts = urlsplit(url)
     if parts.scheme != SCHEME:
         raise SerialException(f"expected a {SCHEME}:// URL, got {url!r}")
@@ -249,19 +267,31 @@ def _attach(url: str) -> tuple[SimCluster, int | None, bool]:
     if not target:
         raise SerialException(f"{url}: name a scenario, e.g. {SCHEME}://flower7?speed=0")
     options = {k: v[-1] for k, v in parse_qs(parts.query, keep_blank_values=True).items()}
-    unknown = set(options) - {"seed", "speed", "firmware"}
+    unknown = set(options) - {"seed", "speed", "firmware", "radio"}
     if unknown:
         raise SerialException(f"{url}: unknown option(s) {', '.join(sorted(unknown))} "
-                              "(seed, speed, firmware)")
+                              "(seed, speed, firmware, radio)")
+    if options.get("radio", "0") not in ("0", "1"):
+        raise SerialException(f"{url}: radio must be 0 (IR transceiver) or 1 (the PC's radio)")
     try:
         seed = int(options["seed"]) if "seed" in options else None
         speed = float(options.get("speed", "1"))
     except ValueError as exc:
         raise SerialException(f"{url}: seed must be an integer and speed a number") from exc
+    line = RADIO if options.get("radio") == "1" else None
     try:
-        return SimCluster(target, seed, speed, options.get("firmware")), None, True
+        cluster = SimCluster(target, seed, speed, options.get("firmware"))
     except HexBotError as exc:  # bad scenario (file:line), missing firmware or C extension
         raise SerialException(str(exc)) from exc
+    if line == RADIO:
+        if not any(m.rf12 for m in cluster.simulator.modules.values()):
+            cluster.close()
+            raise SerialException(f"{url}: no module of {target} has a wireless board "
+                                  "(scenario [firmware] rf12 = \"build/rflink.elf\")")
+        with cluster._lock:
+            cluster.buffer(RADIO)
+            cluster.simulator.pc_radio_read()  # the PC's radio is on the air from now on
+    return cluster, line, True
 
 
 class Serial(SerialBase):
@@ -294,7 +324,8 @@ class Serial(SerialBase):
                                       float(self._stopbits))
         except ValueError as exc:
             raise SerialException(f"{self._port}: {exc}") from exc
-        baud = wire.BAUD_IR if getattr(self, "_uart1", None) is None else wire.BAUD_DEBUG
+        line = getattr(self, "_uart1", None)
+        baud = wire.BAUD_IR if line is None or line == RADIO else wire.BAUD_DEBUG
         self._wire = LineSettings(baud)  # what the modules' UARTs speak
 
     @property

@@ -22,7 +22,13 @@ from collections.abc import Callable
 from typing import Any
 
 from hexbot.errors import HexBotError, HexBotTimeoutError, ScenarioError
-from hexbot.protocol.pins import COMM_PORTS, DIP_PORT, RF12_IRQ_PIN, RF12_SPI_PINS
+from hexbot.protocol.pins import (
+    COMM_PORTS,
+    DIP_PORT,
+    RF12_IRQ_PIN,
+    RF12_LINK_UART,
+    RF12_SPI_PINS,
+)
 from hexbot.protocol.timing import BAUD_BOARD, BAUD_DEBUG, BAUD_IR, CLOCK_TOLERANCE, F_CPU
 
 from .geometry import CENTRE, Cell, to_global
@@ -155,6 +161,7 @@ class Simulator:
         (port, sel), (_, sdi), (_, sdo), (_, sck) = RF12_SPI_PINS
         self.cluster.attach_rf12(index, (port, sel, sdi, sdo, sck), RF12_IRQ_PIN)
         self.cluster.watch_uart(index, 1)
+        self.cluster.watch_uart(index, RF12_LINK_UART)  # to the comm board's centre input
         module.rf12 = Mcu(self.cluster, index, f"rf12{module.id}")
         self._boards[index] = (module, "rf12")
 
@@ -184,7 +191,7 @@ class Simulator:
             for queue in self._debug_tx.values():
                 if queue:
                     stop = min(stop, queue[0][0])
-            radio_end = self.radio.next_end() if self.radio.radios else None
+            radio_end = self.radio.next_end(self._cycle) if self.radio.active else None
             if radio_end is not None and radio_end > self._cycle:
                 stop = min(stop, radio_end)  # deliver radio bytes on their exact cycle
             reached = self.cluster.run(max(stop, self._cycle + 1))
@@ -263,6 +270,18 @@ class Simulator:
         key = module_id if board == "control" else (module_id, board)
         data = bytes(self._debug_rx[key])
         self._debug_rx[key].clear()
+        return data
+
+    def pc_radio_write(self, data: bytes) -> None:
+        """Bytes out of the PC's radio (``scenario.pc_radio``), in the
+        listing's packets; the first call puts the radio on the air."""
+        self.radio.add_pc(self.scenario.pc_radio, self.hz).write(data, self._cycle)
+
+    def pc_radio_read(self) -> bytes:
+        """Link bytes of the packets the PC's radio heard intact."""
+        pc = self.radio.add_pc(self.scenario.pc_radio, self.hz)
+        data = bytes(pc.received)
+        pc.received.clear()
         return data
 
     # --- state -----------------------------------------------------------------
@@ -352,11 +371,18 @@ class Simulator:
                 if taken:
                     frame = frame_of(module.comm.uart_config(1))
                     air.extend(AirByte(module.id, s, e, b, frame) for s, e, b in taken)
+                    if module.rf12:
+                        self._radio_link(module, taken, frame, to_comm=False)
             else:
                 mcu = module.control if board == "control" else module.rf12
                 debug = self.cluster.uart_take(mcu.index, 1)
                 if debug:
                     self._debug_received(module, debug, board)
+                if board == "rf12":
+                    taken = self.cluster.uart_take(mcu.index, RF12_LINK_UART)
+                    if taken:
+                        self._radio_link(module, taken, frame_of(
+                            mcu.uart_config(RF12_LINK_UART)), to_comm=True)
         while self._pc_tx and self._pc_tx[0][1] <= now:
             start, end, value = self._pc_tx.popleft()
             air.append(AirByte(PC, start, end, value, PC_FRAME))
@@ -370,6 +396,24 @@ class Simulator:
             while queue and queue[0][0] <= now:
                 _, value = queue.popleft()
                 self._debug_send(self.modules[module_id], value)
+
+    def _radio_link(self, module: Module, taken: list[tuple[int, int, int]], frame: Frame,
+                    to_comm: bool) -> None:
+        """The wire between the wireless board's USART0 and the comm board's
+        IR multiplexer (protocol/pins.py RF12_LINK_*): it carries bytes only
+        while the selector is on the centre. A byte sent at another rate or
+        format arrives with a framing error, as garbage."""
+        rf12 = module.rf12
+        assert rf12 is not None
+        target, uart = (module.comm, 1) if to_comm else (rf12, RF12_LINK_UART)
+        receiver = frame_of(target.uart_config(uart))
+        for _start, end, value in taken:
+            if module.channel_at(end) != CENTRE:
+                continue
+            framing_error = not frame.matches(receiver)
+            if framing_error:
+                value = self._garbage.randrange(256)
+            self.cluster.uart_put(target.index, uart, value, framing_error)
 
     def _debug_received(self, module: Module, taken: list[tuple[int, int, int]],
                         board: str) -> None:

@@ -17,6 +17,7 @@
  * port: one boot line.
  */
 #include <avr/pgmspace.h>
+#include <avr/wdt.h>
 
 #include "hexbot_codes.h"
 #include "../rf12/rf12.h"
@@ -64,6 +65,9 @@ int main(void)
     uart_puts_P(UART1, PSTR("\n\rRF12 LINK READY FW=" HB_FW_VERSION "\n\r"));
     tick_t last = tick_now();
     for (;;) {
+        /* Busy, never asleep: nIRQ is no interrupt pin, and the two-byte FIFO
+         * must be read within ~3 ms once a packet starts. */
+        wdt_reset();
         if (rf12_rx_ready())
             air_to_link();
         int16_t b;
