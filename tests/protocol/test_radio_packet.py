@@ -35,7 +35,8 @@ def test_a_bad_sum_or_length_drops_the_packet():
     air = bytearray(radio.packet(radio.payloads(b"hello")[0]))
     air[7] ^= 0x01  # a flipped bit in the payload
     bad_length = bytes([16]) + bytes(15)
-    out, rx = receive(bytes(air) + radio.packet(bad_length) + radio.packet(radio.payloads(b"ok")[0]))
+    ok = radio.packet(radio.payloads(b"ok")[0])
+    out, rx = receive(bytes(air) + radio.packet(bad_length) + ok)
     assert out == b"ok" and (rx.good, rx.bad) == (1, 2)
 
 
@@ -44,7 +45,8 @@ def test_a_silence_mid_packet_restarts_the_sync_search():
     rx = radio.PacketReceiver(gap=5)
     for i, b in enumerate(first):
         rx.push(i, b)
-    out = b"".join(rx.push(100 + i, b) for i, b in enumerate(radio.packet(radio.payloads(b"next")[0])))
+    after = radio.packet(radio.payloads(b"next")[0])
+    out = b"".join(rx.push(100 + i, b) for i, b in enumerate(after))
     assert out == b"next"
 
 
