@@ -15,8 +15,8 @@ the URL scheme first: :func:`hexbot.hil_sim.urlhandler.register`). URL forms:
     ``rflink`` image pass them to and from their comm board (docs/simulator.md,
     "The RF12 radio"). The port speaks 300 baud 8N1 like the IR one.
     ``speed=0`` is *stepped*: virtual time advances only while someone
-    waits for bytes (``read`` with a time-out, counted in simulated seconds) or calls ``hexbot_sim.advance``,
-    so the same calls give the same trace. ``speed=N`` (default 1) runs the
+    waits for bytes (``read`` with a time-out, counted in simulated
+    seconds) or calls ``hexbot_sim.advance``, so the same calls give the same trace. ``speed=N`` (default 1) runs the
     cluster on its own thread at N times real time. ``firmware=DIR`` runs
     every module on DIR's comm.elf and control.elf instead of the
     scenario's images (a regression matrix over firmware builds).
