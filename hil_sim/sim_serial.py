@@ -16,10 +16,11 @@ the URL scheme first: :func:`hexbot.hil_sim.urlhandler.register`). URL forms:
     "The RF12 radio"). The port speaks 300 baud 8N1 like the IR one.
     ``speed=0`` is *stepped*: virtual time advances only while someone
     waits for bytes (``read`` with a time-out, counted in simulated
-    seconds) or calls ``hexbot_sim.advance``, so the same calls give the same trace. ``speed=N`` (default 1) runs the
-    cluster on its own thread at N times real time. ``firmware=DIR`` runs
-    every module on DIR's comm.elf and control.elf instead of the
-    scenario's images (a regression matrix over firmware builds).
+    seconds) or calls ``hexbot_sim.advance``, so the same calls give the
+    same trace. ``speed=N`` (default 1) runs the cluster on its own thread
+    at N times real time. ``firmware=DIR`` runs every module on DIR's
+    comm.elf and control.elf instead of the scenario's images (a
+    regression matrix over firmware builds).
 ``hexbot-sim://@INSTANCE/uart1/ID``
     module ID's control-board debug port (UART1, 4800 baud) on a cluster
     this process already opened (``hexbot_sim.uart1_url(ID)`` makes it).
