@@ -72,6 +72,7 @@ def test_full_file(tmp_path):
         ("id = 2\n", "id = 256\n", 18, "outside 1..255"),
         ("id = 2\n", "id = 2\nclock_ppm = 60000\n", 19, "beyond +-50000 ppm"),
         ("seed = ", "clock_spread_ppm = -5\nseed = ", 2, "must not be negative"),
+        ("seed = ", "pc_radio = [1]\nseed = ", 2, "pc_radio must be a cell [x, y]"),
     ],
 )
 def test_semantic_errors_name_file_line_problem(tmp_path, old, new, line, problem):
