@@ -104,3 +104,26 @@ def test_a_radio_port_needs_a_module_with_a_wireless_board():
         serial.serial_for_url("hexbot-sim://pair?speed=0&radio=1")
     with pytest.raises(serial.SerialException, match="radio must be 0"):
         serial.serial_for_url("hexbot-sim://pair-radio?speed=0&radio=2")
+
+
+def ack_after(write, read, frame: bytes) -> float:
+    """Simulated seconds from writing ``frame`` after boot to the end of its ACK."""
+    sim = Simulator(load_scenario("pair-radio"))
+    sim.pc_radio_read()
+    sim.run(BOOTED_S)
+    read(sim)
+    write(sim, frame)
+    got = b""
+    while not (b"ACK" in got and got.endswith(b"\n\r")):
+        sim.run(0.005)
+        got += read(sim)
+    return sim.time - BOOTED_S
+
+
+def test_the_radio_adds_about_a_tenth_of_a_second_to_the_ir_round_trip():
+    # two packets on the air (42 ms each) and the bridge's quiet time (70 ms)
+    frame = frames.encode_pc(frames.make("JxOpen", 3))
+    by_ir = ack_after(Simulator.pc_write, Simulator.pc_read, frame)
+    by_radio = ack_after(Simulator.pc_radio_write, Simulator.pc_radio_read, frame)
+    print(f"ACK by IR {by_ir:.3f} s, by radio {by_radio:.3f} s")
+    assert 0.05 < by_radio - by_ir < 0.2
