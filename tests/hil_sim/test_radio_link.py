@@ -16,6 +16,7 @@ from hexbot.hil_sim.urlhandler import register
 from hexbot.protocol import frames
 from hexbot.protocol.header import schema_hash
 from hexbot.protocol.parser import Ack, StatusReport, parse_all
+from hexbot.protocol.timing import IRSEL_HOLD_TICKS, TICK_S
 
 ROOT = Path(__file__).resolve().parents[2]
 RFLINK = ROOT / "firmware" / "build" / "rflink.elf"
@@ -127,3 +128,17 @@ def test_the_radio_adds_about_a_tenth_of_a_second_to_the_ir_round_trip():
     by_radio = ack_after(Simulator.pc_radio_write, Simulator.pc_radio_read, frame)
     print(f"ACK by IR {by_ir:.3f} s, by radio {by_radio:.3f} s")
     assert 0.05 < by_radio - by_ir < 0.2
+
+
+def test_the_radio_reaches_the_comm_board_only_while_its_selector_is_on_the_centre():
+    sim, heard = radio_exchange("pair-radio", frames.encode_pc(frames.make("IrSel", 3)))
+    assert parse_all(heard) == [Ack(b"", code=25, role="M")]  # answered on the centre
+    sim.pc_radio_write(frames.encode_pc(frames.make("JxOpen", 3)))
+    sim.run(3.0)  # the selector listens on side 3: the bridge's bytes go nowhere
+    assert sim.pc_radio_read() == b""
+    assert sim.actuators(2)["joints"] == [0] * 6
+    sim.run(IRSEL_HOLD_TICKS * TICK_S)  # silence: back on the centre
+    sim.pc_radio_write(frames.encode_pc(frames.make("JxOpen", 3)))
+    sim.run(3.0)
+    assert parse_all(sim.pc_radio_read()) == [Ack(b"", code=1, role="M")]
+    assert sim.actuators(2)["joints"] == [0, 0, 1, 0, 0, 0]
