@@ -38,7 +38,7 @@ from hexbot.planning.configuration import (
     articulation_points,
     contact_hops,
 )
-from hexbot.planning.hexlattice import Cell, distance, rotate_cell, wrap
+from hexbot.planning.hexlattice import Cell, distance, neighbors, rotate_cell, wrap
 from hexbot.planning.moves import Move, orientation_after
 from hexbot.planning.robust import (
     PlanningFailure,
@@ -136,23 +136,46 @@ def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell) -> tuple[i
     return None
 
 
+def _hops_from(occupied: set[Cell], roots: list[Cell]) -> dict[Cell, int]:
+    """Contact hops from the nearest of ``roots`` (one breadth-first pass)."""
+    if len(roots) == 1:
+        return contact_hops(occupied, roots[0])
+    hops = dict.fromkeys(roots, 0)
+    queue = deque(roots)
+    while queue:
+        cell = queue.popleft()
+        for n in neighbors(cell):
+            if n in occupied and n not in hops:
+                hops[n] = hops[cell] + 1
+                queue.append(n)
+    return hops
+
+
 def to_strip(config: Configuration, width: int,
-             deadline: Deadline = NO_DEADLINE) -> list[Move]:
-    """Serial moves that gather ``config`` into the strip at its anchor."""
+             deadline: Deadline = NO_DEADLINE, keep: list[Cell] | None = None) -> list[Move]:
+    """Serial moves that gather ``config`` into the strip at its anchor.
+
+    ``keep``: a path of modules from a fixed module to the anchor that stays put
+    (a *spine*, :func:`spine_to`); the others gather farthest from it first. A
+    module farthest from a connected set it is not part of is never a cut
+    vertex, so the argument of the plain strip carries over."""
     occupied = set(config.cells)
     ids = {c: m.id for c, m in config.items()}
     anchor = anchor_of(config.cells)
-    built = {anchor}
+    roots = list(keep) if keep else [anchor]
+    if anchor not in roots:
+        raise ValueError(f"the spine must end at the anchor {anchor}")
+    built = set(roots)
     moves: list[Move] = []
     order: list[Cell] = []
-    for target in strip_cells(anchor, len(config), width):
+    for target in strip_cells(anchor, len(config) - len(roots) + 1, width):
         deadline.check("canonical strip")
         if target in occupied:  # cannot happen: every cell right of the anchor is empty
             raise PlanningFailure(f"strip cell {target} is occupied")
         if not order:
             # farthest first; taking a farthest module changes no other distance, so the
             # order is only recomputed when a nearer module had to go instead
-            hops = contact_hops(occupied, anchor)
+            hops = _hops_from(occupied, roots)
             order = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
         picked = _pick_mover(occupied, order, target)
         if picked is None:
@@ -273,6 +296,84 @@ def strip_estimate(initial: frozenset[Cell], goal: frozenset[Cell], turn: int) -
             + len(ra) * abs(ab[1] - aa[1]))
 
 
+def spine_to(cells: frozenset[Cell] | set[Cell], start: Cell, end: Cell) -> list[Cell]:
+    """A shortest contact path of modules from ``start`` to ``end`` (both included)."""
+    parent: dict[Cell, Cell | None] = {start: None}
+    queue = deque([start])
+    while queue:
+        cell = queue.popleft()
+        if cell == end:
+            break
+        for n in neighbors(cell):
+            if n in cells and n not in parent:
+                parent[n] = cell
+                queue.append(n)
+    if end not in parent:
+        raise PlanningFailure(f"{end} is not connected to {start}")
+    path = [end]
+    while parent[path[-1]] is not None:
+        path.append(parent[path[-1]])
+    return path[::-1]
+
+
+def to_fixed_strip(config: Configuration, fixed: Cell, turn: int, width: int,
+                   deadline: Deadline = NO_DEADLINE) -> tuple[list[Move], int]:
+    """Serial moves gathering ``config`` into the strip anchored at the ``fixed``
+    module, which never moves, and the turn of the frame that strip grows in.
+
+    A strip needs its anchor extreme, and the fixed module rarely is. So, in the
+    frame turned by ``turn``: keep a spine, a shortest contact path from the fixed
+    module to the extreme module, and gather everything else into the strip at the
+    extreme module (:func:`to_strip` with ``keep``). What is left is the spine and
+    the strip; turned half a turn, its extreme module lies on the spine (the strip
+    is beyond the old anchor) and differs from the old anchor, so the next spine is
+    a strictly shorter part of this one. Repeat, turning half a turn each time,
+    until the extreme module is the fixed one: then the whole configuration is the
+    strip at the fixed module. At most one stage per module of the first spine.
+    """
+    moves: list[Move] = []
+    current = config
+    stages = None
+    while True:
+        deadline.check("canonical strip")
+        turned = _rotated(current, -turn)
+        anchor = anchor_of(turned.cells)
+        spine = spine_to(turned.cells, rotate_cell(fixed, -turn), anchor)
+        stages = len(spine) if stages is None else stages - 1
+        if stages < 1:  # cannot happen: each spine is shorter than the last
+            raise PlanningFailure("the spine did not shrink")
+        part = [_rotate_move(m, turn) for m in to_strip(turned, width, deadline, keep=spine)]
+        moves += part
+        current = replay(current, part)
+        if len(spine) == 1:
+            return moves, turn
+        turn = (turn + 3) % 6
+
+
+def via_fixed_strip(initial: Configuration, goal: frozenset[Cell], fixed: Cell,
+                    width: int, turn: int,
+                    deadline: Deadline = NO_DEADLINE) -> list[Move]:
+    """initial -> strip at the fixed module -> goal, the fixed module never moving
+    (:func:`to_fixed_strip` both ways; the two strips grow in the same frame or
+    in opposite ones, and the fixed module is extreme in both, so one more
+    gathering turns one into the other)."""
+    first, end_turn = to_fixed_strip(initial, fixed, turn, width, deadline)
+    at = replay(initial, first)
+    provisional = Configuration.from_cells(goal, first_id=10**6)
+    backward, goal_turn = to_fixed_strip(provisional, fixed, turn, width, deadline)
+    if goal_turn != end_turn:
+        turn_over, _ = to_fixed_strip(at, fixed, goal_turn, width, deadline)
+        first += turn_over
+        at = replay(at, turn_over)
+    end = replay(provisional, backward)
+    if end.cells != at.cells:  # a bug, not a user error
+        raise PlanningFailure("internal error: the two strips at the fixed module differ")
+    real = {end[c].id: at[c].id for c in end}
+    return first + [replace(reverse_move(m), module=real[m.module],
+                            substrate_module=real[m.substrate_module])
+                    for m in reversed(backward)]
+
+
 def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10**7,
               widths: list[int] | None = None, fixed: Cell | None = None,
               deadline: Deadline = NO_DEADLINE) -> list[Move]:
@@ -281,24 +382,19 @@ def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10
     Tries each width of ``widths`` (default :func:`default_widths`) with the strip
     growing in each of the six lattice directions (the whole problem is turned,
     planned, and its moves turned back), the directions ranked by
-    :func:`strip_estimate`. A ``fixed`` module (bolted to the base)
-    allows only the directions in which it is the anchor of both configurations.
+    :func:`strip_estimate`. With a ``fixed`` module (bolted to the base) the strip
+    grows at that module (:func:`via_fixed_strip`).
     """
     failures = []
-    turns = list(range(6))
-    if fixed is not None:
-        turns = [t for t in turns
-                 if rotate_cell(fixed, -t) == anchor_of({rotate_cell(c, -t) for c in goal})
-                 == anchor_of({rotate_cell(c, -t) for c in initial.cells})]
-        if not turns:
-            raise PlanningFailure(f"the fixed module at {fixed} would have to move (a strip "
-                                  "keeps only the extreme module in place, and the fixed one "
-                                  "is not extreme in the same direction in both "
-                                  "configurations)")
-    turns.sort(key=lambda t: (strip_estimate(initial.cells, goal, t), t))
+    turns = sorted(range(6), key=lambda t: (strip_estimate(initial.cells, goal, t), t))
     for width in widths or default_widths(len(initial)):
         for turn in turns:
             try:
+                if fixed is not None:
+                    moves = via_fixed_strip(initial, goal, fixed, width, turn, deadline)
+                    if len(moves) > max_moves:
+                        raise PlanningFailure(f"more than {max_moves} moves needed")
+                    return moves
                 moves = _via_strip_once(_rotated(initial, -turn),
                                         frozenset(rotate_cell(c, -turn) for c in goal),
                                         width, max_moves, deadline)

@@ -6,9 +6,10 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from hexbot.planning.checker import check_plan
 from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.generate import parallelogram, random_blob
-from hexbot.planning.plan import check_step
+from hexbot.planning.plan import Step, check_step
 from hexbot.planning.robust import is_immobile, plan_robust, step_lower_bound
 
 
@@ -134,7 +135,6 @@ def test_canonical_strip_goes_through_the_strip_and_keeps_the_anchor():
 
 def test_canonical_plan_is_legal_when_the_strip_grows_in_a_turned_frame():
     from hexbot.planning.canonical import replay, via_strip
-    from hexbot.planning.plan import Step, check_step
 
     # the first pair found where the strip to the right cannot be built (a spindly start)
     a = random_blob(12, 188553, compact=random.Random(188553).random())
@@ -147,12 +147,30 @@ def test_canonical_plan_is_legal_when_the_strip_grows_in_a_turned_frame():
     assert config.cells == b
 
 
-def test_fixed_module_blocks_the_strip_with_a_clear_reason():
+def test_a_fixed_module_extreme_in_no_direction_stays_put_on_the_strip_route():
     a, b = random_blob(100, 0, 0.8), random_blob(100, 1, 0.8)
     fixed = (0, 0)  # both blobs grow from it; it is extreme in no direction
     plan = plan_robust(Configuration.from_cells(a), b, fixed=fixed)
-    assert not plan.reached and not plan.steps
-    assert "fixed module at (0, 0) would have to move" in plan.reason
+    assert plan.reached, plan.reason
+    assert_legal(plan)
+    report = check_plan(Configuration.from_cells(a), b, plan.steps, fixed=fixed)
+    assert report.ok, report.problem
+    assert all(m.src != fixed for s in plan.steps for m in s.moves)
+
+
+def test_the_spine_route_ends_in_the_strip_at_the_fixed_module():
+    from hexbot.planning.canonical import replay, strip_shape, to_fixed_strip
+    from hexbot.planning.hexlattice import rotate_cell
+
+    config = Configuration.from_cells(random_blob(40, 3, 0.5))
+    fixed = (0, 0)
+    moves, turn = to_fixed_strip(config, fixed, 0, 3)
+    assert all(m.src != fixed for m in moves)
+    for move in moves:
+        assert check_step(config, Step([move])) == []
+        config = replay(config, [move])
+    strip = {rotate_cell(c, turn) for c in strip_shape(rotate_cell(fixed, -turn), 40, 3)}
+    assert config.cells == strip
 
 
 def test_fixed_module_at_the_extreme_of_both_keeps_still_on_the_strip_route():
