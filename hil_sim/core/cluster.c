@@ -43,6 +43,7 @@ void cluster_free(cluster_t *c)
 		ir_free(ir);
 	}
 	free(c->mcu);
+	free(c->ir);
 	free(c);
 }
 

@@ -186,10 +186,22 @@ int ir_attach(cluster_t *c, int mcu, int uart, int sel_port, const uint8_t sel_b
 	m162_t *m = c->mcu[mcu];
 	ir_port_t *p = m->ir;
 	if (!p) {
+		ir_port_t **list = realloc(c->ir, (size_t)(c->n_ir + 1) * sizeof *list);
+		if (!list)
+			return -1;
+		c->ir = list;
 		p = calloc(1, sizeof *p);
 		if (!p)
 			return -1;
 		m->ir = p;
+		/* keep the list in index order: routing order decides ties */
+		int k = c->n_ir++;
+		while (k > 0 && c->ir[k - 1]->index > mcu) {
+			c->ir[k] = c->ir[k - 1];
+			k--;
+		}
+		c->ir[k] = p;
+		p->index = mcu;
 	}
 	p->m = m;
 	p->index = mcu;
@@ -217,10 +229,9 @@ void ir_set_routes(cluster_t *c, int mcu, const ir_route_t routes[8])
 
 void ir_set_seed(cluster_t *c, uint64_t seed)
 {
-	for (int i = 0; i < c->n; i++) {
-		ir_port_t *p = c->mcu[i]->ir;
-		if (!p)
-			continue;
+	for (int k = 0; k < c->n_ir; k++) {
+		ir_port_t *p = c->ir[k];
+		int i = p->index;
 		/* splitmix64 of (seed, index): never 0, different per receiver */
 		uint64_t z = seed + 0x9E3779B97F4A7C15ULL * (uint64_t)(i + 1);
 		z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
@@ -235,9 +246,9 @@ void ir_send_from_pc(cluster_t *c, uint64_t start, uint64_t end, uint8_t byte,
 {
 	/* one stop bit: its middle is half a bit before the end */
 	uint64_t mid = end - bit_cycles + bit_cycles / 2;
-	for (int i = 0; i < c->n; i++) {
-		ir_port_t *p = c->mcu[i]->ir;
-		if (!p || p->centre_y < 0)
+	for (int i = 0; i < c->n_ir; i++) {
+		ir_port_t *p = c->ir[i];
+		if (p->centre_y < 0)
 			continue;
 		enqueue(p, (ir_air_t){ .start = start, .due = mid, .end = end, .sender = IR_PC,
 			.byte = byte, .format = format, .need_y = (uint8_t)p->centre_y,
@@ -248,18 +259,14 @@ void ir_send_from_pc(cluster_t *c, uint64_t start, uint64_t end, uint8_t byte,
 int ir_boundary(cluster_t *c)
 {
 	int news = 0;
-	for (int i = 0; i < c->n; i++) {
-		ir_port_t *p = c->mcu[i]->ir;
-		if (!p)
-			continue;
+	for (int i = 0; i < c->n_ir; i++) {
+		ir_port_t *p = c->ir[i];
 		m162_usart_t *s = p->s;
 		for (; s->ir_pos < s->log_len; s->ir_pos++)
 			route(c, p, &s->log[s->ir_pos]);
 	}
-	for (int i = 0; i < c->n; i++) {
-		ir_port_t *p = c->mcu[i]->ir;
-		if (!p)
-			continue;
+	for (int i = 0; i < c->n_ir; i++) {
+		ir_port_t *p = c->ir[i];
 		if (p->inbox_len) {
 			avr_t *avr = p->m->avr;
 			if (!alive(p))

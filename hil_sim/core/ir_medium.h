@@ -74,17 +74,19 @@ typedef struct ir_pcbyte_t {
 } ir_pcbyte_t;
 
 typedef struct ir_port_t {
+	/* what every boundary reads first, in one cache line: with hundreds of
+	 * MCUs the boundary's cost is its cache misses */
+	m162_usart_t *s;
+	int inbox_len;
+	int sel_port;         /* 0..4 = A..E */
+	size_t n_pc, pc_notified;
 	m162_t *m;
 	int index;            /* MCU index in the cluster */
-	m162_usart_t *s;
-	int sel_port;         /* 0..4 = A..E */
+	int centre_y;         /* selector index that routes to the PC, -1 none */
 	uint8_t sel_bits[3];  /* bits of the selector lines A, B, C */
 	double tolerance;
 	ir_route_t routes[8];
-	int centre_y;         /* selector index that routes to the PC, -1 none */
 	/* receiver */
-	ir_air_t inbox[IR_INBOX]; /* sorted by due */
-	int inbox_len;
 	uint64_t overflow;    /* bytes lost because the inbox was full */
 	struct {
 		int valid, fe, n;
@@ -98,7 +100,8 @@ typedef struct ir_port_t {
 	uint64_t seq;
 	/* sender: bytes on the centre channel, for the PC */
 	ir_pcbyte_t *to_pc;
-	size_t n_pc, cap_pc, pc_notified;
+	size_t cap_pc;
+	ir_air_t inbox[IR_INBOX]; /* sorted by due */
 } ir_port_t;
 
 /* Attach MCU mcu's USART uart to the medium; the selector lines A, B, C are
