@@ -146,14 +146,14 @@ class Plant:
     def module_at(self, cell: Cell) -> int | None:
         return self.cells.get(cell)
 
-    def next_deadline(self) -> int | None:
-        """The earliest cycle at which step() may decide something without a
-        new output change: a finished pulse's resolve_wait running out."""
+    def next_deadline(self, now: int) -> int | None:
+        """The earliest cycle after ``now`` at which step() may decide something
+        without a new output change: a finished pulse's resolve_wait running out."""
         wait = self._cycles(self.timing.resolve_wait)
-        ends = [p.end for p in self._pending if p.end is not None]
-        ends += [p.end for body in self.bodies.values() for p in body.pulses
+        ends = [p.end + wait for p in self._pending if p.end is not None]
+        ends += [p.end + wait for body in self.bodies.values() for p in body.pulses
                  if not p.used and p.end is not None]
-        return min(ends) + wait if ends else None
+        return min((t for t in ends if t > now), default=None)
 
     def _cycles(self, seconds: float) -> int:
         return round(seconds * self.hz)

@@ -256,8 +256,8 @@ class Simulator:
             self.cluster.ir_send_from_pc(start, end, value)
         if self._pc_tx:
             stop = self._pc_tx[0][0]
-        deadline = self.plant.next_deadline()
-        if deadline is not None and deadline > self._cycle:
+        deadline = self.plant.next_deadline(self._cycle)
+        if deadline is not None:
             stop = min(stop, deadline)
         return stop
 
