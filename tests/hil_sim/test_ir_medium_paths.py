@@ -96,3 +96,37 @@ def test_fault_injection_keeps_the_python_medium(flower7):
     one_link = replace(flower7, link_faults={(1, 2): Faults(bit_error_rate=0.001)})
     assert not Simulator(one_link).ir_in_c
     assert Simulator(flower7).ir_in_c
+
+
+class ScriptedEvents:
+    """The real core, with the next ir_events() answer scripted."""
+
+    def __init__(self) -> None:
+        from hexbot.hil_sim.simulator import _load_core, lookahead_cycles
+        self.core = _load_core().Cluster(lookahead_cycles())
+        self.script: list[tuple] = []
+
+    def __getattr__(self, name: str):
+        return getattr(self.core, name)
+
+    def ir_events(self) -> list[tuple]:
+        taken, self.script = self.script + self.core.ir_events(), []
+        return taken
+
+
+def test_core_events_are_worded_as_the_python_mediums(flower7):
+    cluster = ScriptedEvents()
+    sim = Simulator(flower7, seed=1, cluster=cluster)
+    comm = {m: sim.modules[m].comm.index for m in sim.modules}
+    cluster.script = [
+        ("ir-collision", 2000, comm[3], comm[1], 0x3C, (comm[2], -1)),
+        ("ir-dropped", 2500, -1, comm[4], 0x41, ()),
+    ]
+    sim.run(0.01)
+    events = [e for e in sim.events if e["event"] in ("ir-collision", "ir-dropped")]
+    assert events == [
+        {"t": 0.002, "event": "ir-collision", "from": 3, "to": 1, "byte": 0x3C,
+         "other": [2, "pc"]},
+        {"t": 0.0025, "event": "ir-dropped", "from": "pc", "to": 4, "byte": 0x41,
+         "reason": "receiver off (RXEN) or overrun"},
+    ]
