@@ -906,8 +906,23 @@ static PyObject *Cluster_ir_state(ClusterObject *self, PyObject *args)
 	ir_port_t *p = ir_arg(self, m);
 	if (!p)
 		return NULL;
-	return Py_BuildValue("{s:i,s:K,s:n}", "in_flight", p->inbox_len, "overflow",
-			(unsigned long long)p->overflow, "for_pc", (Py_ssize_t)p->n_pc);
+	static const char *kinds[] = { "none", "pc", "mcu" };
+	PyObject *routes = PyList_New(8);
+	for (int y = 0; routes && y < 8; y++) {
+		const ir_route_t *r = &p->routes[y];
+		PyObject *t = r->kind == IR_ROUTE_MODULE
+			? Py_BuildValue("(sii)", kinds[r->kind], r->target, r->need_y)
+			: Py_BuildValue("(s)", kinds[r->kind]);
+		if (!t) {
+			Py_CLEAR(routes);
+			break;
+		}
+		PyList_SET_ITEM(routes, y, t);
+	}
+	if (!routes)
+		return NULL;
+	return Py_BuildValue("{s:i,s:K,s:n,s:N}", "in_flight", p->inbox_len, "overflow",
+			(unsigned long long)p->overflow, "for_pc", (Py_ssize_t)p->n_pc, "routes", routes);
 }
 
 static PyObject *Cluster_wake_on_pins(ClusterObject *self, PyObject *args)
@@ -980,7 +995,7 @@ static PyMethodDef Cluster_methods[] = {
 		"ir_events() -> [(name, end, sender, receiver, byte, others)] since the last call "
 		"(sender -1: the PC)" },
 	{ "ir_state", (PyCFunction)Cluster_ir_state, METH_VARARGS,
-		"ir_state(mcu) -> {in_flight, overflow, for_pc}" },
+		"ir_state(mcu) -> {in_flight, overflow, for_pc, routes}" },
 	{ "wake_on_pins", (PyCFunction)Cluster_wake_on_pins, METH_VARARGS,
 		"wake_on_pins(mcu, 'ABD'): run() returns at the boundary after these ports change" },
 	{ "set_input", (PyCFunction)Cluster_set_input, METH_VARARGS,

@@ -9,6 +9,7 @@ from dataclasses import replace
 
 import pytest
 
+from hexbot.hil_sim.geometry import CENTRE, CHANNEL_SIDE, facing, neighbor, to_global
 from hexbot.hil_sim.scenario import Faults, load_scenario
 from hexbot.hil_sim.simulator import Simulator
 from hexbot.hil_sim.vcd import VcdWriter
@@ -130,3 +131,50 @@ def test_core_events_are_worded_as_the_python_mediums(flower7):
         {"t": 0.0025, "event": "ir-dropped", "from": "pc", "to": 4, "byte": 0x41,
          "reason": "receiver off (RXEN) or overrun"},
     ]
+
+
+def test_core_routes_follow_the_plant(flower7):
+    """Each comm board's routes name who the Python medium would deliver to,
+    and are sent again when the plant moves a module."""
+    sim = Simulator(flower7, seed=1)
+
+    def expected(module_id: int) -> list[tuple]:
+        module = sim.modules[module_id]
+        routes: list[tuple] = []
+        for y in range(8):
+            channel = CHANNEL_SIDE[y]
+            if channel is None:
+                routes.append(("none",))
+            elif channel == CENTRE:
+                routes.append(("pc",))
+            else:
+                side = to_global(channel, module.orientation)
+                other = sim.module_at(neighbor(module.position, side))
+                if other is None:
+                    routes.append(("none",))
+                else:
+                    # the Python medium: heard if the other's selector, as a
+                    # global side, faces the sender
+                    need = next(k for k in range(8) if CHANNEL_SIDE[k] not in (None, CENTRE)
+                                and to_global(CHANNEL_SIDE[k], sim.modules[other].orientation)
+                                == facing(side))
+                    routes.append(("mcu", sim.modules[other].comm.index, need))
+        return routes
+
+    def routes(module_id: int) -> list[tuple]:
+        return sim.cluster.ir_state(sim.modules[module_id].comm.index)["routes"]
+
+    for module_id in sim.modules:
+        assert routes(module_id) == expected(module_id)
+    assert sum(r[0] == "mcu" for r in routes(1)) == 6  # the centre of the flower
+    # move module 2 one cell out, turned, as a rotation would (plant bookkeeping)
+    body = sim.plant.bodies[2]
+    del sim.plant.cells[body.cell]
+    body.cell = (body.cell[0] * 2, body.cell[1] * 2)
+    body.orientation = (body.orientation + 2) % 6
+    sim.plant.cells[body.cell] = 2
+    sim.plant.geometry_version += 1
+    sim.run(0.01)
+    for module_id in sim.modules:
+        assert routes(module_id) == expected(module_id)
+    assert sum(r[0] == "mcu" for r in routes(1)) == 5
