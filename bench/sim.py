@@ -1,6 +1,7 @@
 """``hexbot bench sim``: simulator throughput by cluster size, measured now.
 
     hexbot bench sim [--json] [--sizes 7,50,200,255] [--seconds S] [--repeat N]
+                     [--ir core|python]
 
 For each size N, a generated blob of N modules (``blob:N``, the real
 firmware images, the whole Python loop: IR medium, plant, pin logs):
@@ -15,6 +16,8 @@ Reference: raw simavr (its own run loop, stock atmega128 core) on one MCU
 in the same CPU-bound loop, measured in the same run (bench/raw_simavr.c).
 Each case is the best of --repeat runs (the machine is shared); the peak
 resident memory of the process is read after each size. One thread.
+--ir python routes IR bytes between modules in the Python medium (as before
+the core's medium, and as with fault injection), for a comparison.
 """
 
 from __future__ import annotations
@@ -44,6 +47,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--repeat", type=int, default=1, help="runs per case; the best counts (default 1)"
     )
+    parser.add_argument("--ir", choices=("core", "python"), default="core",
+                        help="where IR bytes between modules are routed (default core)")
 
 
 def _timed(sim: Simulator, action) -> tuple[float, float]:
@@ -70,10 +75,10 @@ def _start_wave(sim: Simulator) -> None:
     sim.pc_write(encode_pc(make("Localize")))
 
 
-def measure_size(count: int, seconds: float, busy_elf: str) -> dict:
+def measure_size(count: int, seconds: float, busy_elf: str, ir: str = "core") -> dict:
     ids = range(1, count + 1)
     mcus = 2 * count
-    sim = Simulator(generate("blob", count, seed=1))
+    sim = Simulator(generate("blob", count, seed=1), ir_in_c=ir == "core")
     boot = _rates(mcus, *_timed(sim, lambda s: s.run(boot_seconds(ids))), sim.hz)
     idle = _rates(mcus, *_timed(sim, lambda s: s.run(seconds)), sim.hz)
     _start_wave(sim)
@@ -85,7 +90,8 @@ def measure_size(count: int, seconds: float, busy_elf: str) -> dict:
     cluster.run(BUSY_CYCLES)
     busy_wall = time.perf_counter() - t0
     return {"modules": count, "mcus": mcus, "quantum_cycles": sim.cluster.quantum_cycles,
-            "threads": 1, "boot": boot, "idle": idle, "wave": wave,
+            "threads": 1, "ir": "core" if sim.ir_in_c else "python",
+            "boot": boot, "idle": idle, "wave": wave,
             "busy": {"cycles_per_mcu_per_s": round(BUSY_CYCLES / busy_wall * mcus),
                      "wall_s": round(busy_wall, 3)},
             "peak_rss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)}
@@ -100,14 +106,14 @@ def _best(runs: list[dict]) -> dict:
     return best
 
 
-def measure(sizes: list[int], seconds: float, repeat: int = 1) -> dict:
+def measure(sizes: list[int], seconds: float, repeat: int = 1, ir: str = "core") -> dict:
     busy162, busy128 = avr_program("cpuloop", "atmega162"), avr_program("cpuloop", "atmega128")
     raw_cycles = 20_000_000
     raw = round(raw_cycles / min(raw_simavr_seconds(busy128, "atmega128", raw_cycles)
                                  for _ in range(repeat)))
     results = []
     for count in sizes:
-        best = _best([measure_size(count, seconds, busy162) for _ in range(repeat)])
+        best = _best([measure_size(count, seconds, busy162, ir) for _ in range(repeat)])
         # per-MCU cycles on one core, against raw simavr's one MCU
         best["busy"]["vs_raw"] = round(best["busy"]["cycles_per_mcu_per_s"] / raw, 3)
         results.append(best)
@@ -124,7 +130,7 @@ def run(args: argparse.Namespace) -> int:
     except ValueError:
         raise HexBotError(
             f"--sizes takes numbers separated by commas, not {args.sizes!r}") from None
-    result = measure(sizes, args.seconds, args.repeat)
+    result = measure(sizes, args.seconds, args.repeat, args.ir)
     if args.json:
         print(json.dumps(result))
         return 0

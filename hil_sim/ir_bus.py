@@ -144,6 +144,12 @@ class IrMedium:
         for receiver in self._receivers(byte):
             self._arrive(byte, receiver)
 
+    def transmit_to(self, byte: AirByte, receiver: Endpoint) -> None:
+        """A byte whose receiver the core's medium chose (hil_sim/core/ir_medium.c:
+        bytes for the PC); the same rules from here on."""
+        self._longest_frame = max(self._longest_frame, byte.end - byte.start)
+        self._arrive(byte, receiver)
+
     def _receivers(self, byte: AirByte) -> list[Endpoint]:
         if byte.sender == PC:
             return [

@@ -135,6 +135,7 @@ class Plant:
     bodies: dict[int, Body] = field(default_factory=dict)
     cells: dict[Cell, int] = field(default_factory=dict)
     _pending: list[Pulse] = field(default_factory=list)
+    geometry_version: int = 0  # bumped by every move: the core's IR routes follow it
 
     def add(self, module: int, cell: Cell, orientation: int, fixed: bool = False) -> None:
         if cell in self.cells:
@@ -144,6 +145,15 @@ class Plant:
 
     def module_at(self, cell: Cell) -> int | None:
         return self.cells.get(cell)
+
+    def next_deadline(self, now: int) -> int | None:
+        """The earliest cycle after ``now`` at which step() may decide something
+        without a new output change: a finished pulse's resolve_wait running out."""
+        wait = self._cycles(self.timing.resolve_wait)
+        ends = [p.end + wait for p in self._pending if p.end is not None]
+        ends += [p.end + wait for body in self.bodies.values() for p in body.pulses
+                 if not p.used and p.end is not None]
+        return min((t for t in ends if t > now), default=None)
 
     def _cycles(self, seconds: float) -> int:
         return round(seconds * self.hz)
@@ -300,6 +310,7 @@ class Plant:
         self.cells[target] = body.id
         body.cell = target
         body.orientation = (body.orientation + pivot.turn) % 6
+        self.geometry_version += 1
         self.emit(t, {"event": "moved", "module": body.id, "from": list(source),
                       "to": list(target), "orientation": body.orientation,
                       "joint": body_joint, **info})

@@ -2,10 +2,19 @@
 
 It owns the time loop. The C core runs every MCU in lock-step and returns at
 the first quantum boundary after a watched UART byte completes; in between,
-this loop moves bytes (IR, debug ports, PC), reads the pin logs (selectors,
+this loop moves bytes (debug ports, PC), reads the pin logs (selectors,
 actuators, LEDs) of the MCUs the core reports as changed, and lets the plant
 resolve rotations. Everything is in virtual time: a run is as fast as the
 host allows and the same scenario and seed give the same trace.
+
+IR bytes between modules are routed by the core itself (hil_sim/core/
+ir_medium.c): this loop gives it, per comm board and selector index, who
+hears the byte (from the plant's geometry, again after every move), and it
+hands back the bytes for the PC and the collision/drop/garble events. A
+scenario with IR fault injection, or a cluster without that API (the unit
+tests' double), keeps the whole medium in Python (hil_sim/ir_bus.py), which
+delivers at the boundary after a byte's end instead of in the middle of its
+stop bit. ``Simulator(..., ir_in_c=False)`` asks for the Python medium.
 
 The quantum defaults to the lookahead of the fastest wire the core routes
 itself (a module's board link): no byte can start and reach the middle of its
@@ -24,14 +33,16 @@ from typing import Any
 from hexbot.errors import HexBotError, HexBotTimeoutError, ScenarioError
 from hexbot.protocol.pins import (
     COMM_PORTS,
+    CONTROL_PORTS,
     DIP_PORT,
     RF12_IRQ_PIN,
     RF12_LINK_UART,
     RF12_SPI_PINS,
+    SELECTOR_PINS,
 )
 from hexbot.protocol.timing import BAUD_BOARD, BAUD_DEBUG, BAUD_IR, CLOCK_TOLERANCE, F_CPU
 
-from .geometry import CENTRE, Cell, to_global
+from .geometry import CENTRE, CHANNEL_SIDE, SIDE_CHANNEL, Cell, facing, neighbor, to_body, to_global
 from .ir_bus import PC_FRAME, AirByte, Frame, IrMedium
 from .module import Mcu, Module, decode_actuators, decode_leds
 from .plant import Plant, Timing
@@ -82,6 +93,7 @@ class Simulator:
         hz: int = F_CPU,
         timing: Timing | None = None,
         cluster: Any = None,
+        ir_in_c: bool = True,
     ) -> None:
         self.scenario = scenario
         self.seed = scenario.seed if seed is None else seed
@@ -98,6 +110,10 @@ class Simulator:
         self._by_comm: dict[int, Module] = {}
         self._boards: dict[int, tuple[Module, str]] = {}  # MCU index -> module, board
         self._garbage = random.Random(self.seed ^ 0x5EED)
+        #: IR between modules routed in the core; fault injection needs the Python medium
+        self.ir_in_c = bool(ir_in_c) and hasattr(self.cluster, "ir_attach") and not any(
+            f.active for f in (scenario.faults, *scenario.link_faults.values()))
+        self._geometry_version = -1
         clocks = scenario.clocks(self.seed)
         for spec in sorted(scenario.modules, key=lambda m: m.id):
             for board in ("comm", "control"):
@@ -110,7 +126,15 @@ class Simulator:
             comm = self.cluster.add_mcu(str(spec.firmware.comm), f"comm{spec.id}")
             control = self.cluster.add_mcu(str(spec.firmware.control), f"control{spec.id}")
             self.cluster.connect_uart(comm, 0, control, 0)
-            self.cluster.watch_uart(comm, 1)
+            if self.ir_in_c:
+                sel_port = {p for p, _ in SELECTOR_PINS}
+                assert len(sel_port) == 1, "the core reads the selector from one port"
+                self.cluster.ir_attach(comm, 1, sel_port.pop(), tuple(b for _, b in SELECTOR_PINS))
+                # the plant must see actuator changes when they happen, not
+                # at the next IR byte as before
+                self.cluster.wake_on_pins(control, "".join(CONTROL_PORTS))
+            else:
+                self.cluster.watch_uart(comm, 1)
             self.cluster.watch_uart(control, 1)
             self.cluster.set_input(control, DIP_PORT, 0xFF, spec.id)  # DIP switches
             self.plant.add(spec.id, spec.position, spec.orientation, spec.id == scenario.base)
@@ -150,6 +174,9 @@ class Simulator:
             self.cluster, {m.id: m.rf12.index for m in self.modules.values() if m.rf12},
             self.position, scenario.radio_range, self.seed, self._emit,
         )
+        if self.ir_in_c:
+            self.cluster.ir_seed(self.seed)
+            self._send_ir_routes()
 
     def _add_rf12(self, module: Module, image: Any) -> None:
         """The module's wireless board: an MCU with an RF12 part on its SPI pins
@@ -186,7 +213,9 @@ class Simulator:
     def run_to_cycle(self, target: int) -> None:
         while self._cycle < target:
             stop = target
-            if self._pc_tx:
+            if self.ir_in_c:
+                stop = min(stop, self._ir_stop())
+            elif self._pc_tx:
                 stop = min(stop, self._pc_tx[0][1])
             for queue in self._debug_tx.values():
                 if queue:
@@ -219,6 +248,44 @@ class Simulator:
 
         self.run_until(found, timeout)
         return next(e for e in self.events[seen:] if _matches(e, name, match))
+
+    def _ir_stop(self) -> int:
+        """Hand the core the PC's bytes that have started; the cycle to stop at
+        for the next one, or for the plant's next decision."""
+        stop = 1 << 62
+        while self._pc_tx and self._pc_tx[0][0] <= self._cycle:
+            start, end, value = self._pc_tx.popleft()
+            self.cluster.ir_send_from_pc(start, end, value)
+        if self._pc_tx:
+            stop = self._pc_tx[0][0]
+        deadline = self.plant.next_deadline(self._cycle)
+        if deadline is not None:
+            stop = min(stop, deadline)
+        return stop
+
+    def _send_ir_routes(self) -> None:
+        """Tell the core who hears each comm board on each selector index
+        (Table 3-5) in the present geometry."""
+        self._geometry_version = self.plant.geometry_version
+        for module in self.modules.values():
+            routes: list[tuple] = []
+            for y in range(8):
+                channel = CHANNEL_SIDE[y]
+                if channel is None:
+                    routes.append(("none",))
+                    continue
+                if channel == CENTRE:
+                    routes.append(("pc",))
+                    continue
+                side = to_global(channel, module.orientation)
+                other_id = self.plant.module_at(neighbor(module.position, side))
+                if other_id is None:
+                    routes.append(("none",))
+                    continue
+                other = self.modules[other_id]
+                need = SIDE_CHANNEL[to_body(facing(side), other.orientation)]
+                routes.append(("mcu", other.comm.index, need))
+            self.cluster.ir_routes(module.comm.index, routes)
 
     # --- the PC's IR transceiver and the debug ports ---------------------------
 
@@ -365,8 +432,20 @@ class Simulator:
             sink(changes)
 
         air: list[AirByte] = []
+        if self.ir_in_c:
+            if self.plant.geometry_version != self._geometry_version:
+                self._send_ir_routes()
+            self._ir_events()
+            for index, start, end, value in self.cluster.ir_take_pc():
+                module = self._by_comm[index]
+                frame = frame_of(module.comm.uart_config(1))
+                air.append(AirByte(module.id, start, end, value, frame))
+                if module.rf12:  # the centre input is wired to the wireless board too
+                    self._radio_link(module, [(start, end, value)], frame, to_comm=False)
         for module, board in changed:
             if board == "comm":
+                if self.ir_in_c:
+                    continue
                 taken = self.cluster.uart_take(module.comm.index, 1)
                 if taken:
                     frame = frame_of(module.comm.uart_config(1))
@@ -388,7 +467,10 @@ class Simulator:
             air.append(AirByte(PC, start, end, value, PC_FRAME))
         air.sort(key=lambda b: (b.end, b.start, str(b.sender)))
         for byte in air:
-            self.medium.transmit(byte)
+            if self.ir_in_c:
+                self.medium.transmit_to(byte, PC)  # the core routed it to the centre
+            else:
+                self.medium.transmit(byte)
         self.medium.settle(now)
         self.radio.step(now)
 
@@ -414,6 +496,23 @@ class Simulator:
             if framing_error:
                 value = self._garbage.randrange(256)
             self.cluster.uart_put(target.index, uart, value, framing_error)
+
+    def _ir_events(self) -> None:
+        """The core medium's events, as the Python medium words them."""
+        def who(index: int) -> int | str:
+            return PC if index < 0 else self._by_comm[index].id
+
+        for name, end, sender, receiver, value, others in self.cluster.ir_events():
+            event: dict[str, Any] = {"event": name, "from": who(sender),
+                                     "to": who(receiver), "byte": value}
+            if name == "ir-collision":
+                event["other"] = sorted((who(o) for o in others), key=str)
+            elif name == "ir-dropped":
+                event["reason"] = "receiver off (RXEN) or overrun"
+            else:
+                sent = PC_FRAME if sender < 0 else self.rx_frame(who(sender))  # type: ignore[arg-type]
+                event["reason"] = f"sender {sent}, receiver {self.rx_frame(who(receiver))}"  # type: ignore[arg-type]
+            self._emit(end, event)
 
     def _debug_received(self, module: Module, taken: list[tuple[int, int, int]],
                         board: str) -> None:

@@ -60,3 +60,11 @@ def test_ir_noise_trial_counts_from_the_actuator_log():
     assert trial("legacy", 3e-2, seed=3, commands=30) == noisy  # seeded
     with pytest.raises(ValueError, match="framing"):
         trial("morse", 0.0, seed=3, commands=1)
+
+
+@pytest.mark.parametrize("ir", ["core", "python"])
+def test_sim_benchmark_says_where_ir_is_routed(capsys, ir):
+    assert main(["bench", "sim", "--json", "--sizes", "2", "--seconds", "0.1", "--ir", ir]) == 0
+    [size] = json.loads(capsys.readouterr().out)["sizes"]
+    assert size["ir"] == ir
+    assert size["wave"]["simulated_s"] > 20  # the localization window ran

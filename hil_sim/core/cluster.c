@@ -7,6 +7,7 @@
 #include <string.h>
 
 #include "cluster.h"
+#include "ir_medium.h"
 #include "rf12_part.h"
 
 static int logger_installed;
@@ -36,10 +37,13 @@ void cluster_free(cluster_t *c)
 		return;
 	for (int i = 0; i < c->n; i++) {
 		rf12_t *radio = c->mcu[i]->rf12; /* the MCU's io list points into it */
+		ir_port_t *ir = c->mcu[i]->ir;     /* its timer param, likewise */
 		m162_free(c->mcu[i]);
 		rf12_free(radio);
+		ir_free(ir);
 	}
 	free(c->mcu);
+	free(c->ir);
 	free(c);
 }
 
@@ -90,7 +94,7 @@ int cluster_add(cluster_t *c, const char *elf_path, const char *name, const char
 
 static void update_keep(m162_usart_t *s)
 {
-	m162_usart_set_keep_log(s, s->watched || s->peer != NULL);
+	m162_usart_set_keep_log(s, s->watched || s->peer != NULL || s->ir_sel_port >= 0);
 }
 
 void cluster_connect(cluster_t *c, int a, int ua, int b, int ub)
@@ -124,9 +128,13 @@ void cluster_set_clock(cluster_t *c, int mcu, uint32_t hz)
  * finished a byte nobody has been told about. */
 static int boundary(cluster_t *c)
 {
-	int news = 0;
+	int news = ir_boundary(c); /* IR bytes between comm boards (ir_medium.c) */
 	for (int i = 0; i < c->n; i++) {
 		m162_t *m = c->mcu[i];
+		if (m->woke) { /* a pin Python watches changed (wake_on_pins) */
+			m->woke = 0;
+			news = 1;
+		}
 		if (m->rf12 && rf12_news(m->rf12)) { /* the radio medium routes it */
 			news = 1;
 			m->changed = 1;

@@ -41,6 +41,8 @@ typedef struct cluster_t {
 	uint32_t frequency; /* shared by all MCUs; 0 until the first is added */
 	m162_t **mcu;
 	int n, cap;
+	struct ir_port_t **ir; /* MCUs on the IR medium (ir_medium.c), in index order */
+	int n_ir;
 } cluster_t;
 
 cluster_t *cluster_new(uint64_t quantum, double baud_tolerance);

@@ -34,6 +34,7 @@ typedef struct m162_txrec_t {
 	uint8_t byte;
 	uint8_t format;      /* data bits | parity mode << 4 | stop bits << 6 */
 	uint32_t bit_cycles; /* sender's bit time, in cluster cycles */
+	uint8_t sel;         /* the IR selector port at the start bit (ir_medium.c), else 0 */
 } m162_txrec_t;
 
 /* A byte waiting to reach a receiver at a given cycle (wire delivery, in the
@@ -72,6 +73,10 @@ typedef struct m162_usart_t {
 	size_t notified_pos; /* records up to here already ended a run() early */
 	int watched;
 	struct m162_usart_t *peer; /* connect_uart() wire, or NULL */
+	/* IR medium routed in C (ir_medium.c): the port whose value at each
+	 * start bit goes into the log (-1: none), the next record to route */
+	int ir_sel_port;
+	size_t ir_pos;
 	/* receiver side: bytes in flight on a wire, delivered at their due cycle */
 	m162_rxpend_t rxq[M162_RXQ_SIZE];
 	unsigned rxq_head, rxq_len;
@@ -133,6 +138,9 @@ typedef struct m162_t {
 	uint64_t pinlog_dropped;
 	struct m162_porthook_t { struct m162_t *m; int idx; } porthook[M162_NPORTS];
 	struct rf12_t *rf12; /* an RF12 radio on its pins (rf12_part.c), or NULL */
+	struct ir_port_t *ir; /* its IR transceiver in the C medium (ir_medium.c), or NULL */
+	uint8_t wake_ports;  /* ports (bit per A..E) whose changes end a run() early */
+	int woke;            /* such a change happened since the last boundary */
 	char last_error[256];
 	uint64_t crash_cycle;
 	unsigned sp_low_count; /* instructions in a row with SP below SRAM */

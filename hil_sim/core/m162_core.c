@@ -534,6 +534,8 @@ static void m162_pinlog_add(m162_t *m, int idx, uint8_t value)
 	if (value == m->last_port[idx])
 		return;
 	m->last_port[idx] = value;
+	if (m->wake_ports & (1u << idx))
+		m->woke = 1;
 	if (m->pinlog_len >= M162_PINLOG_MAX) {
 		m->pinlog_dropped++;
 		return;
@@ -874,6 +876,7 @@ m162_t *m162_make(void)
 	for (int i = 0; i < M162_NUARTS; i++) {
 		m->usart[i].mcu = m;
 		m->usart[i].index = i;
+		m->usart[i].ir_sel_port = -1;
 	}
 	avr_init(m->avr); /* calls m162_init, then resets */
 	m162_setup_run(m);
@@ -908,6 +911,7 @@ m162_t *m162_make_stock(const char *mmcu)
 	for (int i = 0; i < M162_NUARTS; i++) {
 		m->usart[i].mcu = m;
 		m->usart[i].index = i;
+		m->usart[i].ir_sel_port = -1;
 	}
 	avr_init(stock);
 	m->fixup_io = (avr_io_t){ .kind = "pinlog-reset", .reset = m162_stock_reset };

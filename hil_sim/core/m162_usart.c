@@ -89,9 +89,10 @@ static void start_frame(m162_usart_t *s, uint8_t byte, uint64_t when)
 	 * there (datasheet, "Asynchronous Data Reception") */
 	uint32_t stop_bits = s->format >> 6;
 	uint64_t mid_stop = s->shift_end - (uint64_t)s->bit_cycles * stop_bits + s->bit_cycles / 2;
+	uint8_t sel = s->ir_sel_port >= 0 ? m->avr->data[m162_port_regs[s->ir_sel_port][2]] : 0;
 	m162_usart_log(s, (m162_txrec_t){ m162_to_cluster(m, when), m162_to_cluster(m, mid_stop),
 			m162_to_cluster(m, s->shift_end), byte, s->format,
-			m162_to_cluster_span(m, s->bit_cycles) });
+			m162_to_cluster_span(m, s->bit_cycles), sel });
 }
 
 static avr_cycle_count_t tx_done(avr_t *avr, avr_cycle_count_t when, void *param)
@@ -343,6 +344,8 @@ void m162_usart_compact_log(m162_usart_t *s)
 		low = s->take_pos;
 	if (s->watched && s->notified_pos < low)
 		low = s->notified_pos;
+	if (s->mcu->ir && s->ir_sel_port >= 0 && s->ir_pos < low)
+		low = s->ir_pos;
 	if (low == 0)
 		return;
 	memmove(s->log, s->log + low, (s->log_len - low) * sizeof *s->log);
@@ -350,4 +353,5 @@ void m162_usart_compact_log(m162_usart_t *s)
 	s->wire_pos = s->wire_pos > low ? s->wire_pos - low : 0;
 	s->take_pos = s->take_pos > low ? s->take_pos - low : 0;
 	s->notified_pos = s->notified_pos > low ? s->notified_pos - low : 0;
+	s->ir_pos = s->ir_pos > low ? s->ir_pos - low : 0;
 }

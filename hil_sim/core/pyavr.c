@@ -9,6 +9,7 @@
 #include <Python.h>
 
 #include "cluster.h"
+#include "ir_medium.h"
 #include "rf12_part.h"
 #include "sim_core_config.h"
 
@@ -667,6 +668,284 @@ static PyObject *Cluster_radio_state(ClusterObject *self, PyObject *args)
 			"log_dropped", (unsigned long long)r->log_dropped);
 }
 
+
+/* ---------------------------------------------------------------- */
+/* The IR medium in C (ir_medium.h) */
+
+static ir_port_t *ir_arg(ClusterObject *self, long m)
+{
+	m162_t *mc = get_m162(self, m);
+	if (mc && !mc->ir) {
+		PyErr_Format(PyExc_ValueError, "MCU %s is not on the IR medium (ir_attach first)",
+				mc->name);
+		return NULL;
+	}
+	return mc ? mc->ir : NULL;
+}
+
+static PyObject *Cluster_ir_attach(ClusterObject *self, PyObject *args)
+{
+	long m, u;
+	const char *port;
+	int bits[3];
+	if (!PyArg_ParseTuple(args, "lls(iii)", &m, &u, &port, &bits[0], &bits[1], &bits[2]))
+		return NULL;
+	m162_usart_t *s = get_usart(self, m, u);
+	int p = s ? port_index(port) : -1;
+	if (p < 0)
+		return NULL;
+	if (!s->mcu->is_m162) {
+		PyErr_SetString(PyExc_ValueError, "ir_attach needs an atmega162 core");
+		return NULL;
+	}
+	uint8_t sel[3];
+	for (int i = 0; i < 3; i++) {
+		if (bits[i] < 0 || bits[i] > 7) {
+			PyErr_SetString(PyExc_ValueError, "selector bits must be 0..7");
+			return NULL;
+		}
+		sel[i] = (uint8_t)bits[i];
+	}
+	if (ir_attach(self->c, (int)m, (int)u, p, sel) < 0)
+		return PyErr_NoMemory();
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_ir_routes(ClusterObject *self, PyObject *args)
+{
+	long m;
+	PyObject *seq;
+	if (!PyArg_ParseTuple(args, "lO", &m, &seq))
+		return NULL;
+	if (!ir_arg(self, m))
+		return NULL;
+	PyObject *fast = PySequence_Fast(seq, "routes must be a sequence of 8 (kind, target, y)");
+	if (!fast)
+		return NULL;
+	if (PySequence_Fast_GET_SIZE(fast) != 8) {
+		Py_DECREF(fast);
+		PyErr_SetString(PyExc_ValueError, "routes: one per selector index, 8 in all");
+		return NULL;
+	}
+	ir_route_t routes[8];
+	for (int y = 0; y < 8; y++) {
+		PyObject *item = PySequence_Fast_GET_ITEM(fast, y);
+		const char *kind;
+		int target = -1, need = 0;
+		if (!PyArg_ParseTuple(item, "s|ii", &kind, &target, &need)) {
+			Py_DECREF(fast);
+			return NULL;
+		}
+		if (!strcmp(kind, "none")) {
+			routes[y] = (ir_route_t){ IR_ROUTE_NONE, -1, 0 };
+		} else if (!strcmp(kind, "pc")) {
+			routes[y] = (ir_route_t){ IR_ROUTE_PC, -1, 0 };
+		} else if (!strcmp(kind, "mcu") && target >= 0 && target < self->c->n &&
+				self->c->mcu[target]->ir && need >= 0 && need < 8) {
+			routes[y] = (ir_route_t){ IR_ROUTE_MODULE, target, need };
+		} else {
+			Py_DECREF(fast);
+			PyErr_Format(PyExc_ValueError, "route %d: ('none',), ('pc',) or ('mcu', "
+					"attached MCU, selector index 0..7), not %R", y, item);
+			return NULL;
+		}
+	}
+	Py_DECREF(fast);
+	ir_set_routes(self->c, (int)m, routes);
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_ir_seed(ClusterObject *self, PyObject *args)
+{
+	unsigned long long seed;
+	if (!PyArg_ParseTuple(args, "K", &seed))
+		return NULL;
+	ir_set_seed(self->c, seed);
+	Py_RETURN_NONE;
+}
+
+static PyObject *Cluster_ir_send_from_pc(ClusterObject *self, PyObject *args, PyObject *kw)
+{
+	static char *kwlist[] = { "start", "end", "byte", "data_bits", "parity", "stop_bits", NULL };
+	unsigned long long start, end;
+	long byte;
+	int db = 8, sb = 1;
+	const char *parity = "N";
+	if (!PyArg_ParseTupleAndKeywords(args, kw, "KKl|isi", kwlist, &start, &end, &byte, &db,
+			&parity, &sb))
+		return NULL;
+	int upm = !strcmp(parity, "N") ? 0 : !strcmp(parity, "E") ? 2 : !strcmp(parity, "O") ? 3 : -1;
+	if (byte < 0 || byte > 255 || end <= start || db < 5 || db > 9 || sb < 1 || sb > 2 ||
+			upm < 0) {
+		PyErr_SetString(PyExc_ValueError, "ir_send_from_pc: byte 0..255, end after start, "
+				"5..9 data bits, parity N/E/O, 1 or 2 stop bits");
+		return NULL;
+	}
+	uint32_t bits = (uint32_t)(1 + db + (upm ? 1 : 0) + sb);
+	uint32_t bit_cycles = (uint32_t)((end - start + bits / 2) / bits);
+	ir_send_from_pc(self->c, start, end, (uint8_t)byte, bit_cycles,
+			(uint8_t)(db | upm << 4 | sb << 6));
+	Py_RETURN_NONE;
+}
+
+static int by_end(const void *a, const void *b)
+{
+	const long long *x = a, *y = b; /* (end, start, mcu, byte) */
+	for (int i = 0; i < 3; i++)
+		if (x[i] != y[i])
+			return x[i] < y[i] ? -1 : 1;
+	return 0;
+}
+
+static PyObject *Cluster_ir_take_pc(ClusterObject *self, PyObject *noargs)
+{
+	(void)noargs;
+	size_t n = 0, cap = 0;
+	long long (*rows)[4] = NULL;
+	for (int i = 0; i < self->c->n; i++) {
+		ir_port_t *p = self->c->mcu[i]->ir;
+		if (!p)
+			continue;
+		ir_pcbyte_t buf[64];
+		size_t k;
+		while ((k = ir_take_pc(p, self->c->cycle, buf, 64)) > 0) {
+			if (n + k > cap) {
+				cap = (n + k) * 2;
+				void *r = realloc(rows, cap * sizeof *rows);
+				if (!r) {
+					free(rows);
+					return PyErr_NoMemory();
+				}
+				rows = r;
+			}
+			for (size_t j = 0; j < k; j++) {
+				rows[n][0] = (long long)buf[j].end;
+				rows[n][1] = (long long)buf[j].start;
+				rows[n][2] = i;
+				rows[n][3] = buf[j].byte;
+				n++;
+			}
+		}
+	}
+	if (n)
+		qsort(rows, n, sizeof *rows, by_end);
+	PyObject *list = PyList_New((Py_ssize_t)n);
+	for (size_t j = 0; list && j < n; j++) {
+		PyObject *t = Py_BuildValue("(lKKi)", (long)rows[j][2], (unsigned long long)rows[j][1],
+				(unsigned long long)rows[j][0], (int)rows[j][3]);
+		if (!t) {
+			Py_CLEAR(list);
+			break;
+		}
+		PyList_SET_ITEM(list, (Py_ssize_t)j, t);
+	}
+	free(rows);
+	return list;
+}
+
+static int event_order(const void *a, const void *b)
+{
+	const ir_event_t *x = *(ir_event_t *const *)a, *y = *(ir_event_t *const *)b;
+	if (x->end != y->end)
+		return x->end < y->end ? -1 : 1;
+	if (x->receiver != y->receiver)
+		return x->receiver < y->receiver ? -1 : 1;
+	return x->seq < y->seq ? -1 : x->seq > y->seq;
+}
+
+static PyObject *Cluster_ir_events(ClusterObject *self, PyObject *noargs)
+{
+	(void)noargs;
+	static const char *names[] = { "", "ir-collision", "ir-dropped", "ir-garbled" };
+	size_t n = 0;
+	for (int i = 0; i < self->c->n; i++)
+		if (self->c->mcu[i]->ir)
+			n += self->c->mcu[i]->ir->n_events;
+	PyObject *list = PyList_New(0);
+	if (!list || !n)
+		return list;
+	ir_event_t **all = malloc(n * sizeof *all);
+	if (!all) {
+		Py_DECREF(list);
+		return PyErr_NoMemory();
+	}
+	size_t k = 0;
+	for (int i = 0; i < self->c->n; i++) {
+		ir_port_t *p = self->c->mcu[i]->ir;
+		for (size_t j = 0; p && j < p->n_events; j++)
+			all[k++] = &p->events[j];
+	}
+	qsort(all, n, sizeof *all, event_order);
+	for (size_t j = 0; j < n; j++) {
+		ir_event_t *e = all[j];
+		PyObject *others = PyTuple_New(e->n_others);
+		for (int o = 0; others && o < e->n_others; o++)
+			PyTuple_SET_ITEM(others, o, PyLong_FromLong(e->others[o]));
+		PyObject *t = others ? Py_BuildValue("(sKiiiN)", names[e->kind],
+				(unsigned long long)e->end, e->sender, e->receiver, (int)e->byte, others)
+				: NULL;
+		if (!t || PyList_Append(list, t) < 0) {
+			Py_XDECREF(t);
+			Py_CLEAR(list);
+			break;
+		}
+		Py_DECREF(t);
+	}
+	free(all);
+	for (int i = 0; i < self->c->n; i++)
+		if (self->c->mcu[i]->ir)
+			self->c->mcu[i]->ir->n_events = 0;
+	return list;
+}
+
+static PyObject *Cluster_ir_state(ClusterObject *self, PyObject *args)
+{
+	long m;
+	if (!PyArg_ParseTuple(args, "l", &m))
+		return NULL;
+	ir_port_t *p = ir_arg(self, m);
+	if (!p)
+		return NULL;
+	static const char *kinds[] = { "none", "pc", "mcu" };
+	PyObject *routes = PyList_New(8);
+	for (int y = 0; routes && y < 8; y++) {
+		const ir_route_t *r = &p->routes[y];
+		PyObject *t = r->kind == IR_ROUTE_MODULE
+			? Py_BuildValue("(sii)", kinds[r->kind], r->target, r->need_y)
+			: Py_BuildValue("(s)", kinds[r->kind]);
+		if (!t) {
+			Py_CLEAR(routes);
+			break;
+		}
+		PyList_SET_ITEM(routes, y, t);
+	}
+	if (!routes)
+		return NULL;
+	return Py_BuildValue("{s:i,s:K,s:n,s:N}", "in_flight", p->inbox_len, "overflow",
+			(unsigned long long)p->overflow, "for_pc", (Py_ssize_t)p->n_pc, "routes", routes);
+}
+
+static PyObject *Cluster_wake_on_pins(ClusterObject *self, PyObject *args)
+{
+	long m;
+	const char *ports;
+	if (!PyArg_ParseTuple(args, "ls", &m, &ports))
+		return NULL;
+	m162_t *mc = get_m162(self, m);
+	if (!mc)
+		return NULL;
+	uint8_t mask = 0;
+	for (const char *q = ports; *q; q++) {
+		char one[2] = { *q, 0 };
+		int p = port_index(one);
+		if (p < 0)
+			return NULL;
+		mask |= (uint8_t)(1u << p);
+	}
+	mc->wake_ports = mask;
+	Py_RETURN_NONE;
+}
+
 static PyMethodDef Cluster_methods[] = {
 	{ "add_mcu", (PyCFunction)(void (*)(void))Cluster_add_mcu, METH_VARARGS | METH_KEYWORDS,
 		"add_mcu(elf_path, name, core='atmega162') -> index: load an ELF on a new MCU" },
@@ -698,6 +977,27 @@ static PyMethodDef Cluster_methods[] = {
 		"radio_deliver(mcu, due_cycle, byte): a byte from the air, complete at due_cycle" },
 	{ "radio_state", (PyCFunction)Cluster_radio_state, METH_VARARGS,
 		"radio_state(mcu) -> {receiving, transmitting, channel, rx_dropped, log_dropped}" },
+	{ "ir_attach", (PyCFunction)Cluster_ir_attach, METH_VARARGS,
+		"ir_attach(mcu, uart, port, (bit_a, bit_b, bit_c)): put this USART on the C IR medium, "
+		"its selector lines A, B, C on these bits of port" },
+	{ "ir_routes", (PyCFunction)Cluster_ir_routes, METH_VARARGS,
+		"ir_routes(mcu, routes): per selector index 0..7 ('none',), ('pc',) or "
+		"('mcu', receiver, receiver's selector index that faces this MCU)" },
+	{ "ir_seed", (PyCFunction)Cluster_ir_seed, METH_VARARGS,
+		"ir_seed(seed): seed the receivers' garbage for mismatched frames" },
+	{ "ir_send_from_pc", (PyCFunction)(void (*)(void))Cluster_ir_send_from_pc,
+		METH_VARARGS | METH_KEYWORDS,
+		"ir_send_from_pc(start, end, byte, data_bits=8, parity='N', stop_bits=1): a byte of "
+		"the PC's transceiver, to every board on the centre channel" },
+	{ "ir_take_pc", (PyCFunction)Cluster_ir_take_pc, METH_NOARGS,
+		"ir_take_pc() -> [(mcu, start, end, byte)] bytes sent on the centre channel that ended" },
+	{ "ir_events", (PyCFunction)Cluster_ir_events, METH_NOARGS,
+		"ir_events() -> [(name, end, sender, receiver, byte, others)] since the last call "
+		"(sender -1: the PC)" },
+	{ "ir_state", (PyCFunction)Cluster_ir_state, METH_VARARGS,
+		"ir_state(mcu) -> {in_flight, overflow, for_pc, routes}" },
+	{ "wake_on_pins", (PyCFunction)Cluster_wake_on_pins, METH_VARARGS,
+		"wake_on_pins(mcu, 'ABD'): run() returns at the boundary after these ports change" },
 	{ "set_input", (PyCFunction)Cluster_set_input, METH_VARARGS,
 		"set_input(mcu, port, mask, value): drive external levels on pins" },
 	{ "pin_log", (PyCFunction)Cluster_pin_log, METH_VARARGS,

@@ -223,3 +223,25 @@ def test_onsets_within_tolerance_still_move(delay_ms):
     rig = Rig()
     thesis_cw(rig, mobile_start=0, substrate_start=delay_ms)
     assert single_event(rig.finish())["event"] == "moved"
+
+
+def test_next_deadline_is_when_a_finished_pulse_may_be_judged():
+    rig = Rig()
+    assert rig.plant.next_deadline(0) is None
+    rig.at(0, 2, m=magnets(s3="-", s4="-"))
+    assert rig.plant.next_deadline(0) is None  # held on: its end wakes the loop
+    rig.at(100, 2, m=magnets())
+    wait = round(rig.plant.timing.resolve_wait * 1e6)
+    assert rig.plant.next_deadline(100 * MS) == 100 * MS + wait
+    rig.plant.step(100 * MS + wait)  # judged: refused, nobody pushed
+    assert rig.plant.next_deadline(100 * MS + wait) is None
+    assert [e["event"] for e in rig.events] == ["refused"]
+
+
+def test_geometry_version_counts_moves():
+    rig = Rig()
+    thesis_cw(rig)
+    before = rig.plant.geometry_version
+    rig.finish()
+    assert [e["event"] for e in rig.events] == ["moved"]
+    assert rig.plant.geometry_version == before + 1

@@ -1,0 +1,305 @@
+/*
+ * ir_medium.c -- the IR medium between communication boards (ir_medium.h).
+ */
+#include <stdlib.h>
+#include <string.h>
+
+#include "ir_medium.h"
+
+static int selector_y(const ir_port_t *p)
+{
+	uint8_t v = p->m->avr->data[m162_port_regs[p->sel_port][2]];
+	int a = v >> p->sel_bits[0] & 1, b = v >> p->sel_bits[1] & 1, cc = v >> p->sel_bits[2] & 1;
+	return 4 * cc + 2 * b + a;
+}
+
+static int selector_y_of(const ir_port_t *p, uint8_t v)
+{
+	return 4 * (v >> p->sel_bits[2] & 1) + 2 * (v >> p->sel_bits[1] & 1) + (v >> p->sel_bits[0] & 1);
+}
+
+/* xorshift64*: a receiver's own sequence, so the draws do not depend on
+ * the order receivers run in */
+static uint8_t next_garbage(ir_port_t *p)
+{
+	uint64_t x = p->rng;
+	x ^= x >> 12;
+	x ^= x << 25;
+	x ^= x >> 27;
+	p->rng = x;
+	return (uint8_t)((x * 0x2545F4914F6CDD1DULL) >> 56);
+}
+
+static void log_event(ir_port_t *p, int kind, const ir_air_t *a, const int *others, int n)
+{
+	if (p->n_events == p->cap_events) {
+		size_t cap = p->cap_events ? p->cap_events * 2 : 32;
+		ir_event_t *e = realloc(p->events, cap * sizeof *e);
+		if (!e)
+			return;
+		p->events = e;
+		p->cap_events = cap;
+	}
+	ir_event_t *e = &p->events[p->n_events++];
+	*e = (ir_event_t){ .end = a->end, .seq = p->seq++, .kind = kind, .sender = a->sender,
+		.receiver = p->index, .byte = a->byte, .n_others = n };
+	memcpy(e->others, others, (size_t)n * sizeof *others);
+}
+
+static int has_sender(const ir_port_t *p, int sender)
+{
+	for (int i = 0; i < p->last.n; i++)
+		if (p->last.senders[i] == sender)
+			return 1;
+	return 0;
+}
+
+/* The byte reaches the receiver's antenna now (middle of its stop bit). */
+static void arrive(ir_port_t *p, const ir_air_t *a)
+{
+	if (selector_y(p) != a->need_y)
+		return; /* looking elsewhere: lost in the air, as in ir_bus.py */
+	uint8_t value = a->byte;
+	int fe = 0;
+	m162_txrec_t rec = { a->start, a->due, a->end, a->byte, a->format, a->bit_cycles, 0 };
+	if (!m162_usart_frame_ok(p->s, &rec, p->tolerance)) {
+		value = next_garbage(p);
+		fe = 1;
+		log_event(p, IR_EV_GARBLED, a, NULL, 0);
+	}
+	if (p->last.valid && p->last.start < a->end && a->start < p->last.end &&
+			!has_sender(p, a->sender)) {
+		/* the receiver learns of the collision as the second byte ends:
+		 * the AND of both, broken */
+		log_event(p, IR_EV_COLLISION, a, p->last.senders, p->last.n);
+		if (a->start < p->last.start)
+			p->last.start = a->start;
+		if (a->end > p->last.end)
+			p->last.end = a->end;
+		if (p->last.n < IR_MAX_SENDERS)
+			p->last.senders[p->last.n++] = a->sender;
+		p->last.value &= value;
+		p->last.fe = 1;
+	} else {
+		p->last.valid = 1;
+		p->last.start = a->start;
+		p->last.end = a->end;
+		p->last.senders[0] = a->sender;
+		p->last.n = 1;
+		p->last.value = value;
+		p->last.fe = fe;
+	}
+	uint16_t v = p->last.value | (p->last.fe ? UART_INPUT_FE : 0);
+	if (!m162_usart_put(p->s, v))
+		log_event(p, IR_EV_DROPPED, a, NULL, 0);
+}
+
+static void pop_due(ir_port_t *p, uint64_t local_now)
+{
+	int k = 0;
+	while (k < p->inbox_len && p->inbox[k].due_local <= local_now)
+		k++;
+	/* copy first: arrive() does not touch the inbox, but keep it simple */
+	for (int i = 0; i < k; i++)
+		arrive(p, &p->inbox[i]);
+	memmove(p->inbox, p->inbox + k, (size_t)(p->inbox_len - k) * sizeof *p->inbox);
+	p->inbox_len -= k;
+}
+
+static avr_cycle_count_t due_timer(avr_t *avr, avr_cycle_count_t when, void *param)
+{
+	ir_port_t *p = (ir_port_t *)param;
+	(void)avr;
+	pop_due(p, when);
+	return p->inbox_len ? p->inbox[0].due_local : 0;
+}
+
+static void arm(ir_port_t *p)
+{
+	avr_t *avr = p->m->avr;
+	avr_cycle_timer_cancel(avr, due_timer, p);
+	if (p->inbox_len) {
+		uint64_t due = p->inbox[0].due_local;
+		avr_cycle_timer_register(avr, due > avr->cycle ? due - avr->cycle : 0, due_timer, p);
+	}
+}
+
+static int alive(const ir_port_t *p)
+{
+	int st = p->m->avr->state;
+	return st == cpu_Running || st == cpu_Sleeping;
+}
+
+/* Called at a boundary or between runs, never while p's MCU runs. */
+static void enqueue(ir_port_t *p, ir_air_t a)
+{
+	avr_t *avr = p->m->avr;
+	a.due_local = m162_to_local(p->m, a.due);
+	if (a.due_local <= avr->cycle && p->inbox_len == 0) {
+		arrive(p, &a); /* the quantum was longer than the byte: at once */
+		return;
+	}
+	if (p->inbox_len == IR_INBOX) {
+		p->overflow++;
+		return;
+	}
+	if (a.due_local < avr->cycle)
+		a.due_local = avr->cycle;
+	int k = p->inbox_len;
+	while (k > 0 && p->inbox[k - 1].due_local > a.due_local)
+		k--;
+	memmove(p->inbox + k + 1, p->inbox + k, (size_t)(p->inbox_len - k) * sizeof *p->inbox);
+	p->inbox[k] = a;
+	p->inbox_len++;
+	if (k == 0)
+		arm(p);
+}
+
+static void push_pc(ir_port_t *p, const m162_txrec_t *r)
+{
+	if (p->n_pc == p->cap_pc) {
+		size_t cap = p->cap_pc ? p->cap_pc * 2 : 16;
+		ir_pcbyte_t *n = realloc(p->to_pc, cap * sizeof *n);
+		if (!n)
+			return;
+		p->to_pc = n;
+		p->cap_pc = cap;
+	}
+	p->to_pc[p->n_pc++] = (ir_pcbyte_t){ r->start, r->end, r->byte };
+}
+
+static void route(cluster_t *c, ir_port_t *p, const m162_txrec_t *r)
+{
+	const ir_route_t *rt = &p->routes[selector_y_of(p, r->sel)];
+	if (rt->kind == IR_ROUTE_PC) {
+		push_pc(p, r);
+	} else if (rt->kind == IR_ROUTE_MODULE && rt->target >= 0 && rt->target < c->n &&
+			c->mcu[rt->target]->ir) {
+		enqueue(c->mcu[rt->target]->ir, (ir_air_t){ .start = r->start, .due = r->mid_stop,
+			.end = r->end, .sender = p->index, .byte = r->byte, .format = r->format,
+			.need_y = (uint8_t)rt->need_y, .bit_cycles = r->bit_cycles });
+	}
+}
+
+int ir_attach(cluster_t *c, int mcu, int uart, int sel_port, const uint8_t sel_bits[3])
+{
+	m162_t *m = c->mcu[mcu];
+	ir_port_t *p = m->ir;
+	if (!p) {
+		ir_port_t **list = realloc(c->ir, (size_t)(c->n_ir + 1) * sizeof *list);
+		if (!list)
+			return -1;
+		c->ir = list;
+		p = calloc(1, sizeof *p);
+		if (!p)
+			return -1;
+		m->ir = p;
+		/* keep the list in index order: routing order decides ties */
+		int k = c->n_ir++;
+		while (k > 0 && c->ir[k - 1]->index > mcu) {
+			c->ir[k] = c->ir[k - 1];
+			k--;
+		}
+		c->ir[k] = p;
+		p->index = mcu;
+	}
+	p->m = m;
+	p->index = mcu;
+	p->s = &m->usart[uart];
+	p->sel_port = sel_port;
+	memcpy(p->sel_bits, sel_bits, 3);
+	p->tolerance = c->baud_tolerance;
+	p->centre_y = -1;
+	p->rng = 0x9E3779B97F4A7C15ULL ^ (uint64_t)(mcu + 1);
+	p->s->ir_sel_port = sel_port;
+	p->s->ir_pos = p->s->log_len;
+	m162_usart_set_keep_log(p->s, 1);
+	return 0;
+}
+
+void ir_set_routes(cluster_t *c, int mcu, const ir_route_t routes[8])
+{
+	ir_port_t *p = c->mcu[mcu]->ir;
+	memcpy(p->routes, routes, sizeof p->routes);
+	p->centre_y = -1;
+	for (int y = 0; y < 8; y++)
+		if (routes[y].kind == IR_ROUTE_PC)
+			p->centre_y = y;
+}
+
+void ir_set_seed(cluster_t *c, uint64_t seed)
+{
+	for (int k = 0; k < c->n_ir; k++) {
+		ir_port_t *p = c->ir[k];
+		int i = p->index;
+		/* splitmix64 of (seed, index): never 0, different per receiver */
+		uint64_t z = seed + 0x9E3779B97F4A7C15ULL * (uint64_t)(i + 1);
+		z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+		z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+		z ^= z >> 31;
+		p->rng = z ? z : 1;
+	}
+}
+
+void ir_send_from_pc(cluster_t *c, uint64_t start, uint64_t end, uint8_t byte,
+		uint32_t bit_cycles, uint8_t format)
+{
+	/* one stop bit: its middle is half a bit before the end */
+	uint64_t mid = end - bit_cycles + bit_cycles / 2;
+	for (int i = 0; i < c->n_ir; i++) {
+		ir_port_t *p = c->ir[i];
+		if (p->centre_y < 0)
+			continue;
+		enqueue(p, (ir_air_t){ .start = start, .due = mid, .end = end, .sender = IR_PC,
+			.byte = byte, .format = format, .need_y = (uint8_t)p->centre_y,
+			.bit_cycles = bit_cycles });
+	}
+}
+
+int ir_boundary(cluster_t *c)
+{
+	int news = 0;
+	for (int i = 0; i < c->n_ir; i++) {
+		ir_port_t *p = c->ir[i];
+		m162_usart_t *s = p->s;
+		for (; s->ir_pos < s->log_len; s->ir_pos++)
+			route(c, p, &s->log[s->ir_pos]);
+	}
+	for (int i = 0; i < c->n_ir; i++) {
+		ir_port_t *p = c->ir[i];
+		if (p->inbox_len) {
+			avr_t *avr = p->m->avr;
+			if (!alive(p))
+				pop_due(p, avr->cycle); /* crashed or done: its USART still fills up */
+			else if (!avr_cycle_timer_status(avr, due_timer, p))
+				arm(p); /* a reset cleared the MCU's timers */
+		}
+		while (p->pc_notified < p->n_pc && p->to_pc[p->pc_notified].end <= c->cycle) {
+			p->pc_notified++;
+			news = 1;
+		}
+	}
+	return news;
+}
+
+size_t ir_take_pc(ir_port_t *p, uint64_t now, ir_pcbyte_t *out, size_t max)
+{
+	size_t k = 0;
+	while (k < p->n_pc && k < max && p->to_pc[k].end <= now) {
+		out[k] = p->to_pc[k];
+		k++;
+	}
+	memmove(p->to_pc, p->to_pc + k, (p->n_pc - k) * sizeof *p->to_pc);
+	p->n_pc -= k;
+	p->pc_notified = p->pc_notified > k ? p->pc_notified - k : 0;
+	return k;
+}
+
+void ir_free(ir_port_t *p)
+{
+	if (!p)
+		return;
+	free(p->events);
+	free(p->to_pc);
+	free(p);
+}

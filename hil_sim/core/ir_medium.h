@@ -1,0 +1,122 @@
+/*
+ * ir_medium.h -- the IR medium between communication boards, routed in C.
+ *
+ * Each comm board's UART1 drives one of seven IR transceivers, chosen by its
+ * channel selector (Table 3-5).  Python (hil_sim/simulator.py) attaches each
+ * comm board's UART1 and gives, per board, a route for each selector index
+ * Y = 4C + 2B + A: nowhere, the PC (the centre channel), or another board
+ * that hears the byte only while its own selector is on a given index (the
+ * side facing the sender).  Python re-sends the routes whenever the plant
+ * changes the geometry; the core knows nothing of cells or sides.
+ *
+ * Timing, decided here and not by the quantum:
+ *  - the sender's side is its selector at the byte's start bit (the port's
+ *    value is logged with the byte, m162_txrec_t.sel);
+ *  - a receiver gets the byte in the middle of its stop bit, where the part
+ *    samples it and raises RXC, if its selector is on the facing side at
+ *    that cycle (read in the receiver's own run, from its port register);
+ *  - two bytes from different senders that overlap in time at one receiver
+ *    collide: the second is handed over as the bitwise AND of both with the
+ *    framing error flag (as hil_sim/ir_bus.py);
+ *  - a receiver whose frame format differs, or whose bit time is more than
+ *    the cluster's baud tolerance away, gets a byte of its own seeded
+ *    generator with the framing error flag.
+ * Bytes for the PC wait until their stop bit ended and go to Python
+ * (ir_take_pc), which owns the PC's receiver; run() returns at the boundary
+ * after one ends.  The PC's own bytes come from Python (ir_send_from_pc).
+ * Collisions, dropped and garbled bytes are logged as events for Python.
+ *
+ * Everything a receiver does happens in its own run or at a boundary, so the
+ * result does not depend on the order (or threads) MCUs are stepped in.
+ */
+#ifndef HEXBOT_IR_MEDIUM_H
+#define HEXBOT_IR_MEDIUM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "cluster.h"
+
+enum { IR_ROUTE_NONE = 0, IR_ROUTE_PC = 1, IR_ROUTE_MODULE = 2 };
+enum { IR_EV_COLLISION = 1, IR_EV_DROPPED = 2, IR_EV_GARBLED = 3 };
+
+#define IR_PC (-1)          /* the PC as a sender */
+#define IR_MAX_SENDERS 8    /* six neighbours, the PC, one spare */
+#define IR_INBOX 64         /* bytes in flight towards one receiver */
+
+typedef struct ir_route_t {
+	int kind;   /* IR_ROUTE_* */
+	int target; /* receiver MCU index (IR_ROUTE_MODULE) */
+	int need_y; /* the receiver's selector index that faces the sender */
+} ir_route_t;
+
+/* One byte on its way to one receiver. */
+typedef struct ir_air_t {
+	uint64_t start, due, end; /* cluster cycles; due = middle of the stop bit */
+	uint64_t due_local;       /* due in the receiver's own cycles */
+	int sender;               /* MCU index or IR_PC */
+	uint8_t byte, format, need_y;
+	uint32_t bit_cycles;
+} ir_air_t;
+
+typedef struct ir_event_t {
+	uint64_t end;      /* the byte's end: Python stamps IR events with it */
+	uint64_t seq;      /* order of events at one receiver */
+	int kind, sender, receiver;
+	uint8_t byte;
+	int others[IR_MAX_SENDERS]; /* senders the byte collided with */
+	int n_others;
+} ir_event_t;
+
+typedef struct ir_pcbyte_t {
+	uint64_t start, end;
+	uint8_t byte;
+} ir_pcbyte_t;
+
+typedef struct ir_port_t {
+	/* what every boundary reads first, in one cache line: with hundreds of
+	 * MCUs the boundary's cost is its cache misses */
+	m162_usart_t *s;
+	int inbox_len;
+	int sel_port;         /* 0..4 = A..E */
+	size_t n_pc, pc_notified;
+	m162_t *m;
+	int index;            /* MCU index in the cluster */
+	int centre_y;         /* selector index that routes to the PC, -1 none */
+	uint8_t sel_bits[3];  /* bits of the selector lines A, B, C */
+	double tolerance;
+	ir_route_t routes[8];
+	/* receiver */
+	uint64_t overflow;    /* bytes lost because the inbox was full */
+	struct {
+		int valid, fe, n;
+		uint64_t start, end;
+		int senders[IR_MAX_SENDERS];
+		uint8_t value;
+	} last;               /* what the receiver made of the last byte(s) */
+	uint64_t rng;         /* garbage for mismatched frames */
+	ir_event_t *events;
+	size_t n_events, cap_events;
+	uint64_t seq;
+	/* sender: bytes on the centre channel, for the PC */
+	ir_pcbyte_t *to_pc;
+	size_t cap_pc;
+	ir_air_t inbox[IR_INBOX]; /* sorted by due */
+} ir_port_t;
+
+/* Attach MCU mcu's USART uart to the medium; the selector lines A, B, C are
+ * bits sel_bits of port sel_port.  Returns 0, or -1 (out of memory). */
+int ir_attach(cluster_t *c, int mcu, int uart, int sel_port, const uint8_t sel_bits[3]);
+void ir_set_routes(cluster_t *c, int mcu, const ir_route_t routes[8]);
+void ir_set_seed(cluster_t *c, uint64_t seed);
+/* A byte of the PC's transceiver (start..end, cluster cycles): reaches every
+ * attached board whose selector is on the centre in the middle of its stop bit. */
+void ir_send_from_pc(cluster_t *c, uint64_t start, uint64_t end, uint8_t byte,
+		uint32_t bit_cycles, uint8_t format);
+/* Work at a quantum boundary; 1 if a byte for the PC ended. */
+int ir_boundary(cluster_t *c);
+/* Bytes for the PC whose stop bit ended by now, of MCU mcu (removed). */
+size_t ir_take_pc(ir_port_t *p, uint64_t now, ir_pcbyte_t *out, size_t max);
+void ir_free(ir_port_t *p);
+
+#endif

@@ -1,0 +1,183 @@
+"""The IR medium routed in the core (hil_sim/core/ir_medium.c), on small AVR
+programs (tests/hil_sim/avr/irnode.c): selector routes, delivery in the
+middle of the stop bit, collisions, frame mismatch, bytes to and from the PC."""
+
+from __future__ import annotations
+
+import pytest
+from test_core_uart import build
+
+from hexbot.hil_sim._avr import Cluster
+from hexbot.protocol.pins import SELECTOR_PINS
+
+BIT = 16 * 208  # cycles per bit at UBRR 207 (300.5 baud)
+FRAME = 10 * BIT
+NONE = [("none",)] * 8
+
+
+def selector_pins(y: int) -> int:
+    """The PORTA value that selects index Y = 4C + 2B + A (Table 3-5)."""
+    (_, a), (_, b), (_, c) = SELECTOR_PINS
+    return (y & 1) << a | (y >> 1 & 1) << b | (y >> 2 & 1) << c
+
+
+def node(c: Cluster, y: int, send: bytes = b"", ubrr: int = 0xFF, rxen: bool = True) -> int:
+    m = c.add_mcu(build("irnode"), f"node{c.mcu_count}")
+    c.write_eeprom(m, 0, (send + b"\xff\xff")[:2] + bytes([ubrr, int(rxen)]))
+    c.set_input(m, "C", 0x07, selector_pins(y))
+    c.ir_attach(m, 1, SELECTOR_PINS[0][0], tuple(bit for _, bit in SELECTOR_PINS))
+    c.ir_routes(m, NONE)
+    c.watch_uart(m, 0)  # the receiver's reports
+    return m
+
+
+def advance(c: Cluster, until: int) -> None:
+    """run() returns after every watched byte (the reports): run on to ``until``."""
+    while c.cycle < until:
+        c.run(until)
+
+
+def reports(c: Cluster, m: int) -> list[tuple[int, int, bool]]:
+    """(cycle the report started, byte, framing error) per byte received."""
+    taken = c.uart_take(m, 0)
+    return [(start, data, bool(flag & 1))
+            for (start, _, flag), (_, _, data) in zip(taken[::2], taken[1::2], strict=True)]
+
+
+def sent(c: Cluster, m: int) -> list[tuple[int, int, int]]:
+    c.watch_uart(m, 1)  # the sender's own log: start and end of each byte
+    return c.uart_take(m, 1)
+
+
+def route(c: Cluster, sender: int, y: int, receiver: int, need: int) -> None:
+    routes = list(NONE)
+    routes[y] = ("mcu", receiver, need)
+    c.ir_routes(sender, routes)
+
+
+def test_byte_reaches_the_facing_receiver_in_the_middle_of_its_stop_bit():
+    c = Cluster(1000)
+    a = node(c, 3, b"\x5a")
+    b = node(c, 5)
+    route(c, a, 3, b, 5)
+    c.watch_uart(a, 1)
+    advance(c, 3 * FRAME)
+    [(start, end, value)] = c.uart_take(a, 1)
+    [(seen, byte, fe)] = reports(c, b)
+    assert (byte, fe) == (0x5A, False)
+    mid_stop = start + 9 * BIT + BIT // 2
+    # RXC rises at mid-stop; the polling loop reports within a few dozen cycles,
+    # well before the stop bit ends (the Python medium: after the end)
+    assert mid_stop <= seen < mid_stop + 100 < end
+    assert c.ir_events() == []
+
+
+def test_receiver_looking_elsewhere_hears_nothing():
+    c = Cluster(1000)
+    a = node(c, 3, b"\x5a")
+    b = node(c, 4)  # not on 5, the index that faces a
+    route(c, a, 3, b, 5)
+    advance(c, 3 * FRAME)
+    assert reports(c, b) == []
+    # a sender on an index routed nowhere: lost in the air
+    c2 = Cluster(1000)
+    a2, b2 = node(c2, 1, b"\x5a"), node(c2, 5)
+    route(c2, a2, 3, b2, 5)
+    advance(c2, 3 * FRAME)
+    assert reports(c2, b2) == []
+
+
+def test_selector_turned_away_before_mid_stop_loses_the_byte():
+    c = Cluster(1000)
+    a = node(c, 3, b"\x5a")
+    b = node(c, 5)
+    route(c, a, 3, b, 5)
+    advance(c, 8 * BIT)  # the byte is on the air, its stop bit still to come
+    c.set_input(b, "C", 0x07, selector_pins(6))
+    advance(c, 3 * FRAME)
+    assert reports(c, b) == []
+
+
+def test_overlapping_bytes_of_two_senders_collide_as_and_with_framing_error():
+    c = Cluster(1000)
+    a = node(c, 3, b"\x5a")
+    d = node(c, 3, b"\x3c")
+    b = node(c, 5)
+    route(c, a, 3, b, 5)
+    route(c, d, 3, b, 5)
+    advance(c, 3 * FRAME)
+    got = reports(c, b)
+    # the first intact, then the AND of both, broken (as hil_sim/ir_bus.py)
+    assert [(v, fe) for _, v, fe in got] == [(0x5A, False), (0x5A & 0x3C, True)]
+    [event] = c.ir_events()
+    assert event == ("ir-collision", event[1], d, b, 0x3C, (a,))
+    assert c.ir_events() == []  # taken
+
+
+def test_bytes_one_after_another_do_not_collide():
+    c = Cluster(1000)
+    a = node(c, 3, b"\x5a\x11")
+    b = node(c, 5)
+    route(c, a, 3, b, 5)
+    advance(c, 4 * FRAME)
+    assert [(v, fe) for _, v, fe in reports(c, b)] == [(0x5A, False), (0x11, False)]
+    assert c.ir_events() == []
+
+
+def test_receiver_at_another_baud_rate_gets_a_garbled_byte():
+    c = Cluster(1000)
+    a = node(c, 3, b"\x5a")
+    b = node(c, 5, ubrr=103)  # 600 baud
+    route(c, a, 3, b, 5)
+    c.ir_seed(7)
+    advance(c, 3 * FRAME)
+    [(_, _, fe)] = reports(c, b)
+    assert fe
+    [(name, _, sender, receiver, byte, _)] = c.ir_events()
+    assert (name, sender, receiver, byte) == ("ir-garbled", a, b, 0x5A)
+
+
+def test_centre_channel_bytes_go_to_the_pc_and_the_pcs_bytes_come_back():
+    c = Cluster(1000)
+    a = node(c, 2, b"\x41")
+    b = node(c, 2)
+    to_pc = list(NONE)
+    to_pc[2] = ("pc",)
+    c.ir_routes(a, to_pc)
+    c.ir_routes(b, to_pc)
+    reached = c.run(3 * FRAME)
+    assert reached < 3 * FRAME  # returned for the PC's byte
+    [(mcu, start, end, byte)] = c.ir_take_pc()
+    assert (mcu, byte) == (a, 0x41) and end - start == FRAME and end <= reached
+    assert reports(c, b) == []  # modules do not hear each other on the centre
+    now = c.cycle
+    c.ir_send_from_pc(now, now + FRAME, 0x7E)
+    advance(c, now + 2 * FRAME)
+    got = {m: reports(c, m) for m in (a, b)}
+    for m in (a, b):
+        [(seen, byte, fe)] = got[m]
+        assert (byte, fe) == (0x7E, False)
+        assert now + 9 * BIT + BIT // 2 <= seen < now + FRAME
+
+
+def test_dropped_byte_is_reported_when_the_receiver_is_off():
+    c = Cluster(1000)
+    a = node(c, 3, b"\x5a")
+    b = node(c, 5, rxen=False)
+    route(c, a, 3, b, 5)
+    advance(c, 3 * FRAME)
+    assert reports(c, b) == []
+    [(name, end, sender, receiver, byte, _)] = c.ir_events()
+    assert (name, sender, receiver, byte) == ("ir-dropped", a, b, 0x5A)
+    assert c.uart_config(b, 1)["rx_dropped"] == 1
+
+
+def test_routes_are_checked():
+    c = Cluster(1000)
+    a = node(c, 3)
+    with pytest.raises(ValueError, match="8 in all"):
+        c.ir_routes(a, NONE[:7])
+    with pytest.raises(ValueError, match="route 0"):
+        c.ir_routes(a, [("mcu", 99, 5)] + NONE[1:])
+    with pytest.raises(ValueError, match="not on the IR medium"):
+        c.ir_state(c.add_mcu(build("irnode"), "plain"))
