@@ -291,6 +291,55 @@ def _pass_cells(surface: frozenset[Cell], layer: Layer, group: Group, model: str
     return True
 
 
+def _route(held, layer: Layer, start: int, model: str, stop, limit: int) -> list[Cell] | None:
+    """The wall-following way of a module from ``layer.cells[start]`` over the
+    ``held`` cells until ``stop(cell)``; None when it gets stuck first."""
+    cell, pivot = layer.cells[start], layer.pivots[start]
+    route = [cell]
+    for _ in range(limit):
+        rolled = next_rotation(cell, pivot, "CW", held, model)
+        if rolled is None:
+            return None
+        cell, pivot = rolled.dst, rolled.substrate
+        route.append(cell)
+        if stop(cell):
+            return route
+    return None
+
+
+def _narrow(route: list[Cell]) -> tuple[Cell, Cell] | None:
+    """Two touching cells of a route three or more moves apart: two moving
+    modules, two free cells apart along the route, would touch there."""
+    for q in range(3, len(route)):
+        for p in range(q - 2):
+            if distance(route[p], route[q]) == 1:
+                return route[p], route[q]
+    return None
+
+
+def three_is_safe(surface: frozenset[Cell], layer: Layer, group: Group, model: str) -> bool:
+    """A 3-bridge that leaves a narrow pocket on the way over it (while it is
+    formed, one cell after the other, or once it is held) is not safe: a
+    moving module would touch the one behind it there (random:150, :167)."""
+    i, j = group.span
+    start = max(i - 3, 0)
+    held_cells = set(surface)
+    limit = 4 * (j - i) + 32
+    while True:
+        missing = [c for c in group.bridge if c not in held_cells]
+
+        def stop(cell: Cell) -> bool:
+            if missing:
+                return cell in missing
+            return cell in layer.visits and max(layer.visits[cell]) > j + 3
+        route = _route(held_cells.__contains__, layer, start, model, stop, limit)
+        if route is None or _narrow(route) is not None:
+            return False
+        if not missing:
+            return True
+        held_cells.add(route[-1])
+
+
 def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: bool = True,
                       three: bool = True) -> BridgeMap:
     """FINDBRIDGECELLS (Fig. 7) on a map; under the hexbot model on the
@@ -303,6 +352,7 @@ def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: b
     pairs = ncp_pairs(first)
     bis = outermost(pairs)
     candidates: list[Group] = []
+    unsafe: list[Group] = []
     if bridges:
         for span in bis:
             candidates.append(set_bridging_cells(s, first, span, model))
@@ -310,8 +360,12 @@ def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: b
             for i, j, w, shape in three_candidates(s, first):
                 u, v = first.cells[i], first.cells[j]
                 inside = frozenset(first.cells[i + 1: j])
-                candidates.append(Group("THREE", (i, j), (u, w, v), inside - {u, v},
-                                        len(inside), shape=shape))
+                three_group = Group("THREE", (i, j), (u, w, v), inside - {u, v}, len(inside),
+                                    shape=shape)
+                if three_is_safe(s, first, three_group, model):
+                    candidates.append(three_group)
+                else:
+                    unsafe.append(three_group)
     keep_spans = set(outermost([g.span for g in candidates]))
     groups, dropped = [], []
     seen: set[tuple[int, int]] = set()
@@ -322,4 +376,4 @@ def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: b
             seen.add(group.span)
         else:
             dropped.append(group)
-    return BridgeMap(surface, model, first, second, pairs, bis, groups, dropped, fills)
+    return BridgeMap(surface, model, first, second, pairs, bis, groups, dropped + unsafe, fills)
