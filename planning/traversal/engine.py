@@ -167,6 +167,9 @@ class Engine:
             assert group is not None
             if not self.occupied(group.bridge[0]):
                 return None
+            if m.cell == group.support:  # TempSupport is the Support cell (h): stay
+                m.phase = "support"
+                return None
             m.phase = "to-support"
             if group.reverse:
                 m.direction, m.pivot = "CCW", group.bridge[0]
