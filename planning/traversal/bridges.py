@@ -67,6 +67,8 @@ class Group:
     through: bool = False  # the Bridge module leaves through the pocket (it is the last)
     shape: str = ""
     pass_cells: dict[Cell, Cell] = field(default_factory=dict)
+    # every cell whose entry counts as a pass, also with neighbouring bridges held
+    pass_sets: dict[Cell, frozenset[Cell]] = field(default_factory=dict)
 
     @property
     def cells(self) -> tuple[Cell, ...]:
@@ -291,6 +293,53 @@ def _pass_cells(surface: frozenset[Cell], layer: Layer, group: Group, model: str
     return True
 
 
+def _drop_crowding_dents(groups: list[Group]) -> tuple[list[Group], list[Group]]:
+    """A bridge over a pocket of one cell only saves moves (the paper: not
+    needed to avoid collisions). Next to another bridge its module can be
+    walled in by that bridge's module, which waits for it to pass
+    (random:52): drop it there."""
+    crowded = [g for g in groups if g.pocket_length <= 1 and any(
+        other is not g and any(distance(a, b) <= 1 for a in _held_cells(other)
+                               for b in _held_cells(g)) for other in groups)]
+    return [g for g in groups if g not in crowded], crowded
+
+
+def _held_cells(group: Group) -> set[Cell]:
+    return set(group.bridge) | ({group.support} if group.support else set())
+
+
+def _neighbour_pass_cells(surface: frozenset[Cell], layer: Layer, groups: list[Group],
+                          model: str) -> None:
+    """Pass cells when a neighbouring bridge is held too: its module may stop in
+    this bridge's pass cell, and the next ones then roll over it and enter
+    another cell next to the Bridge module (random:52, :48 deadlocked)."""
+    for group in groups:
+        group.pass_sets = {b: frozenset({c}) for b, c in group.pass_cells.items()}
+        own = _held_cells(group)
+        near = [other for other in groups if other is not group and any(
+            distance(a, b) <= 2 for a in _held_cells(other) for b in own)]
+        if not near:
+            continue
+        variants = [_held_cells(other) for other in near]
+        if len(near) > 1:
+            variants.append(set().union(*variants))
+        i, j = group.span
+        for extra in variants:
+            held_cells = own | extra
+            start = max(i - 2, 0)
+            while start > 0 and layer.cells[start] in held_cells:
+                start -= 1
+            route = _route(lambda c, h=held_cells: c in surface or c in h, layer, start, model,
+                           lambda c, h=held_cells: c in layer.visits and c not in h
+                           and max(layer.visits[c]) > j, 4 * len(layer) + 32)
+            if route is None:
+                continue
+            for b in group.bridge:
+                last = [c for c in route if distance(c, b) == 1]
+                if last:
+                    group.pass_sets[b] = group.pass_sets[b] | {last[-1]}
+
+
 def _route(held, layer: Layer, start: int, model: str, stop, limit: int) -> list[Cell] | None:
     """The wall-following way of a module from ``layer.cells[start]`` over the
     ``held`` cells until ``stop(cell)``; None when it gets stuck first."""
@@ -376,4 +425,7 @@ def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: b
             seen.add(group.span)
         else:
             dropped.append(group)
+    groups, crowded = _drop_crowding_dents(groups)
+    _neighbour_pass_cells(s, first, groups, model)
+    dropped += crowded
     return BridgeMap(surface, model, first, second, pairs, bis, groups, dropped + unsafe, fills)
