@@ -329,20 +329,23 @@ def _neighbour_pass_cells(surface: frozenset[Cell], layer: Layer, groups: list[G
             start = max(i - 2, 0)
             while start > 0 and layer.cells[start] in held_cells:
                 start -= 1
-            route = _route(lambda c, h=held_cells: c in surface or c in h, layer, start, model,
-                           lambda c, h=held_cells: c in layer.visits and c not in h
-                           and max(layer.visits[c]) > j, 4 * len(layer) + 32)
-            if route is None:
+            way = _route(lambda c, h=held_cells: c in surface or c in h, layer, start, model,
+                         lambda c, h=held_cells: c in layer.visits and c not in h
+                         and max(layer.visits[c]) > j, 4 * len(layer) + 32)
+            if way is None:
                 continue
+            route = way[0]
             for b in group.bridge:
                 last = [c for c in route if distance(c, b) == 1]
                 if last:
                     group.pass_sets[b] = group.pass_sets[b] | {last[-1]}
 
 
-def _route(held, layer: Layer, start: int, model: str, stop, limit: int) -> list[Cell] | None:
+def _route(held, layer: Layer, start: int, model: str, stop,
+           limit: int) -> tuple[list[Cell], Cell] | None:
     """The wall-following way of a module from ``layer.cells[start]`` over the
-    ``held`` cells until ``stop(cell)``; None when it gets stuck first."""
+    ``held`` cells until ``stop(cell)``, and its substrate there; None when it
+    gets stuck first."""
     cell, pivot = layer.cells[start], layer.pivots[start]
     route = [cell]
     for _ in range(limit):
@@ -352,7 +355,7 @@ def _route(held, layer: Layer, start: int, model: str, stop, limit: int) -> list
         cell, pivot = rolled.dst, rolled.substrate
         route.append(cell)
         if stop(cell):
-            return route
+            return route, pivot
     return None
 
 
@@ -374,6 +377,7 @@ def three_is_safe(surface: frozenset[Cell], layer: Layer, group: Group, model: s
     start = max(i - 3, 0)
     held_cells = set(surface)
     limit = 4 * (j - i) + 32
+    order: list[tuple[Cell, Cell]] = []  # Bridge cells as they are taken, and the pivot
     while True:
         missing = [c for c in group.bridge if c not in held_cells]
 
@@ -381,12 +385,21 @@ def three_is_safe(surface: frozenset[Cell], layer: Layer, group: Group, model: s
             if missing:
                 return cell in missing
             return cell in layer.visits and max(layer.visits[cell]) > j + 3
-        route = _route(held_cells.__contains__, layer, start, model, stop, limit)
-        if route is None or _narrow(route) is not None:
+        way = _route(held_cells.__contains__, layer, start, model, stop, limit)
+        if way is None or _narrow(way[0]) is not None:
             return False
         if not missing:
-            return True
-        held_cells.add(route[-1])
+            break
+        order.append((way[0][-1], way[1]))
+        held_cells.add(way[0][-1])
+    # released in the order they were taken: each must have a way out while the
+    # later ones are still held (a corner cell walled in by the next: random:944)
+    for k, (cell, pivot) in enumerate(order):
+        later = {c for c, _ in order[k + 1:]}
+        if next_rotation(cell, pivot, "CW", lambda c, h=later: c in surface or c in h, model,
+                         group.pocket.__contains__) is None:
+            return False
+    return True
 
 
 def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: bool = True,
