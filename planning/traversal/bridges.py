@@ -369,12 +369,13 @@ def _narrow(route: list[Cell]) -> tuple[Cell, Cell] | None:
     return None
 
 
-def three_is_safe(surface: frozenset[Cell], layer: Layer, group: Group, model: str) -> bool:
+def three_is_safe(surface: frozenset[Cell], layer: Layer, group: Group, model: str,
+                  start: int | None = None) -> bool:
     """A 3-bridge that leaves a narrow pocket on the way over it (while it is
     formed, one cell after the other, or once it is held) is not safe: a
     moving module would touch the one behind it there (random:150, :167)."""
     i, j = group.span
-    start = max(i - 3, 0)
+    start = max(i - 3, 0) if start is None else start
     held_cells = set(surface)
     limit = 4 * (j - i) + 32
     order: list[tuple[Cell, Cell]] = []  # Bridge cells as they are taken, and the pivot
@@ -400,6 +401,42 @@ def three_is_safe(surface: frozenset[Cell], layer: Layer, group: Group, model: s
                          group.pocket.__contains__) is None:
             return False
     return True
+
+
+def _select(s: frozenset[Cell], layer: Layer, candidates: list[Group],
+            model: str) -> tuple[list[Group], list[Group]]:
+    """The outermost candidates whose way over comes back to the perimeter,
+    without one-cell-pocket bridges crowding another bridge."""
+    keep_spans = set(outermost([g.span for g in candidates]))
+    groups, dropped = [], []
+    seen: set[tuple[int, int]] = set()
+    for group in sorted(candidates, key=lambda g: (g.span[0], -g.span[1], g.kind == "THREE")):
+        if group.span in keep_spans and group.span not in seen and _pass_cells(
+                s, layer, group, model):
+            groups.append(group)
+            seen.add(group.span)
+        else:
+            dropped.append(group)
+    groups, crowded = _drop_crowding_dents(groups)
+    return groups, dropped + crowded
+
+
+def _start_before(group: Group, groups: list[Group]) -> int:
+    """Where a check of ``group`` starts: three cells before it, before any
+    bridge next to it (not from inside a pocket)."""
+    own = _held_cells(group)
+    starts = [group.span[0] - 3] + [other.span[0] - 1 for other in groups
+                                    if other.span[0] < group.span[0] and any(
+                                        distance(c, b) <= 2 for c in _held_cells(other)
+                                        for b in own)]
+    return max(min(starts), 0)
+
+
+def _near_held(group: Group, groups: list[Group]) -> frozenset[Cell]:
+    """The cells of the other bridges within two cells of ``group``."""
+    own = _held_cells(group)
+    return frozenset(c for other in groups if other is not group for c in _held_cells(other)
+                     if any(distance(c, b) <= 2 for b in own))
 
 
 def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: bool = True,
@@ -428,17 +465,14 @@ def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: b
                     candidates.append(three_group)
                 else:
                     unsafe.append(three_group)
-    keep_spans = set(outermost([g.span for g in candidates]))
-    groups, dropped = [], []
-    seen: set[tuple[int, int]] = set()
-    for group in sorted(candidates, key=lambda g: (g.span[0], -g.span[1], g.kind == "THREE")):
-        if group.span in keep_spans and group.span not in seen and _pass_cells(
-                s, first, group, model):
-            groups.append(group)
-            seen.add(group.span)
-        else:
-            dropped.append(group)
-    groups, crowded = _drop_crowding_dents(groups)
+    while True:
+        groups, dropped = _select(s, first, candidates, model)
+        # a 3-bridge must also be safe with the bridges next to it held (random:538)
+        late = [g for g in groups if g.kind == "THREE" and not three_is_safe(
+            s | _near_held(g, groups), first, g, model, _start_before(g, groups))]
+        if not late:
+            break
+        unsafe += late
+        candidates = [g for g in candidates if g not in late]
     _neighbour_pass_cells(s, first, groups, model)
-    dropped += crowded
     return BridgeMap(surface, model, first, second, pairs, bis, groups, dropped + unsafe, fills)
