@@ -188,6 +188,12 @@ def _ccw_path(surface: frozenset[Cell], bridge: Cell, start: Cell, goal: Cell,
     return None
 
 
+def _cw_reaches(held: frozenset[Cell], layer: Layer, start: int, goal: Cell, model: str,
+                limit: int) -> bool:
+    return _route(held.__contains__, layer, start, model, lambda c: c == goal,
+                  limit) is not None
+
+
 def set_bridging_cells(bmap_surface: frozenset[Cell], layer: Layer, span: tuple[int, int],
                        model: str) -> Group:
     """SETBRIDGINGCELLS for one BI (Fig. 8 plus the placements derived in the docs)."""
@@ -210,6 +216,11 @@ def set_bridging_cells(bmap_surface: frozenset[Cell], layer: Layer, span: tuple[
     else:
         bridge, temp, support = t.g, inside[1], inside[-1]
     reverse = _ccw_path(bmap_surface, bridge, temp, support, model) is not None
+    if kind == "LEFT" and not reverse and not _cw_reaches(
+            bmap_surface | {bridge}, layer, i + 1, support, model, 4 * length + 8):
+        # the way on through the sealed pocket circles without reaching the Support
+        # cell (random:1102): the TempSupport module stays where it is instead
+        support = temp
     if kind == "RIGHT" and not reverse:
         # The TempSupport module cannot reach the Support cell past the held
         # Bridge: one Bridge module, which leaves last through the pocket.
