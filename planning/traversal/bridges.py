@@ -341,7 +341,7 @@ def _neighbour_pass_cells(surface: frozenset[Cell], layer: Layer, groups: list[G
             while start > 0 and layer.cells[start] in held_cells:
                 start -= 1
             way = _route(lambda c, h=held_cells: c in surface or c in h, layer, start, model,
-                         lambda c, h=held_cells: c in layer.visits and c not in h
+                         lambda c, h=held_cells, j=j: c in layer.visits and c not in h
                          and max(layer.visits[c]) > j, 4 * len(layer) + 32)
             if way is None:
                 continue
@@ -393,7 +393,7 @@ def three_is_safe(surface: frozenset[Cell], layer: Layer, group: Group, model: s
     while True:
         missing = [c for c in group.bridge if c not in held_cells]
 
-        def stop(cell: Cell) -> bool:
+        def stop(cell: Cell, missing: list[Cell] = missing) -> bool:
             if missing:
                 return cell in missing
             return cell in layer.visits and max(layer.visits[cell]) > j + 3
