@@ -56,7 +56,8 @@ def test_the_invariant_check_refuses_a_move_into_an_occupied_cell():
 
 def test_fig12_13_three_bridge_keeps_time_and_moves_constant():
     rows = pocket_sweep(depths=(2, 4, 6, 8))
-    assert all(r["with"]["status"] == r["without"]["status"] == "reached" for r in rows)
+    assert all(r["with"]["status"] == r["without"]["status"] == r["small"]["status"]
+               == "reached" for r in rows)
     assert len({r["with"]["time_steps"] for r in rows}) == 1
     assert len({r["with"]["moves"] for r in rows}) == 1
     without_time = [r["without"]["time_steps"] for r in rows]
@@ -104,3 +105,17 @@ def test_hexbot_motion_refuses_a_step_rigid_modules_cannot_descend():
 
     with pytest.raises(ScenarioError, match="cannot be crossed by rigid modules"):
         find_bridge_cells(resolve_map("steps"), "hexbot")
+
+
+def test_fig12_time_crossover_lies_past_a_pocket_perimeter_of_10_as_in_the_paper():
+    # "for pocket perimeter lengths greater than 10, the traversal time saved ...
+    # outweighs the cost of detaining modules in the bridge cells"
+    from hexbot.planning.traversal.experiments import crossover
+
+    rows = pocket_sweep()
+    for r in rows:
+        if r["pocket"] < 9:
+            assert r["with"]["time_steps"] > r["without"]["time_steps"], r
+        if r["pocket"] > 10:
+            assert r["with"]["time_steps"] < r["without"]["time_steps"], r
+    assert 9 <= crossover(rows) <= 11
