@@ -238,10 +238,13 @@ def bank() -> dict[str, tuple[Surface, str]]:
     # under the hexbot model the 3-wide opening takes four Fill cells: one more module
     out["three-deep2-n5"] = (build([Feature("THREE", 2)], 5, name="three-deep2-n5"),
                              "three-deep2 with five modules (crossed under --motion hexbot)")
-    out["fig14"] = (build([Feature("BASIC", 5), Feature("SINGLE", 1), Feature("LEFT", 5),
-                           Feature("THREE", 4), Feature("RIGHT", 5), Feature("BASIC", 2),
-                           Feature("SINGLE", 3)], 11, name="fig14", steps=[0, 0, -1, 1]),
+    fig14 = [Feature("BASIC", 5), Feature("SINGLE", 1), Feature("LEFT", 5), Feature("THREE", 4),
+             Feature("RIGHT", 5), Feature("BASIC", 2), Feature("SINGLE", 3)]
+    out["fig14"] = (build(fig14, 11, name="fig14", steps=[0, 0, -1, 1]),
                     "a long surface with every bridge type and eleven modules (Fig. 14)")
+    # under the hexbot model its pockets hold 12 modules for good (Fill cells)
+    out["fig14-n13"] = (build(fig14, 13, name="fig14-n13", steps=[0, 0, -1, 1]),
+                        "fig14 with thirteen modules (crossed under --motion hexbot)")
     return out
 
 

@@ -87,7 +87,8 @@ def test_same_map_same_rounds():
                           ("three-deep8", 3, "THREE"), ("three-deep2-n5", 3, "THREE"),
                           ("three-curved-left", 3, "THREE"),
                           ("three-curved-right", 2, "THREE"),
-                          ("three-curved-symmetric", 2, "THREE")])
+                          ("three-curved-symmetric", 2, "THREE"),
+                          ("fig14-n13", 12, None)])
 def test_hexbot_motion_crosses_pockets_with_fill_cells(name, fills, paper_kind):
     bmap = find_bridge_cells(resolve_map(name), "hexbot")
     assert len(bmap.fills) == fills
