@@ -304,14 +304,38 @@ def _pass_cells(surface: frozenset[Cell], layer: Layer, group: Group, model: str
     return True
 
 
+def _within(cell: Cell, radius: int) -> list[Cell]:
+    x, y = cell
+    return [(x + dx, y + dy) for dx in range(-radius, radius + 1)
+            for dy in range(max(-radius, -dx - radius), min(radius, -dx + radius) + 1)]
+
+
+def _neighbours(groups: list[Group], radius: int) -> dict[int, list[Group]]:
+    """id(group) -> the other groups with a held cell within ``radius`` of one
+    of its own (a cell index: O(groups), not O(groups^2))."""
+    owner: dict[Cell, list[Group]] = {}
+    for group in groups:
+        for cell in _held_cells(group):
+            owner.setdefault(cell, []).append(group)
+    out: dict[int, list[Group]] = {}
+    for group in groups:
+        found: dict[int, Group] = {}
+        for cell in _held_cells(group):
+            for near in _within(cell, radius):
+                for other in owner.get(near, ()):
+                    if other is not group:
+                        found[id(other)] = other
+        out[id(group)] = list(found.values())
+    return out
+
+
 def _drop_crowding_dents(groups: list[Group]) -> tuple[list[Group], list[Group]]:
     """A bridge over a pocket of one cell only saves moves (the paper: not
     needed to avoid collisions). Next to another bridge its module can be
     walled in by that bridge's module, which waits for it to pass
     (random:52): drop it there."""
-    crowded = [g for g in groups if g.pocket_length <= 1 and any(
-        other is not g and any(distance(a, b) <= 1 for a in _held_cells(other)
-                               for b in _held_cells(g)) for other in groups)]
+    touching = _neighbours(groups, 1)
+    crowded = [g for g in groups if g.pocket_length <= 1 and touching[id(g)]]
     return [g for g in groups if g not in crowded], crowded
 
 
@@ -324,11 +348,11 @@ def _neighbour_pass_cells(surface: frozenset[Cell], layer: Layer, groups: list[G
     """Pass cells when a neighbouring bridge is held too: its module may stop in
     this bridge's pass cell, and the next ones then roll over it and enter
     another cell next to the Bridge module (random:52, :48 deadlocked)."""
+    neighbours = _neighbours(groups, 2)
     for group in groups:
         group.pass_sets = {b: frozenset({c}) for b, c in group.pass_cells.items()}
         own = _held_cells(group)
-        near = [other for other in groups if other is not group and any(
-            distance(a, b) <= 2 for a in _held_cells(other) for b in own)]
+        near = neighbours[id(group)]
         if not near:
             continue
         variants = [_held_cells(other) for other in near]
@@ -373,21 +397,28 @@ def _route(held, layer: Layer, start: int, model: str, stop,
 def _narrow(route: list[Cell]) -> tuple[Cell, Cell] | None:
     """Two touching cells of a route three or more moves apart: two moving
     modules, two free cells apart along the route, would touch there."""
-    for q in range(3, len(route)):
-        for p in range(q - 2):
-            if distance(route[p], route[q]) == 1:
-                return route[p], route[q]
+    first_at: dict[Cell, int] = {}
+    for q, cell in enumerate(route):
+        for side in SIDES:
+            p = first_at.get(neighbor(cell, side))
+            if p is not None and q - p >= 3:
+                return route[p], cell
+        first_at.setdefault(cell, q)
     return None
 
 
 def three_is_safe(surface: frozenset[Cell], layer: Layer, group: Group, model: str,
-                  start: int | None = None) -> bool:
+                  start: int | None = None, extra: frozenset[Cell] = frozenset()) -> bool:
     """A 3-bridge that leaves a narrow pocket on the way over it (while it is
     formed, one cell after the other, or once it is held) is not safe: a
-    moving module would touch the one behind it there (random:150, :167)."""
+    moving module would touch the one behind it there (random:150, :167).
+    ``extra``: cells of neighbouring bridges held as well."""
     i, j = group.span
     start = max(i - 3, 0) if start is None else start
-    held_cells = set(surface)
+    held_cells = set(extra)  # no copy of the surface: O(span) per 3-bridge
+
+    def held(cell: Cell) -> bool:
+        return cell in surface or cell in held_cells
     limit = 4 * (j - i) + 32
     order: list[tuple[Cell, Cell]] = []  # Bridge cells as they are taken, and the pivot
     while True:
@@ -397,7 +428,7 @@ def three_is_safe(surface: frozenset[Cell], layer: Layer, group: Group, model: s
             if missing:
                 return cell in missing
             return cell in layer.visits and max(layer.visits[cell]) > j + 3
-        way = _route(held_cells.__contains__, layer, start, model, stop, limit)
+        way = _route(held, layer, start, model, stop, limit)
         if way is None or _narrow(way[0]) is not None:
             return False
         if not missing:
@@ -407,7 +438,7 @@ def three_is_safe(surface: frozenset[Cell], layer: Layer, group: Group, model: s
     # released in the order they were taken: each must have a way out while the
     # later ones are still held (a corner cell walled in by the next: random:944)
     for k, (cell, pivot) in enumerate(order):
-        later = {c for c, _ in order[k + 1:]}
+        later = {c for c, _ in order[k + 1:]} | extra
         if next_rotation(cell, pivot, "CW", lambda c, h=later: c in surface or c in h, model,
                          group.pocket.__contains__) is None:
             return False
@@ -432,21 +463,18 @@ def _select(s: frozenset[Cell], layer: Layer, candidates: list[Group],
     return groups, dropped + crowded
 
 
-def _start_before(group: Group, groups: list[Group]) -> int:
+def _start_before(group: Group, near: list[Group]) -> int:
     """Where a check of ``group`` starts: three cells before it, before any
     bridge next to it (not from inside a pocket)."""
-    own = _held_cells(group)
-    starts = [group.span[0] - 3] + [other.span[0] - 1 for other in groups
-                                    if other.span[0] < group.span[0] and any(
-                                        distance(c, b) <= 2 for c in _held_cells(other)
-                                        for b in own)]
+    starts = [group.span[0] - 3] + [other.span[0] - 1 for other in near
+                                    if other.span[0] < group.span[0]]
     return max(min(starts), 0)
 
 
-def _near_held(group: Group, groups: list[Group]) -> frozenset[Cell]:
-    """The cells of the other bridges within two cells of ``group``."""
+def _near_held(group: Group, near: list[Group]) -> frozenset[Cell]:
+    """The cells of the bridges ``near`` within two cells of ``group``."""
     own = _held_cells(group)
-    return frozenset(c for other in groups if other is not group for c in _held_cells(other)
+    return frozenset(c for other in near for c in _held_cells(other)
                      if any(distance(c, b) <= 2 for b in own))
 
 
@@ -479,8 +507,10 @@ def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: b
     while True:
         groups, dropped = _select(s, first, candidates, model)
         # a 3-bridge must also be safe with the bridges next to it held (random:538)
+        near = _neighbours(groups, 2)
         late = [g for g in groups if g.kind == "THREE" and not three_is_safe(
-            s | _near_held(g, groups), first, g, model, _start_before(g, groups))]
+            s, first, g, model, _start_before(g, near[id(g)]),
+            _near_held(g, near[id(g)]))]
         if not late:
             break
         unsafe += late
