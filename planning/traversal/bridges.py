@@ -359,6 +359,8 @@ def _neighbour_pass_cells(surface: frozenset[Cell], layer: Layer, groups: list[G
         if len(near) > 1:
             variants.append(set().union(*variants))
         i, j = group.span
+        # the way ends past this bridge, or past the neighbours it goes round
+        limit = 4 * (max([j] + [other.span[1] for other in near]) - i) + 64
         for extra in variants:
             held_cells = own | extra
             start = max(i - 2, 0)
@@ -366,7 +368,7 @@ def _neighbour_pass_cells(surface: frozenset[Cell], layer: Layer, groups: list[G
                 start -= 1
             way = _route(lambda c, h=held_cells: c in surface or c in h, layer, start, model,
                          lambda c, h=held_cells, j=j: c in layer.visits and c not in h
-                         and max(layer.visits[c]) > j, 4 * len(layer) + 32)
+                         and max(layer.visits[c]) > j, limit)
             if way is None:
                 continue
             route = way[0]
