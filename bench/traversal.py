@@ -42,6 +42,22 @@ def preprocessing(perimeter: int) -> dict:
             "us_per_perimeter_cell": round(1e6 * seconds / len(bmap.layer1), 2)}
 
 
+def random_preprocessing(width: int) -> dict:
+    """FINDBRIDGECELLS on a long random surface (every bridge kind, 3-bridges
+    next to other bridges: the checks of docs/traversal.md, "Rules beyond
+    the paper"), a dug pocket every 7.5 columns."""
+    from hexbot.planning.traversal.bank import random_surface
+
+    surface = random_surface(7, width=width, pockets=width * 2 // 15)
+    start = time.perf_counter()
+    bmap = find_bridge_cells(surface)
+    seconds = time.perf_counter() - start
+    return {"perimeter_cells": len(bmap.layer1), "bridges": len(bmap.groups),
+            "three_bridges": sum(g.kind == "THREE" for g in bmap.groups),
+            "seconds": round(seconds, 3),
+            "us_per_perimeter_cell": round(1e6 * seconds / len(bmap.layer1), 2)}
+
+
 def rounds(n: int) -> dict:
     width = 2 * n + 40
     cells = {(x, y) for x in range(width) for y in range(-1, 1)}
@@ -64,6 +80,8 @@ def run(args: argparse.Namespace) -> int:
     sizes = (1_000, 10_000) if args.quick else (1_000, 10_000, 100_000)
     out = {"python": platform.python_version(), "machine": platform.machine(),
            "preprocessing": [preprocessing(m) for m in sizes],
+           "random_preprocessing": [random_preprocessing(w) for w in
+                                    ((300, 3_000) if args.quick else (300, 3_000, 30_000))],
            "engine": [rounds(100 if args.quick else 1000)]}
     print(json.dumps(out, indent=1))
     return 0 if all(r["status"] == "reached" for r in out["engine"]) else 1

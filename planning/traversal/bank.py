@@ -23,7 +23,7 @@ from hexbot.errors import ScenarioError
 from hexbot.planning.configuration import is_connected
 from hexbot.planning.traversal.bridges import BridgeMap, find_bridge_cells
 from hexbot.planning.traversal.surface import Surface, map_text
-from hexbot.protocol.lattice import SIDES, Cell, neighbor
+from hexbot.protocol.lattice import SIDES, Cell, distance, neighbor
 
 MAPS = Path(__file__).resolve().parent / "maps"
 CASES = ("SINGLE", "BASIC", "LEFT", "RIGHT")
@@ -39,6 +39,7 @@ class Feature:
     case: str
     length: int
     at: int = 0
+    shape: str = "straight"  # THREE only: the 3-bridge shape the opening calls for
 
 
 def _surface(tops: dict[int, int], dug: set[Cell]) -> set[Cell]:
@@ -76,16 +77,38 @@ def _opening(case: str, p: int, h: int, tops: dict[int, int]) -> tuple[list[Cell
     raise ValueError(case)
 
 
-def _group_at(bmap: BridgeMap, x: Cell, y: Cell, case: str):
+def _three_opening(shape: str, p: int, h: int, depth: int,
+                   tops: dict[int, int]) -> tuple[set[Cell], Cell, Cell]:
+    """A 3-cell opening ``u, w, v`` for the 3-bridge ``shape`` over a channel
+    ``depth`` rows deep, left of it the surface at height ``h`` (the anchors
+    of docs/traversal.md: a bend is a step of one row next to ``u`` or ``v``)."""
+    row, cols, right = {"straight": (h, (0, 1, 2), h),
+                        "curved-right": (h, (0, 1, 2), h - 1),  # step down after v
+                        "curved-symmetric": (h - 1, (0, 1, 2), h - 2),  # down at both ends
+                        "curved-left": (h + 1, (1, 2), h + 1)}[shape]  # u on the old top
+    for x in tops:
+        if x > p + 2:
+            tops[x] = right
+        elif x >= p:
+            tops[x] = row if x - p in cols else h
+    dug = {(p + k, row) for k in range(3)}
+    dug |= {(p + k, row - r) for r in range(1, depth) for k in cols} | {(p + 2, row - 2)}
+    return dug, (p, row), (p + 2, row)
+
+
+def _group_at(bmap: BridgeMap, x: Cell, y: Cell, case: str, shape: str = "straight"):
     for group in bmap.groups:
         i, j = group.span
-        if bmap.layer1.cells[i] == x and bmap.layer1.cells[j] == y and (
-                (group.kind == "THREE") == (case == "THREE")):
+        if case == "THREE":  # the bridge may lean one cell off the opening's row
+            if group.kind == "THREE" and group.shape == shape and distance(
+                    group.bridge[0], x) <= 1 and distance(group.bridge[-1], y) <= 1:
+                return group
+        elif bmap.layer1.cells[i] == x and bmap.layer1.cells[j] == y and group.kind != "THREE":
             return group
     return None
 
 
-def _measure(tops, dug, n, x, y, case) -> int | None:
+def _measure(tops, dug, n, x, y, case, shape: str = "straight") -> int | None:
     """The pocket length of the feature's bridge, None when the case is lost."""
     cells = _surface(tops, dug)
     if not is_connected(cells):
@@ -95,7 +118,7 @@ def _measure(tops, dug, n, x, y, case) -> int | None:
                                  three=case == "THREE")
     except ScenarioError:
         return None
-    group = _group_at(bmap, x, y, case)
+    group = _group_at(bmap, x, y, case, shape)
     if group is None or (case != "THREE" and group.kind != case):
         return None
     return group.pocket_length
@@ -110,11 +133,12 @@ def build(features: list[Feature], n: int, *, gap: int = 7, name: str = "surface
     p = n + 4 + gap // 2
     for k, feature in enumerate(features):
         h = tops[p]
-        opening, x, y = _opening(feature.case, p, h, tops)
+        if feature.case == "THREE":  # a channel ``length`` rows deep under the opening
+            opening, x, y = _three_opening(feature.shape, p, h, feature.length, tops)
+        else:
+            opening, x, y = _opening(feature.case, p, h, tops)
         dug |= set(opening)
-        if feature.case == "THREE":  # a straight channel, three wide, ``length`` rows deep
-            dug |= {(p + k, h - row) for row in range(1, feature.length) for k in range(3)}
-        length = _measure(tops, dug, n, x, y, feature.case)
+        length = _measure(tops, dug, n, x, y, feature.case, feature.shape)
         if length is None:
             raise ScenarioError(f"feature {feature.case} at column {p}: bad opening")
         if feature.case == "THREE":
@@ -207,13 +231,20 @@ def bank() -> dict[str, tuple[Surface, str]]:
         name = f"three-deep{depth}"
         out[name] = (build([Feature("THREE", depth)], 4, name=name),
                      f"a 3-cell opening over a channel three wide and {depth} rows deep")
+    for shape in ("curved-left", "curved-right", "curved-symmetric"):
+        name = f"three-{shape}"
+        out[name] = (build([Feature("THREE", 4, shape=shape)], 4, name=name),
+                     f"a 3-cell opening whose 3-bridge is {shape}, over a channel 4 rows deep")
     # under the hexbot model the 3-wide opening takes four Fill cells: one more module
     out["three-deep2-n5"] = (build([Feature("THREE", 2)], 5, name="three-deep2-n5"),
                              "three-deep2 with five modules (crossed under --motion hexbot)")
-    out["fig14"] = (build([Feature("BASIC", 5), Feature("SINGLE", 1), Feature("LEFT", 5),
-                           Feature("THREE", 4), Feature("RIGHT", 5), Feature("BASIC", 2),
-                           Feature("SINGLE", 3)], 11, name="fig14", steps=[0, 0, -1, 1]),
+    fig14 = [Feature("BASIC", 5), Feature("SINGLE", 1), Feature("LEFT", 5), Feature("THREE", 4),
+             Feature("RIGHT", 5), Feature("BASIC", 2), Feature("SINGLE", 3)]
+    out["fig14"] = (build(fig14, 11, name="fig14", steps=[0, 0, -1, 1]),
                     "a long surface with every bridge type and eleven modules (Fig. 14)")
+    # under the hexbot model its pockets hold 12 modules for good (Fill cells)
+    out["fig14-n13"] = (build(fig14, 13, name="fig14-n13", steps=[0, 0, -1, 1]),
+                        "fig14 with thirteen modules (crossed under --motion hexbot)")
     return out
 
 

@@ -67,6 +67,8 @@ class Group:
     through: bool = False  # the Bridge module leaves through the pocket (it is the last)
     shape: str = ""
     pass_cells: dict[Cell, Cell] = field(default_factory=dict)
+    # every cell whose entry counts as a pass, also with neighbouring bridges held
+    pass_sets: dict[Cell, frozenset[Cell]] = field(default_factory=dict)
 
     @property
     def cells(self) -> tuple[Cell, ...]:
@@ -186,6 +188,12 @@ def _ccw_path(surface: frozenset[Cell], bridge: Cell, start: Cell, goal: Cell,
     return None
 
 
+def _cw_reaches(held: frozenset[Cell], layer: Layer, start: int, goal: Cell, model: str,
+                limit: int) -> bool:
+    return _route(held.__contains__, layer, start, model, lambda c: c == goal,
+                  limit) is not None
+
+
 def set_bridging_cells(bmap_surface: frozenset[Cell], layer: Layer, span: tuple[int, int],
                        model: str) -> Group:
     """SETBRIDGINGCELLS for one BI (Fig. 8 plus the placements derived in the docs)."""
@@ -208,6 +216,11 @@ def set_bridging_cells(bmap_surface: frozenset[Cell], layer: Layer, span: tuple[
     else:
         bridge, temp, support = t.g, inside[1], inside[-1]
     reverse = _ccw_path(bmap_surface, bridge, temp, support, model) is not None
+    if kind == "LEFT" and not reverse and not _cw_reaches(
+            bmap_surface | {bridge}, layer, i + 1, support, model, 4 * length + 8):
+        # the way on through the sealed pocket circles without reaching the Support
+        # cell (random:1102): the TempSupport module stays where it is instead
+        support = temp
     if kind == "RIGHT" and not reverse:
         # The TempSupport module cannot reach the Support cell past the held
         # Bridge: one Bridge module, which leaves last through the pocket.
@@ -291,6 +304,182 @@ def _pass_cells(surface: frozenset[Cell], layer: Layer, group: Group, model: str
     return True
 
 
+def _within(cell: Cell, radius: int) -> list[Cell]:
+    x, y = cell
+    return [(x + dx, y + dy) for dx in range(-radius, radius + 1)
+            for dy in range(max(-radius, -dx - radius), min(radius, -dx + radius) + 1)]
+
+
+def _neighbours(groups: list[Group], radius: int) -> dict[int, list[Group]]:
+    """id(group) -> the other groups with a held cell within ``radius`` of one
+    of its own (a cell index: O(groups), not O(groups^2))."""
+    owner: dict[Cell, list[Group]] = {}
+    for group in groups:
+        for cell in _held_cells(group):
+            owner.setdefault(cell, []).append(group)
+    out: dict[int, list[Group]] = {}
+    for group in groups:
+        found: dict[int, Group] = {}
+        for cell in _held_cells(group):
+            for near in _within(cell, radius):
+                for other in owner.get(near, ()):
+                    if other is not group:
+                        found[id(other)] = other
+        out[id(group)] = list(found.values())
+    return out
+
+
+def _drop_crowding_dents(groups: list[Group]) -> tuple[list[Group], list[Group]]:
+    """A bridge over a pocket of one cell only saves moves (the paper: not
+    needed to avoid collisions). Next to another bridge its module can be
+    walled in by that bridge's module, which waits for it to pass
+    (random:52): drop it there."""
+    touching = _neighbours(groups, 1)
+    crowded = [g for g in groups if g.pocket_length <= 1 and touching[id(g)]]
+    return [g for g in groups if g not in crowded], crowded
+
+
+def _held_cells(group: Group) -> set[Cell]:
+    return set(group.bridge) | ({group.support} if group.support else set())
+
+
+def _neighbour_pass_cells(surface: frozenset[Cell], layer: Layer, groups: list[Group],
+                          model: str) -> None:
+    """Pass cells when a neighbouring bridge is held too: its module may stop in
+    this bridge's pass cell, and the next ones then roll over it and enter
+    another cell next to the Bridge module (random:52, :48 deadlocked)."""
+    neighbours = _neighbours(groups, 2)
+    for group in groups:
+        group.pass_sets = {b: frozenset({c}) for b, c in group.pass_cells.items()}
+        own = _held_cells(group)
+        near = neighbours[id(group)]
+        if not near:
+            continue
+        variants = [_held_cells(other) for other in near]
+        if len(near) > 1:
+            variants.append(set().union(*variants))
+        i, j = group.span
+        # the way ends past this bridge, or past the neighbours it goes round
+        limit = 4 * (max([j] + [other.span[1] for other in near]) - i) + 64
+        for extra in variants:
+            held_cells = own | extra
+            start = max(i - 2, 0)
+            while start > 0 and layer.cells[start] in held_cells:
+                start -= 1
+            way = _route(lambda c, h=held_cells: c in surface or c in h, layer, start, model,
+                         lambda c, h=held_cells, j=j: c in layer.visits and c not in h
+                         and max(layer.visits[c]) > j, limit)
+            if way is None:
+                continue
+            route = way[0]
+            for b in group.bridge:
+                last = [c for c in route if distance(c, b) == 1]
+                if last:
+                    group.pass_sets[b] = group.pass_sets[b] | {last[-1]}
+
+
+def _route(held, layer: Layer, start: int, model: str, stop,
+           limit: int) -> tuple[list[Cell], Cell] | None:
+    """The wall-following way of a module from ``layer.cells[start]`` over the
+    ``held`` cells until ``stop(cell)``, and its substrate there; None when it
+    gets stuck first."""
+    cell, pivot = layer.cells[start], layer.pivots[start]
+    route = [cell]
+    for _ in range(limit):
+        rolled = next_rotation(cell, pivot, "CW", held, model)
+        if rolled is None:
+            return None
+        cell, pivot = rolled.dst, rolled.substrate
+        route.append(cell)
+        if stop(cell):
+            return route, pivot
+    return None
+
+
+def _narrow(route: list[Cell]) -> tuple[Cell, Cell] | None:
+    """Two touching cells of a route three or more moves apart: two moving
+    modules, two free cells apart along the route, would touch there."""
+    first_at: dict[Cell, int] = {}
+    for q, cell in enumerate(route):
+        for side in SIDES:
+            p = first_at.get(neighbor(cell, side))
+            if p is not None and q - p >= 3:
+                return route[p], cell
+        first_at.setdefault(cell, q)
+    return None
+
+
+def three_is_safe(surface: frozenset[Cell], layer: Layer, group: Group, model: str,
+                  start: int | None = None, extra: frozenset[Cell] = frozenset()) -> bool:
+    """A 3-bridge that leaves a narrow pocket on the way over it (while it is
+    formed, one cell after the other, or once it is held) is not safe: a
+    moving module would touch the one behind it there (random:150, :167).
+    ``extra``: cells of neighbouring bridges held as well."""
+    i, j = group.span
+    start = max(i - 3, 0) if start is None else start
+    held_cells = set(extra)  # no copy of the surface: O(span) per 3-bridge
+
+    def held(cell: Cell) -> bool:
+        return cell in surface or cell in held_cells
+    limit = 4 * (j - i) + 32
+    order: list[tuple[Cell, Cell]] = []  # Bridge cells as they are taken, and the pivot
+    while True:
+        missing = [c for c in group.bridge if c not in held_cells]
+
+        def stop(cell: Cell, missing: list[Cell] = missing) -> bool:
+            if missing:
+                return cell in missing
+            return cell in layer.visits and max(layer.visits[cell]) > j + 3
+        way = _route(held, layer, start, model, stop, limit)
+        if way is None or _narrow(way[0]) is not None:
+            return False
+        if not missing:
+            break
+        order.append((way[0][-1], way[1]))
+        held_cells.add(way[0][-1])
+    # released in the order they were taken: each must have a way out while the
+    # later ones are still held (a corner cell walled in by the next: random:944)
+    for k, (cell, pivot) in enumerate(order):
+        later = {c for c, _ in order[k + 1:]} | extra
+        if next_rotation(cell, pivot, "CW", lambda c, h=later: c in surface or c in h, model,
+                         group.pocket.__contains__) is None:
+            return False
+    return True
+
+
+def _select(s: frozenset[Cell], layer: Layer, candidates: list[Group],
+            model: str) -> tuple[list[Group], list[Group]]:
+    """The outermost candidates whose way over comes back to the perimeter,
+    without one-cell-pocket bridges crowding another bridge."""
+    keep_spans = set(outermost([g.span for g in candidates]))
+    groups, dropped = [], []
+    seen: set[tuple[int, int]] = set()
+    for group in sorted(candidates, key=lambda g: (g.span[0], -g.span[1], g.kind == "THREE")):
+        if group.span in keep_spans and group.span not in seen and _pass_cells(
+                s, layer, group, model):
+            groups.append(group)
+            seen.add(group.span)
+        else:
+            dropped.append(group)
+    groups, crowded = _drop_crowding_dents(groups)
+    return groups, dropped + crowded
+
+
+def _start_before(group: Group, near: list[Group]) -> int:
+    """Where a check of ``group`` starts: three cells before it, before any
+    bridge next to it (not from inside a pocket)."""
+    starts = [group.span[0] - 3] + [other.span[0] - 1 for other in near
+                                    if other.span[0] < group.span[0]]
+    return max(min(starts), 0)
+
+
+def _near_held(group: Group, near: list[Group]) -> frozenset[Cell]:
+    """The cells of the bridges ``near`` within two cells of ``group``."""
+    own = _held_cells(group)
+    return frozenset(c for other in near for c in _held_cells(other)
+                     if any(distance(c, b) <= 2 for b in own))
+
+
 def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: bool = True,
                       three: bool = True) -> BridgeMap:
     """FINDBRIDGECELLS (Fig. 7) on a map; under the hexbot model on the
@@ -303,6 +492,7 @@ def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: b
     pairs = ncp_pairs(first)
     bis = outermost(pairs)
     candidates: list[Group] = []
+    unsafe: list[Group] = []
     if bridges:
         for span in bis:
             candidates.append(set_bridging_cells(s, first, span, model))
@@ -310,16 +500,22 @@ def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: b
             for i, j, w, shape in three_candidates(s, first):
                 u, v = first.cells[i], first.cells[j]
                 inside = frozenset(first.cells[i + 1: j])
-                candidates.append(Group("THREE", (i, j), (u, w, v), inside - {u, v},
-                                        len(inside), shape=shape))
-    keep_spans = set(outermost([g.span for g in candidates]))
-    groups, dropped = [], []
-    seen: set[tuple[int, int]] = set()
-    for group in sorted(candidates, key=lambda g: (g.span[0], -g.span[1], g.kind == "THREE")):
-        if group.span in keep_spans and group.span not in seen and _pass_cells(
-                s, first, group, model):
-            groups.append(group)
-            seen.add(group.span)
-        else:
-            dropped.append(group)
-    return BridgeMap(surface, model, first, second, pairs, bis, groups, dropped, fills)
+                three_group = Group("THREE", (i, j), (u, w, v), inside - {u, v}, len(inside),
+                                    shape=shape)
+                if three_is_safe(s, first, three_group, model):
+                    candidates.append(three_group)
+                else:
+                    unsafe.append(three_group)
+    while True:
+        groups, dropped = _select(s, first, candidates, model)
+        # a 3-bridge must also be safe with the bridges next to it held (random:538)
+        near = _neighbours(groups, 2)
+        late = [g for g in groups if g.kind == "THREE" and not three_is_safe(
+            s, first, g, model, _start_before(g, near[id(g)]),
+            _near_held(g, near[id(g)]))]
+        if not late:
+            break
+        unsafe += late
+        candidates = [g for g in candidates if g not in late]
+    _neighbour_pass_cells(s, first, groups, model)
+    return BridgeMap(surface, model, first, second, pairs, bis, groups, dropped + unsafe, fills)

@@ -38,6 +38,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="instead of a map: the paper's Figs. 12-13 experiment (and the "
                              "SINGLE-bridge one), a table or --json")
     parser.add_argument("--plot", metavar="OUT.png", help="with --sweep: draw the figures")
+    parser.add_argument("--random", metavar="FIRST..LAST",
+                        help="instead of a map: run random:SEED for every seed in the range "
+                             "and count reached/deadlock/violation (exit 1 unless all reached)")
     hil = parser.add_argument_group(
         "execution (on the embedded simulator by default, or on --port: real modules or a pty)")
     hil.add_argument("--execute", action="store_true",
@@ -109,8 +112,12 @@ def run(args: argparse.Namespace) -> int:
         from hexbot.planning.traversal.experiments import run_sweep
 
         return run_sweep(args)
+    if args.random:
+        from hexbot.planning.traversal.experiments import run_random
+
+        return run_random(args)
     if not args.map:
-        raise ScenarioError("give a MAP (or --sweep)")
+        raise ScenarioError("give a MAP (or --sweep or --random FIRST..LAST)")
     surface = resolve_map(args.map)
     if args.execute:
         return run_execute(args, surface)

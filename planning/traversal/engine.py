@@ -120,6 +120,7 @@ class Engine:
         self.at: dict[Cell, Module] = {m.cell: m for m in self.modules}
         self.changed: set[Cell] = set()
         self.entered: set[Cell] = set()
+        self.last_moves: list[tuple[Cell, Cell]] = []
         self.stall_rounds = stall_rounds or 8 * self.n + 40
         self.max_rounds = max_rounds or 20 * (len(layer) + 4 * self.n) + 200
 
@@ -157,8 +158,10 @@ class Engine:
         elif m.phase == "bridge":
             group = m.group
             assert group is not None
-            if group.pass_cells.get(m.cell) in self.entered:
-                m.count += 1
+            passed = group.pass_sets.get(m.cell, frozenset())
+            # a module moving from one pass cell into another is the same pass
+            m.count += sum(1 for src, dst in self.last_moves
+                           if dst in passed and src not in passed)
             if m.count < group.passes_needed(m.cell, self.crossing):
                 return None
             m.phase, m.resume_rule = "resume", "leave-bridge"
@@ -166,6 +169,9 @@ class Engine:
             group = m.group
             assert group is not None
             if not self.occupied(group.bridge[0]):
+                return None
+            if m.cell == group.support:  # TempSupport is the Support cell (h): stay
+                m.phase = "support"
                 return None
             m.phase = "to-support"
             if group.reverse:
@@ -302,6 +308,7 @@ class Engine:
                 self.at[m.cell] = m
             self.changed = {r.src for r in records} | {r.dst for r in records}
             self.entered = {r.dst for r in records}
+            self.last_moves = [(r.src, r.dst) for r in records]
             for m, _ in actions:
                 self.arrive(m)
             rounds.append(records)

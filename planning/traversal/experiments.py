@@ -1,8 +1,9 @@
 """The paper's measurements, reproduced (Section VI).
 
 - Figs. 12-13: four modules, one pocket behind a 3-cell opening whose
-  perimeter grows; time steps and module moves with the 3-bridge and
-  without it (1- and 2-cell bridges still formed).
+  perimeter grows; time steps and module moves with the 3-bridge, without
+  any bridge (the paper's blue line: the modules traverse the whole
+  pocket) and with only the 1- and 2-cell bridges inside it.
 - SINGLE bridges: one dent in a flat surface, n modules, with and without
   bridges: the paper says each SINGLE bridge adds 2 time steps and saves
   n - 1 moves.
@@ -32,12 +33,25 @@ def pocket_sweep(depths=SWEEP_DEPTHS, n: int = 4) -> list[dict[str, Any]]:
         if not three:
             raise ScenarioError(f"depth {depth}: no 3-bridge found")
         row: dict[str, Any] = {"pocket": three[0].pocket_length, "depth": depth}
-        for label, three in (("with", True), ("without", False)):
-            result = traverse(find_bridge_cells(surface, three=three))
+        # the paper's blue line: "modules must traverse the entire pocket" (no
+        # bridge at all); "small": no 3-bridge, but the 1-2 bridges inside it
+        for label, options in (("with", {}), ("without", {"bridges": False}),
+                               ("small", {"three": False})):
+            result = traverse(find_bridge_cells(surface, **options))
             row[label] = {"status": result.status, "time_steps": result.time_steps,
                           "moves": result.moves}
         rows.append(row)
     return rows
+
+
+def crossover(sweep: list[dict[str, Any]]) -> int | None:
+    """The smallest pocket perimeter from which the 3-bridge is faster than
+    traversing the pocket, for every larger one too (None: never)."""
+    faster = [r["with"]["time_steps"] < r["without"]["time_steps"] for r in sweep]
+    for k in range(len(sweep)):
+        if all(faster[k:]):
+            return sweep[k]["pocket"]
+    return None
 
 
 def single_effect(ns=SINGLE_N) -> list[dict[str, Any]]:
@@ -55,12 +69,15 @@ def single_effect(ns=SINGLE_N) -> list[dict[str, Any]]:
 
 
 def table(sweep: list[dict[str, Any]], singles: list[dict[str, Any]]) -> str:
-    lines = ["| pocket perimeter | time steps with 3-bridge | without | moves with | without |",
-             "|---:|---:|---:|---:|---:|"]
+    lines = ["| pocket perimeter | time steps with 3-bridge | without bridges | 1-2 bridges "
+             "only | moves with | without | 1-2 bridges only |",
+             "|---:|---:|---:|---:|---:|---:|---:|"]
     for row in sweep:
-        w, wo = row["with"], row["without"]
+        w, wo, sm = row["with"], row["without"], row["small"]
         lines.append(f"| {row['pocket']} | {w['time_steps']} | {wo['time_steps']} | "
-                     f"{w['moves']} | {wo['moves']} |")
+                     f"{sm['time_steps']} | {w['moves']} | {wo['moves']} | {sm['moves']} |")
+    lines.append(f"\ntime crossover (3-bridge faster from this pocket perimeter on): "
+                 f"{crossover(sweep)}")
     lines += ["", "| n | time with SINGLE bridge | without | extra time | moves with | "
               "without | moves saved (n - 1) |", "|---:|---:|---:|---:|---:|---:|---:|"]
     for row in singles:
@@ -82,6 +99,8 @@ def plot(sweep: list[dict[str, Any]], path: str) -> None:
                            (axes[1], "moves", "Fig. 13: module moves")):
         ax.plot(xs, [r["without"][key] for r in sweep], "o-", color="#1f77b4",
                 label="traverse the pocket")
+        ax.plot(xs, [r["small"][key] for r in sweep], "^--", color="#7f7f7f",
+                label="1-2 bridges only")
         ax.plot(xs, [r["with"][key] for r in sweep], "s-", color="#d62728",
                 label="3-module bridge")
         ax.set_xlabel("pocket perimeter (cells)")
@@ -101,5 +120,44 @@ def run_sweep(args: argparse.Namespace) -> int:
         print(table(sweep, singles))
     if args.plot:
         plot(sweep, args.plot)
-    bad = [r for r in sweep if "reached" not in (r["with"]["status"],)]
+    bad = [r for r in sweep if r["with"]["status"] != "reached"]
     return 1 if bad else 0
+
+
+def random_runs(seeds: range, model: str = "deformable") -> dict[str, Any]:
+    """Every ``random:SEED`` of ``seeds``: how many are reached, deadlock or break
+    an invariant, and why each failure did (docs/traversal.md, random surfaces)."""
+    from hexbot.planning.traversal.bank import random_surface
+
+    counts = dict.fromkeys(("reached", "deadlock", "violation", "refused"), 0)
+    failures = []
+    for seed in seeds:
+        try:
+            result = traverse(find_bridge_cells(random_surface(seed), model))
+        except ScenarioError as exc:  # the map cannot be crossed under this model
+            counts["refused"] += 1
+            failures.append({"seed": seed, "status": "refused", "reason": str(exc)})
+            continue
+        counts[result.status] += 1
+        if result.status != "reached":
+            failures.append({"seed": seed, "status": result.status, "reason": result.reason})
+    return {"seeds": [seeds.start, seeds.stop - 1], "motion": model, **counts,
+            "failures": failures}
+
+
+def run_random(args: argparse.Namespace) -> int:
+    first, sep, last = args.random.partition("..")
+    try:
+        seeds = range(int(first), int(last if sep else first) + 1)
+    except ValueError as exc:
+        raise ScenarioError(f"--random {args.random}: expected FIRST..LAST seeds") from exc
+    report = random_runs(seeds, args.motion or "deformable")
+    if args.json:
+        print(json.dumps(report))
+    else:
+        print(f"random:{seeds.start}..{seeds.stop - 1} ({report['motion']}): "
+              + ", ".join(f"{report[k]} {k}" for k in ("reached", "deadlock", "violation",
+                                                       "refused")))
+        for f in report["failures"]:
+            print(f"  random:{f['seed']}: {f['status']}: {f['reason']}")
+    return 0 if report["reached"] == len(seeds) else 1

@@ -77,3 +77,24 @@ def test_theorem1_holds_for_every_bi_of_random_surfaces(seed):
     for i, j in bmap.bis:
         x, y = bmap.layer1.cells[i], bmap.layer1.cells[j]
         assert theorem1_problems(surface.surface, x, y) == [], (seed, x, y)
+
+
+@pytest.mark.parametrize(("name", "shape"), [
+    ("three-deep4", "straight"), ("three-curved-left", "curved-left"),
+    ("three-curved-right", "curved-right"), ("three-curved-symmetric", "curved-symmetric")])
+def test_each_three_bridge_shape_is_detected_and_crossed(name, shape):
+    from hexbot.planning.traversal.engine import traverse
+
+    surface = resolve_map(name)
+    bmap = find_bridge_cells(surface)
+    assert [(g.kind, g.shape) for g in bmap.groups] == [("THREE", shape)]
+    (group,) = bmap.groups
+    # the three cells span the opening: u and v on layer1, w off it
+    u, w, v = group.bridge
+    assert u in bmap.layer1 and v in bmap.layer1 and w not in bmap.layer1
+    result = traverse(bmap)  # every invariant is checked each round
+    assert result.status == "reached", result.reason
+    assert set(result.final.values()) == set(surface.goals)
+    # its three modules stopped there: three Bridge leaves, one per cell
+    leaves = [m.src for r in result.rounds for m in r if m.rule == "leave-bridge"]
+    assert sorted(leaves) == sorted(group.bridge)

@@ -53,3 +53,17 @@ def test_render_writes_an_animated_gif(tmp_path):
     assert main(["traverse", "single-1", "--render", str(out)]) == 0
     with Image.open(out) as gif:
         assert gif.n_frames > 10
+
+
+def test_random_range_counts_outcomes_and_fails_unless_all_reached(capsys):
+    status, out = _json(capsys, "--random", "160..169")
+    assert status == 0 and out["reached"] == 10 and out["failures"] == []
+    # under the hexbot model random:2 is refused: exit 1, with the reason
+    status = main(["traverse", "--random", "0..3", "--motion", "hexbot"])
+    text = capsys.readouterr().out
+    assert status == 1 and "3 reached" in text and "random:2: refused" in text
+
+
+def test_random_range_must_be_seeds(capsys):
+    assert main(["traverse", "--random", "a..b"]) != 0
+    assert "expected FIRST..LAST" in capsys.readouterr().err

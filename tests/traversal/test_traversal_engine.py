@@ -56,7 +56,8 @@ def test_the_invariant_check_refuses_a_move_into_an_occupied_cell():
 
 def test_fig12_13_three_bridge_keeps_time_and_moves_constant():
     rows = pocket_sweep(depths=(2, 4, 6, 8))
-    assert all(r["with"]["status"] == r["without"]["status"] == "reached" for r in rows)
+    assert all(r["with"]["status"] == r["without"]["status"] == r["small"]["status"]
+               == "reached" for r in rows)
     assert len({r["with"]["time_steps"] for r in rows}) == 1
     assert len({r["with"]["moves"] for r in rows}) == 1
     without_time = [r["without"]["time_steps"] for r in rows]
@@ -82,7 +83,12 @@ def test_same_map_same_rounds():
 
 @pytest.mark.parametrize(("name", "fills", "paper_kind"),
                          [("flat", 0, None), ("basic-2", 2, "BASIC"),
-                          ("three-deep2-n5", 4, "THREE")])
+                          ("three-deep2", 3, "THREE"), ("three-deep4", 3, "THREE"),
+                          ("three-deep8", 3, "THREE"), ("three-deep2-n5", 3, "THREE"),
+                          ("three-curved-left", 3, "THREE"),
+                          ("three-curved-right", 2, "THREE"),
+                          ("three-curved-symmetric", 2, "THREE"),
+                          ("fig14-n13", 12, None)])
 def test_hexbot_motion_crosses_pockets_with_fill_cells(name, fills, paper_kind):
     bmap = find_bridge_cells(resolve_map(name), "hexbot")
     assert len(bmap.fills) == fills
@@ -104,3 +110,40 @@ def test_hexbot_motion_refuses_a_step_rigid_modules_cannot_descend():
 
     with pytest.raises(ScenarioError, match="cannot be crossed by rigid modules"):
         find_bridge_cells(resolve_map("steps"), "hexbot")
+
+
+def test_fig12_time_crossover_lies_past_a_pocket_perimeter_of_10_as_in_the_paper():
+    # "for pocket perimeter lengths greater than 10, the traversal time saved ...
+    # outweighs the cost of detaining modules in the bridge cells"
+    from hexbot.planning.traversal.experiments import crossover
+
+    rows = pocket_sweep()
+    for r in rows:
+        if r["pocket"] < 9:
+            assert r["with"]["time_steps"] > r["without"]["time_steps"], r
+        if r["pocket"] > 10:
+            assert r["with"]["time_steps"] < r["without"]["time_steps"], r
+    assert 9 <= crossover(rows) <= 11
+
+
+def test_the_foot_of_a_two_high_drop_cannot_be_entered_by_a_hexbot_rotation():
+    # steps: the wall drops two rows onto a flat floor at x = 21; the foot cell
+    # has four occupied neighbours in a row, and every Table 4-3 rotation into
+    # it sweeps a surface cell (docs/traversal.md: why steps is refused)
+    from hexbot.planning.traversal.motion import required_empty
+    from hexbot.protocol.lattice import SIDES, neighbor
+    from hexbot.protocol.rotation_geometry import ROTATIONS
+
+    surface = resolve_map("steps").surface
+    foot = (21, 11)
+    assert foot not in surface and (21, 12) not in surface
+    assert [neighbor(foot, s) in surface for s in SIDES] == [True, False, False, True, True,
+                                                             True]
+    for side in SIDES:
+        src = neighbor(foot, side)
+        if src in surface:
+            continue
+        for rotation in ROTATIONS:
+            sub, goal, _ = rotation.at(src)
+            if goal == foot and sub in surface:
+                assert any(c in surface for c in required_empty(rotation, src, "hexbot"))
