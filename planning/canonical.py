@@ -29,7 +29,6 @@ moves and stalls least).
 from __future__ import annotations
 
 from collections import deque
-from dataclasses import replace
 
 from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline
 from hexbot.planning.configuration import (
@@ -248,8 +247,18 @@ def reversed_to_strip(goal: frozenset[Cell], strip: Configuration, width: int,
     backward = to_strip(provisional, width, deadline)
     end = replay(provisional, backward)
     real = {end[c].id: strip[c].id for c in end}
-    return [replace(reverse_move(m), module=real[m.module],
-                    substrate_module=real[m.substrate_module]) for m in reversed(backward)]
+    return undone(backward, real)
+
+
+def undone(backward: list[Move], real: dict[int, int]) -> list[Move]:
+    """``backward`` undone move by move, last first, its provisional module ids
+    renamed by ``real`` (the constructor, not dataclasses.replace: once per move)."""
+    out = []
+    for m in reversed(backward):
+        r = reverse_move(m)
+        out.append(Move(real[r.module], r.src, r.dst, r.joint, r.direction, r.substrate,
+                        real[r.substrate_module]))
+    return out
 
 
 def default_widths(count: int) -> list[int]:
@@ -266,9 +275,12 @@ def _rotated(config: Configuration, steps: int) -> Configuration:
 def _rotate_move(move: Move, steps: int) -> Move:
     """The same rotation seen in a frame turned ``steps`` sixth-turns clockwise:
     cells turn, and joint ``j`` becomes joint ``j + steps`` (sides turn with them)."""
-    return replace(move, src=rotate_cell(move.src, steps), dst=rotate_cell(move.dst, steps),
-                   substrate=rotate_cell(move.substrate, steps),
-                   joint=wrap(move.joint + steps))
+    if not steps % 6:
+        return move
+    # the constructor, not dataclasses.replace: this runs once per move of a plan
+    return Move(move.module, rotate_cell(move.src, steps), rotate_cell(move.dst, steps),
+                wrap(move.joint + steps), move.direction,
+                rotate_cell(move.substrate, steps), move.substrate_module)
 
 
 def _via_strip_once(initial: Configuration, goal: frozenset[Cell], width: int,
@@ -369,9 +381,7 @@ def via_fixed_strip(initial: Configuration, goal: frozenset[Cell], fixed: Cell,
     if end.cells != at.cells:  # a bug, not a user error
         raise PlanningFailure("internal error: the two strips at the fixed module differ")
     real = {end[c].id: at[c].id for c in end}
-    return first + [replace(reverse_move(m), module=real[m.module],
-                            substrate_module=real[m.substrate_module])
-                    for m in reversed(backward)]
+    return first + undone(backward, real)
 
 
 def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10**7,
