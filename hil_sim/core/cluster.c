@@ -2,21 +2,22 @@
  * cluster.c -- lock-step scheduler for several simulated MCUs.
  * See cluster.h for the timing rules.
  */
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "cluster.h"
+#include "cluster_pool.h"
 #include "rf12_part.h"
 
-static int logger_installed;
+/* simavr's logger is one global pointer: set it once, before any MCU runs
+ * (clusters may be made while another one runs without the GIL). */
+static pthread_once_t logger_once = PTHREAD_ONCE_INIT;
 
 static void ensure_logger(void)
 {
-	if (!logger_installed) {
-		m162_install_logger();
-		logger_installed = 1;
-	}
+	pthread_once(&logger_once, m162_install_logger);
 }
 
 cluster_t *cluster_new(uint64_t quantum, double baud_tolerance)
@@ -27,6 +28,7 @@ cluster_t *cluster_new(uint64_t quantum, double baud_tolerance)
 		return NULL;
 	c->quantum = quantum ? quantum : 1000;
 	c->baud_tolerance = baud_tolerance;
+	c->threads = 1;
 	return c;
 }
 
@@ -34,6 +36,7 @@ void cluster_free(cluster_t *c)
 {
 	if (!c)
 		return;
+	cluster_pool_free(c->pool);
 	for (int i = 0; i < c->n; i++) {
 		rf12_t *radio = c->mcu[i]->rf12; /* the MCU's io list points into it */
 		m162_free(c->mcu[i]);
@@ -161,14 +164,38 @@ static int boundary(cluster_t *c)
 	return news;
 }
 
+int cluster_set_threads(cluster_t *c, int threads)
+{
+	if (threads < 1)
+		return -1;
+	cluster_pool_t *pool = NULL;
+	if (threads > 1 && !(pool = cluster_pool_new(threads)))
+		return -1;
+	cluster_pool_free(c->pool);
+	c->pool = pool;
+	c->threads = threads;
+	return 0;
+}
+
+/* Every MCU to cycle end: the MCUs do not interact within a quantum, so
+ * one thread or several give the same state. */
+static void run_quantum(cluster_t *c, uint64_t end)
+{
+	if (c->pool && c->n > 1) {
+		cluster_pool_run(c->pool, c->mcu, c->n, end);
+		return;
+	}
+	for (int i = 0; i < c->n; i++)
+		m162_run_until(c->mcu[i], end);
+}
+
 uint64_t cluster_run(cluster_t *c, uint64_t until)
 {
 	while (c->cycle < until) {
 		uint64_t end = c->cycle + c->quantum;
 		if (end > until)
 			end = until;
-		for (int i = 0; i < c->n; i++)
-			m162_run_until(c->mcu[i], end);
+		run_quantum(c, end);
 		c->cycle = end;
 		if (boundary(c))
 			break;

@@ -22,6 +22,10 @@
  * MCU may run on its own clock (m162_set_clock), and everything the cluster
  * reports (byte and pin-log cycles) is converted to cluster cycles.
  *
+ * The MCUs of a quantum may run on several threads (cluster_set_threads,
+ * cluster_pool.h): they share nothing until the boundary, which runs on the
+ * caller's thread alone, so the trace is the same with 1 or N threads.
+ *
  * An MCU may carry an RF12 radio (rf12_part.h); run() returns at the first
  * boundary after one of its bytes left the air, for Python's medium
  * (hil_sim/radio.py) to route it.
@@ -41,6 +45,8 @@ typedef struct cluster_t {
 	uint32_t frequency; /* shared by all MCUs; 0 until the first is added */
 	m162_t **mcu;
 	int n, cap;
+	int threads;                  /* that run a quantum, the caller's included */
+	struct cluster_pool_t *pool; /* NULL with one thread */
 } cluster_t;
 
 cluster_t *cluster_new(uint64_t quantum, double baud_tolerance);
@@ -53,6 +59,10 @@ void cluster_connect(cluster_t *c, int a, int ua, int b, int ub);
 void cluster_watch(cluster_t *c, int mcu, int uart);
 /* Set MCU mcu's clock to hz from now on (the nominal clock: cluster->frequency). */
 void cluster_set_clock(cluster_t *c, int mcu, uint32_t hz);
+/* Run quanta on this many threads (>= 1; more than MCUs is allowed, the
+ * spare ones find nothing to do).  Returns -1 if threads < 1 or a thread
+ * could not be started (the old setting stays). */
+int cluster_set_threads(cluster_t *c, int threads);
 /* Advance to until (a multiple of nothing in particular); returns the cycle
  * reached, earlier if a watched USART finished a byte. */
 uint64_t cluster_run(cluster_t *c, uint64_t until);

@@ -1,0 +1,157 @@
+/*
+ * cluster_pool.c -- worker threads for one quantum; see cluster_pool.h.
+ *
+ * One 64-bit ticket holds the quantum's generation (high half) and the next
+ * MCU to hand out (low half).  A thread claims a chunk by a compare-and-swap
+ * that succeeds only while the generation is the one it woke for and MCUs
+ * are left, so a worker that wakes late finds nothing and claims nothing:
+ * the caller waits for the MCUs to be done, never for a wake-up.  The job
+ * (mcu, n, end) is written before the ticket of its generation and stays
+ * until all n MCUs are counted done, so a claimed chunk always sees its own
+ * generation's job.
+ *
+ * Waits spin a little first (within one run() the next quantum follows in
+ * microseconds), then sleep on a condition variable, so parked threads cost
+ * nothing while Python works between two runs.
+ */
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+
+#include "cluster_pool.h"
+
+#define CHUNK 4          /* MCUs claimed at a time */
+#define SPIN_ROUNDS 2000 /* polls before sleeping (tens of microseconds) */
+
+struct cluster_pool_t {
+	int workers; /* threads besides the caller's */
+	pthread_t *thread;
+	pthread_mutex_t lock;
+	pthread_cond_t start, done;
+	atomic_uint_fast64_t ticket; /* generation << 32 | next MCU */
+	atomic_int completed;        /* MCUs of this generation done */
+	atomic_int stop;
+	/* the job of the present generation */
+	m162_t **mcu;
+	int n;
+	uint64_t end;
+};
+
+static inline uint32_t generation_of(uint64_t ticket)
+{
+	return (uint32_t)(ticket >> 32);
+}
+
+static inline void relax(void)
+{
+#if defined(__x86_64__) || defined(__i386__)
+	__builtin_ia32_pause();
+#endif
+}
+
+/* Claim and run chunks of generation gen until none is left. */
+static void run_share(cluster_pool_t *p, uint32_t gen)
+{
+	uint64_t t = atomic_load(&p->ticket);
+	for (;;) {
+		if (generation_of(t) != gen || (uint32_t)t >= (uint32_t)p->n)
+			return;
+		if (!atomic_compare_exchange_weak(&p->ticket, &t, t + CHUNK))
+			continue; /* t now holds the fresh ticket */
+		int i = (int)(uint32_t)t, stop = i + CHUNK < p->n ? i + CHUNK : p->n;
+		for (int k = i; k < stop; k++)
+			m162_run_until(p->mcu[k], p->end);
+		if (atomic_fetch_add(&p->completed, stop - i) + (stop - i) == p->n) {
+			pthread_mutex_lock(&p->lock);
+			pthread_cond_signal(&p->done);
+			pthread_mutex_unlock(&p->lock);
+		}
+		t = atomic_load(&p->ticket);
+	}
+}
+
+static void *worker(void *arg)
+{
+	cluster_pool_t *p = arg;
+	uint32_t seen = generation_of(atomic_load(&p->ticket));
+	for (;;) {
+		for (int k = 0; k < SPIN_ROUNDS && generation_of(atomic_load(&p->ticket)) == seen; k++)
+			relax();
+		if (generation_of(atomic_load(&p->ticket)) == seen) {
+			pthread_mutex_lock(&p->lock);
+			while (generation_of(atomic_load(&p->ticket)) == seen && !atomic_load(&p->stop))
+				pthread_cond_wait(&p->start, &p->lock);
+			pthread_mutex_unlock(&p->lock);
+		}
+		if (atomic_load(&p->stop))
+			return NULL;
+		seen = generation_of(atomic_load(&p->ticket));
+		run_share(p, seen);
+	}
+}
+
+cluster_pool_t *cluster_pool_new(int threads)
+{
+	if (threads < 2)
+		return NULL;
+	cluster_pool_t *p = calloc(1, sizeof *p);
+	if (!p)
+		return NULL;
+	p->thread = calloc(threads - 1, sizeof *p->thread);
+	if (!p->thread) {
+		free(p);
+		return NULL;
+	}
+	pthread_mutex_init(&p->lock, NULL);
+	pthread_cond_init(&p->start, NULL);
+	pthread_cond_init(&p->done, NULL);
+	for (int i = 0; i < threads - 1; i++) {
+		if (pthread_create(&p->thread[i], NULL, worker, p) != 0) {
+			cluster_pool_free(p);
+			return NULL;
+		}
+		p->workers++;
+	}
+	return p;
+}
+
+void cluster_pool_free(cluster_pool_t *p)
+{
+	if (!p)
+		return;
+	pthread_mutex_lock(&p->lock);
+	atomic_store(&p->stop, 1);
+	pthread_cond_broadcast(&p->start);
+	pthread_mutex_unlock(&p->lock);
+	for (int i = 0; i < p->workers; i++)
+		pthread_join(p->thread[i], NULL);
+	pthread_cond_destroy(&p->start);
+	pthread_cond_destroy(&p->done);
+	pthread_mutex_destroy(&p->lock);
+	free(p->thread);
+	free(p);
+}
+
+void cluster_pool_run(cluster_pool_t *p, m162_t **mcu, int n, uint64_t end)
+{
+	if (n <= 0)
+		return;
+	p->mcu = mcu;
+	p->n = n;
+	p->end = end;
+	atomic_store(&p->completed, 0);
+	uint32_t gen = generation_of(atomic_load(&p->ticket)) + 1;
+	pthread_mutex_lock(&p->lock);
+	atomic_store(&p->ticket, (uint64_t)gen << 32);
+	pthread_cond_broadcast(&p->start);
+	pthread_mutex_unlock(&p->lock);
+	run_share(p, gen);
+	for (int k = 0; k < SPIN_ROUNDS && atomic_load(&p->completed) < n; k++)
+		relax();
+	if (atomic_load(&p->completed) < n) {
+		pthread_mutex_lock(&p->lock);
+		while (atomic_load(&p->completed) < n)
+			pthread_cond_wait(&p->done, &p->lock);
+		pthread_mutex_unlock(&p->lock);
+	}
+}
