@@ -1,6 +1,7 @@
 """``hexbot bench sim``: simulator throughput by cluster size, measured now.
 
     hexbot bench sim [--json] [--sizes 7,50,200,255] [--seconds S] [--repeat N]
+                     [--threads T]
 
 For each size N, a generated blob of N modules (``blob:N``, the real
 firmware images, the whole Python loop: IR medium, plant, pin logs):
@@ -14,13 +15,17 @@ firmware images, the whole Python loop: IR medium, plant, pin logs):
 Reference: raw simavr (its own run loop, stock atmega128 core) on one MCU
 in the same CPU-bound loop, measured in the same run (bench/raw_simavr.c).
 Each case is the best of --repeat runs (the machine is shared); the peak
-resident memory of the process is read after each size. One thread.
+resident memory of the process is read after each size. Every case runs its
+quanta on --threads host threads (default 1); the 1-minute load average at
+the start and the end is reported beside the numbers, as other processes on
+the machine take cores away from the threads.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import resource
 import time
 
@@ -43,6 +48,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument(
         "--repeat", type=int, default=1, help="runs per case; the best counts (default 1)"
+    )
+    parser.add_argument(
+        "--threads", type=int, default=1,
+        help="host threads per quantum in every case (default 1)",
     )
 
 
@@ -70,22 +79,22 @@ def _start_wave(sim: Simulator) -> None:
     sim.pc_write(encode_pc(make("Localize")))
 
 
-def measure_size(count: int, seconds: float, busy_elf: str) -> dict:
+def measure_size(count: int, seconds: float, busy_elf: str, threads: int = 1) -> dict:
     ids = range(1, count + 1)
     mcus = 2 * count
-    sim = Simulator(generate("blob", count, seed=1))
+    sim = Simulator(generate("blob", count, seed=1), threads=threads)
     boot = _rates(mcus, *_timed(sim, lambda s: s.run(boot_seconds(ids))), sim.hz)
     idle = _rates(mcus, *_timed(sim, lambda s: s.run(seconds)), sim.hz)
     _start_wave(sim)
     wave = _rates(mcus, *_timed(sim, lambda s: s.run(LOCALIZE_WINDOW_S)), sim.hz)
-    cluster = type(sim.cluster)(sim.cluster.quantum_cycles)
+    cluster = type(sim.cluster)(sim.cluster.quantum_cycles, threads=threads)
     for i in range(mcus):
         cluster.add_mcu(busy_elf, f"busy{i}")
     t0 = time.perf_counter()
     cluster.run(BUSY_CYCLES)
     busy_wall = time.perf_counter() - t0
     return {"modules": count, "mcus": mcus, "quantum_cycles": sim.cluster.quantum_cycles,
-            "threads": 1, "boot": boot, "idle": idle, "wave": wave,
+            "threads": threads, "boot": boot, "idle": idle, "wave": wave,
             "busy": {"cycles_per_mcu_per_s": round(BUSY_CYCLES / busy_wall * mcus),
                      "wall_s": round(busy_wall, 3)},
             "peak_rss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)}
@@ -100,18 +109,20 @@ def _best(runs: list[dict]) -> dict:
     return best
 
 
-def measure(sizes: list[int], seconds: float, repeat: int = 1) -> dict:
+def measure(sizes: list[int], seconds: float, repeat: int = 1, threads: int = 1) -> dict:
     busy162, busy128 = avr_program("cpuloop", "atmega162"), avr_program("cpuloop", "atmega128")
     raw_cycles = 20_000_000
     raw = round(raw_cycles / min(raw_simavr_seconds(busy128, "atmega128", raw_cycles)
                                  for _ in range(repeat)))
     results = []
+    load_start = round(os.getloadavg()[0], 2)
     for count in sizes:
-        best = _best([measure_size(count, seconds, busy162) for _ in range(repeat)])
+        best = _best([measure_size(count, seconds, busy162, threads) for _ in range(repeat)])
         # per-MCU cycles on one core, against raw simavr's one MCU
         best["busy"]["vs_raw"] = round(best["busy"]["cycles_per_mcu_per_s"] / raw, 3)
         results.append(best)
-    return {"raw_simavr_cycles_per_s": raw, "sizes": results}
+    return {"raw_simavr_cycles_per_s": raw, "threads": threads, "cpu_count": os.cpu_count(),
+            "load_avg_1min": [load_start, round(os.getloadavg()[0], 2)], "sizes": results}
 
 
 def run(args: argparse.Namespace) -> int:
@@ -119,16 +130,20 @@ def run(args: argparse.Namespace) -> int:
         raise HexBotError(f"--seconds must be positive, not {args.seconds}")
     if args.repeat < 1:
         raise HexBotError(f"--repeat must be at least 1, not {args.repeat}")
+    if args.threads < 1:
+        raise HexBotError(f"--threads must be at least 1, not {args.threads}")
     try:
         sizes = [int(s) for s in args.sizes.split(",")]
     except ValueError:
         raise HexBotError(
             f"--sizes takes numbers separated by commas, not {args.sizes!r}") from None
-    result = measure(sizes, args.seconds, args.repeat)
+    result = measure(sizes, args.seconds, args.repeat, args.threads)
     if args.json:
         print(json.dumps(result))
         return 0
-    print(f"raw simavr: {result['raw_simavr_cycles_per_s']:,} cycles/s (1 MCU)")
+    print(f"raw simavr: {result['raw_simavr_cycles_per_s']:,} cycles/s (1 MCU); "
+          f"{result['threads']} thread(s) on {result['cpu_count']} cores, load average "
+          f"{result['load_avg_1min'][0]} -> {result['load_avg_1min'][1]}")
     print("modules  idle x  boot x  wave x  busy/MCU vs raw  peak MB")
     for r in result["sizes"]:
         print(f"{r['modules']:7} {r['idle']['realtime_factor']:7.1f} "

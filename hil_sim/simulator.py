@@ -85,8 +85,12 @@ class Simulator:
         self.scenario = scenario
         self.seed = scenario.seed if seed is None else seed
         if cluster is None:
-            cluster = _load_core().Cluster(quantum_cycles or lookahead_cycles(hz),
-                                           threads=threads or scenario.threads)
+            threads = scenario.threads if threads is None else threads
+            try:
+                cluster = _load_core().Cluster(quantum_cycles or lookahead_cycles(hz),
+                                               threads=threads)
+            except ValueError as exc:
+                raise HexBotError(f"simulator threads: {exc}") from exc
         self.cluster = cluster
         self.hz = int(getattr(self.cluster, "frequency", hz))
         self.events: list[dict] = []
