@@ -31,9 +31,10 @@ struct cluster_pool_t {
 	atomic_uint_fast64_t ticket; /* generation << 32 | next MCU */
 	atomic_int completed;        /* MCUs of this generation done */
 	atomic_int stop;
-	/* the job of the present generation */
+	/* the job of the present generation; n is atomic because a worker that
+	 * woke late reads it before its claim fails */
 	m162_t **mcu;
-	int n;
+	atomic_int n;
 	uint64_t end;
 };
 
@@ -54,14 +55,17 @@ static void run_share(cluster_pool_t *p, uint32_t gen)
 {
 	uint64_t t = atomic_load(&p->ticket);
 	for (;;) {
-		if (generation_of(t) != gen || (uint32_t)t >= (uint32_t)p->n)
+		int n = atomic_load_explicit(&p->n, memory_order_relaxed);
+		if (generation_of(t) != gen || (uint32_t)t >= (uint32_t)n)
 			return;
 		if (!atomic_compare_exchange_weak(&p->ticket, &t, t + CHUNK))
 			continue; /* t now holds the fresh ticket */
-		int i = (int)(uint32_t)t, stop = i + CHUNK < p->n ? i + CHUNK : p->n;
+		/* claimed: the job is this generation's until the chunk is counted */
+		n = atomic_load_explicit(&p->n, memory_order_relaxed);
+		int i = (int)(uint32_t)t, stop = i + CHUNK < n ? i + CHUNK : n;
 		for (int k = i; k < stop; k++)
 			m162_run_until(p->mcu[k], p->end);
-		if (atomic_fetch_add(&p->completed, stop - i) + (stop - i) == p->n) {
+		if (atomic_fetch_add(&p->completed, stop - i) + (stop - i) == n) {
 			pthread_mutex_lock(&p->lock);
 			pthread_cond_signal(&p->done);
 			pthread_mutex_unlock(&p->lock);
@@ -137,7 +141,7 @@ void cluster_pool_run(cluster_pool_t *p, m162_t **mcu, int n, uint64_t end)
 	if (n <= 0)
 		return;
 	p->mcu = mcu;
-	p->n = n;
+	atomic_store_explicit(&p->n, n, memory_order_relaxed);
 	p->end = end;
 	atomic_store(&p->completed, 0);
 	uint32_t gen = generation_of(atomic_load(&p->ticket)) + 1;
