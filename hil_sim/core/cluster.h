@@ -2,7 +2,7 @@
  * cluster.h -- several simulated MCUs advanced in lock-step.
  *
  * Time is cut into quanta of Q cycles (default 1000 = 1 ms at 1 MHz).  In
- * each quantum every MCU, in index order, runs until its cycle counter
+ * each quantum every MCU (in index order, or on several threads) runs until its cycle counter
  * reaches the quantum's end (an instruction may overshoot by a few cycles; a
  * sleeping MCU lands exactly on it).  Only then are bytes moved between
  * MCUs, so the result does not depend on the order MCUs are stepped in, on

@@ -194,3 +194,17 @@ def test_cli_runs_a_scenario_on_two_threads_with_the_same_files(tmp_path):
                           "1", "--threads", "0"], capture_output=True, text=True)
     assert bad.returncode != 0
     assert "threads must be 1..256" in bad.stderr
+
+
+def test_runner_without_python_prints_the_same_trace_on_three_threads():
+    tools = Path(__file__).resolve().parents[2] / "hil_sim" / "core" / "tools"
+    subprocess.run(["make", "-s", "-C", str(tools), "m162run"], check=True)
+    images = [build("echo"), build("pinger"), build("tick"), build("echo"), build("pinger")]
+
+    def trace(threads: str) -> str:
+        return subprocess.run([str(tools / "m162run"), "-c", "80000", "-j", threads, "-w",
+                               *images], check=True, capture_output=True, text=True).stdout
+
+    one = trace("1")
+    assert one.count(" uart0 ") >= 20
+    assert trace("3") == one
