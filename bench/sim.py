@@ -17,8 +17,10 @@ in the same CPU-bound loop, measured in the same run (bench/raw_simavr.c).
 Each case is the best of --repeat runs (the machine is shared); the peak
 resident memory of the process is read after each size. Every case runs its
 quanta on --threads host threads (default 1); the 1-minute load average at
-the start and the end is reported beside the numbers, as other processes on
-the machine take cores away from the threads.
+the start and the end is reported beside the numbers, and each case's
+cores_used (CPU seconds of every thread / wall seconds), as other processes
+on the machine take cores away from the threads. With T threads the busy
+ratio against raw simavr's one MCU can reach T.
 """
 
 from __future__ import annotations
@@ -55,17 +57,27 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def _timed(sim: Simulator, action) -> tuple[float, float]:
-    """(simulated seconds, wall seconds) of ``action(sim)``."""
-    start_cycle, t0 = sim.cycle, time.perf_counter()
+def _cpu_seconds() -> float:
+    """CPU time of the whole process, every thread."""
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return usage.ru_utime + usage.ru_stime
+
+
+def _timed(sim: Simulator, action) -> tuple[float, float, float]:
+    """(simulated seconds, wall seconds, CPU seconds) of ``action(sim)``."""
+    start_cycle, t0, cpu0 = sim.cycle, time.perf_counter(), _cpu_seconds()
     action(sim)
-    return (sim.cycle - start_cycle) / sim.hz, time.perf_counter() - t0
+    return ((sim.cycle - start_cycle) / sim.hz, time.perf_counter() - t0,
+            _cpu_seconds() - cpu0)
 
 
-def _rates(mcus: int, simulated: float, wall: float, hz: int) -> dict:
+def _rates(mcus: int, simulated: float, wall: float, cpu: float, hz: int) -> dict:
+    # cores_used = CPU / wall: below the thread count when the shared machine
+    # had no free core for them
     return {"realtime_factor": round(simulated / wall, 2),
             "cycles_per_s": round(simulated * hz * mcus / wall),
-            "simulated_s": round(simulated, 2), "wall_s": round(wall, 3)}
+            "simulated_s": round(simulated, 2), "wall_s": round(wall, 3),
+            "cores_used": round(cpu / wall, 2)}
 
 
 def _start_wave(sim: Simulator) -> None:
@@ -90,13 +102,14 @@ def measure_size(count: int, seconds: float, busy_elf: str, threads: int = 1) ->
     cluster = type(sim.cluster)(sim.cluster.quantum_cycles, threads=threads)
     for i in range(mcus):
         cluster.add_mcu(busy_elf, f"busy{i}")
-    t0 = time.perf_counter()
+    t0, cpu0 = time.perf_counter(), _cpu_seconds()
     cluster.run(BUSY_CYCLES)
-    busy_wall = time.perf_counter() - t0
+    busy_wall, busy_cpu = time.perf_counter() - t0, _cpu_seconds() - cpu0
     return {"modules": count, "mcus": mcus, "quantum_cycles": sim.cluster.quantum_cycles,
             "threads": threads, "boot": boot, "idle": idle, "wave": wave,
             "busy": {"cycles_per_mcu_per_s": round(BUSY_CYCLES / busy_wall * mcus),
-                     "wall_s": round(busy_wall, 3)},
+                     "wall_s": round(busy_wall, 3),
+                     "cores_used": round(busy_cpu / busy_wall, 2)},
             "peak_rss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)}
 
 
@@ -144,9 +157,10 @@ def run(args: argparse.Namespace) -> int:
     print(f"raw simavr: {result['raw_simavr_cycles_per_s']:,} cycles/s (1 MCU); "
           f"{result['threads']} thread(s) on {result['cpu_count']} cores, load average "
           f"{result['load_avg_1min'][0]} -> {result['load_avg_1min'][1]}")
-    print("modules  idle x  boot x  wave x  busy/MCU vs raw  peak MB")
+    print("modules  idle x  boot x  wave x  busy/MCU vs raw  peak MB  cores used (idle, busy)")
     for r in result["sizes"]:
         print(f"{r['modules']:7} {r['idle']['realtime_factor']:7.1f} "
               f"{r['boot']['realtime_factor']:7.1f} {r['wave']['realtime_factor']:7.1f} "
-              f"{r['busy']['vs_raw']:16.3f} {r['peak_rss_mb']:8}")
+              f"{r['busy']['vs_raw']:16.3f} {r['peak_rss_mb']:8}  "
+              f"{r['idle']['cores_used']:.2f}, {r['busy']['cores_used']:.2f}")
     return 0
