@@ -29,6 +29,7 @@ cluster_t *cluster_new(uint64_t quantum, double baud_tolerance)
 	c->quantum = quantum ? quantum : 1000;
 	c->baud_tolerance = baud_tolerance;
 	c->threads = 1;
+	c->min_per_thread = CLUSTER_MIN_MCUS_PER_THREAD;
 	return c;
 }
 
@@ -177,12 +178,24 @@ int cluster_set_threads(cluster_t *c, int threads)
 	return 0;
 }
 
+/* Threads for one quantum: as many as asked, but each with at least
+ * min_per_thread MCUs -- below that, handing work over costs more than it
+ * saves (a quantum of 7 idle modules is ~10 us of work). */
+static int quantum_threads(const cluster_t *c)
+{
+	int threads = c->threads;
+	if (c->min_per_thread > 1 && threads > c->n / c->min_per_thread)
+		threads = c->n / c->min_per_thread;
+	return threads > 1 ? threads : 1;
+}
+
 /* Every MCU to cycle end: the MCUs do not interact within a quantum, so
  * one thread or several give the same state. */
 static void run_quantum(cluster_t *c, uint64_t end)
 {
-	if (c->pool && c->n > 1) {
-		cluster_pool_run(c->pool, c->mcu, c->n, end);
+	int threads = c->pool ? quantum_threads(c) : 1;
+	if (threads > 1) {
+		cluster_pool_run(c->pool, c->mcu, c->n, end, threads);
 		return;
 	}
 	for (int i = 0; i < c->n; i++)

@@ -46,8 +46,14 @@ typedef struct cluster_t {
 	m162_t **mcu;
 	int n, cap;
 	int threads;                  /* that run a quantum, the caller's included */
+	int min_per_thread;           /* fewer threads if one would get fewer MCUs */
 	struct cluster_pool_t *pool; /* NULL with one thread */
 } cluster_t;
+
+/* A quantum uses at most n / this threads: 32 MCUs of idle firmware are
+ * about 20 us of work (0.65 us each, bench sim at 7 and 50 modules), the
+ * order of what waking a parked thread costs. */
+#define CLUSTER_MIN_MCUS_PER_THREAD 32
 
 cluster_t *cluster_new(uint64_t quantum, double baud_tolerance);
 void cluster_free(cluster_t *c);
@@ -60,8 +66,10 @@ void cluster_watch(cluster_t *c, int mcu, int uart);
 /* Set MCU mcu's clock to hz from now on (the nominal clock: cluster->frequency). */
 void cluster_set_clock(cluster_t *c, int mcu, uint32_t hz);
 /* Run quanta on this many threads (>= 1; more than MCUs is allowed, the
- * spare ones find nothing to do).  Returns -1 if threads < 1 or a thread
- * could not be started (the old setting stays). */
+ * spare ones find nothing to do).  A quantum uses fewer when a thread would
+ * get fewer than c->min_per_thread MCUs (default
+ * CLUSTER_MIN_MCUS_PER_THREAD; 1 always uses them all).  Returns -1 if
+ * threads < 1 or a thread could not be started (the old setting stays). */
 int cluster_set_threads(cluster_t *c, int threads);
 /* Advance to until (a multiple of nothing in particular); returns the cycle
  * reached, earlier if a watched USART finished a byte. */

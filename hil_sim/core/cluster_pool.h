@@ -24,8 +24,11 @@ typedef struct cluster_pool_t cluster_pool_t;
  * be started. */
 cluster_pool_t *cluster_pool_new(int threads);
 void cluster_pool_free(cluster_pool_t *p);
-/* Run mcu[0..n-1] until cluster cycle end, on every thread of the pool;
- * returns when all have reached it. */
-void cluster_pool_run(cluster_pool_t *p, m162_t **mcu, int n, uint64_t end);
+/* Threads of the pool, the caller's included. */
+int cluster_pool_threads(const cluster_pool_t *p);
+/* Run mcu[0..n-1] until cluster cycle end on this many of the pool's
+ * threads (the caller's included, at most cluster_pool_threads); returns
+ * when all have reached it. */
+void cluster_pool_run(cluster_pool_t *p, m162_t **mcu, int n, uint64_t end, int threads);
 
 #endif

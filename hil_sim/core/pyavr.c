@@ -229,6 +229,34 @@ static int Cluster_set_threads(ClusterObject *self, PyObject *value, void *closu
 	return set_threads(self, threads);
 }
 
+static PyObject *Cluster_get_min_per_thread(ClusterObject *self, void *closure)
+{
+	(void)closure;
+	if (idle_or_fail(self) < 0)
+		return NULL;
+	return PyLong_FromLong(self->c->min_per_thread);
+}
+
+static int Cluster_set_min_per_thread(ClusterObject *self, PyObject *value, void *closure)
+{
+	(void)closure;
+	if (!value) {
+		PyErr_SetString(PyExc_AttributeError, "min_mcus_per_thread cannot be deleted");
+		return -1;
+	}
+	long v = PyLong_AsLong(value);
+	if (v == -1 && PyErr_Occurred())
+		return -1;
+	if (idle_or_fail(self) < 0)
+		return -1;
+	if (v < 1 || v > 1000000) {
+		PyErr_Format(PyExc_ValueError, "min_mcus_per_thread must be >= 1, not %ld", v);
+		return -1;
+	}
+	self->c->min_per_thread = (int)v;
+	return 0;
+}
+
 static PyObject *Cluster_get_count(ClusterObject *self, void *closure)
 {
 	(void)closure;
@@ -822,6 +850,10 @@ static PyGetSetDef Cluster_getset[] = {
 	{ "threads", (getter)Cluster_get_threads, (setter)Cluster_set_threads,
 		"threads that run each quantum (1 = the caller's only); the trace does not "
 		"depend on it", NULL },
+	{ "min_mcus_per_thread", (getter)Cluster_get_min_per_thread,
+		(setter)Cluster_set_min_per_thread,
+		"a quantum uses fewer threads if one would get fewer MCUs than this "
+		"(default 32; 1 uses every thread)", NULL },
 	{ NULL, NULL, NULL, NULL, NULL },
 };
 

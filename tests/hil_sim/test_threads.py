@@ -1,6 +1,10 @@
 """Threads: the MCUs of a quantum run on several host threads (cluster_pool.c)
 and give the same trace as on one: byte-identical VCD, event log and PC
-transcript, and the same bytes and pin changes on the C core's wires."""
+transcript, and the same bytes and pin changes on the C core's wires.
+
+The clusters here are small, so the tests set ``min_mcus_per_thread = 1``:
+every thread asked for takes part in every quantum (by default a thread
+needs 32 MCUs of its own)."""
 
 from __future__ import annotations
 
@@ -32,11 +36,13 @@ def build(name: str) -> str:
     return str(AVR_DIR / target)
 
 
-def recorded(scenario, threads: int, localize: bool = False, idle_s: float = 1.0):
+def recorded(scenario, threads: int, localize: bool = False, idle_s: float = 1.0,
+             min_per_thread: int = 1):
     """(VCD text, event log as JSON lines, PC transcript) of booting the
     scenario, optionally localizing it from module 1, then idling."""
     sim = Simulator(scenario, threads=threads)
     assert sim.cluster.threads == threads
+    sim.cluster.min_mcus_per_thread = min_per_thread
     log = io.StringIO()
     sim.event_sinks.append(lambda e: log.write(json.dumps(e) + "\n"))
     vcd_text = io.StringIO()
@@ -82,11 +88,14 @@ def test_generated_blob_on_spread_clocks_is_byte_identical_on_1_and_2_threads():
     assert one[0].count("\n#") > 100
     assert recorded(blob, threads=2, idle_s=2.0) == one
     assert recorded(blob, threads=4, idle_s=2.0) == one
+    # the default share: 40 MCUs give one thread 32, so 2 of the 4 run
+    assert recorded(blob, threads=4, idle_s=2.0, min_per_thread=32) == one
 
 
 def ping_pong(threads: int, pairs: int = 3):
     """pinger/echo pairs on wires: every byte and pin change, per MCU."""
     c = Cluster(700, threads=threads)
+    c.min_mcus_per_thread = 1
     mcus = []
     for i in range(pairs):
         p = c.add_mcu(build("pinger"), f"pinger{i}")
@@ -125,6 +134,7 @@ def test_thread_count_can_change_between_runs_without_changing_the_trace():
         return p, e
 
     c = Cluster(1000, threads=1)
+    c.min_mcus_per_thread = 1
     p, e = pair(c)
     for step, threads in enumerate((1, 3, 2, 1), start=1):
         c.threads = threads
@@ -143,6 +153,7 @@ def test_run_releases_the_gil_and_the_cluster_refuses_other_threads_meanwhile():
     """Another Python thread runs during run() (the GIL is released) and finds
     the cluster busy instead of racing the C state."""
     c = Cluster(1000, threads=2)
+    c.min_mcus_per_thread = 1
     for i in range(8):
         c.add_mcu(build("cpuloop"), f"busy{i}")
     seen: list[str] = []
@@ -172,6 +183,8 @@ def test_run_releases_the_gil_and_the_cluster_refuses_other_threads_meanwhile():
 def test_thread_count_errors_are_clear(tmp_path):
     with pytest.raises(ValueError, match="threads must be 1..256"):
         Cluster(1000, threads=0)
+    with pytest.raises(ValueError, match="min_mcus_per_thread must be >= 1"):
+        Cluster(1000).min_mcus_per_thread = 0
     with pytest.raises(HexBotError, match="threads must be 1..256, not 0"):
         Simulator(load_scenario("single"), threads=0)
     text = 'name = "t"\nthreads = 0\n[[module]]\nid = 1\nposition = [0, 0]\n'
@@ -181,10 +194,11 @@ def test_thread_count_errors_are_clear(tmp_path):
 
 
 def test_cli_runs_a_scenario_on_two_threads_with_the_same_files(tmp_path):
+    # 32 modules: 64 MCUs, two threads at the default 32 MCUs per thread
     outputs = []
     for threads in ("1", "2"):
         vcd, events = tmp_path / f"{threads}.vcd", tmp_path / f"{threads}.jsonl"
-        subprocess.run([sys.executable, "-m", "hexbot.cli", "sim", "line:6:2", "--duration",
+        subprocess.run([sys.executable, "-m", "hexbot.cli", "sim", "line:32:2", "--duration",
                         "12", "--speed", "0", "--threads", threads, "--vcd", str(vcd),
                         "--events", str(events)], check=True, capture_output=True)
         outputs.append((vcd.read_bytes(), events.read_bytes()))
@@ -202,8 +216,9 @@ def test_runner_without_python_prints_the_same_trace_on_three_threads():
     images = [build("echo"), build("pinger"), build("tick"), build("echo"), build("pinger")]
 
     def trace(threads: str) -> str:
-        return subprocess.run([str(tools / "m162run"), "-c", "80000", "-j", threads, "-w",
-                               *images], check=True, capture_output=True, text=True).stdout
+        return subprocess.run([str(tools / "m162run"), "-c", "80000", "-j", threads, "-m", "1",
+                               "-w", *images], check=True, capture_output=True,
+                              text=True).stdout
 
     one = trace("1")
     assert one.count(" uart0 ") >= 20

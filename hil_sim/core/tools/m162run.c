@@ -3,12 +3,13 @@
  * Python: a quick look at what firmware does, and a way to use gdb/valgrind
  * on the core itself.
  *
- *   m162run [-c cycles] [-q quantum] [-t baud-tolerance] [-j threads] [-w] a.elf [b.elf ...]
+ *   m162run [-c cycles] [-q quantum] [-t baud-tolerance] [-j threads [-m min]] [-w] a.elf ...
  *
  * Prints every byte each USART sends ("mcu uart start end byte") and every
  * PORTx change ("mcu port cycle value"), then each MCU's state.  -w wires
  * USART0 of image 2k to USART0 of image 2k+1 (a module's comm/control pair).
- * -j runs each quantum on that many threads (the output does not change);
+ * -j runs each quantum on that many threads (the output does not change),
+ * each with at least -m MCUs (default CLUSTER_MIN_MCUS_PER_THREAD);
  * `make tsan` builds it with ThreadSanitizer over simavr's own sources.
  */
 #include <stdio.h>
@@ -44,17 +45,18 @@ int main(int argc, char **argv)
 	unsigned long long cycles = 1000000, quantum = 1000;
 	/* the simulator takes it from protocol/timing.py BAUD_TOLERANCE */
 	double tolerance = 0.045;
-	int wire = 0, threads = 1, opt;
-	while ((opt = getopt(argc, argv, "c:q:t:j:w")) != -1) {
+	int wire = 0, threads = 1, min_per_thread = CLUSTER_MIN_MCUS_PER_THREAD, opt;
+	while ((opt = getopt(argc, argv, "c:q:t:j:m:w")) != -1) {
 		switch (opt) {
 		case 'c': cycles = strtoull(optarg, NULL, 0); break;
 		case 'q': quantum = strtoull(optarg, NULL, 0); break;
 		case 't': tolerance = strtod(optarg, NULL); break;
 		case 'j': threads = atoi(optarg); break;
+		case 'm': min_per_thread = atoi(optarg); break;
 		case 'w': wire = 1; break;
 		default:
 			fprintf(stderr, "usage: %s [-c cycles] [-q quantum] [-t tolerance] [-j threads] "
-					"[-w] a.elf ...\n", argv[0]);
+					"[-m min] [-w] a.elf ...\n", argv[0]);
 			return 2;
 		}
 	}
@@ -68,6 +70,7 @@ int main(int argc, char **argv)
 		cluster_free(c);
 		return 2;
 	}
+	c->min_per_thread = min_per_thread > 0 ? min_per_thread : 1;
 	for (int i = optind; i < argc; i++) {
 		char err[512];
 		int idx = cluster_add(c, argv[i], argv[i], "atmega162", err, sizeof err);
