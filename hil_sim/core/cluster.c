@@ -6,6 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "cluster.h"
 #include "cluster_pool.h"
@@ -37,7 +38,8 @@ void cluster_free(cluster_t *c)
 {
 	if (!c)
 		return;
-	cluster_pool_free(c->pool);
+	if (c->pool_pid == getpid()) /* a forked child's copy has no workers to join */
+		cluster_pool_free(c->pool);
 	for (int i = 0; i < c->n; i++) {
 		rf12_t *radio = c->mcu[i]->rf12; /* the MCU's io list points into it */
 		m162_free(c->mcu[i]);
@@ -172,10 +174,22 @@ int cluster_set_threads(cluster_t *c, int threads)
 	cluster_pool_t *pool = NULL;
 	if (threads > 1 && !(pool = cluster_pool_new(threads)))
 		return -1;
-	cluster_pool_free(c->pool);
+	if (c->pool_pid == getpid())
+		cluster_pool_free(c->pool);
 	c->pool = pool;
+	c->pool_pid = getpid();
 	c->threads = threads;
 	return 0;
+}
+
+/* After fork() the workers stayed in the parent, and the pool's lock may
+ * have been copied held: leave that pool alone and start a new one. */
+static void own_pool(cluster_t *c)
+{
+	if (!c->pool || c->pool_pid == getpid())
+		return;
+	c->pool = cluster_pool_new(c->threads); /* NULL: one thread from now on */
+	c->pool_pid = getpid();
 }
 
 /* Threads for one quantum: as many as asked, but each with at least
@@ -204,6 +218,7 @@ static void run_quantum(cluster_t *c, uint64_t end)
 
 uint64_t cluster_run(cluster_t *c, uint64_t until)
 {
+	own_pool(c);
 	while (c->cycle < until) {
 		uint64_t end = c->cycle + c->quantum;
 		if (end > until)

@@ -48,6 +48,7 @@ typedef struct cluster_t {
 	int threads;                  /* that run a quantum, the caller's included */
 	int min_per_thread;           /* fewer threads if one would get fewer MCUs */
 	struct cluster_pool_t *pool; /* NULL with one thread */
+	int pool_pid;                 /* process whose threads the pool holds (fork) */
 } cluster_t;
 
 /* A quantum uses at most n / this threads: 32 MCUs of idle firmware are

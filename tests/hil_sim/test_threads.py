@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import io
 import json
+import os
 import subprocess
 import sys
 import threading
@@ -223,3 +224,48 @@ def test_runner_without_python_prints_the_same_trace_on_three_threads():
     one = trace("1")
     assert one.count(" uart0 ") >= 20
     assert trace("3") == one
+
+
+def test_a_forked_child_runs_its_copy_of_a_threaded_cluster():
+    """After fork() the workers stay in the parent: the child's cluster starts
+    threads of its own (the pool's lock may have been copied held) and frees
+    its copy without touching the parent's."""
+
+    def start() -> tuple[Cluster, int, int]:
+        c = Cluster(700, threads=3)
+        c.min_mcus_per_thread = 1
+        p = c.add_mcu(build("pinger"), "pinger")
+        e = c.add_mcu(build("echo"), "echo")
+        c.connect_uart(p, 0, e, 0)
+        c.watch_uart(p, 0)
+        return c, p, e
+
+    def finish(c: Cluster, p: int, e: int) -> str:
+        sent = []
+        while c.run(120_000) < 120_000:
+            sent += c.uart_take(p, 0)
+        return repr((sent + c.uart_take(p, 0), c.pin_log(p), c.pin_log(e)))
+
+    c, p, e = start()
+    while c.run(30_000) < 30_000:  # the workers have run before the fork
+        pass
+    read_end, write_end = os.pipe()
+    child = os.fork()
+    if child == 0:  # pragma: no cover - runs in the child
+        try:
+            os.write(write_end, finish(c, p, e).encode())
+            tasks = len(os.listdir("/proc/self/task"))  # this thread + the new workers
+            del c  # frees the cluster: must not wait for the parent's workers
+            os.write(write_end, f"|{tasks}|freed".encode())
+        finally:
+            os._exit(0)
+    os.close(write_end)
+    with os.fdopen(read_end, "rb") as pipe:
+        from_child = pipe.read().decode()  # until the child exits (or hangs)
+    _, status = os.waitpid(child, 0)
+    assert status == 0
+    from_child, tasks, freed = from_child.split("|")
+    assert (tasks, freed) == ("3", "freed")  # the child ran on 3 threads of its own
+    here = finish(c, p, e)
+    assert from_child == here
+    assert here.count("'B'") >= 5  # the echo's pin changes are in it
