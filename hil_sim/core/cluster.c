@@ -209,7 +209,7 @@ static void run_quantum(cluster_t *c, uint64_t end)
 {
 	int threads = c->pool ? quantum_threads(c) : 1;
 	if (threads > 1) {
-		cluster_pool_run(c->pool, c->mcu, c->n, end, threads);
+		cluster_pool_run(c->pool, c->mcu, c->n, end, threads, end - c->cycle);
 		return;
 	}
 	for (int i = 0; i < c->n; i++)

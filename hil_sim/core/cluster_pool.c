@@ -20,6 +20,7 @@
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
+#include <time.h>
 
 #include "cluster_pool.h"
 
@@ -50,7 +51,25 @@ struct cluster_pool_t {
 	atomic_int n;
 	uint64_t end;
 	atomic_int helpers; /* workers 0..helpers-1 take part in this generation */
+	/* the race between one thread and the pool (see pick_mode) */
+	int mode;            /* SOLO or SHARED for this phase */
+	int phase;           /* TRY_SHARED, TRY_SOLO, KEEP */
+	unsigned phase_left; /* quanta left in it */
+	uint64_t tried_ns[2], tried_cycles[2];
 };
+
+/* Whether the pool beats one thread depends on whether the host gives the
+ * workers cores of their own, which changes while we run: with Linux's
+ * autogroup scheduling another busy session leaves this process one core
+ * in all, however many threads it has, and then the threads take turns
+ * and wait for each other (255 idle modules ran 37 % slower on 2 threads
+ * than on 1).  So the two race: a few quanta on one thread, a few on the
+ * pool, then the faster (wall time per cycle) for a longer stretch, and
+ * again.  Which thread runs an MCU never changes the trace. */
+enum { SOLO, SHARED };
+enum { TRY_SHARED, TRY_SOLO, KEEP };
+#define TRY_QUANTA 32
+#define KEEP_QUANTA 512
 
 static inline uint32_t generation_of(uint64_t ticket)
 {
@@ -125,6 +144,7 @@ cluster_pool_t *cluster_pool_new(int threads)
 		free(p);
 		return NULL;
 	}
+	p->phase = KEEP; /* the first quantum starts a race */
 	pthread_mutex_init(&p->lock, NULL);
 	pthread_cond_init(&p->start, NULL);
 	pthread_cond_init(&p->done, NULL);
@@ -162,12 +182,43 @@ int cluster_pool_threads(const cluster_pool_t *p)
 	return p ? p->workers + 1 : 1;
 }
 
-void cluster_pool_run(cluster_pool_t *p, m162_t **mcu, int n, uint64_t end, int threads)
+static uint64_t now_ns(void)
 {
-	if (n <= 0)
-		return;
-	if (threads > p->workers + 1)
-		threads = p->workers + 1;
+	struct timespec t;
+	clock_gettime(CLOCK_MONOTONIC, &t);
+	return (uint64_t)t.tv_sec * 1000000000u + (uint64_t)t.tv_nsec;
+}
+
+/* The mode of the next quantum, moving through the race's phases (the
+ * pool goes first, so a short run uses it too). */
+static int pick_mode(cluster_pool_t *p)
+{
+	if (p->phase_left == 0) {
+		if (p->phase == TRY_SHARED) {
+			p->phase = TRY_SOLO;
+			p->mode = SOLO;
+			p->phase_left = TRY_QUANTA;
+		} else if (p->phase == TRY_SOLO) {
+			/* ns per cycle, compared without dividing */
+			unsigned __int128 solo = (unsigned __int128)p->tried_ns[SOLO] * p->tried_cycles[SHARED];
+			unsigned __int128 shared = (unsigned __int128)p->tried_ns[SHARED] * p->tried_cycles[SOLO];
+			p->phase = KEEP;
+			p->mode = shared < solo ? SHARED : SOLO;
+			p->phase_left = KEEP_QUANTA;
+		} else {
+			p->phase = TRY_SHARED;
+			p->mode = SHARED;
+			p->phase_left = TRY_QUANTA;
+			p->tried_ns[SOLO] = p->tried_ns[SHARED] = 0;
+			p->tried_cycles[SOLO] = p->tried_cycles[SHARED] = 0;
+		}
+	}
+	p->phase_left--;
+	return p->mode;
+}
+
+static void run_shared(cluster_pool_t *p, m162_t **mcu, int n, uint64_t end, int threads)
+{
 	atomic_store(&p->helpers, threads - 1);
 	p->mcu = mcu;
 	atomic_store_explicit(&p->n, n, memory_order_relaxed);
@@ -186,5 +237,26 @@ void cluster_pool_run(cluster_pool_t *p, m162_t **mcu, int n, uint64_t end, int 
 		while (atomic_load(&p->completed) < n)
 			pthread_cond_wait(&p->done, &p->lock);
 		pthread_mutex_unlock(&p->lock);
+	}
+}
+
+void cluster_pool_run(cluster_pool_t *p, m162_t **mcu, int n, uint64_t end, int threads,
+		uint64_t cycles)
+{
+	if (n <= 0)
+		return;
+	if (threads > p->workers + 1)
+		threads = p->workers + 1;
+	int mode = pick_mode(p);
+	uint64_t t0 = now_ns();
+	if (mode == SHARED) {
+		run_shared(p, mcu, n, end, threads);
+	} else {
+		for (int i = 0; i < n; i++)
+			m162_run_until(mcu[i], end);
+	}
+	if (p->phase != KEEP) {
+		p->tried_ns[mode] += now_ns() - t0;
+		p->tried_cycles[mode] += cycles;
 	}
 }

@@ -26,9 +26,11 @@ cluster_pool_t *cluster_pool_new(int threads);
 void cluster_pool_free(cluster_pool_t *p);
 /* Threads of the pool, the caller's included. */
 int cluster_pool_threads(const cluster_pool_t *p);
-/* Run mcu[0..n-1] until cluster cycle end on this many of the pool's
- * threads (the caller's included, at most cluster_pool_threads); returns
- * when all have reached it. */
-void cluster_pool_run(cluster_pool_t *p, m162_t **mcu, int n, uint64_t end, int threads);
+/* Run mcu[0..n-1] until cluster cycle end (cycles after the last
+ * boundary) on this many of the pool's threads (the caller's included, at
+ * most cluster_pool_threads) -- or on the caller's alone while that has
+ * been faster (see cluster_pool.c); returns when all have reached it. */
+void cluster_pool_run(cluster_pool_t *p, m162_t **mcu, int n, uint64_t end, int threads,
+		uint64_t cycles);
 
 #endif
