@@ -55,6 +55,7 @@ struct cluster_pool_t {
 	int mode;            /* SOLO or SHARED for this phase */
 	int phase;           /* TRY_SHARED, TRY_SOLO, KEEP */
 	unsigned phase_left; /* quanta left in it */
+	unsigned keep;       /* quanta of the next KEEP phase */
 	uint64_t tried_ns[2], tried_cycles[2];
 };
 
@@ -63,13 +64,16 @@ struct cluster_pool_t {
  * autogroup scheduling another busy session leaves this process one core
  * in all, however many threads it has, and then the threads take turns
  * and wait for each other (255 idle modules ran 37 % slower on 2 threads
- * than on 1).  So the two race: a few quanta on one thread, a few on the
- * pool, then the faster (wall time per cycle) for a longer stretch, and
- * again.  Which thread runs an MCU never changes the trace. */
+ * than on 1).  So the two race: a few quanta on the pool, a few on one
+ * thread, then the faster (wall time per cycle) for a longer stretch, and
+ * again; each win of one thread doubles that stretch (up to KEEP_MAX), as
+ * a trial of the pool on a busy host costs up to 3x.  Which thread runs
+ * an MCU never changes the trace. */
 enum { SOLO, SHARED };
 enum { TRY_SHARED, TRY_SOLO, KEEP };
 #define TRY_QUANTA 32
-#define KEEP_QUANTA 512
+#define KEEP_MIN 512   /* after the pool won */
+#define KEEP_MAX 8192  /* one thread keeps winning: try the pool less often */
 
 static inline uint32_t generation_of(uint64_t ticket)
 {
@@ -145,6 +149,7 @@ cluster_pool_t *cluster_pool_new(int threads)
 		return NULL;
 	}
 	p->phase = KEEP; /* the first quantum starts a race */
+	p->keep = KEEP_MIN / 2;   /* doubled by a first win of one thread */
 	pthread_mutex_init(&p->lock, NULL);
 	pthread_cond_init(&p->start, NULL);
 	pthread_cond_init(&p->done, NULL);
@@ -204,7 +209,10 @@ static int pick_mode(cluster_pool_t *p)
 			unsigned __int128 shared = (unsigned __int128)p->tried_ns[SHARED] * p->tried_cycles[SOLO];
 			p->phase = KEEP;
 			p->mode = shared < solo ? SHARED : SOLO;
-			p->phase_left = KEEP_QUANTA;
+			/* a trial of the pool on a busy host is slow: back off */
+			p->keep = p->mode == SHARED ? KEEP_MIN
+				: p->keep * 2 > KEEP_MAX ? KEEP_MAX : p->keep * 2;
+			p->phase_left = p->keep;
 		} else {
 			p->phase = TRY_SHARED;
 			p->mode = SHARED;
