@@ -73,8 +73,9 @@ def simavr_extension() -> Extension:
         include_dirs=include_dirs or ["/usr/include/simavr"],
         library_dirs=library_dirs,
         libraries=libraries,
-        extra_compile_args=["-std=gnu99", "-O2", "-Wall", "-Wno-unused-function",
-                            "-Werror=implicit-function-declaration"],
+        extra_compile_args=["-std=gnu11", "-O2", "-Wall", "-Wno-unused-function",
+                            "-Werror=implicit-function-declaration", "-pthread"],
+        extra_link_args=["-pthread"],  # cluster_pool.c: the quantum's worker threads
         depends=sorted(p.as_posix() for p in Path("hil_sim/core").glob("*.h")),
     )
 

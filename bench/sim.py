@@ -1,7 +1,7 @@
 """``hexbot bench sim``: simulator throughput by cluster size, measured now.
 
     hexbot bench sim [--json] [--sizes 7,50,200,255] [--seconds S] [--repeat N]
-                     [--ir core|python]
+                     [--ir core|python] [--threads T]
 
 For each size N, a generated blob of N modules (``blob:N``, the real
 firmware images, the whole Python loop: IR medium, plant, pin logs):
@@ -15,15 +15,21 @@ firmware images, the whole Python loop: IR medium, plant, pin logs):
 Reference: raw simavr (its own run loop, stock atmega128 core) on one MCU
 in the same CPU-bound loop, measured in the same run (bench/raw_simavr.c).
 Each case is the best of --repeat runs (the machine is shared); the peak
-resident memory of the process is read after each size. One thread.
+resident memory of the process is read after each size.
 --ir python routes IR bytes between modules in the Python medium (as before
-the core's medium, and as with fault injection), for a comparison.
+the core's medium, and as with fault injection), for a comparison. Every case runs its
+quanta on --threads host threads (default 1); the 1-minute load average at
+the start and the end is reported beside the numbers, and each case's
+cores_used (CPU seconds of every thread / wall seconds), as other processes
+on the machine take cores away from the threads. With T threads the busy
+ratio against raw simavr's one MCU can reach T.
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import os
 import resource
 import time
 
@@ -49,19 +55,33 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--ir", choices=("core", "python"), default="core",
                         help="where IR bytes between modules are routed (default core)")
+    parser.add_argument(
+        "--threads", type=int, default=1,
+        help="host threads per quantum in every case (default 1)",
+    )
 
 
-def _timed(sim: Simulator, action) -> tuple[float, float]:
-    """(simulated seconds, wall seconds) of ``action(sim)``."""
-    start_cycle, t0 = sim.cycle, time.perf_counter()
+def _cpu_seconds() -> float:
+    """CPU time of the whole process, every thread."""
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return usage.ru_utime + usage.ru_stime
+
+
+def _timed(sim: Simulator, action) -> tuple[float, float, float]:
+    """(simulated seconds, wall seconds, CPU seconds) of ``action(sim)``."""
+    start_cycle, t0, cpu0 = sim.cycle, time.perf_counter(), _cpu_seconds()
     action(sim)
-    return (sim.cycle - start_cycle) / sim.hz, time.perf_counter() - t0
+    return ((sim.cycle - start_cycle) / sim.hz, time.perf_counter() - t0,
+            _cpu_seconds() - cpu0)
 
 
-def _rates(mcus: int, simulated: float, wall: float, hz: int) -> dict:
+def _rates(mcus: int, simulated: float, wall: float, cpu: float, hz: int) -> dict:
+    # cores_used = CPU / wall: below the thread count when the shared machine
+    # had no free core for them
     return {"realtime_factor": round(simulated / wall, 2),
             "cycles_per_s": round(simulated * hz * mcus / wall),
-            "simulated_s": round(simulated, 2), "wall_s": round(wall, 3)}
+            "simulated_s": round(simulated, 2), "wall_s": round(wall, 3),
+            "cores_used": round(cpu / wall, 2)}
 
 
 def _start_wave(sim: Simulator) -> None:
@@ -75,25 +95,27 @@ def _start_wave(sim: Simulator) -> None:
     sim.pc_write(encode_pc(make("Localize")))
 
 
-def measure_size(count: int, seconds: float, busy_elf: str, ir: str = "core") -> dict:
+def measure_size(count: int, seconds: float, busy_elf: str, threads: int = 1,
+                 ir: str = "core") -> dict:
     ids = range(1, count + 1)
     mcus = 2 * count
-    sim = Simulator(generate("blob", count, seed=1), ir_in_c=ir == "core")
+    sim = Simulator(generate("blob", count, seed=1), threads=threads, ir_in_c=ir == "core")
     boot = _rates(mcus, *_timed(sim, lambda s: s.run(boot_seconds(ids))), sim.hz)
     idle = _rates(mcus, *_timed(sim, lambda s: s.run(seconds)), sim.hz)
     _start_wave(sim)
     wave = _rates(mcus, *_timed(sim, lambda s: s.run(LOCALIZE_WINDOW_S)), sim.hz)
-    cluster = type(sim.cluster)(sim.cluster.quantum_cycles)
+    cluster = type(sim.cluster)(sim.cluster.quantum_cycles, threads=threads)
     for i in range(mcus):
         cluster.add_mcu(busy_elf, f"busy{i}")
-    t0 = time.perf_counter()
+    t0, cpu0 = time.perf_counter(), _cpu_seconds()
     cluster.run(BUSY_CYCLES)
-    busy_wall = time.perf_counter() - t0
+    busy_wall, busy_cpu = time.perf_counter() - t0, _cpu_seconds() - cpu0
     return {"modules": count, "mcus": mcus, "quantum_cycles": sim.cluster.quantum_cycles,
-            "threads": 1, "ir": "core" if sim.ir_in_c else "python",
+            "threads": threads, "ir": "core" if sim.ir_in_c else "python",
             "boot": boot, "idle": idle, "wave": wave,
             "busy": {"cycles_per_mcu_per_s": round(BUSY_CYCLES / busy_wall * mcus),
-                     "wall_s": round(busy_wall, 3)},
+                     "wall_s": round(busy_wall, 3),
+                     "cores_used": round(busy_cpu / busy_wall, 2)},
             "peak_rss_mb": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)}
 
 
@@ -106,18 +128,22 @@ def _best(runs: list[dict]) -> dict:
     return best
 
 
-def measure(sizes: list[int], seconds: float, repeat: int = 1, ir: str = "core") -> dict:
+def measure(sizes: list[int], seconds: float, repeat: int = 1, threads: int = 1,
+            ir: str = "core") -> dict:
     busy162, busy128 = avr_program("cpuloop", "atmega162"), avr_program("cpuloop", "atmega128")
     raw_cycles = 20_000_000
     raw = round(raw_cycles / min(raw_simavr_seconds(busy128, "atmega128", raw_cycles)
                                  for _ in range(repeat)))
     results = []
+    load_start = round(os.getloadavg()[0], 2)
     for count in sizes:
-        best = _best([measure_size(count, seconds, busy162, ir) for _ in range(repeat)])
+        best = _best([measure_size(count, seconds, busy162, threads, ir)
+                      for _ in range(repeat)])
         # per-MCU cycles on one core, against raw simavr's one MCU
         best["busy"]["vs_raw"] = round(best["busy"]["cycles_per_mcu_per_s"] / raw, 3)
         results.append(best)
-    return {"raw_simavr_cycles_per_s": raw, "sizes": results}
+    return {"raw_simavr_cycles_per_s": raw, "threads": threads, "cpu_count": os.cpu_count(),
+            "load_avg_1min": [load_start, round(os.getloadavg()[0], 2)], "sizes": results}
 
 
 def run(args: argparse.Namespace) -> int:
@@ -125,19 +151,24 @@ def run(args: argparse.Namespace) -> int:
         raise HexBotError(f"--seconds must be positive, not {args.seconds}")
     if args.repeat < 1:
         raise HexBotError(f"--repeat must be at least 1, not {args.repeat}")
+    if args.threads < 1:
+        raise HexBotError(f"--threads must be at least 1, not {args.threads}")
     try:
         sizes = [int(s) for s in args.sizes.split(",")]
     except ValueError:
         raise HexBotError(
             f"--sizes takes numbers separated by commas, not {args.sizes!r}") from None
-    result = measure(sizes, args.seconds, args.repeat, args.ir)
+    result = measure(sizes, args.seconds, args.repeat, args.threads, args.ir)
     if args.json:
         print(json.dumps(result))
         return 0
-    print(f"raw simavr: {result['raw_simavr_cycles_per_s']:,} cycles/s (1 MCU)")
-    print("modules  idle x  boot x  wave x  busy/MCU vs raw  peak MB")
+    print(f"raw simavr: {result['raw_simavr_cycles_per_s']:,} cycles/s (1 MCU); "
+          f"{result['threads']} thread(s) on {result['cpu_count']} cores, load average "
+          f"{result['load_avg_1min'][0]} -> {result['load_avg_1min'][1]}")
+    print("modules  idle x  boot x  wave x  busy/MCU vs raw  peak MB  cores used (idle, busy)")
     for r in result["sizes"]:
         print(f"{r['modules']:7} {r['idle']['realtime_factor']:7.1f} "
               f"{r['boot']['realtime_factor']:7.1f} {r['wave']['realtime_factor']:7.1f} "
-              f"{r['busy']['vs_raw']:16.3f} {r['peak_rss_mb']:8}")
+              f"{r['busy']['vs_raw']:16.3f} {r['peak_rss_mb']:8}  "
+              f"{r['idle']['cores_used']:.2f}, {r['busy']['cores_used']:.2f}")
     return 0

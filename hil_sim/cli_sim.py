@@ -52,6 +52,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="times real time (default 1; 0 = as fast as possible)",
     )
     parser.add_argument("--seed", type=int, help="override the scenario's seed")
+    parser.add_argument(
+        "--threads", type=int,
+        help="host threads that run each quantum's MCUs (default: the scenario's "
+             "threads, else 1); the trace is the same with any number",
+    )
     parser.add_argument("--events", type=Path, help="write plant and bus events as JSON lines")
     parser.add_argument("--vcd", type=Path, help="write actuator, selector and LED pins as VCD")
     parser.add_argument(
@@ -86,7 +91,7 @@ def run(args: argparse.Namespace) -> int:
         return _serve_rfc2217(args)
     if not args.pty and args.duration is None:
         raise HexBotError("nothing to do: give --pty to serve ports, or --duration to run")
-    sim = Simulator(load_scenario(args.scenario), seed=args.seed)
+    sim = Simulator(load_scenario(args.scenario), seed=args.seed, threads=args.threads)
     stop = _Stop()
     previous = {s: signal.signal(s, stop) for s in (signal.SIGINT, signal.SIGTERM)}
     with ExitStack() as stack:
@@ -124,9 +129,10 @@ def _serve_rfc2217(args: argparse.Namespace) -> int:
     from . import urlhandler
     from .rfc2217_server import Rfc2217Server
 
-    if args.pty or args.events or args.vcd or args.duration is not None:
+    if args.pty or args.events or args.vcd or args.duration is not None or args.threads:
         raise HexBotError("--rfc2217 serves one port until stopped: it does not combine "
-                          "with --pty, --events, --vcd or --duration")
+                          "with --pty, --events, --vcd, --duration or --threads (the "
+                          "scenario's threads key applies)")
     urlhandler.register()
     target = Path(args.scenario)
     name = str(target.resolve()) if target.suffix == ".toml" else args.scenario

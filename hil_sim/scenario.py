@@ -6,6 +6,7 @@ A scenario is a TOML file (built-ins in ``hil_sim/scenarios/``)::
     seed = 1                      # fault injection and garbage bytes
     base = 1                      # id of the module fixed to the base (never moves)
     clock_spread_ppm = 20000      # optional: each MCU's RC clock drawn (seeded) within +-2 %
+    threads = 2                   # optional: host threads per quantum (default 1; same trace)
 
     [firmware]                    # optional; default: firmware/build/*.elf
     comm = "firmware/build/comm.elf"       # relative to the scenario file
@@ -62,12 +63,16 @@ MAX_CLOCK_PPM = round(CLOCK_TOLERANCE * 1e6)  # an RC clock further off cannot t
 PC = "pc"
 
 _TOP_KEYS = {"name", "description", "seed", "base", "firmware", "faults", "module",
-             "clock_spread_ppm", "radio_range", "pc_radio"}
+             "clock_spread_ppm", "radio_range", "pc_radio", "threads"}
 _MODULE_KEYS = {"id", "position", "orientation", "firmware", "clock_ppm"}
 _FIRMWARE_KEYS = {"comm", "control", "rf12"}
 #: RF12 range in lattice cells unless the scenario says otherwise: ~10 m at a
 #: ~10 cm module pitch, a low figure for the chip at full power indoors.
 DEFAULT_RADIO_RANGE = 100
+#: Host threads that run a quantum's MCUs: one unless asked (see
+#: docs/simulator-core.md, "Threads": the trace is the same with any number).
+DEFAULT_THREADS = 1
+MAX_THREADS = 256  # the core's limit (pyavr.c)
 _FAULT_KEYS = {"bit_error_rate", "byte_loss", "framing_error_rate", "spurious_byte_rate",
                "burst_rate"}
 _LINK_KEYS = _FAULT_KEYS | {"from", "to"}
@@ -124,6 +129,7 @@ class Scenario:
     clock_spread_ppm: float = 0.0
     radio_range: int = DEFAULT_RADIO_RANGE
     pc_radio: Cell = (0, 0)  # where the PC's radio stands (hil_sim/radio.py PcRadio)
+    threads: int = DEFAULT_THREADS
 
     def clocks(self, seed: int) -> dict[tuple[int, str], float]:
         """Clock error in ppm of every MCU, by (module id, "comm"/"control"):
@@ -299,6 +305,12 @@ def parse_scenario(text: str, path: Path) -> Scenario:
         raise fail(lines.find("", -1, "pc_radio"),
                    f"pc_radio must be a cell [x, y] of whole numbers, not {pc_radio!r}")
 
+    threads = data.get("threads", DEFAULT_THREADS)
+    if (not isinstance(threads, int) or isinstance(threads, bool)
+            or not 1 <= threads <= MAX_THREADS):
+        raise fail(lines.find("", -1, "threads"),
+                   f"threads must be a whole number 1..{MAX_THREADS}, not {threads!r}")
+
     return Scenario(
         name=name,
         modules=modules,
@@ -311,6 +323,7 @@ def parse_scenario(text: str, path: Path) -> Scenario:
         clock_spread_ppm=spread,
         radio_range=radio_range,
         pc_radio=(pc_radio[0], pc_radio[1]),
+        threads=threads,
     )
 
 

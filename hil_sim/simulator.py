@@ -21,6 +21,10 @@ itself (a module's board link): no byte can start and reach the middle of its
 stop bit within one quantum, so every delivery on it is exact. Each MCU runs
 on its own clock (scenario ``clock_ppm`` / ``clock_spread_ppm``); cycles
 everywhere are cycles of the nominal clock ``F_CPU``.
+
+``threads`` (argument, else the scenario's ``threads``, else 1) is how many
+threads the core runs each quantum's MCUs on, with the GIL released; the
+trace does not depend on it (docs/simulator-core.md, "Threads").
 """
 
 from __future__ import annotations
@@ -94,11 +98,17 @@ class Simulator:
         timing: Timing | None = None,
         cluster: Any = None,
         ir_in_c: bool = True,
+        threads: int | None = None,
     ) -> None:
         self.scenario = scenario
         self.seed = scenario.seed if seed is None else seed
         if cluster is None:
-            cluster = _load_core().Cluster(quantum_cycles or lookahead_cycles(hz))
+            threads = scenario.threads if threads is None else threads
+            try:
+                cluster = _load_core().Cluster(quantum_cycles or lookahead_cycles(hz),
+                                               threads=threads)
+            except ValueError as exc:
+                raise HexBotError(f"simulator threads: {exc}") from exc
         self.cluster = cluster
         self.hz = int(getattr(self.cluster, "frequency", hz))
         self.events: list[dict] = []

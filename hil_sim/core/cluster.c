@@ -2,22 +2,24 @@
  * cluster.c -- lock-step scheduler for several simulated MCUs.
  * See cluster.h for the timing rules.
  */
+#include <pthread.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "cluster.h"
 #include "ir_medium.h"
+#include "cluster_pool.h"
 #include "rf12_part.h"
 
-static int logger_installed;
+/* simavr's logger is one global pointer: set it once, before any MCU runs
+ * (clusters may be made while another one runs without the GIL). */
+static pthread_once_t logger_once = PTHREAD_ONCE_INIT;
 
 static void ensure_logger(void)
 {
-	if (!logger_installed) {
-		m162_install_logger();
-		logger_installed = 1;
-	}
+	pthread_once(&logger_once, m162_install_logger);
 }
 
 cluster_t *cluster_new(uint64_t quantum, double baud_tolerance)
@@ -28,6 +30,8 @@ cluster_t *cluster_new(uint64_t quantum, double baud_tolerance)
 		return NULL;
 	c->quantum = quantum ? quantum : 1000;
 	c->baud_tolerance = baud_tolerance;
+	c->threads = 1;
+	c->min_per_thread = CLUSTER_MIN_MCUS_PER_THREAD;
 	return c;
 }
 
@@ -35,6 +39,8 @@ void cluster_free(cluster_t *c)
 {
 	if (!c)
 		return;
+	if (c->pool_pid == getpid()) /* a forked child's copy has no workers to join */
+		cluster_pool_free(c->pool);
 	for (int i = 0; i < c->n; i++) {
 		rf12_t *radio = c->mcu[i]->rf12; /* the MCU's io list points into it */
 		ir_port_t *ir = c->mcu[i]->ir;     /* its timer param, likewise */
@@ -169,14 +175,63 @@ static int boundary(cluster_t *c)
 	return news;
 }
 
+int cluster_set_threads(cluster_t *c, int threads)
+{
+	if (threads < 1)
+		return -1;
+	cluster_pool_t *pool = NULL;
+	if (threads > 1 && !(pool = cluster_pool_new(threads)))
+		return -1;
+	if (c->pool_pid == getpid())
+		cluster_pool_free(c->pool);
+	c->pool = pool;
+	c->pool_pid = getpid();
+	c->threads = threads;
+	return 0;
+}
+
+/* After fork() the workers stayed in the parent, and the pool's lock may
+ * have been copied held: leave that pool alone and start a new one. */
+static void own_pool(cluster_t *c)
+{
+	if (!c->pool || c->pool_pid == getpid())
+		return;
+	c->pool = cluster_pool_new(c->threads); /* NULL: one thread from now on */
+	c->pool_pid = getpid();
+}
+
+/* Threads for one quantum: as many as asked, but each with at least
+ * min_per_thread MCUs -- below that, handing work over costs more than it
+ * saves (a quantum of 7 idle modules is ~10 us of work). */
+static int quantum_threads(const cluster_t *c)
+{
+	int threads = c->threads;
+	if (c->min_per_thread > 1 && threads > c->n / c->min_per_thread)
+		threads = c->n / c->min_per_thread;
+	return threads > 1 ? threads : 1;
+}
+
+/* Every MCU to cycle end: the MCUs do not interact within a quantum, so
+ * one thread or several give the same state. */
+static void run_quantum(cluster_t *c, uint64_t end)
+{
+	int threads = c->pool ? quantum_threads(c) : 1;
+	if (threads > 1) {
+		cluster_pool_run(c->pool, c->mcu, c->n, end, threads, end - c->cycle);
+		return;
+	}
+	for (int i = 0; i < c->n; i++)
+		m162_run_until(c->mcu[i], end);
+}
+
 uint64_t cluster_run(cluster_t *c, uint64_t until)
 {
+	own_pool(c);
 	while (c->cycle < until) {
 		uint64_t end = c->cycle + c->quantum;
 		if (end > until)
 			end = until;
-		for (int i = 0; i < c->n; i++)
-			m162_run_until(c->mcu[i], end);
+		run_quantum(c, end);
 		c->cycle = end;
 		if (boundary(c))
 			break;

@@ -2,7 +2,7 @@
  * cluster.h -- several simulated MCUs advanced in lock-step.
  *
  * Time is cut into quanta of Q cycles (default 1000 = 1 ms at 1 MHz).  In
- * each quantum every MCU, in index order, runs until its cycle counter
+ * each quantum every MCU (in index order, or on several threads) runs until its cycle counter
  * reaches the quantum's end (an instruction may overshoot by a few cycles; a
  * sleeping MCU lands exactly on it).  Only then are bytes moved between
  * MCUs, so the result does not depend on the order MCUs are stepped in, on
@@ -21,6 +21,10 @@
  * Time is counted in cycles of the nominal clock (the ELF's frequency); an
  * MCU may run on its own clock (m162_set_clock), and everything the cluster
  * reports (byte and pin-log cycles) is converted to cluster cycles.
+ *
+ * The MCUs of a quantum may run on several threads (cluster_set_threads,
+ * cluster_pool.h): they share nothing until the boundary, which runs on the
+ * caller's thread alone, so the trace is the same with 1 or N threads.
  *
  * An MCU may carry an RF12 radio (rf12_part.h); run() returns at the first
  * boundary after one of its bytes left the air, for Python's medium
@@ -43,7 +47,16 @@ typedef struct cluster_t {
 	int n, cap;
 	struct ir_port_t **ir; /* MCUs on the IR medium (ir_medium.c), in index order */
 	int n_ir;
+	int threads;                  /* that run a quantum, the caller's included */
+	int min_per_thread;           /* fewer threads if one would get fewer MCUs */
+	struct cluster_pool_t *pool; /* NULL with one thread */
+	int pool_pid;                 /* process whose threads the pool holds (fork) */
 } cluster_t;
+
+/* A quantum uses at most n / this threads: 32 MCUs of idle firmware are
+ * about 20 us of work (0.65 us each, bench sim at 7 and 50 modules), the
+ * order of what waking a parked thread costs. */
+#define CLUSTER_MIN_MCUS_PER_THREAD 32
 
 cluster_t *cluster_new(uint64_t quantum, double baud_tolerance);
 void cluster_free(cluster_t *c);
@@ -55,6 +68,12 @@ void cluster_connect(cluster_t *c, int a, int ua, int b, int ub);
 void cluster_watch(cluster_t *c, int mcu, int uart);
 /* Set MCU mcu's clock to hz from now on (the nominal clock: cluster->frequency). */
 void cluster_set_clock(cluster_t *c, int mcu, uint32_t hz);
+/* Run quanta on this many threads (>= 1; more than MCUs is allowed, the
+ * spare ones find nothing to do).  A quantum uses fewer when a thread would
+ * get fewer than c->min_per_thread MCUs (default
+ * CLUSTER_MIN_MCUS_PER_THREAD; 1 always uses them all).  Returns -1 if
+ * threads < 1 or a thread could not be started (the old setting stays). */
+int cluster_set_threads(cluster_t *c, int threads);
 /* Advance to until (a multiple of nothing in particular); returns the cycle
  * reached, earlier if a watched USART finished a byte. */
 uint64_t cluster_run(cluster_t *c, uint64_t until);

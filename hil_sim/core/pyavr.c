@@ -1,9 +1,14 @@
 /*
  * pyavr.c -- Python binding: hexbot.hil_sim._avr.Cluster.
  *
- * A thin layer over cluster.c: argument checks, conversions, errors.  The
- * GIL is held while the simulation runs (run() returns at least at every
- * watched byte), so other Python threads cannot race the C state.
+ * A thin layer over cluster.c: argument checks, conversions, errors.
+ *
+ * run() releases the GIL while the MCUs run (on one thread or the cluster's
+ * worker pool): nothing in cluster_run() calls back into Python.  Other
+ * Python threads may then run, but not on this cluster: every method (and
+ * attribute) refuses with RuntimeError while a run() of it is under way, so
+ * the C state is only ever touched by the run or, between runs, under the
+ * GIL.
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
@@ -16,14 +21,31 @@
 typedef struct {
 	PyObject_HEAD
 	cluster_t *c;
+	int running; /* a run() with the GIL released is under way (read and set under the GIL) */
 } ClusterObject;
+
+/* 0, or -1 with RuntimeError set if a run() of this cluster is under way in
+ * another thread. */
+static int idle_or_fail(ClusterObject *self)
+{
+	if (!self->running)
+		return 0;
+	PyErr_SetString(PyExc_RuntimeError,
+			"the cluster is running in another thread: wait for run() to return");
+	return -1;
+}
 
 /* hexbot.protocol.timing.BAUD_TOLERANCE, read once at import: the one place
  * that number lives. */
 static double baud_tolerance;
 
+/* More threads than this is a typo, not a machine. */
+#define MAX_THREADS 256
+
 static m162_t *get_mcu(ClusterObject *self, long i)
 {
+	if (idle_or_fail(self) < 0)
+		return NULL;
 	if (i < 0 || i >= self->c->n) {
 		PyErr_Format(PyExc_IndexError, "no MCU %ld (cluster has %d)", i, self->c->n);
 		return NULL;
@@ -83,11 +105,27 @@ static m162_t *m162_arg(ClusterObject *self, PyObject *args)
 
 /* ---------------------------------------------------------------- */
 
+static int set_threads(ClusterObject *self, long threads)
+{
+	if (threads < 1 || threads > MAX_THREADS) {
+		PyErr_Format(PyExc_ValueError, "threads must be 1..%d, not %ld", MAX_THREADS, threads);
+		return -1;
+	}
+	if (cluster_set_threads(self->c, (int)threads) < 0) {
+		PyErr_Format(PyExc_OSError, "cannot start %ld simulation threads", threads);
+		return -1;
+	}
+	return 0;
+}
+
 static int Cluster_init(ClusterObject *self, PyObject *args, PyObject *kw)
 {
-	static char *kwlist[] = { "quantum_cycles", NULL };
+	static char *kwlist[] = { "quantum_cycles", "threads", NULL };
 	long long q = 1000;
-	if (!PyArg_ParseTupleAndKeywords(args, kw, "|L", kwlist, &q))
+	long threads = 1;
+	if (!PyArg_ParseTupleAndKeywords(args, kw, "|Ll", kwlist, &q, &threads))
+		return -1;
+	if (idle_or_fail(self) < 0)
 		return -1;
 	if (q < 1) {
 		PyErr_SetString(PyExc_ValueError, "quantum_cycles must be >= 1");
@@ -100,7 +138,7 @@ static int Cluster_init(ClusterObject *self, PyObject *args, PyObject *kw)
 		PyErr_NoMemory();
 		return -1;
 	}
-	return 0;
+	return set_threads(self, threads);
 }
 
 static void Cluster_dealloc(ClusterObject *self)
@@ -114,6 +152,8 @@ static PyObject *Cluster_add_mcu(ClusterObject *self, PyObject *args, PyObject *
 	static char *kwlist[] = { "elf_path", "name", "core", NULL };
 	PyObject *path_obj;
 	const char *name, *core = "atmega162";
+	if (idle_or_fail(self) < 0)
+		return NULL;
 	if (!PyArg_ParseTupleAndKeywords(args, kw, "O&s|s", kwlist, PyUnicode_FSConverter,
 			&path_obj, &name, &core))
 		return NULL;
@@ -138,30 +178,91 @@ static PyObject *Cluster_add_mcu(ClusterObject *self, PyObject *args, PyObject *
 static PyObject *Cluster_get_cycle(ClusterObject *self, void *closure)
 {
 	(void)closure;
+	if (idle_or_fail(self) < 0)
+		return NULL;
 	return PyLong_FromUnsignedLongLong(self->c->cycle);
 }
 
 static PyObject *Cluster_get_quantum(ClusterObject *self, void *closure)
 {
 	(void)closure;
+	if (idle_or_fail(self) < 0)
+		return NULL;
 	return PyLong_FromUnsignedLongLong(self->c->quantum);
 }
 
 static PyObject *Cluster_get_frequency(ClusterObject *self, void *closure)
 {
 	(void)closure;
+	if (idle_or_fail(self) < 0)
+		return NULL;
 	return PyLong_FromUnsignedLong(self->c->frequency ? self->c->frequency : 1000000);
 }
 
 static PyObject *Cluster_get_tolerance(ClusterObject *self, void *closure)
 {
 	(void)closure;
+	if (idle_or_fail(self) < 0)
+		return NULL;
 	return PyFloat_FromDouble(self->c->baud_tolerance);
+}
+
+static PyObject *Cluster_get_threads(ClusterObject *self, void *closure)
+{
+	(void)closure;
+	if (idle_or_fail(self) < 0)
+		return NULL;
+	return PyLong_FromLong(self->c->threads);
+}
+
+static int Cluster_set_threads(ClusterObject *self, PyObject *value, void *closure)
+{
+	(void)closure;
+	if (!value) {
+		PyErr_SetString(PyExc_AttributeError, "threads cannot be deleted");
+		return -1;
+	}
+	long threads = PyLong_AsLong(value);
+	if (threads == -1 && PyErr_Occurred())
+		return -1;
+	if (idle_or_fail(self) < 0)
+		return -1;
+	return set_threads(self, threads);
+}
+
+static PyObject *Cluster_get_min_per_thread(ClusterObject *self, void *closure)
+{
+	(void)closure;
+	if (idle_or_fail(self) < 0)
+		return NULL;
+	return PyLong_FromLong(self->c->min_per_thread);
+}
+
+static int Cluster_set_min_per_thread(ClusterObject *self, PyObject *value, void *closure)
+{
+	(void)closure;
+	if (!value) {
+		PyErr_SetString(PyExc_AttributeError, "min_mcus_per_thread cannot be deleted");
+		return -1;
+	}
+	long v = PyLong_AsLong(value);
+	if (v == -1 && PyErr_Occurred())
+		return -1;
+	if (idle_or_fail(self) < 0)
+		return -1;
+	if (v < 1 || v > 1000000) {
+		PyErr_Format(PyExc_ValueError, "min_mcus_per_thread must be >= 1, not %ld", v);
+		return -1;
+	}
+	self->c->min_per_thread = (int)v;
+	return 0;
 }
 
 static PyObject *Cluster_get_count(ClusterObject *self, void *closure)
 {
 	(void)closure;
+	if (idle_or_fail(self) < 0)
+		return NULL;
 	return PyLong_FromLong(self->c->n);
 }
 
@@ -205,7 +306,17 @@ static PyObject *Cluster_run(ClusterObject *self, PyObject *args)
 	unsigned long long until;
 	if (!PyArg_ParseTuple(args, "K", &until))
 		return NULL;
-	return PyLong_FromUnsignedLongLong(cluster_run(self->c, until));
+	if (idle_or_fail(self) < 0)
+		return NULL;
+	/* No Python object is touched until the GIL is back: cluster_run is
+	 * plain C on self->c, which the running flag keeps other threads off. */
+	uint64_t reached;
+	self->running = 1;
+	Py_BEGIN_ALLOW_THREADS
+	reached = cluster_run(self->c, until);
+	Py_END_ALLOW_THREADS
+	self->running = 0;
+	return PyLong_FromUnsignedLongLong(reached);
 }
 
 static PyObject *Cluster_uart_take(ClusterObject *self, PyObject *args)
@@ -313,6 +424,8 @@ static PyObject *Cluster_clock(ClusterObject *self, PyObject *args)
 static PyObject *Cluster_changed(ClusterObject *self, PyObject *noargs)
 {
 	(void)noargs;
+	if (idle_or_fail(self) < 0)
+		return NULL;
 	PyObject *list = PyList_New(0);
 	if (!list)
 		return NULL;
@@ -1034,6 +1147,13 @@ static PyGetSetDef Cluster_getset[] = {
 	{ "baud_tolerance", (getter)Cluster_get_tolerance, NULL,
 		"largest baud-rate mismatch a receiver takes, as a fraction", NULL },
 	{ "mcu_count", (getter)Cluster_get_count, NULL, "number of MCUs", NULL },
+	{ "threads", (getter)Cluster_get_threads, (setter)Cluster_set_threads,
+		"threads that run each quantum (1 = the caller's only); the trace does not "
+		"depend on it", NULL },
+	{ "min_mcus_per_thread", (getter)Cluster_get_min_per_thread,
+		(setter)Cluster_set_min_per_thread,
+		"a quantum uses fewer threads if one would get fewer MCUs than this "
+		"(default 32; 1 uses every thread)", NULL },
 	{ NULL, NULL, NULL, NULL, NULL },
 };
 

@@ -3,11 +3,14 @@
  * Python: a quick look at what firmware does, and a way to use gdb/valgrind
  * on the core itself.
  *
- *   m162run [-c cycles] [-q quantum] [-t baud-tolerance] [-w] a.elf [b.elf ...]
+ *   m162run [-c cycles] [-q quantum] [-t baud-tolerance] [-j threads [-m min]] [-w] a.elf ...
  *
  * Prints every byte each USART sends ("mcu uart start end byte") and every
  * PORTx change ("mcu port cycle value"), then each MCU's state.  -w wires
  * USART0 of image 2k to USART0 of image 2k+1 (a module's comm/control pair).
+ * -j runs each quantum on that many threads (the output does not change),
+ * each with at least -m MCUs (default CLUSTER_MIN_MCUS_PER_THREAD);
+ * `make tsan` builds it with ThreadSanitizer over simavr's own sources.
  */
 #include <stdio.h>
 #include <stdlib.h>
@@ -42,16 +45,18 @@ int main(int argc, char **argv)
 	unsigned long long cycles = 1000000, quantum = 1000;
 	/* the simulator takes it from protocol/timing.py BAUD_TOLERANCE */
 	double tolerance = 0.045;
-	int wire = 0, opt;
-	while ((opt = getopt(argc, argv, "c:q:t:w")) != -1) {
+	int wire = 0, threads = 1, min_per_thread = CLUSTER_MIN_MCUS_PER_THREAD, opt;
+	while ((opt = getopt(argc, argv, "c:q:t:j:m:w")) != -1) {
 		switch (opt) {
 		case 'c': cycles = strtoull(optarg, NULL, 0); break;
 		case 'q': quantum = strtoull(optarg, NULL, 0); break;
 		case 't': tolerance = strtod(optarg, NULL); break;
+		case 'j': threads = atoi(optarg); break;
+		case 'm': min_per_thread = atoi(optarg); break;
 		case 'w': wire = 1; break;
 		default:
-			fprintf(stderr, "usage: %s [-c cycles] [-q quantum] [-t tolerance] [-w] a.elf ...\n",
-					argv[0]);
+			fprintf(stderr, "usage: %s [-c cycles] [-q quantum] [-t tolerance] [-j threads] "
+					"[-m min] [-w] a.elf ...\n", argv[0]);
 			return 2;
 		}
 	}
@@ -60,6 +65,12 @@ int main(int argc, char **argv)
 		return 2;
 	}
 	cluster_t *c = cluster_new(quantum, tolerance);
+	if (cluster_set_threads(c, threads) < 0) {
+		fprintf(stderr, "%s: cannot run on %d threads\n", argv[0], threads);
+		cluster_free(c);
+		return 2;
+	}
+	c->min_per_thread = min_per_thread > 0 ? min_per_thread : 1;
 	for (int i = optind; i < argc; i++) {
 		char err[512];
 		int idx = cluster_add(c, argv[i], argv[i], "atmega162", err, sizeof err);
