@@ -106,19 +106,29 @@ def _reaching(occupied: set[Cell], target: Cell) -> set[Cell]:
 
 #: Modules tried with the local arc test before the linear pass (see :func:`_pick_mover`).
 QUICK = 3
+#: Farthest modules (never cut vertices) tried with a path search each before that.
+FARTHEST = 16
 
 
-def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell) -> tuple[int, list] | None:
+def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
+                farthest: int = 0) -> tuple[int, list] | None:
     """The first module of ``order`` that may leave and roll to ``target``, with its path.
 
-    Usually the farthest module qualifies: the first ``QUICK`` modules whose
-    neighbours form one arc (never cut vertices) get a path search each. Otherwise,
-    linear work per moved module: one cut-vertex pass, one search outward from the
-    target, then one path search for the module it points at. The outward search
-    counts the mover as an obstacle (and as a possible substrate), so when it points
-    at no one, each module is searched on its own (rare).
+    The first ``farthest`` modules of ``order`` are at the largest distance from
+    the anchor, so none is a cut vertex: up to ``FARTHEST`` of them get a path
+    search each, with no cut test. Then the next ``QUICK`` modules whose
+    neighbours form one arc (never cut vertices either). Otherwise, linear work
+    per moved module: one cut-vertex pass, one search outward from the target,
+    then one path search for the module it points at. The outward search counts
+    the mover as an obstacle (and as a possible substrate), so when it points at
+    no one, each module is searched on its own (rare).
     """
-    for k, cell in enumerate(order[:QUICK]):
+    tries = min(farthest, FARTHEST)
+    for k in range(tries):
+        path = _path_to(occupied, order[k], target)
+        if path:
+            return k, path
+    for k, cell in enumerate(order[tries:tries + QUICK], start=tries):
         if _single_arc(occupied, cell):
             path = _path_to(occupied, cell, target)
             if path:
@@ -176,14 +186,17 @@ def to_strip(config: Configuration, width: int,
             # order is only recomputed when a nearer module had to go instead
             hops = _hops_from(occupied, roots)
             order = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
-        picked = _pick_mover(occupied, order, target)
+        top = hops[order[0]]
+        farthest = next((k for k, c in enumerate(order[:FARTHEST]) if hops[c] != top),
+                        min(len(order), FARTHEST))
+        picked = _pick_mover(occupied, order, target, farthest)
         if picked is None:
             raise PlanningFailure(
                 f"no module can reach strip cell {target} (width {width}) after "
                 f"{len(moves)} moves")
         k, path = picked
-        del order[k]
-        if k:
+        taken = order.pop(k)
+        if hops[taken] != top:
             order = []
         module = ids.pop(path[0][0])
         occupied.discard(path[0][0])
