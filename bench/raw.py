@@ -31,15 +31,20 @@ def avr_program(name: str, mcu: str = "atmega162") -> str:
     return str(_make(AVR_PROGRAMS, f"build/{name}.{mcu}.elf"))
 
 
-def raw_simavr_seconds(elf: str, core: str, cycles: int) -> float:
-    """Wall seconds simavr's own loop takes for ``cycles`` of ``elf`` on ``core``."""
+def raw_simavr_times(elf: str, core: str, cycles: int) -> tuple[float, float]:
+    """(wall, CPU) seconds simavr's own loop takes for ``cycles`` of ``elf`` on ``core``."""
     harness = _make(BENCH, "build/raw_simavr")
     try:
         out = subprocess.run([str(harness), core, elf, str(cycles)], check=True,
                              capture_output=True, text=True).stdout
     except subprocess.CalledProcessError as exc:
         raise HexBotError(f"{harness.name} {core} {elf}: {exc.stderr.strip()}") from exc
-    done, seconds = out.split()
+    done, wall, cpu = out.split()
     if int(done) < cycles:
         raise HexBotError(f"{elf} stopped after {done} of {cycles} cycles on {core}")
-    return float(seconds)
+    return float(wall), float(cpu)
+
+
+def raw_simavr_seconds(elf: str, core: str, cycles: int) -> float:
+    """Wall seconds simavr's own loop takes for ``cycles`` of ``elf`` on ``core``."""
+    return raw_simavr_times(elf, core, cycles)[0]

@@ -68,3 +68,5 @@ def test_sim_benchmark_says_where_ir_is_routed(capsys, ir):
     [size] = json.loads(capsys.readouterr().out)["sizes"]
     assert size["ir"] == ir
     assert size["wave"]["simulated_s"] > 20  # the localization window ran
+    # busy is also measured in CPU time, against raw simavr's CPU time
+    assert size["busy"]["cycles_per_cpu_s"] > 0 and size["busy"]["vs_raw_cpu"] > 0
