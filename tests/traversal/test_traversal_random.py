@@ -157,3 +157,34 @@ def test_hexbot_the_first_100_random_surfaces_never_deadlock_nor_break_an_invari
     report = random_runs(range(100), "hexbot")  # 13, 24, 98 deadlocked
     assert (report["deadlock"], report["violation"]) == (0, 0), report["failures"]
     assert report["reached"] >= 43
+
+
+def test_hexbot_the_module_in_the_last_fill_cell_has_no_way_on():
+    # docs/traversal.md, "Why random surfaces are refused": releasing Fill
+    # modules does not help; once every module stopped, the one in the last
+    # Fill cell, rolling on (the wall-following rule), never reaches a goal
+    from hexbot.errors import ScenarioError
+    from hexbot.planning.traversal.engine import Engine
+    from hexbot.planning.traversal.motion import next_rotation
+
+    checked = 0
+    for seed in range(30):
+        try:
+            bmap = find_bridge_cells(random_surface(seed), "hexbot")
+        except ScenarioError:
+            continue
+        if not bmap.fills:
+            continue
+        engine = Engine(bmap)
+        assert engine.run().status == "reached"
+        last = engine.at[bmap.fills[-1]]
+        cell, pivot = last.cell, last.pivot
+        for _ in range(400):
+            rolled = next_rotation(cell, pivot, "CW", lambda c, m=last: c in engine.surface
+                                   or (c in engine.at and c != m.cell), "hexbot")
+            if rolled is None:
+                break
+            cell, pivot = rolled.dst, rolled.substrate
+            assert cell not in bmap.surface.goals, f"random:{seed}"
+        checked += 1
+    assert checked >= 10
