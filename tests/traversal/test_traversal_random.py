@@ -178,10 +178,10 @@ def test_hexbot_the_module_in_the_last_fill_cell_has_no_way_on():
         engine = Engine(bmap)
         assert engine.run().status == "reached"
         last = engine.at[bmap.fills[-1]]
+        others = engine.surface | (set(engine.at) - {last.cell})
         cell, pivot = last.cell, last.pivot
         for _ in range(400):
-            rolled = next_rotation(cell, pivot, "CW", lambda c, m=last: c in engine.surface
-                                   or (c in engine.at and c != m.cell), "hexbot")
+            rolled = next_rotation(cell, pivot, "CW", others.__contains__, "hexbot")
             if rolled is None:
                 break
             cell, pivot = rolled.dst, rolled.substrate
