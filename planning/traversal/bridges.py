@@ -16,6 +16,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from hexbot.errors import ScenarioError
 from hexbot.planning.traversal.fill import fill_cells
 from hexbot.planning.traversal.layers import Layer, layer1, layer2
 from hexbot.planning.traversal.motion import next_rotation, rotation_to
@@ -480,6 +481,70 @@ def _near_held(group: Group, near: list[Group]) -> frozenset[Cell]:
                      if any(distance(c, b) <= 2 for b in own))
 
 
+def _holds_fill(group: Group, fills: tuple[Cell, ...]) -> bool:
+    """A Fill cell in the pocket (next to a cell of it or one of the bridge's
+    cells): its module must go into the pocket the bridge closes, and it
+    stops there for good (random:13, :24)."""
+    near = group.pocket | set(group.cells)
+    return any(f in near or any(neighbor(f, s) in near for s in SIDES) for f in fills)
+
+
+GAP = 4  # moves between two moving modules one after the other (2 free cells: 3)
+
+
+def _touching_within(route: list[Cell], longest: int) -> tuple[Cell, Cell] | None:
+    """Two touching cells of a route 3..``longest`` moves apart: ``longest`` is
+    how far apart the first and last of the modules crossing can be."""
+    for q, cell in enumerate(route):
+        for p in range(max(q - longest, 0), q - 2):
+            if distance(route[p], cell) == 1:
+                return route[p], cell
+    return None
+
+
+def _check_open_pocket(surface: frozenset[Cell], layer: Layer, group: Group,
+                       fills: tuple[Cell, ...], n: int, model: str) -> None:
+    """Without its bridge a pocket is crossed by every module after the last
+    one that stays in it (or by all when none stays). Where its way is narrow
+    (two touching cells three or more moves apart), two of them would touch:
+    the map is refused (random:13). Modules cross about GAP moves apart, so
+    cells farther apart along the way than the first and last of them can be
+    do not count (random:98, a pocket of eleven cells, is crossed)."""
+    inside = [k for k, f in enumerate(fills) if _holds_fill(group, (f,))]
+    through = n - (inside[-1] + 1 if inside else len(fills))
+    if through < 2:
+        return
+    i, j = group.span
+    way = _route(surface.__contains__, layer, max(i - 2, 0), model,
+                 lambda c: c in layer.visits and max(layer.visits[c]) > j, 4 * (j - i) + 32)
+    narrow = _touching_within(way[0], GAP * (through - 1) + 1) if way is not None else None
+    if way is None or narrow is not None:
+        where = f"cells {list(narrow[0])} and {list(narrow[1])} touch" if narrow else \
+            "its way is stuck"
+        why = "a Fill cell lies in it" if inside else "its Bridge cell cannot be entered"
+        raise ScenarioError(
+            f"the {group.kind} pocket at {list(group.bridge[0])} cannot be bridged by rigid "
+            f"modules ({why}) and {through} modules would cross it where {where}: this surface "
+            "cannot be crossed by rigid modules")
+
+
+def _can_form(surface: frozenset[Cell], layer: Layer, group: Group, model: str) -> bool:
+    """The bridge can be formed under the model: the module that takes its
+    second cell (the Bridge cell after a TempSupport, ``y`` after ``x`` in a
+    BASIC bridge) gets there with the first held. Under the hexbot model the
+    roll into ``g`` of a LEFT pocket can sweep the far wall (random:98)."""
+    if group.temp_support is not None:
+        first, second = group.temp_support, group.bridge[0]
+    elif group.kind == "BASIC":
+        first, second = group.bridge
+    else:
+        return True
+    i, j = group.span
+    start = max(i - 2, 0)
+    return _route(lambda c: c in surface or c == first, layer, start, model,
+                  lambda c: c == second, 4 * (j - i) + 32) is not None
+
+
 def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: bool = True,
                       three: bool = True) -> BridgeMap:
     """FINDBRIDGECELLS (Fig. 7) on a map; under the hexbot model on the
@@ -506,6 +571,13 @@ def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: b
                     candidates.append(three_group)
                 else:
                     unsafe.append(three_group)
+    if model == "hexbot":  # docs/traversal.md, "Fill cells and bridges"
+        clash = [g for g in candidates if _holds_fill(g, fills)
+                 or not _can_form(s, first, g, model)]
+        for group in clash:
+            _check_open_pocket(s, first, group, fills, surface.n, model)
+        unsafe += clash
+        candidates = [g for g in candidates if g not in clash]
     while True:
         groups, dropped = _select(s, first, candidates, model)
         # a 3-bridge must also be safe with the bridges next to it held (random:538)

@@ -24,7 +24,7 @@ from collections.abc import Iterable
 
 from hexbot.errors import ScenarioError
 from hexbot.planning.traversal.layers import Stuck, layer1
-from hexbot.protocol.lattice import Cell, distance
+from hexbot.protocol.lattice import SIDES, Cell, distance, neighbor
 
 NEAR = 3  # Fill cells are looked for within this many cells of the last part of
 WINDOW = 16  # the stuck walk (its last WINDOW cells): the pocket it went into
@@ -95,6 +95,9 @@ def _passes(stuck: Stuck | None, best: int, goals: frozenset[Cell]) -> bool:
     return stuck is None or _to_goals(stuck.cell, goals) < best
 
 
+EXTRA = 9  # on refusal: how many more Fill cells than modules the search tries
+
+
 def fill_cells(surface: frozenset[Cell], modules: Iterable[Cell], goals: Iterable[Cell],
                model: str) -> tuple[Cell, ...]:
     """The Fill cells, in the order the modules take them (module k stays in
@@ -102,17 +105,40 @@ def fill_cells(surface: frozenset[Cell], modules: Iterable[Cell], goals: Iterabl
     modules, goals = frozenset(modules), frozenset(goals)
     _walks_left[0] = MAX_WALKS
     try:
-        found = _fill_from(surface, modules, goals, model, ())
+        found = _fill_from(surface, modules, goals, model, (), len(modules) - 1)
     except OutOfWalks:
         found = None
     if found is None:
-        _walks_left[0] = 1
-        stuck = _walk(surface, (), modules, goals, model)
-        raise ScenarioError(
-            f"{stuck} under the {model} motion model, and no set of Fill cells that "
-            f"holds at most {len(modules) - 1} of the {len(modules)} modules lets the "
-            "others pass: this surface cannot be crossed by rigid modules")
+        raise ScenarioError(refusal(surface, modules, goals, model))
     return found
+
+
+def refusal(surface: frozenset[Cell], modules: frozenset[Cell], goals: frozenset[Cell],
+            model: str) -> str:
+    """Why no Fill cells let a module cross, one of three reasons (the table in
+    docs/traversal.md): the probe is stuck on an edge or in a pocket, and the
+    Fill cells that let it on hold K >= n modules, or none was found (the
+    search, with EXTRA more modules, is not exhaustive: fewest per stuck place)."""
+    n = len(modules)
+    _walks_left[0] = 1
+    stuck = _walk(surface, (), modules, goals, model)
+    assert stuck is not None
+    touching = sum(1 for s in SIDES if neighbor(stuck.cell, s) in surface)
+    where = "over an edge (one surface neighbour)" if touching == 1 else \
+        f"in a pocket or a corner ({touching} surface neighbours)"
+    _walks_left[0] = MAX_WALKS
+    try:
+        more = _fill_from(surface, modules, goals, model, (), n - 1 + EXTRA)
+    except OutOfWalks:
+        more = None
+    if more is not None:
+        why = (f"the Fill cells that let the walk on hold {len(more)} modules, "
+               f"more than the {n - 1} of {n} that may stay")
+    else:
+        why = (f"no set of at most {n - 1 + EXTRA} Fill cells lets the walk on within "
+               f"{MAX_WALKS} probe walks")
+    return (f"{stuck} {where} under the {model} motion model; {why}: this surface cannot "
+            "be crossed by rigid modules")
 
 
 def _around(cells: list[Cell]):
@@ -120,14 +146,14 @@ def _around(cells: list[Cell]):
     return lambda cell: any(distance(cell, p) <= NEAR for p in cells)
 
 
-def _fill_from(surface, modules, goals, model, fills):
+def _fill_from(surface, modules, goals, model, fills, most):
     """Fill cells after ``fills`` up to the goals; fewest first at each stuck
     place, and the next sequence when a later stuck place runs out of
-    modules (None: none works)."""
+    modules (at most ``most`` Fill cells; None: none works)."""
     stuck = _walk(surface, fills, modules, goals, model)
     if stuck is None:
         return fills
-    budget = min(len(modules) - 1 - len(fills), DEEPEST)
+    budget = min(most - len(fills), DEEPEST)
     best = min(_to_goals(c, goals) for c in stuck.walk.cells)
     near = stuck.walk.cells[-WINDOW:]
     region = _around(near)
@@ -137,7 +163,7 @@ def _fill_from(surface, modules, goals, model, fills):
             if not _in_order(surface, fills + extra, modules, goals, model):
                 continue
             tried += 1
-            rest = _fill_from(surface, modules, goals, model, fills + extra)
+            rest = _fill_from(surface, modules, goals, model, fills + extra, most)
             if rest is not None:
                 return rest
             if tried >= TRIES:

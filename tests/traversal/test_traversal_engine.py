@@ -112,6 +112,14 @@ def test_hexbot_motion_refuses_a_step_rigid_modules_cannot_descend():
         find_bridge_cells(resolve_map("steps"), "hexbot")
 
 
+def test_hexbot_motion_refuses_fig14_whose_pockets_would_hold_12_of_11_modules():
+    from hexbot.errors import ScenarioError
+
+    with pytest.raises(ScenarioError, match="the Fill cells that let the walk on hold 12 "
+                       "modules, more than the 10 of 11 that may stay"):
+        find_bridge_cells(resolve_map("fig14"), "hexbot")
+
+
 def test_fig12_time_crossover_lies_past_a_pocket_perimeter_of_10_as_in_the_paper():
     # "for pocket perimeter lengths greater than 10, the traversal time saved ...
     # outweighs the cost of detaining modules in the bridge cells"

@@ -93,3 +93,98 @@ def test_a_left_temp_support_stays_when_the_way_on_circles():
     group = next(g for g in bmap.groups if g.kind == "LEFT")
     assert group.support == group.temp_support == (18, 2)
     assert "on-to-support" not in {m.rule for r in result.rounds for m in r}
+
+
+# --motion hexbot: Fill cells and the paper's bridges (docs/traversal.md,
+# "Fill cells and bridges"); each seed deadlocked before its rule
+def hexbot_crossed(seed: int):
+    surface = random_surface(seed)
+    bmap = find_bridge_cells(surface, "hexbot")
+    result = traverse(bmap)  # every invariant is checked each round
+    assert result.status == "reached", f"random:{seed}: {result.reason}"
+    at_goal = [c for c in result.final.values() if c in surface.goals]
+    assert len(at_goal) >= bmap.crossing >= 1
+    return bmap, result
+
+
+def test_hexbot_a_bridge_whose_pocket_holds_a_fill_cell_is_dropped():
+    # random:24: the third Fill cell lies in the pocket the BASIC bridge closed;
+    # module 3 stopped in x, module 4 waited over it for good
+    bmap, result = hexbot_crossed(24)
+    assert bmap.groups == [] and len(bmap.fills) == 3
+    basic = [g for g in bmap.dropped if g.kind == "BASIC"]
+    assert [g.bridge for g in basic] == [((17, -3), (18, -3))]
+    assert result.final[3] == bmap.fills[2] == (19, -7)  # it went into the pocket
+
+
+def test_hexbot_a_bridge_cell_a_rigid_module_cannot_enter_is_dropped():
+    # random:98: the roll into g of the LEFT pocket sweeps the far wall; the
+    # third module waited on the TempSupport module for good
+    from hexbot.planning.traversal.motion import required_empty, rotation_to
+
+    bmap, _ = hexbot_crossed(98)
+    left = [g for g in bmap.dropped if g.kind == "LEFT"]
+    assert [g.bridge for g in left] == [((25, -2),)] and bmap.groups == []
+    rotation = rotation_to(4, "CW")  # from (24, -1) about the TempSupport (24, -2)
+    assert rotation.at((24, -1))[:2] == ((24, -2), (25, -2))
+    assert (26, -2) in required_empty(rotation, (24, -1), "hexbot")
+    assert (26, -2) in bmap.surface.surface
+
+
+def test_hexbot_an_open_pocket_too_narrow_for_the_modules_crossing_it_is_refused():
+    # random:13: the first Fill cell lies in a LEFT pocket; without the bridge
+    # three modules would cross its narrow neck (a violation before refusing)
+    from hexbot.errors import ScenarioError
+
+    with pytest.raises(ScenarioError, match=r"the LEFT pocket at \[18, -6\] .*a Fill cell "
+                       r"lies in it\) and 3 modules would cross it"):
+        find_bridge_cells(random_surface(13), "hexbot")
+
+
+def test_hexbot_refusals_say_why():
+    from hexbot.errors import ScenarioError
+
+    with pytest.raises(ScenarioError, match=r"stuck at \[8, 0\] in a pocket .* hold 5 "
+                       "modules, more than the 3 of 4 that may stay"):
+        find_bridge_cells(random_surface(4), "hexbot")
+    with pytest.raises(ScenarioError, match=r"stuck at \[15, 0\] over an edge"):
+        find_bridge_cells(random_surface(8), "hexbot")
+
+
+def test_hexbot_the_first_100_random_surfaces_never_deadlock_nor_break_an_invariant():
+    from hexbot.planning.traversal.experiments import random_runs
+
+    report = random_runs(range(100), "hexbot")  # 13, 24, 98 deadlocked
+    assert (report["deadlock"], report["violation"]) == (0, 0), report["failures"]
+    assert report["reached"] >= 43
+
+
+def test_hexbot_the_module_in_the_last_fill_cell_has_no_way_on():
+    # docs/traversal.md, "Why random surfaces are refused": releasing Fill
+    # modules does not help; once every module stopped, the one in the last
+    # Fill cell, rolling on (the wall-following rule), never reaches a goal
+    from hexbot.errors import ScenarioError
+    from hexbot.planning.traversal.engine import Engine
+    from hexbot.planning.traversal.motion import next_rotation
+
+    checked = 0
+    for seed in range(30):
+        try:
+            bmap = find_bridge_cells(random_surface(seed), "hexbot")
+        except ScenarioError:
+            continue
+        if not bmap.fills:
+            continue
+        engine = Engine(bmap)
+        assert engine.run().status == "reached"
+        last = engine.at[bmap.fills[-1]]
+        others = engine.surface | (set(engine.at) - {last.cell})
+        cell, pivot = last.cell, last.pivot
+        for _ in range(400):
+            rolled = next_rotation(cell, pivot, "CW", others.__contains__, "hexbot")
+            if rolled is None:
+                break
+            cell, pivot = rolled.dst, rolled.substrate
+            assert cell not in bmap.surface.goals, f"random:{seed}"
+        checked += 1
+    assert checked >= 10
