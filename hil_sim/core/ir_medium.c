@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "ir_medium.h"
+#include "grow.h"
 
 static int selector_y(const ir_port_t *p)
 {
@@ -32,14 +33,8 @@ static uint8_t next_garbage(ir_port_t *p)
 
 static void log_event(ir_port_t *p, int kind, const ir_air_t *a, const int *others, int n)
 {
-	if (p->n_events == p->cap_events) {
-		size_t cap = p->cap_events ? p->cap_events * 2 : 32;
-		ir_event_t *e = realloc(p->events, cap * sizeof *e);
-		if (!e)
-			return;
-		p->events = e;
-		p->cap_events = cap;
-	}
+	if (GROW(p->events, p->n_events, p->cap_events, 32) < 0)
+		return;
 	ir_event_t *e = &p->events[p->n_events++];
 	*e = (ir_event_t){ .end = a->end, .seq = p->seq++, .kind = kind, .sender = a->sender,
 		.receiver = p->index, .byte = a->byte, .n_others = n };
@@ -157,14 +152,8 @@ static void enqueue(ir_port_t *p, ir_air_t a)
 
 static void push_pc(ir_port_t *p, const m162_txrec_t *r)
 {
-	if (p->n_pc == p->cap_pc) {
-		size_t cap = p->cap_pc ? p->cap_pc * 2 : 16;
-		ir_pcbyte_t *n = realloc(p->to_pc, cap * sizeof *n);
-		if (!n)
-			return;
-		p->to_pc = n;
-		p->cap_pc = cap;
-	}
+	if (GROW(p->to_pc, p->n_pc, p->cap_pc, 16) < 0)
+		return;
 	p->to_pc[p->n_pc++] = (ir_pcbyte_t){ r->start, r->end, r->byte };
 }
 

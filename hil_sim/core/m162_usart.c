@@ -25,6 +25,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "grow.h"
 #include "m162.h"
 
 #define IO(a) AVR_DATA_TO_IO(a)
@@ -67,14 +68,8 @@ void m162_usart_log(m162_usart_t *s, m162_txrec_t rec)
 {
 	if (!s->keep_log)
 		return;
-	if (s->log_len == s->log_cap) {
-		size_t cap = s->log_cap ? s->log_cap * 2 : 64;
-		m162_txrec_t *n = realloc(s->log, cap * sizeof *n);
-		if (!n)
-			return;
-		s->log = n;
-		s->log_cap = cap;
-	}
+	if (GROW(s->log, s->log_len, s->log_cap, 64) < 0)
+		return;
 	s->log[s->log_len++] = rec;
 }
 
