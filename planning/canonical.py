@@ -104,10 +104,9 @@ def _reaching(occupied: set[Cell], target: Cell) -> set[Cell]:
     return seen
 
 
-#: Modules tried with the local arc test before the linear pass (see :func:`_pick_mover`).
-QUICK = 3
-#: Farthest modules (never cut vertices) tried with a path search each before that.
-FARTHEST = 16
+#: Farthest modules (never cut vertices) tried with a path search each, before the
+#: search outward from the target (see :func:`_pick_mover`).
+FARTHEST = 4
 
 
 def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
@@ -116,32 +115,43 @@ def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
 
     The first ``farthest`` modules of ``order`` are at the largest distance from
     the anchor, so none is a cut vertex: up to ``FARTHEST`` of them get a path
-    search each, with no cut test. Then the next ``QUICK`` modules whose
-    neighbours form one arc (never cut vertices either). Otherwise, linear work
-    per moved module: one cut-vertex pass, one search outward from the target,
-    then one path search for the module it points at. The outward search counts
-    the mover as an obstacle (and as a possible substrate), so when it points at
-    no one, each module is searched on its own (rare).
+    search each, with no cut test. Otherwise one search outward from the target
+    finds the cells a module can roll to it from, and the modules are scanned in
+    order for one with a first rotation into them that cannot disconnect anything
+    (farthest, or neighbours in one arc); only when none qualifies, one cut-vertex
+    pass decides for the others. The outward search counts the mover as an
+    obstacle (and as a possible substrate), so each candidate's path is still
+    searched; when no candidate has one, each module is searched on its own (rare).
     """
     tries = min(farthest, FARTHEST)
     for k in range(tries):
         path = _path_to(occupied, order[k], target)
         if path:
             return k, path
-    for k, cell in enumerate(order[tries:tries + QUICK], start=tries):
-        if _single_arc(occupied, cell):
+    reach = _reaching(occupied, target)
+    likely, unsure = [], []
+    for k, cell in enumerate(order):  # farthest first: the first good one usually comes soon
+        if not any(g in reach for _, _, g in _moves_from(cell, occupied, cell)):
+            continue
+        likely.append(k)
+        if k < farthest or _single_arc(occupied, cell):
             path = _path_to(occupied, cell, target)
             if path:
                 return k, path
+        else:
+            unsure.append(k)
     cuts = articulation_points(occupied)
-    reach = _reaching(occupied, target)
-    free = [k for k, c in enumerate(order) if c not in cuts]
-    likely = [k for k in free
-              if any(g in reach for _, _, g in _moves_from(order[k], occupied, order[k]))]
-    for k in likely + [k for k in free if k not in set(likely)]:
-        path = _path_to(occupied, order[k], target)
-        if path:
-            return k, path
+    for k in unsure:
+        if order[k] not in cuts:
+            path = _path_to(occupied, order[k], target)
+            if path:
+                return k, path
+    tried = set(likely)
+    for k, cell in enumerate(order):
+        if k not in tried and cell not in cuts:
+            path = _path_to(occupied, cell, target)
+            if path:
+                return k, path
     return None
 
 
@@ -187,8 +197,7 @@ def to_strip(config: Configuration, width: int,
             hops = _hops_from(occupied, roots)
             order = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
         top = hops[order[0]]
-        farthest = next((k for k, c in enumerate(order[:FARTHEST]) if hops[c] != top),
-                        min(len(order), FARTHEST))
+        farthest = next((k for k, c in enumerate(order) if hops[c] != top), len(order))
         picked = _pick_mover(occupied, order, target, farthest)
         if picked is None:
             raise PlanningFailure(
