@@ -397,7 +397,9 @@ def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] 
     pending moves have all been scanned, so the check is exact.
     """
     width = min(WINDOW[1], max(WINDOW[0], SCAN_WORK // max(1, len(serial))))
-    prints = [_footprint(m) for m in serial]
+    # footprints of the moves scanned so far and not yet scheduled: memory follows
+    # the window, not the plan (a set per move of a 5-million-move plan is gigabytes)
+    prints: dict[int, set[Cell]] = {}
     occupied = set(initial.cells)
     steps: list[Step] = []
     pending = deque(range(len(serial)))
@@ -413,7 +415,10 @@ def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] 
             if scanned - last > GAP:
                 break
             k = pending.popleft()
-            move, fp = serial[k], prints[k]
+            move = serial[k]
+            fp = prints.get(k)
+            if fp is None:
+                fp = prints[k] = _footprint(move)
             ready = (
                 move.module not in busy
                 and not (fp & blocked)
@@ -423,6 +428,7 @@ def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] 
             if ready and not is_cut(static, move.src):
                 static.discard(move.src)
                 chosen.append(k)
+                del prints[k]
                 last = scanned
             else:
                 rest.append(k)
