@@ -4,7 +4,7 @@ import random
 
 import pytest
 
-from hexbot.planning.checker import check_plan, pieces
+from hexbot.planning.checker import check_plan, pieces, still_one_piece
 from hexbot.planning.configuration import (
     Configuration,
     articulation_points,
@@ -87,3 +87,22 @@ def test_cut_vertices_and_pieces_agree_with_removal(seed):
     assert articulation_points(cells) == articulation_points_by_removal(cells)
     loose = set(rng.sample(sorted(cells), len(cells) // 2))
     assert pieces(loose) == components(loose)
+
+
+@pytest.mark.parametrize("seed", range(40))
+def test_the_local_connectivity_test_agrees_with_counting_pieces(seed):
+    # blobs with holes and thin parts; remove 1-4 modules, near each other or apart
+    rng = random.Random(seed)
+    cells = set(random_blob(rng.randint(5, 120), seed, compact=rng.random()))
+    for _ in range(30):
+        some = rng.sample(sorted(cells), rng.randint(1, min(4, len(cells) - 1)))
+        removed = set(some)
+        assert still_one_piece(cells, removed) == (pieces(cells - removed) == 1), removed
+
+
+def test_a_step_that_cuts_a_chain_far_from_the_rest_is_caught():
+    # a long chain: removing its middle splits it, though both halves are big
+    chain = {(x, 0) for x in range(60)}
+    assert not still_one_piece(chain, {(30, 0)})
+    assert still_one_piece(chain, {(59, 0)})
+    assert still_one_piece(chain | {(x, 1) for x in range(60)}, {(30, 0)})
