@@ -215,17 +215,25 @@ static PyObject *Cluster_get_threads(ClusterObject *self, void *closure)
 	return PyLong_FromLong(self->c->threads);
 }
 
+/* A whole-number attribute being set while no run is under way: 0 and *out,
+ * or -1 with the Python error set. */
+static int long_to_set(ClusterObject *self, PyObject *value, const char *name, long *out)
+{
+	if (!value) {
+		PyErr_Format(PyExc_AttributeError, "%s cannot be deleted", name);
+		return -1;
+	}
+	*out = PyLong_AsLong(value);
+	if (*out == -1 && PyErr_Occurred())
+		return -1;
+	return idle_or_fail(self);
+}
+
 static int Cluster_set_threads(ClusterObject *self, PyObject *value, void *closure)
 {
 	(void)closure;
-	if (!value) {
-		PyErr_SetString(PyExc_AttributeError, "threads cannot be deleted");
-		return -1;
-	}
-	long threads = PyLong_AsLong(value);
-	if (threads == -1 && PyErr_Occurred())
-		return -1;
-	if (idle_or_fail(self) < 0)
+	long threads;
+	if (long_to_set(self, value, "threads", &threads) < 0)
 		return -1;
 	return set_threads(self, threads);
 }
@@ -241,14 +249,8 @@ static PyObject *Cluster_get_min_per_thread(ClusterObject *self, void *closure)
 static int Cluster_set_min_per_thread(ClusterObject *self, PyObject *value, void *closure)
 {
 	(void)closure;
-	if (!value) {
-		PyErr_SetString(PyExc_AttributeError, "min_mcus_per_thread cannot be deleted");
-		return -1;
-	}
-	long v = PyLong_AsLong(value);
-	if (v == -1 && PyErr_Occurred())
-		return -1;
-	if (idle_or_fail(self) < 0)
+	long v;
+	if (long_to_set(self, value, "min_mcus_per_thread", &v) < 0)
 		return -1;
 	if (v < 1 || v > 1000000) {
 		PyErr_Format(PyExc_ValueError, "min_mcus_per_thread must be >= 1, not %ld", v);
