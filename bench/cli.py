@@ -19,6 +19,8 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
     "isp": ("hexbot.bench.isp", "the STK500v2 engine and ATmega162 ISP model, no I/O"),
     "host": ("hexbot.bench.host", "capture writing, replay, console rendering (JSON)"),
     "planning": ("hexbot.bench.planning", "hex reconfiguration planners: time and moves"),
+    "surface": ("hexbot.bench.surface",
+                "where a module can roll: surface segments of the planning bench's shapes"),
     "locomotion": ("hexbot.bench.locomotion", "square-lattice locomotion engine (JSON)"),
     "ir-noise": ("hexbot.bench.ir_noise",
                  "wrong and lost commands on a noisy IR link, legacy vs MAVLink"),

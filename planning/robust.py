@@ -114,17 +114,10 @@ class _State:
 
 def _void_distances(state: _State, voids: set[Cell]) -> dict[Cell, int]:
     """Rotations needed to reach the nearest void from each empty cell, with every
-    module fixed (rotations are reversible with the same swept cells, so a
-    search outward from the voids gives the distance towards them)."""
-    dist = dict.fromkeys(voids, 0)
-    queue = deque(sorted(voids))
-    while queue:
-        cell = queue.popleft()
-        for _, _, goal in _moves_from(cell, state.occupied, cell):
-            if goal not in dist:
-                dist[goal] = dist[cell] + 1
-                queue.append(goal)
-    return dist
+    module fixed."""
+    from hexbot.planning.surface import rolling_distances
+
+    return rolling_distances(state.occupied, voids)
 
 
 def fillable(goal: frozenset[Cell], voids: set[Cell]) -> set[Cell]:

@@ -70,3 +70,14 @@ def test_sim_benchmark_says_where_ir_is_routed(capsys, ir):
     assert size["wave"]["simulated_s"] > 20  # the localization window ran
     # busy is also measured in CPU time, against raw simavr's CPU time
     assert size["busy"]["cycles_per_cpu_s"] > 0 and size["busy"]["vs_raw_cpu"] > 0
+
+
+def test_surface_benchmark_counts_segments(capsys):
+    assert main(["bench", "surface", "--sizes", "100", "--seeds", "1", "--json"]) == 0
+    rows = [json.loads(line) for line in capsys.readouterr().out.splitlines()]
+    by_shape = {r["shape"]: r for r in rows}
+    assert by_shape["ball"]["segments"] == 1 and by_shape["ball"]["largest_share"] == 1.0
+    assert by_shape["blob 0 goal"]["segments"] > 1
+    assert sum(r["modules"] == 100 for r in rows) == 6
+    with pytest.raises(SystemExit):
+        main(["bench", "surface", "--seeds", "0"])

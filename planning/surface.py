@@ -1,0 +1,70 @@
+"""Where a module can roll: the surface of a configuration as Table 4-3 sees it.
+
+A module travels over the others by rotations, each about a joint it shares
+with a substrate, over a goal cell and three swept cells that must be empty.
+With every other module fixed, the empty cells it can reach from one cell
+form a *segment* of the surface. A smooth shape (a parallelogram, a compact
+ball) has one segment all around it; a rough one is cut into many, because
+a 120-degree rotation cannot cross the mouth of a one-cell inlet (the two
+cells at the mouth share no module to turn about, and the inlet cell itself
+has four occupied sides, so no rotation enters it).
+
+This is what makes a "surface flow" planner non-local on random shapes: a
+module can only reach the cells of its own segment, so a local plan must
+first open the inlets between the cells to leave and the cells to fill
+(docs/planning.md, "Why the surface flow is not local yet").
+"""
+
+from __future__ import annotations
+
+from collections import deque
+from collections.abc import Iterable
+
+from hexbot.planning.hexlattice import Cell, neighbors
+from hexbot.planning.robust import _moves_from
+
+
+def rolling_distances(occupied: set[Cell] | frozenset[Cell],
+                      sources: Iterable[Cell]) -> dict[Cell, int]:
+    """Rotations needed to roll from the nearest of ``sources`` (empty cells) to
+    every empty cell reachable from them, with every module in ``occupied`` fixed.
+
+    Rotations are reversible over the same cells, so these are also the
+    distances *towards* the sources.
+    """
+    start = sorted(set(sources))
+    dist = dict.fromkeys(start, 0)
+    queue = deque(start)
+    while queue:
+        cell = queue.popleft()
+        for _, _, goal in _moves_from(cell, occupied, cell):
+            if goal not in dist:
+                dist[goal] = dist[cell] + 1
+                queue.append(goal)
+    return dist
+
+
+def border(occupied: set[Cell] | frozenset[Cell]) -> set[Cell]:
+    """Empty cells touching at least one module."""
+    return {n for c in occupied for n in neighbors(c) if n not in occupied}
+
+
+def surface_segments(occupied: set[Cell] | frozenset[Cell]) -> list[set[Cell]]:
+    """The border cells grouped by where a module can roll between them (largest first).
+
+    A border cell no rotation can leave (an inlet) is a segment of its own.
+    Only border cells are returned; rolling never leaves the border anyway
+    (the substrate touches the goal cell).
+    """
+    occupied = set(occupied)
+    cells = border(occupied)
+    seen: set[Cell] = set()
+    segments: list[set[Cell]] = []
+    for cell in sorted(cells):
+        if cell in seen:
+            continue
+        segment = set(rolling_distances(occupied, [cell])) & cells
+        seen |= segment
+        segments.append(segment)
+    segments.sort(key=lambda s: (-len(s), min(s)))
+    return segments
