@@ -38,7 +38,7 @@ from hexbot.errors import HexBotError
 from hexbot.hil_sim.scenario_gen import generate
 from hexbot.hil_sim.simulator import Simulator
 from hexbot.protocol.frames import encode_pc, make, select
-from hexbot.protocol.timing import LOCALIZE_WINDOW_S, boot_seconds
+from hexbot.protocol.timing import LOCALIZE_WINDOW_S, TICK_TRUE_S, boot_seconds
 
 BUSY_CYCLES = 100_000  # per MCU, for the CPU-bound case
 
@@ -84,6 +84,28 @@ def _rates(mcus: int, simulated: float, wall: float, cpu: float, hz: int) -> dic
             "cores_used": round(cpu / wall, 2)}
 
 
+def _sleep_stats(cluster) -> list[tuple[str, dict]]:
+    return [(cluster.name(i), cluster.sleep_stats(i)) for i in range(cluster.mcu_count)]
+
+
+def _awake_per_tick(before: list, after: list, hz: int) -> dict:
+    """Per board kind (comm, control, ...): the firmware's awake (not
+    sleeping) cycles and its wake-ups per MCU per 10 ms tick, between two
+    ``_sleep_stats`` readings. What the simulator executes per idle tick."""
+    sums: dict[str, list[float]] = {}
+    for (name, a), (_, b) in zip(before, after, strict=True):
+        kind = name.rstrip("0123456789")
+        ticks = (b["cycle"] - a["cycle"]) / (hz * TICK_TRUE_S)  # a tick is 9,984 of the MCU's own cycles
+        awake = (b["cycle"] - a["cycle"]) - (b["slept_cycles"] - a["slept_cycles"])
+        entry = sums.setdefault(kind, [0.0, 0.0, 0.0])
+        entry[0] += awake
+        entry[1] += b["sleeps"] - a["sleeps"]
+        entry[2] += ticks
+    return {kind: {"awake_cycles_per_tick": round(awake / ticks, 1),
+                   "wakeups_per_tick": round(sleeps / ticks, 2)}
+            for kind, (awake, sleeps, ticks) in sorted(sums.items())}
+
+
 def _start_wave(sim: Simulator) -> None:
     """Reference on module 1, everyone selected; the ACKs of Select(0) are not awaited."""
     sim.pc_write(encode_pc(select([1])))
@@ -101,9 +123,13 @@ def measure_size(count: int, seconds: float, busy_elf: str, threads: int = 1,
     mcus = 2 * count
     sim = Simulator(generate("blob", count, seed=1), threads=threads, ir_in_c=ir == "core")
     boot = _rates(mcus, *_timed(sim, lambda s: s.run(boot_seconds(ids))), sim.hz)
+    stats = _sleep_stats(sim.cluster)
     idle = _rates(mcus, *_timed(sim, lambda s: s.run(seconds)), sim.hz)
+    idle["firmware"] = _awake_per_tick(stats, _sleep_stats(sim.cluster), sim.hz)
     _start_wave(sim)
+    stats = _sleep_stats(sim.cluster)
     wave = _rates(mcus, *_timed(sim, lambda s: s.run(LOCALIZE_WINDOW_S)), sim.hz)
+    wave["firmware"] = _awake_per_tick(stats, _sleep_stats(sim.cluster), sim.hz)
     cluster = type(sim.cluster)(sim.cluster.quantum_cycles, threads=threads)
     for i in range(mcus):
         cluster.add_mcu(busy_elf, f"busy{i}")
