@@ -89,14 +89,17 @@ void sys_idle_until(tick_t due, uint8_t mark)
     cli();
     uint8_t start = (uint8_t)ticks;
     /* Checked with interrupts off; SEI lets SLEEP run before any interrupt,
-     * so an interrupt cannot slip in between the check and the sleep. */
-    while (sys_io_events == mark) {
-        sei();
-        sleep_cpu();
-        cli();
+     * so none can slip in between the check and the sleep. On the part the
+     * interrupt that wakes us runs right after SLEEP; simavr 1.6 runs one
+     * more instruction first (it delays interrupts by two instructions
+     * after SEI), so that instruction must not be CLI, or a tick pending at
+     * SEI would never run: hence the NOP. */
+    for (;;) {
         tick_t now = ticks;
-        if ((int16_t)(now - due) >= 0 || (uint8_t)((uint8_t)now - start) >= SYS_IDLE_MAX_TICKS)
+        if (sys_io_events != mark || (int16_t)(now - due) >= 0 ||
+            (uint8_t)((uint8_t)now - start) >= SYS_IDLE_MAX_TICKS)
             break;
+        __asm__ __volatile__("sei\n\tsleep\n\tnop\n\tcli" ::: "memory");
     }
     sei();
     sleep_disable();

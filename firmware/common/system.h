@@ -48,9 +48,8 @@ extern volatile uint8_t sys_io_events;
 
 /** Sleep (idle mode) until an interrupt other than the tick has run since
  *  @p mark was read from sys_io_events, or until tick_now() reaches @p due,
- *  or SYS_IDLE_MAX_TICKS have passed. Returns at once if the interrupt came
- *  already; otherwise sleeps at least until the next interrupt, as
- *  sys_idle(). Feeds the watchdog once. */
+ *  or SYS_IDLE_MAX_TICKS have passed; returns at once if one of these holds
+ *  already. Feeds the watchdog once. */
 void sys_idle_until(tick_t due, uint8_t mark);
 
 /** The earlier of two ticks (both within 327 s of each other). */
