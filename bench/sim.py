@@ -15,7 +15,10 @@ firmware images, the whole Python loop: IR medium, plant, pin logs):
 Reference: raw simavr (its own run loop, stock atmega128 core) on one MCU
 in the same CPU-bound loop, measured in the same run (bench/raw_simavr.c).
 Each case is the best of --repeat runs (the machine is shared); the peak
-resident memory of the process is read after each size.
+resident memory of the process is read after each size. Idle and wave also
+report, per board (comm, control), the firmware's awake (not sleeping)
+cycles and SLEEPs per MCU per 10 ms tick, counted by the core: what the
+simulator has to execute, independent of the machine.
 --ir python routes IR bytes between modules in the Python medium (as before
 the core's medium, and as with fault injection), for a comparison. Every case runs its
 quanta on --threads host threads (default 1); the 1-minute load average at
@@ -95,7 +98,8 @@ def _awake_per_tick(before: list, after: list, hz: int) -> dict:
     sums: dict[str, list[float]] = {}
     for (name, a), (_, b) in zip(before, after, strict=True):
         kind = name.rstrip("0123456789")
-        ticks = (b["cycle"] - a["cycle"]) / (hz * TICK_TRUE_S)  # a tick is 9,984 of the MCU's own cycles
+        # a tick is 9,984 of the MCU's own cycles, whatever its clock
+        ticks = (b["cycle"] - a["cycle"]) / (hz * TICK_TRUE_S)
         awake = (b["cycle"] - a["cycle"]) - (b["slept_cycles"] - a["slept_cycles"])
         entry = sums.setdefault(kind, [0.0, 0.0, 0.0])
         entry[0] += awake
@@ -179,6 +183,11 @@ def measure(sizes: list[int], seconds: float, repeat: int = 1, threads: int = 1,
             "load_avg_1min": [load_start, round(os.getloadavg()[0], 2)], "sizes": results}
 
 
+def _firmware_cost(case: dict) -> str:
+    fw = case["firmware"]
+    return ", ".join(f"{fw[k]['awake_cycles_per_tick']:.0f}" for k in ("comm", "control"))
+
+
 def run(args: argparse.Namespace) -> int:
     if args.seconds <= 0:
         raise HexBotError(f"--seconds must be positive, not {args.seconds}")
@@ -199,11 +208,12 @@ def run(args: argparse.Namespace) -> int:
           f"{result['threads']} thread(s) on {result['cpu_count']} cores, load average "
           f"{result['load_avg_1min'][0]} -> {result['load_avg_1min'][1]}")
     print("modules  idle x  boot x  wave x  busy/MCU vs raw  busy vs raw, CPU time  "
-          "peak MB  cores used (idle, busy)")
+          "peak MB  cores used (idle, busy)  idle awake cycles/tick (comm, control)")
     for r in result["sizes"]:
         print(f"{r['modules']:7} {r['idle']['realtime_factor']:7.1f} "
               f"{r['boot']['realtime_factor']:7.1f} {r['wave']['realtime_factor']:7.1f} "
               f"{r['busy']['vs_raw']:16.3f} {r['busy']['vs_raw_cpu']:22.3f} "
               f"{r['peak_rss_mb']:8}  "
-              f"{r['idle']['cores_used']:.2f}, {r['busy']['cores_used']:.2f}")
+              f"{r['idle']['cores_used']:.2f}, {r['busy']['cores_used']:.2f}"
+              f"{_firmware_cost(r['idle']):>28}")
     return 0
