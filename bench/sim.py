@@ -1,7 +1,7 @@
 """``hexbot bench sim``: simulator throughput by cluster size, measured now.
 
     hexbot bench sim [--json] [--sizes 7,50,200,255] [--seconds S] [--repeat N]
-                     [--ir core|python] [--threads T]
+                     [--ir core|python] [--threads T] [--firmware DIR]
 
 For each size N, a generated blob of N modules (``blob:N``, the real
 firmware images, the whole Python loop: IR medium, plant, pin logs):
@@ -35,6 +35,7 @@ import json
 import os
 import resource
 import time
+from pathlib import Path
 
 from hexbot.bench.raw import avr_program, raw_simavr_times
 from hexbot.errors import HexBotError
@@ -61,6 +62,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--threads", type=int, default=1,
         help="host threads per quantum in every case (default 1)",
+    )
+    parser.add_argument(
+        "--firmware", default=None, metavar="DIR",
+        help="a firmware build folder with comm.elf and control.elf (default: "
+             "firmware/build), to compare one build against another",
     )
 
 
@@ -122,10 +128,13 @@ def _start_wave(sim: Simulator) -> None:
 
 
 def measure_size(count: int, seconds: float, busy_elf: str, threads: int = 1,
-                 ir: str = "core") -> dict:
+                 ir: str = "core", firmware: str | None = None) -> dict:
     ids = range(1, count + 1)
     mcus = 2 * count
-    sim = Simulator(generate("blob", count, seed=1), threads=threads, ir_in_c=ir == "core")
+    scenario = generate("blob", count, seed=1)
+    if firmware:
+        scenario = scenario.with_firmware(Path(firmware))
+    sim = Simulator(scenario, threads=threads, ir_in_c=ir == "core")
     boot = _rates(mcus, *_timed(sim, lambda s: s.run(boot_seconds(ids))), sim.hz)
     stats = _sleep_stats(sim.cluster)
     idle = _rates(mcus, *_timed(sim, lambda s: s.run(seconds)), sim.hz)
@@ -161,7 +170,7 @@ def _best(runs: list[dict]) -> dict:
 
 
 def measure(sizes: list[int], seconds: float, repeat: int = 1, threads: int = 1,
-            ir: str = "core") -> dict:
+            ir: str = "core", firmware: str | None = None) -> dict:
     busy162, busy128 = avr_program("cpuloop", "atmega162"), avr_program("cpuloop", "atmega128")
     raw_cycles = 20_000_000
     times = [raw_simavr_times(busy128, "atmega128", raw_cycles) for _ in range(repeat)]
@@ -170,7 +179,7 @@ def measure(sizes: list[int], seconds: float, repeat: int = 1, threads: int = 1,
     results = []
     load_start = round(os.getloadavg()[0], 2)
     for count in sizes:
-        best = _best([measure_size(count, seconds, busy162, threads, ir)
+        best = _best([measure_size(count, seconds, busy162, threads, ir, firmware)
                       for _ in range(repeat)])
         # per-MCU cycles on one core, against raw simavr's one MCU
         best["busy"]["vs_raw"] = round(best["busy"]["cycles_per_mcu_per_s"] / raw, 3)
@@ -200,7 +209,9 @@ def run(args: argparse.Namespace) -> int:
     except ValueError:
         raise HexBotError(
             f"--sizes takes numbers separated by commas, not {args.sizes!r}") from None
-    result = measure(sizes, args.seconds, args.repeat, args.threads, args.ir)
+    if args.firmware and not (Path(args.firmware) / "comm.elf").is_file():
+        raise HexBotError(f"--firmware {args.firmware}: no comm.elf there")
+    result = measure(sizes, args.seconds, args.repeat, args.threads, args.ir, args.firmware)
     if args.json:
         print(json.dumps(result))
         return 0
