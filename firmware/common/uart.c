@@ -73,7 +73,6 @@ ISR(USART1_RXC_vect)
 ISR(USART0_UDRE_vect)
 {
     int16_t b = ring_get(&port[0].tx);
-    sys_io_events++; /* a slot freed (or the ring ran dry): wake sys_idle_until() */
     if (b < 0) {
         UCSR0B &= (uint8_t)~(1 << UDRIE0);
         return;
@@ -81,12 +80,12 @@ ISR(USART0_UDRE_vect)
     UCSR0A = (1 << TXC0); /* clear "transmit complete" for this byte */
     UDR0 = (uint8_t)b;
     port[0].sent = 1;
+    sys_io_events++; /* a slot freed: wake sys_idle_until() (uart_putc waits for it) */
 }
 
 ISR(USART1_UDRE_vect)
 {
     int16_t b = ring_get(&port[1].tx);
-    sys_io_events++;
     if (b < 0) {
         UCSR1B &= (uint8_t)~(1 << UDRIE1);
         return;
@@ -94,6 +93,7 @@ ISR(USART1_UDRE_vect)
     UCSR1A = (1 << TXC1);
     UDR1 = (uint8_t)b;
     port[1].sent = 1;
+    sys_io_events++;
 }
 
 int16_t uart_getc(uint8_t u)
