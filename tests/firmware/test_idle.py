@@ -8,6 +8,8 @@ import subprocess
 
 from fwsim import BUILD, Bench
 
+from hexbot.hil_sim.module import decode_actuators
+from hexbot.hil_sim.plant import OFF
 from hexbot.protocol.timing import TICK_TRUE_S
 
 #: Awake cycles per idle tick: the tick interrupt and one check of the
@@ -62,3 +64,24 @@ def test_watchdog_resets_a_main_loop_that_stops_coming_back(single: Bench):
     single.run(1.5)  # watchdog 2 s (WDTO_2S) after the last feed
     # reset: the boot text again (the patch stays in flash, so it hangs again)
     assert b"CTR. BOARD READY" in single.debug_read(1)
+
+
+def magnets_on(bench: Bench) -> bool:
+    """Any magnet of module 1's control board energised (PORTx, read from the core)."""
+    ports = {p: bench.sim.modules[1].control.port(p)[1] for p in "ABD"}
+    _, magnets = decode_actuators(ports)
+    return any(m != OFF for m in magnets)
+
+
+def test_a_half_frame_expires_on_its_tick_while_the_board_sleeps(single: Bench):
+    # The control board's error path (a half board frame: everything off)
+    # runs at the tick the inter-byte time-out names, 3 ticks (> 30 ms,
+    # <= 40 ms) after the last byte, although no byte wakes the board then.
+    single.debug_write(1, b"*\x0b\x02NNN#")  # SxP(2)
+    single.run(0.05)
+    assert magnets_on(single)
+    single.debug_write(1, b"*\x01\x02NN")  # half a frame: 5 bytes, 10.4 ms at 4800 baud
+    single.run(0.0104 + 0.029)
+    assert magnets_on(single)  # not abandoned early
+    single.run(0.013)
+    assert not magnets_on(single)  # abandoned within the 4th tick
