@@ -1,7 +1,7 @@
 """``hexbot bench sim``: simulator throughput by cluster size, measured now.
 
     hexbot bench sim [--json] [--sizes 7,50,200,255] [--seconds S] [--repeat N]
-                     [--ir core|python] [--threads T]
+                     [--ir core|python] [--threads T] [--firmware DIR]
 
 For each size N, a generated blob of N modules (``blob:N``, the real
 firmware images, the whole Python loop: IR medium, plant, pin logs):
@@ -15,7 +15,10 @@ firmware images, the whole Python loop: IR medium, plant, pin logs):
 Reference: raw simavr (its own run loop, stock atmega128 core) on one MCU
 in the same CPU-bound loop, measured in the same run (bench/raw_simavr.c).
 Each case is the best of --repeat runs (the machine is shared); the peak
-resident memory of the process is read after each size.
+resident memory of the process is read after each size. Idle and wave also
+report, per board (comm, control), the firmware's awake (not sleeping)
+cycles and SLEEPs per MCU per 10 ms tick, counted by the core: what the
+simulator has to execute, independent of the machine.
 --ir python routes IR bytes between modules in the Python medium (as before
 the core's medium, and as with fault injection), for a comparison. Every case runs its
 quanta on --threads host threads (default 1); the 1-minute load average at
@@ -32,13 +35,14 @@ import json
 import os
 import resource
 import time
+from pathlib import Path
 
 from hexbot.bench.raw import avr_program, raw_simavr_times
 from hexbot.errors import HexBotError
 from hexbot.hil_sim.scenario_gen import generate
 from hexbot.hil_sim.simulator import Simulator
 from hexbot.protocol.frames import encode_pc, make, select
-from hexbot.protocol.timing import LOCALIZE_WINDOW_S, boot_seconds
+from hexbot.protocol.timing import LOCALIZE_WINDOW_S, TICK_TRUE_S, boot_seconds
 
 BUSY_CYCLES = 100_000  # per MCU, for the CPU-bound case
 
@@ -58,6 +62,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--threads", type=int, default=1,
         help="host threads per quantum in every case (default 1)",
+    )
+    parser.add_argument(
+        "--firmware", default=None, metavar="DIR",
+        help="a firmware build folder with comm.elf and control.elf (default: "
+             "firmware/build), to compare one build against another",
     )
 
 
@@ -84,6 +93,29 @@ def _rates(mcus: int, simulated: float, wall: float, cpu: float, hz: int) -> dic
             "cores_used": round(cpu / wall, 2)}
 
 
+def _sleep_stats(cluster) -> list[tuple[str, dict]]:
+    return [(cluster.name(i), cluster.sleep_stats(i)) for i in range(cluster.mcu_count)]
+
+
+def _awake_per_tick(before: list, after: list, hz: int) -> dict:
+    """Per board kind (comm, control, ...): the firmware's awake (not
+    sleeping) cycles and its wake-ups per MCU per 10 ms tick, between two
+    ``_sleep_stats`` readings. What the simulator executes per idle tick."""
+    sums: dict[str, list[float]] = {}
+    for (name, a), (_, b) in zip(before, after, strict=True):
+        kind = name.rstrip("0123456789")
+        # a tick is 9,984 of the MCU's own cycles, whatever its clock
+        ticks = (b["cycle"] - a["cycle"]) / (hz * TICK_TRUE_S)
+        awake = (b["cycle"] - a["cycle"]) - (b["slept_cycles"] - a["slept_cycles"])
+        entry = sums.setdefault(kind, [0.0, 0.0, 0.0])
+        entry[0] += awake
+        entry[1] += b["sleeps"] - a["sleeps"]
+        entry[2] += ticks
+    return {kind: {"awake_cycles_per_tick": round(awake / ticks, 1),
+                   "wakeups_per_tick": round(sleeps / ticks, 2)}
+            for kind, (awake, sleeps, ticks) in sorted(sums.items())}
+
+
 def _start_wave(sim: Simulator) -> None:
     """Reference on module 1, everyone selected; the ACKs of Select(0) are not awaited."""
     sim.pc_write(encode_pc(select([1])))
@@ -96,14 +128,21 @@ def _start_wave(sim: Simulator) -> None:
 
 
 def measure_size(count: int, seconds: float, busy_elf: str, threads: int = 1,
-                 ir: str = "core") -> dict:
+                 ir: str = "core", firmware: str | None = None) -> dict:
     ids = range(1, count + 1)
     mcus = 2 * count
-    sim = Simulator(generate("blob", count, seed=1), threads=threads, ir_in_c=ir == "core")
+    scenario = generate("blob", count, seed=1)
+    if firmware:
+        scenario = scenario.with_firmware(Path(firmware))
+    sim = Simulator(scenario, threads=threads, ir_in_c=ir == "core")
     boot = _rates(mcus, *_timed(sim, lambda s: s.run(boot_seconds(ids))), sim.hz)
+    stats = _sleep_stats(sim.cluster)
     idle = _rates(mcus, *_timed(sim, lambda s: s.run(seconds)), sim.hz)
+    idle["firmware"] = _awake_per_tick(stats, _sleep_stats(sim.cluster), sim.hz)
     _start_wave(sim)
+    stats = _sleep_stats(sim.cluster)
     wave = _rates(mcus, *_timed(sim, lambda s: s.run(LOCALIZE_WINDOW_S)), sim.hz)
+    wave["firmware"] = _awake_per_tick(stats, _sleep_stats(sim.cluster), sim.hz)
     cluster = type(sim.cluster)(sim.cluster.quantum_cycles, threads=threads)
     for i in range(mcus):
         cluster.add_mcu(busy_elf, f"busy{i}")
@@ -131,7 +170,7 @@ def _best(runs: list[dict]) -> dict:
 
 
 def measure(sizes: list[int], seconds: float, repeat: int = 1, threads: int = 1,
-            ir: str = "core") -> dict:
+            ir: str = "core", firmware: str | None = None) -> dict:
     busy162, busy128 = avr_program("cpuloop", "atmega162"), avr_program("cpuloop", "atmega128")
     raw_cycles = 20_000_000
     times = [raw_simavr_times(busy128, "atmega128", raw_cycles) for _ in range(repeat)]
@@ -140,7 +179,7 @@ def measure(sizes: list[int], seconds: float, repeat: int = 1, threads: int = 1,
     results = []
     load_start = round(os.getloadavg()[0], 2)
     for count in sizes:
-        best = _best([measure_size(count, seconds, busy162, threads, ir)
+        best = _best([measure_size(count, seconds, busy162, threads, ir, firmware)
                       for _ in range(repeat)])
         # per-MCU cycles on one core, against raw simavr's one MCU
         best["busy"]["vs_raw"] = round(best["busy"]["cycles_per_mcu_per_s"] / raw, 3)
@@ -151,6 +190,11 @@ def measure(sizes: list[int], seconds: float, repeat: int = 1, threads: int = 1,
     return {"raw_simavr_cycles_per_s": raw, "raw_simavr_cycles_per_cpu_s": raw_cpu,
             "threads": threads, "cpu_count": os.cpu_count(),
             "load_avg_1min": [load_start, round(os.getloadavg()[0], 2)], "sizes": results}
+
+
+def _firmware_cost(case: dict) -> str:
+    fw = case["firmware"]
+    return ", ".join(f"{fw[k]['awake_cycles_per_tick']:.0f}" for k in ("comm", "control"))
 
 
 def run(args: argparse.Namespace) -> int:
@@ -165,7 +209,9 @@ def run(args: argparse.Namespace) -> int:
     except ValueError:
         raise HexBotError(
             f"--sizes takes numbers separated by commas, not {args.sizes!r}") from None
-    result = measure(sizes, args.seconds, args.repeat, args.threads, args.ir)
+    if args.firmware and not (Path(args.firmware) / "comm.elf").is_file():
+        raise HexBotError(f"--firmware {args.firmware}: no comm.elf there")
+    result = measure(sizes, args.seconds, args.repeat, args.threads, args.ir, args.firmware)
     if args.json:
         print(json.dumps(result))
         return 0
@@ -173,11 +219,12 @@ def run(args: argparse.Namespace) -> int:
           f"{result['threads']} thread(s) on {result['cpu_count']} cores, load average "
           f"{result['load_avg_1min'][0]} -> {result['load_avg_1min'][1]}")
     print("modules  idle x  boot x  wave x  busy/MCU vs raw  busy vs raw, CPU time  "
-          "peak MB  cores used (idle, busy)")
+          "peak MB  cores used (idle, busy)  idle awake cycles/tick (comm, control)")
     for r in result["sizes"]:
         print(f"{r['modules']:7} {r['idle']['realtime_factor']:7.1f} "
               f"{r['boot']['realtime_factor']:7.1f} {r['wave']['realtime_factor']:7.1f} "
               f"{r['busy']['vs_raw']:16.3f} {r['busy']['vs_raw_cpu']:22.3f} "
               f"{r['peak_rss_mb']:8}  "
-              f"{r['idle']['cores_used']:.2f}, {r['busy']['cores_used']:.2f}")
+              f"{r['idle']['cores_used']:.2f}, {r['busy']['cores_used']:.2f}"
+              f"{_firmware_cost(r['idle']):>28}")
     return 0

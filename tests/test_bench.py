@@ -70,6 +70,12 @@ def test_sim_benchmark_says_where_ir_is_routed(capsys, ir):
     assert size["wave"]["simulated_s"] > 20  # the localization window ran
     # busy is also measured in CPU time, against raw simavr's CPU time
     assert size["busy"]["cycles_per_cpu_s"] > 0 and size["busy"]["vs_raw_cpu"] > 0
+    # the firmware's own cost per tick, per board: idle sleeps through the ticks
+    idle = size["idle"]["firmware"]
+    assert set(idle) == {"comm", "control"}
+    assert all(0 < b["awake_cycles_per_tick"] < 100 for b in idle.values()), idle
+    assert all(0.9 < b["wakeups_per_tick"] < 1.1 for b in idle.values()), idle
+    assert set(size["wave"]["firmware"]) == {"comm", "control"}
 
 
 def test_surface_benchmark_counts_segments(capsys):

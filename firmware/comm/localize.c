@@ -172,6 +172,6 @@ loc_result_t localize_run(tick_t started)
         teach(started, heard_on);
     comm_ir_select(IR_CENTRE);
     while (!deadline_passed(started))
-        sys_idle();
+        sys_idle_until((tick_t)(started + HB_LOC_WINDOW_TICKS), sys_io_events);
     return result;
 }

@@ -131,6 +131,15 @@ static void poll_ir(void)
     }
 }
 
+/* The earlier of @p due and the next tick at which poll_ir() (and so
+ * poll_inputs()) has something to do without a new byte: a half frame's
+ * time-out. Sending the boot text waits for transmit slots, which wake
+ * sys_idle_until() as bytes do. */
+static tick_t ir_due(tick_t due)
+{
+    return mav_due(last_ir_byte, frame_due(&pc_rx, due));
+}
+
 /* Keep both links moving; 1 when a PC frame waits in the inbox. */
 static uint8_t poll_inputs(void)
 {
@@ -144,7 +153,7 @@ static uint8_t poll_inputs(void)
 /* Sequence delay that gives way to a new PC command. */
 static uint8_t wait_or_abort(tick_t n)
 {
-    return sys_delay_polling(n, poll_inputs);
+    return sys_delay_polling(n, poll_inputs, ir_due);
 }
 
 /* Forward a control-board function; returns the echo, HB_TIMEOUT, or the
@@ -159,10 +168,11 @@ static uint8_t forward(uint8_t code, const uint8_t *a)
     uart_putc(CTRL, HB_END);
     tick_t start = tick_now();
     while (tick_since(start) < HB_CONTROL_ACK_TIMEOUT_TICKS) {
+        uint8_t mark = sys_io_events;
         poll_ir();
         int16_t b = uart_getc(CTRL);
         if (b < 0) {
-            sys_idle();
+            sys_idle_until(ir_due((tick_t)(start + HB_CONTROL_ACK_TIMEOUT_TICKS)), mark);
             continue;
         }
         if (b == code)
@@ -338,8 +348,10 @@ static uint8_t handshake(void)
     uint8_t texts = BOOT_COMM_LISTENING;
     tick_t start = tick_now();
     while (!control_ready && tick_since(start) < HANDSHAKE_TICKS) {
+        uint8_t mark = sys_io_events;
         poll_inputs();
-        sys_idle();
+        if (!control_ready)
+            sys_idle_until(ir_due((tick_t)(start + HANDSHAKE_TICKS)), mark);
     }
     if (control_ready) {
         leds_run(HB_FN_LFLASH1, flash_args);
@@ -347,12 +359,16 @@ static uint8_t handshake(void)
         start = tick_now();
         tick_t last = start;
         while (!g_state.control_up && tick_since(start) < HANDSHAKE_TICKS) {
+            uint8_t mark = sys_io_events;
             if (tick_since(last) >= HANDSHAKE_RETRY_TICKS) {
                 uart_putc(CTRL, HB_LINK_READY);
                 last = tick_now();
             }
             poll_inputs();
-            sys_idle();
+            if (!g_state.control_up)
+                sys_idle_until(ir_due(tick_earlier((tick_t)(start + HANDSHAKE_TICKS),
+                                                   (tick_t)(last + HANDSHAKE_RETRY_TICKS))),
+                               mark);
         }
     }
     if (g_state.control_up) {
@@ -374,16 +390,19 @@ static void __attribute__((noinline)) boot(void)
     uint8_t rank = g_state.id ? (uint8_t)((g_state.id - 1u) % HB_BOOT_SLOTS) : 0u;
     tick_t at = HB_BOOT_FIRST_SLOT_TICKS + (tick_t)rank * BOOT_SLOT_TICKS;
     while ((int16_t)(tick_now() - at) < 0) { /* ticks count from reset */
+        uint8_t mark = sys_io_events;
         poll_inputs();
-        sys_idle();
+        sys_idle_until(ir_due(at), mark);
     }
     boot_left = reply_boot_text(text, texts);
     boot_next = text;
     leds_run(HB_FN_LCOLOR, flash_args);
     tick_t start = tick_now();
     while (boot_left && tick_since(start) < BOOT_SLOT_TICKS) {
+        uint8_t mark = sys_io_events;
         poll_inputs();
-        sys_idle();
+        if (boot_left)
+            sys_idle_until(ir_due((tick_t)(start + BOOT_SLOT_TICKS)), mark);
     }
     boot_left = 0; /* text[] is about to go */
     uart_flush(IR);
@@ -398,19 +417,27 @@ int main(void)
     frame_init(&pc_rx, HB_PC_FRAME_LEN, HB_PC_BYTE_TIMEOUT_TICKS);
     g_state.role = HB_ROLE_MOBILE;
     leds_init(wait_or_abort);
-    reply_init(poll_inputs);
+    reply_init(poll_inputs, ir_due);
 
     boot();
     inbox_clear(); /* nothing sent during boot is for us */
 
+    /* Idle: sleep through the ticks until a byte comes or a time-out is due
+     * (docs/firmware.md, "The idle path"). */
     for (;;) {
+        uint8_t mark = sys_io_events;
         inbox_entry_t next;
         if (poll_inputs() && inbox_take(&next)) {
             handle_frame(next.frame, tick_now(), next.framing, next.target);
         } else {
-            if (comm_ir_channel() != IR_CENTRE && tick_since(last_ir_byte) > HB_IRSEL_HOLD_TICKS)
-                comm_ir_select(IR_CENTRE);
-            sys_idle();
+            tick_t due = ir_due(tick_now() + SYS_IDLE_MAX_TICKS);
+            if (comm_ir_channel() != IR_CENTRE) {
+                if (tick_since(last_ir_byte) > HB_IRSEL_HOLD_TICKS)
+                    comm_ir_select(IR_CENTRE);
+                else
+                    due = tick_earlier(due, (tick_t)(last_ir_byte + HB_IRSEL_HOLD_TICKS + 1u));
+            }
+            sys_idle_until(due, mark);
         }
     }
 }

@@ -79,6 +79,13 @@ void mav_expire(tick_t last)
         status.parse_state = MAVLINK_PARSE_STATE_IDLE;
 }
 
+tick_t mav_due(tick_t last, tick_t due)
+{
+    if (!mav_busy())
+        return due;
+    return tick_earlier(due, (tick_t)(last + HB_PC_BYTE_TIMEOUT_TICKS + 1u));
+}
+
 uint8_t mav_crc_errors(void)
 {
     return crc_errors;

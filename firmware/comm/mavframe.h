@@ -33,6 +33,10 @@ mav_result_t mav_push(uint8_t b, uint8_t *frame, uint8_t *target);
 /** Abandon a half frame whose next byte is overdue (last byte at @p last). */
 void mav_expire(tick_t last);
 
+/** The earlier of @p due and the tick mav_expire(@p last) would drop a
+ *  half-parsed frame at (for sys_idle_until()). */
+tick_t mav_due(tick_t last, tick_t due);
+
 /** Frames dropped for a bad checksum since boot (saturates at 255). */
 uint8_t mav_crc_errors(void);
 

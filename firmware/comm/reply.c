@@ -13,15 +13,17 @@
 #define IR UART1
 
 static poll_fn poll_hook;
+static due_fn due_hook;
 /* The request being answered: its framing, whether it named this module
  * (MAVLink target_system = id: no Select, no slot) and its code. */
 static uint8_t framing;
 static uint8_t direct;
 static uint8_t request_code;
 
-void reply_init(poll_fn poll)
+void reply_init(poll_fn poll, due_fn due)
 {
     poll_hook = poll;
+    due_hook = due;
 }
 
 void reply_begin(uint8_t request_framing, uint8_t to_me, uint8_t code)
@@ -49,8 +51,9 @@ void reply_wait_turn(uint8_t slots)
         delay = 0;
     tick_t start = tick_now();
     while (tick_since(start) < delay) {
+        uint8_t mark = sys_io_events;
         poll_hook();
-        sys_idle();
+        sys_idle_until(due_hook((tick_t)(start + delay)), mark);
     }
 }
 

@@ -14,6 +14,7 @@
 #include <stdint.h>
 
 #include "hexbot_codes.h"
+#include "system.h"
 #include "version.h"
 
 /* Boot texts (reply_boot_text), in the thesis' order; one bit each. */
@@ -47,8 +48,9 @@ void reply_begin(uint8_t request_framing, uint8_t to_me, uint8_t code);
 /** The request named this module (no Select needed). */
 uint8_t reply_direct(void);
 
-/** @p poll keeps input moving while a reply waits for its slot. */
-void reply_init(poll_fn poll);
+/** @p poll keeps input moving while a reply waits for its slot; @p due
+ *  names the ticks at which it has something to do without new input. */
+void reply_init(poll_fn poll, due_fn due);
 
 /** Wait for this module's turn for a reply needing @p slots slots. */
 void reply_wait_turn(uint8_t slots);

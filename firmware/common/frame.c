@@ -59,3 +59,10 @@ frame_result_t frame_expire(frame_rx_t *f)
     }
     return FRAME_NONE;
 }
+
+tick_t frame_due(const frame_rx_t *f, tick_t due)
+{
+    if (!f->len)
+        return due;
+    return tick_earlier(due, (tick_t)(f->last + f->timeout + 1u));
+}

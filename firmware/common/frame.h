@@ -40,4 +40,8 @@ void frame_resume(frame_rx_t *f, uint8_t from);
 /** Abandon a half frame whose next byte is overdue; FRAME_DROPPED if so. */
 frame_result_t frame_expire(frame_rx_t *f);
 
+/** The earlier of @p due and the tick at which frame_expire() would abandon
+ *  the half frame (for sys_idle_until()). */
+tick_t frame_due(const frame_rx_t *f, tick_t due);
+
 #endif /* FRAME_H */

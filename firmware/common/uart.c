@@ -53,6 +53,7 @@ static inline void rx_store(uart_state_t *s, uint8_t status, uint8_t b, uint8_t 
 {
     if (!(status & err_mask))
         ring_put(&s->rx, b);
+    sys_io_events++; /* wake sys_idle_until() */
 }
 
 ISR(USART0_RXC_vect)
@@ -79,6 +80,7 @@ ISR(USART0_UDRE_vect)
     UCSR0A = (1 << TXC0); /* clear "transmit complete" for this byte */
     UDR0 = (uint8_t)b;
     port[0].sent = 1;
+    sys_io_events++; /* a slot freed: wake sys_idle_until() (uart_putc waits for it) */
 }
 
 ISR(USART1_UDRE_vect)
@@ -91,6 +93,7 @@ ISR(USART1_UDRE_vect)
     UCSR1A = (1 << TXC1);
     UDR1 = (uint8_t)b;
     port[1].sent = 1;
+    sys_io_events++;
 }
 
 int16_t uart_getc(uint8_t u)
@@ -102,12 +105,13 @@ int16_t uart_getc_wait(uint8_t u, tick_t ticks)
 {
     tick_t start = tick_now();
     for (;;) {
+        uint8_t mark = sys_io_events;
         int16_t b = uart_getc(u);
         if (b >= 0)
             return b;
         if (tick_since(start) >= ticks)
             return -1;
-        sys_idle();
+        sys_idle_until(start + ticks, mark);
     }
 }
 
@@ -134,10 +138,13 @@ uint8_t uart_try_putc(uint8_t u, uint8_t b)
 void uart_putc(uint8_t u, uint8_t b)
 {
     tick_t start = tick_now();
-    while (!uart_try_putc(u, b)) {
+    for (;;) {
+        uint8_t mark = sys_io_events;
+        if (uart_try_putc(u, b))
+            return;
         if (tick_since(start) >= TX_STALL_TICKS)
             return; /* transmitter stuck: drop rather than hang */
-        sys_idle();
+        sys_idle_until(start + TX_STALL_TICKS, mark);
     }
 }
 
@@ -166,6 +173,7 @@ static uint8_t tx_idle(uint8_t u)
     return !(UCSR1B & (1 << UDRIE1)) && (UCSR1A & (1 << UDRE1)) && (UCSR1A & (1 << TXC1));
 }
 
+/* TXC raises no interrupt here: look at it on every tick. */
 void uart_flush(uint8_t u)
 {
     tick_t start = tick_now();

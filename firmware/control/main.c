@@ -77,10 +77,16 @@ static uint8_t poll_links(void)
     return have_pending;
 }
 
+/* The earlier of @p due and the tick a half frame of poll_links() expires. */
+static tick_t links_due(tick_t due)
+{
+    return frame_due(&rx[0], frame_due(&rx[1], due));
+}
+
 /* Sequence delay that gives way to a newly arrived command. */
 static uint8_t wait_or_abort(tick_t n)
 {
-    return sys_delay_polling(n, poll_links);
+    return sys_delay_polling(n, poll_links, links_due);
 }
 
 static void run_pending(void)
@@ -111,11 +117,12 @@ static uint8_t handshake(void)
         send_link(HB_LINK_READY);
         tick_t start = tick_now();
         while (tick_since(start) < HANDSHAKE_RETRY_TICKS) {
+            uint8_t mark = sys_io_events;
             int16_t b = uart_getc(SRC_COMM);
             if (b == HB_LINK_READY)
                 return 1;
             if (b < 0)
-                sys_idle();
+                sys_idle_until(start + HANDSHAKE_RETRY_TICKS, mark);
         }
     }
     return 0;
@@ -158,10 +165,13 @@ int main(void)
     send_link(HB_LINK_LISTENING);
     debug_line_P(PSTR("CTR. LISTENING"));
 
+    /* Idle: sleep through the ticks until a byte comes or a half frame
+     * expires (docs/firmware.md, "The idle path"). */
     for (;;) {
+        uint8_t mark = sys_io_events;
         if (poll_links())
             run_pending();
         else
-            sys_idle();
+            sys_idle_until(links_due(tick_now() + SYS_IDLE_MAX_TICKS), mark);
     }
 }

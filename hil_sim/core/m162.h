@@ -130,6 +130,10 @@ typedef struct m162_t {
 	avr_t *avr;
 	char name[64];
 	uint64_t quantum_end; /* a sleeping core never skips past this cycle */
+	/* Firmware cost counters (own cycles): cycles skipped asleep and SLEEP
+	 * instructions executed; awake cycles = cycle - slept_cycles.  Two adds
+	 * per sleep, nothing per instruction; never reset. */
+	uint64_t slept_cycles, sleeps;
 	m162_usart_t usart[M162_NUARTS];
 	/* pin log: PORTx output values, one record per change */
 	uint8_t last_port[M162_NPORTS];

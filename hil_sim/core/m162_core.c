@@ -427,6 +427,8 @@ static void m162_run_step(avr_t *avr)
 
 	if (avr->state == cpu_Running) {
 		new_pc = avr_run_one(avr);
+		if (avr->state == cpu_Sleeping)
+			m->sleeps++;
 		/* The stack ran out of SRAM into the I/O registers.  gcc sets SP
 		 * with SPH first, so one or two instructions may see a low SP in
 		 * passing; a real overflow stays low. */
@@ -463,6 +465,7 @@ static void m162_run_step(avr_t *avr)
 			avr_cycle_count_t target = avr->cycle + 1 + sleep;
 			if (target > m->quantum_end)
 				target = m->quantum_end > avr->cycle ? m->quantum_end : avr->cycle;
+			m->slept_cycles += target - avr->cycle;
 			avr->cycle = target;
 		}
 	}

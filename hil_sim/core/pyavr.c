@@ -527,6 +527,16 @@ static PyObject *Cluster_mcu_cycle(ClusterObject *self, PyObject *args)
 	return mc ? PyLong_FromUnsignedLongLong(mc->avr->cycle) : NULL;
 }
 
+static PyObject *Cluster_sleep_stats(ClusterObject *self, PyObject *args)
+{
+	m162_t *mc = mcu_arg(self, args);
+	if (!mc)
+		return NULL;
+	return Py_BuildValue("{sKsKsK}", "cycle", (unsigned long long)mc->avr->cycle,
+			"slept_cycles", (unsigned long long)mc->slept_cycles,
+			"sleeps", (unsigned long long)mc->sleeps);
+}
+
 static PyObject *Cluster_reset(ClusterObject *self, PyObject *args)
 {
 	m162_t *mc = mcu_arg(self, args);
@@ -1124,6 +1134,9 @@ static PyMethodDef Cluster_methods[] = {
 	{ "name", (PyCFunction)Cluster_name, METH_VARARGS, "name(mcu) -> the name given to add_mcu" },
 	{ "mcu_cycle", (PyCFunction)Cluster_mcu_cycle, METH_VARARGS,
 		"mcu_cycle(mcu) -> this MCU's own cycle counter" },
+	{ "sleep_stats", (PyCFunction)Cluster_sleep_stats, METH_VARARGS,
+		"sleep_stats(mcu) -> {cycle, slept_cycles, sleeps}: own cycles, those spent asleep, "
+		"SLEEP instructions that slept (awake cycles = cycle - slept_cycles)" },
 	{ "reset", (PyCFunction)Cluster_reset, METH_VARARGS, "reset(mcu): external reset" },
 	{ "read_data", (PyCFunction)Cluster_read_data, METH_VARARGS,
 		"read_data(mcu, addr, length) -> bytes of the data space (registers, I/O, SRAM)" },
