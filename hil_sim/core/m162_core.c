@@ -417,6 +417,22 @@ void m162_install_logger(void)
 #define M162_WDTCR WDTCR
 #define M162_WDE WDE
 
+/* simavr 1.6 makes an instruction that sets I (SEI, RETI, a write to SREG)
+ * wait two instructions before a pending interrupt (avr_sreg_set:
+ * interrupt_state = -2; avr_service_interrupts counts it up once per step).
+ * The datasheet ("Reset and Interrupt Handling") gives one: "the
+ * instruction following SEI will be executed before any pending
+ * interrupts", and after RETI the part "will always return to the main
+ * program and execute one more instruction before any pending interrupt is
+ * served".  (simavr fixed this after 1.6: upstream 4963a90, -1.) */
+#define M162_OPCODE_SLEEP 0x9588
+#define M162_WAKE_HALT 4 /* cycles: "the MCU is halted for four cycles" */
+
+static int m162_is_sleep_at(avr_t *avr, avr_flashaddr_t pc)
+{
+	return (avr->flash[pc] | (avr->flash[pc + 1] << 8)) == M162_OPCODE_SLEEP;
+}
+
 /* One instruction (or one sleep step), like simavr's avr_callback_run_raw
  * but in virtual time only.  Only our ATmega162 runs it (its register
  * addresses are hard-coded here); a stock core runs simavr's own step. */
@@ -424,11 +440,29 @@ static void m162_run_step(avr_t *avr)
 {
 	m162_t *m = m162_of(avr);
 	avr_flashaddr_t new_pc = avr->pc;
+	int sleep_declined = 0;
 
 	if (avr->state == cpu_Running) {
 		new_pc = avr_run_one(avr);
-		if (avr->state == cpu_Sleeping)
+		if (avr->interrupt_state == -2)
+			avr->interrupt_state = -1; /* one instruction, not two (above) */
+		if (avr->state == cpu_Sleeping) {
+			if (avr->data[M162_MCUCR] & (1 << M162_SE))
+				m->sleeps++;
+			else
+				avr->state = cpu_Running; /* SLEEP with SE clear is a no-op */
+		} else if (avr->state == cpu_Running && avr->interrupt_state > 0 &&
+				avr->sreg[S_I] && m162_is_sleep_at(avr, avr->pc) &&
+				(avr->data[M162_MCUCR] & (1 << M162_SE))) {
+			/* simavr's SLEEP declines to sleep while an interrupt is
+			 * pending ("sei; sleep" with one already raised).  The part
+			 * "will enter sleep before any pending interrupt(s)", and that
+			 * interrupt wakes it at once (below).  Tested only when an
+			 * interrupt is about to be served; avr->pc is the last
+			 * instruction avr_run_one ran. */
 			m->sleeps++;
+			sleep_declined = 1;
+		}
 		/* The stack ran out of SRAM into the I/O registers.  gcc sets SP
 		 * with SPH first, so one or two instructions may see a low SP in
 		 * passing; a real overflow stays low. */
@@ -442,6 +476,7 @@ static void m162_run_step(avr_t *avr)
 			m->crash_cycle = avr->cycle;
 		}
 	}
+	int was_asleep = avr->state == cpu_Sleeping;
 	avr_cycle_count_t sleep = avr_cycle_timer_process(avr);
 	avr->pc = new_pc;
 	/* a timer (the watchdog) swapped in a reset callback: let it run next,
@@ -450,27 +485,40 @@ static void m162_run_step(avr_t *avr)
 		return;
 
 	if (avr->state == cpu_Sleeping) {
-		if (!(avr->data[M162_MCUCR] & (1 << M162_SE))) {
-			avr->state = cpu_Running; /* SLEEP with SE clear is a no-op */
-		} else if (!avr->sreg[S_I] && !(avr->data[M162_WDTCR] & (1 << M162_WDE))) {
+		if (!avr->sreg[S_I] && !(avr->data[M162_WDTCR] & (1 << M162_WDE))) {
 			/* interrupts off and no watchdog to reset it: simavr calls this
 			 * the end of the program */
 			avr->state = cpu_Done;
 			return;
-		} else {
-			/* Never past the quantum's end, where the scheduler delivers
-			 * the bytes other MCUs sent meanwhile.  The SLEEP instruction
-			 * itself may have ended on (or just past) the boundary: then
-			 * stay put and sleep on in the next quantum. */
-			avr_cycle_count_t target = avr->cycle + 1 + sleep;
-			if (target > m->quantum_end)
-				target = m->quantum_end > avr->cycle ? m->quantum_end : avr->cycle;
-			m->slept_cycles += target - avr->cycle;
-			avr->cycle = target;
 		}
+		/* Never past the quantum's end, where the scheduler delivers the
+		 * bytes other MCUs sent meanwhile.  The SLEEP instruction itself
+		 * may have ended on (or just past) the boundary: then stay put
+		 * and sleep on in the next quantum. */
+		avr_cycle_count_t target = avr->cycle + 1 + sleep;
+		if (target > m->quantum_end)
+			target = m->quantum_end > avr->cycle ? m->quantum_end : avr->cycle;
+		m->slept_cycles += target - avr->cycle;
+		avr->cycle = target;
 	}
-	if ((avr->state == cpu_Running || avr->state == cpu_Sleeping) && avr->interrupt_state)
+	if ((avr->state != cpu_Running && avr->state != cpu_Sleeping) || !avr->interrupt_state)
+		return;
+	int serve = avr->interrupt_state > 0; /* not a count-down after SEI */
+	avr_service_interrupts(avr);
+	if (!serve || !(sleep_declined || (was_asleep && avr->state == cpu_Running)))
+		return;
+	/* Woken by an interrupt: simavr drops a pending vector that was masked
+	 * meanwhile, so try the next; if one is served, the part was "halted
+	 * for four cycles" first (plus the start-up time: none in idle mode);
+	 * if none is, it sleeps on. */
+	while (avr->sreg[S_I] && avr->interrupt_state > 0)
 		avr_service_interrupts(avr);
+	if (!avr->sreg[S_I]) {
+		avr->cycle += M162_WAKE_HALT;
+		m->slept_cycles += M162_WAKE_HALT;
+	} else {
+		avr->state = cpu_Sleeping;
+	}
 }
 
 const char *m162_state_name(int st)

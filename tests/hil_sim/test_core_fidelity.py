@@ -2,7 +2,8 @@
 
 Each test runs a small program of tests/hil_sim/avr (the firmware half of
 the pair) and checks what the part would do: the watchdog after a reset, the
-timer tick to the cycle, per-MCU clocks, memory returned on free.
+timer tick to the cycle, per-MCU clocks, memory returned on free, interrupt
+latency after SEI, RETI and SLEEP.
 """
 
 import ctypes
@@ -150,3 +151,46 @@ def test_create_and_free_returns_memory():
         cycle()
     per_mcu = (libc.mallinfo2().uordblks - before) / (rounds * 4)
     assert per_mcu < 200
+
+
+@pytest.fixture(scope="module")
+def latency():
+    """tests/hil_sim/avr/latency.c: PORTA results in order, PORTB timestamps."""
+    c, m, pins = run_alone("latency", 20_000)
+    results = [v for _, port, v in pins if port == "A"]
+    stamps = {v: t for t, port, v in pins if port == "B"}
+    assert results[-1] == 0xFF, "latency.c did not finish"
+    return results[:-1], stamps, c.sleep_stats(m)
+
+
+def test_one_instruction_runs_after_sei_before_a_pending_interrupt(latency):
+    results, _, _ = latency
+    # "sei; inc r18; inc r18; ..." with Timer0's overflow pending: the handler
+    # sees one inc (simavr 1.6: two)
+    assert results[0] == 1
+
+
+def test_one_main_instruction_runs_after_reti_before_the_next_interrupt(latency):
+    results, _, _ = latency
+    # Timer2 and Timer0 pending at SEI, r18 from 0x10: Timer2's handler after
+    # one inc, then RETI, one more inc, Timer0's (simavr 1.6: 0x12, 0x14)
+    assert results[1:3] == [0x11, 0x12]
+
+
+def test_sei_sleep_cli_serves_an_interrupt_pending_at_sei(latency):
+    results, _, stats = latency
+    # avr-libc's atomic idle: SLEEP runs before the pending interrupt, which
+    # wakes it; the handler runs before CLI (simavr 1.6: SLEEP did not sleep,
+    # CLI ran second after SEI, the handler never ran and r18 stayed unread)
+    assert results[3] == 0x55
+    # three SLEEPs in latency.c, each with SE set: all count as sleeps
+    assert stats["sleeps"] == 3
+
+
+def test_waking_from_sleep_adds_four_cycles_to_the_interrupt_response(latency):
+    _, stamps, _ = latency
+    # pending at SEI: "sei; sleep" against "sei; nop" (both 1-cycle)
+    assert (stamps[0x21] - stamps[0x20]) - (stamps[0x11] - stamps[0x10]) == 4
+    # Timer0 overflowing 64 cycles after its start, the CPU asleep against
+    # the CPU running NOPs: the same overflow, four cycles later served
+    assert (stamps[0x41] - stamps[0x40]) - (stamps[0x31] - stamps[0x30]) == 4
