@@ -130,9 +130,10 @@ typedef struct m162_t {
 	avr_t *avr;
 	char name[64];
 	uint64_t quantum_end; /* a sleeping core never skips past this cycle */
-	/* Firmware cost counters (own cycles): cycles skipped asleep and SLEEP
-	 * instructions executed; awake cycles = cycle - slept_cycles.  Two adds
-	 * per sleep, nothing per instruction; never reset. */
+	/* Firmware cost counters (own cycles): cycles skipped asleep (with the
+	 * four-cycle halt of each wake-up) and SLEEP instructions executed with
+	 * SE set; awake cycles = cycle - slept_cycles.  A few adds per sleep,
+	 * nothing per instruction; never reset. */
 	uint64_t slept_cycles, sleeps;
 	m162_usart_t usart[M162_NUARTS];
 	/* pin log: PORTx output values, one record per change */
@@ -148,6 +149,7 @@ typedef struct m162_t {
 	char last_error[256];
 	uint64_t crash_cycle;
 	unsigned sp_low_count; /* instructions in a row with SP below SRAM */
+	uint8_t slept;      /* asleep in this step: an interrupt now wakes it (m162_serve) */
 	avr_io_write_t spdr_write_orig;
 	avr_io_write_t wdtcr_write_orig;
 	avr_io_write_t tcnt_write_orig[2], tccr_write_orig[2]; /* timers 0 and 2 */

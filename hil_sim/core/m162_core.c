@@ -433,36 +433,69 @@ static int m162_is_sleep_at(avr_t *avr, avr_flashaddr_t pc)
 	return (avr->flash[pc] | (avr->flash[pc + 1] << 8)) == M162_OPCODE_SLEEP;
 }
 
+/* After an instruction that left interrupt_state set or the core not
+ * running (rare: around interrupts and at SLEEP; kept out of the step's
+ * hot path).  Sets m->slept if the core went to sleep in it. */
+static __attribute__((noinline)) void m162_after_instruction(avr_t *avr, m162_t *m)
+{
+	if (avr->interrupt_state == -2)
+		avr->interrupt_state = -1; /* one instruction, not two (above) */
+	if (avr->state == cpu_Sleeping) {
+		if (!(avr->data[M162_MCUCR] & (1 << M162_SE))) {
+			avr->state = cpu_Running; /* SLEEP with SE clear is a no-op */
+			return;
+		}
+		m->sleeps++;
+		m->slept = 1;
+		return;
+	}
+	/* simavr's SLEEP declines to sleep while an interrupt is pending ("sei;
+	 * sleep" with one already raised).  The part "will enter sleep before
+	 * any pending interrupt(s)", and that interrupt wakes it at once
+	 * (m162_serve).  avr->pc is the instruction avr_run_one ran. */
+	if (avr->state == cpu_Running && avr->interrupt_state > 0 && avr->sreg[S_I] &&
+			(avr->data[M162_MCUCR] & (1 << M162_SE)) && m162_is_sleep_at(avr, avr->pc)) {
+		m->sleeps++;
+		m->slept = 1;
+	}
+}
+
+/* Serve a pending interrupt (or count down after SEI).  m->slept: the core
+ * was asleep in this step (or its SLEEP was declined): if an interrupt woke
+ * it, the part is "halted for four cycles" (plus the start-up time: none in
+ * idle mode) before the vector. */
+static __attribute__((noinline)) void m162_serve(avr_t *avr, m162_t *m)
+{
+	int serve = avr->interrupt_state > 0; /* not a count-down after SEI */
+	avr_service_interrupts(avr);
+	if (!m->slept || !serve || avr->state != cpu_Running)
+		return;
+	/* simavr drops a pending vector that was masked meanwhile: try the
+	 * next; if none is served, the part sleeps on */
+	while (avr->sreg[S_I] && avr->interrupt_state > 0)
+		avr_service_interrupts(avr);
+	if (!avr->sreg[S_I]) {
+		avr->cycle += M162_WAKE_HALT;
+		m->slept_cycles += M162_WAKE_HALT;
+	} else {
+		avr->state = cpu_Sleeping;
+	}
+}
+
 /* One instruction (or one sleep step), like simavr's avr_callback_run_raw
  * but in virtual time only.  Only our ATmega162 runs it (its register
- * addresses are hard-coded here); a stock core runs simavr's own step. */
+ * addresses are hard-coded here); a stock core runs simavr's own step.
+ * Runs once per instruction: the rare cases are in the two functions above. */
 static void m162_run_step(avr_t *avr)
 {
 	m162_t *m = m162_of(avr);
 	avr_flashaddr_t new_pc = avr->pc;
-	int sleep_declined = 0;
 
 	if (avr->state == cpu_Running) {
 		new_pc = avr_run_one(avr);
-		if (avr->interrupt_state == -2)
-			avr->interrupt_state = -1; /* one instruction, not two (above) */
-		if (avr->state == cpu_Sleeping) {
-			if (avr->data[M162_MCUCR] & (1 << M162_SE))
-				m->sleeps++;
-			else
-				avr->state = cpu_Running; /* SLEEP with SE clear is a no-op */
-		} else if (avr->state == cpu_Running && avr->interrupt_state > 0 &&
-				avr->sreg[S_I] && m162_is_sleep_at(avr, avr->pc) &&
-				(avr->data[M162_MCUCR] & (1 << M162_SE))) {
-			/* simavr's SLEEP declines to sleep while an interrupt is
-			 * pending ("sei; sleep" with one already raised).  The part
-			 * "will enter sleep before any pending interrupt(s)", and that
-			 * interrupt wakes it at once (below).  Tested only when an
-			 * interrupt is about to be served; avr->pc is the last
-			 * instruction avr_run_one ran. */
-			m->sleeps++;
-			sleep_declined = 1;
-		}
+		m->slept = 0;
+		if (__builtin_expect(avr->interrupt_state || avr->state != cpu_Running, 0))
+			m162_after_instruction(avr, m);
 		/* The stack ran out of SRAM into the I/O registers.  gcc sets SP
 		 * with SPH first, so one or two instructions may see a low SP in
 		 * passing; a real overflow stays low. */
@@ -475,8 +508,9 @@ static void m162_run_step(avr_t *avr)
 			avr->state = cpu_Crashed;
 			m->crash_cycle = avr->cycle;
 		}
+	} else {
+		m->slept = avr->state == cpu_Sleeping;
 	}
-	int was_asleep = avr->state == cpu_Sleeping;
 	avr_cycle_count_t sleep = avr_cycle_timer_process(avr);
 	avr->pc = new_pc;
 	/* a timer (the watchdog) swapped in a reset callback: let it run next,
@@ -501,24 +535,8 @@ static void m162_run_step(avr_t *avr)
 		m->slept_cycles += target - avr->cycle;
 		avr->cycle = target;
 	}
-	if ((avr->state != cpu_Running && avr->state != cpu_Sleeping) || !avr->interrupt_state)
-		return;
-	int serve = avr->interrupt_state > 0; /* not a count-down after SEI */
-	avr_service_interrupts(avr);
-	if (!serve || !(sleep_declined || (was_asleep && avr->state == cpu_Running)))
-		return;
-	/* Woken by an interrupt: simavr drops a pending vector that was masked
-	 * meanwhile, so try the next; if one is served, the part was "halted
-	 * for four cycles" first (plus the start-up time: none in idle mode);
-	 * if none is, it sleeps on. */
-	while (avr->sreg[S_I] && avr->interrupt_state > 0)
-		avr_service_interrupts(avr);
-	if (!avr->sreg[S_I]) {
-		avr->cycle += M162_WAKE_HALT;
-		m->slept_cycles += M162_WAKE_HALT;
-	} else {
-		avr->state = cpu_Sleeping;
-	}
+	if (avr->interrupt_state && (avr->state == cpu_Running || avr->state == cpu_Sleeping))
+		m162_serve(avr, m);
 }
 
 const char *m162_state_name(int st)
