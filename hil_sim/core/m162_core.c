@@ -14,6 +14,9 @@
  *  - PINx writes do nothing (the ATmega162 predates the PIN-toggle feature).
  *  - Our own run function: SLEEP honours MCUCR.SE, sleeping advances cycles
  *    only (no wall-clock wait) and never past the current lock-step quantum.
+ *  - Interrupts as the datasheet has them: one instruction after SEI/RETI
+ *    (simavr 1.6: two), "sei; sleep" sleeps and the pending interrupt wakes
+ *    it (simavr: SLEEP declined), and a wake-up halts the core four cycles.
  *  - Watchdog: WDTCR = 0 after every reset, and WDRF does not hold WDE set
  *    (ATmega162 datasheet, safety level 1; simavr re-arms it after a
  *    watchdog reset, as the newer parts do).
