@@ -89,17 +89,16 @@ void sys_idle_until(tick_t due, uint8_t mark)
     cli();
     uint8_t start = (uint8_t)ticks;
     /* Checked with interrupts off; SEI lets SLEEP run before any interrupt,
-     * so none can slip in between the check and the sleep. On the part the
-     * interrupt that wakes us runs right after SLEEP; simavr 1.6 runs one
-     * more instruction first (it delays interrupts by two instructions
-     * after SEI), so that instruction must not be CLI, or a tick pending at
-     * SEI would never run: hence the NOP. */
+     * so none can slip in between the check and the sleep, and an interrupt
+     * already pending wakes it at once: its handler runs before the CLI
+     * (avr-libc's documented idiom; the simulator's core follows the
+     * datasheet here, docs/simulator-core.md item 17). */
     for (;;) {
         tick_t now = ticks;
         if (sys_io_events != mark || (int16_t)(now - due) >= 0 ||
             (uint8_t)((uint8_t)now - start) >= SYS_IDLE_MAX_TICKS)
             break;
-        __asm__ __volatile__("sei\n\tsleep\n\tnop\n\tcli" ::: "memory");
+        __asm__ __volatile__("sei\n\tsleep\n\tcli" ::: "memory");
     }
     sei();
     sleep_disable();
