@@ -430,6 +430,14 @@ void m162_install_logger(void)
  * served".  (simavr fixed this after 1.6: upstream 4963a90, -1.) */
 #define M162_OPCODE_SLEEP 0x9588
 #define M162_WAKE_HALT 4 /* cycles: "the MCU is halted for four cycles" */
+/* "Interrupt Response Time": "The interrupt execution response for all the
+ * enabled AVR interrupts is four clock cycles minimum.  After four clock
+ * cycles the Program Vector address for the actual interrupt handling
+ * routine is executed.  During this four clock cycle period, the Program
+ * Counter is pushed onto the Stack."  simavr 1.6 pushes the PC and jumps
+ * to the vector in no time; the vector's JMP (3 cycles) and RETI (4) it
+ * counts right.  From sleep the response is M162_WAKE_HALT more. */
+#define M162_INT_RESPONSE 4
 
 static int m162_is_sleep_at(avr_t *avr, avr_flashaddr_t pc)
 {
@@ -463,26 +471,57 @@ static __attribute__((noinline)) void m162_after_instruction(avr_t *avr, m162_t 
 	}
 }
 
+/* simavr's avr_service_interrupts plus the response time: entering a vector
+ * clears I (a masked vector it drops leaves I set), and then takes
+ * M162_INT_RESPONSE cycles.  Returns 1 if a vector was entered. */
+static int m162_service(avr_t *avr)
+{
+	int serving = avr->interrupt_state > 0 && avr->sreg[S_I];
+	avr_service_interrupts(avr);
+	if (!serving || avr->sreg[S_I])
+		return 0;
+	avr->cycle += M162_INT_RESPONSE;
+	return 1;
+}
+
 /* Serve a pending interrupt (or count down after SEI).  m->slept: the core
  * was asleep in this step (or its SLEEP was declined): if an interrupt woke
  * it, the part is "halted for four cycles" (plus the start-up time: none in
- * idle mode) before the vector. */
+ * idle mode) on top of the response: 8 cycles before the vector. */
 static __attribute__((noinline)) void m162_serve(avr_t *avr, m162_t *m)
 {
 	int serve = avr->interrupt_state > 0; /* not a count-down after SEI */
-	avr_service_interrupts(avr);
+	int entered = m162_service(avr);
 	if (!m->slept || !serve || avr->state != cpu_Running)
 		return;
 	/* simavr drops a pending vector that was masked meanwhile: try the
 	 * next; if none is served, the part sleeps on */
-	while (avr->sreg[S_I] && avr->interrupt_state > 0)
-		avr_service_interrupts(avr);
-	if (!avr->sreg[S_I]) {
+	while (!entered && avr->sreg[S_I] && avr->interrupt_state > 0)
+		entered = m162_service(avr);
+	if (entered) {
 		avr->cycle += M162_WAKE_HALT;
 		m->slept_cycles += M162_WAKE_HALT;
 	} else {
 		avr->state = cpu_Sleeping;
 	}
+}
+
+/* RETI: "When the AVR exits from an interrupt, it will always return to the
+ * main program and execute one more instruction before any pending
+ * interrupt is served" -- also when I was already set (a handler that
+ * re-enabled interrupts), where simavr 1.6's avr_sreg_set leaves
+ * interrupt_state alone and serves a pending interrupt at once.  simavr
+ * raises the table's "running" IRQ in RETI after setting I, and on entry
+ * after clearing it: I set here means RETI.  -1: one instruction (the
+ * count-down of avr_service_interrupts); an interrupt raised meanwhile
+ * leaves it alone (avr_raise_interrupt sets 1 only from 0). */
+static void m162_reti(struct avr_irq_t *irq, uint32_t value, void *param)
+{
+	(void)irq;
+	(void)value;
+	avr_t *avr = param;
+	if (avr->sreg[S_I])
+		avr->interrupt_state = -1;
 }
 
 /* One instruction (or one sleep step), like simavr's avr_callback_run_raw
@@ -953,6 +992,7 @@ m162_t *m162_make(void)
 	avr_init(m->avr); /* calls m162_init, then resets */
 	m162_setup_run(m);
 	m162_hook_ports(m);
+	avr_irq_register_notify(m->avr->interrupts.irq + AVR_INT_IRQ_RUNNING, m162_reti, m->avr);
 	return m;
 }
 

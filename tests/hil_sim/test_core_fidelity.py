@@ -177,6 +177,25 @@ def test_one_main_instruction_runs_after_reti_before_the_next_interrupt(latency)
     assert results[1:3] == [0x11, 0x12]
 
 
+def test_one_main_instruction_runs_after_reti_even_with_interrupts_enabled(latency):
+    results, _, _ = latency
+    # as above from 0x60, but Timer2's handler ends "sei; reti": I is set when
+    # RETI runs, and the part still "will always return to the main program
+    # and execute one more instruction" (simavr 1.6: Timer0's handler at once
+    # after RETI, r18 = 0x61 twice)
+    assert results[4:6] == [0x61, 0x62]
+
+
+def test_interrupt_response_is_four_cycles_before_the_vector(latency):
+    _, stamps, _ = latency
+    # pending at SEI: out PORTB (0x10), sei, nop, 4 cycles to push the PC,
+    # the vector's jmp (3), the handler's sts (2), its out PORTB (0x11)
+    # (simavr 1.6 enters the vector in 0 cycles: 8)
+    assert stamps[0x11] - stamps[0x10] == 1 + 1 + 1 + 4 + 3 + 2
+    # "sei; sleep" instead: woken at once, 4 more for the wake-up (16, not 12)
+    assert stamps[0x21] - stamps[0x20] == 1 + 1 + 1 + 4 + 4 + 3 + 2
+
+
 def test_sei_sleep_cli_serves_an_interrupt_pending_at_sei(latency):
     results, _, stats = latency
     # avr-libc's atomic idle: SLEEP runs before the pending interrupt, which

@@ -17,9 +17,14 @@
  *                                                                  (part: 0x11)
  *   3. r18 at Timer0's handler after Timer2's RETI                 (part: 0x12)
  *   4. 0x55 if Timer0's handler ran within "sei; sleep; cli"       (part: 0x55)
+ *   5, 6. as 2, 3 from 0x60, but Timer2's handler ends "sei; reti": RETI with
+ *      I already set still runs one main instruction first   (part: 0x61, 0x62)
  * PORTB carries timestamps: 0x10 written just before SEI, then Timer0's
  * handler writes r19 = 0x11 after "sei; nop" and 0x21 (after 0x20) after
  * "sei; sleep": the second gap is four cycles longer (the wake-up halt).
+ * Each gap is exact on the part ("Interrupt Response Time": four cycles to
+ * push the PC, the vector's JMP three): out, sei, nop, 4, jmp 3, sts 2 ->
+ * 12 cycles to Timer0's "out"; with sleep for the nop, 4 more -> 16.
  * Then a timer overflows while the CPU spins (0x30 -> 0x31) and while it
  * sleeps (0x40 -> 0x41): four cycles longer again.  PORTA = 0xFF: done. */
 #include <avr/interrupt.h>
@@ -28,8 +33,10 @@
 
 volatile uint8_t seen0, seen2;
 
-/* Handlers that touch neither SREG nor a register: r18 and r19 belong to
- * the main program's asm blocks, the only places interrupts are enabled. */
+/* Handlers that touch neither SREG nor a register: r18..r20 belong to the
+ * main program's asm blocks, the only places interrupts are enabled.
+ * Timer2's handler re-enables interrupts just before its RETI if r20 bit 0
+ * is set (SBRC leaves SREG alone). */
 ISR(TIMER0_OVF_vect, ISR_NAKED)
 {
 	__asm__ __volatile__("sts seen0, r18\n\tout %0, r19\n\treti"
@@ -38,7 +45,7 @@ ISR(TIMER0_OVF_vect, ISR_NAKED)
 
 ISR(TIMER2_OVF_vect, ISR_NAKED)
 {
-	__asm__ __volatile__("sts seen2, r18\n\treti");
+	__asm__ __volatile__("sts seen2, r18\n\tsbrc r20, 0\n\tsei\n\treti");
 }
 
 /* Overflow Timer0 (and Timer2 if asked) with interrupts off: the overflow
@@ -85,10 +92,10 @@ int main(void)
 
 	/* 2, 3: Timer2 first (lower vector), one main instruction, Timer0 */
 	make_pending(1);
-	__asm__ __volatile__("ldi r18, 0x10\n\tldi r19, 0\n\tsei\n\t"
+	__asm__ __volatile__("ldi r18, 0x10\n\tldi r19, 0\n\tldi r20, 0\n\tsei\n\t"
 			     "inc r18\n\tinc r18\n\tinc r18\n\tinc r18\n\t"
 			     "inc r18\n\tinc r18\n\tcli"
-			     ::: "r18", "r19", "memory");
+			     ::: "r18", "r19", "r20", "memory");
 	PORTA = seen2;
 	PORTA = seen0;
 
@@ -97,6 +104,15 @@ int main(void)
 	make_pending(0);
 	__asm__ __volatile__("ldi r18, 0x55\n\tldi r19, 0\n\tsei\n\tsleep\n\tcli"
 			     ::: "r18", "r19", "memory");
+	PORTA = seen0;
+
+	/* 5, 6: the same, Timer2's handler ending "sei; reti" (I set at RETI) */
+	make_pending(1);
+	__asm__ __volatile__("ldi r18, 0x60\n\tldi r19, 0\n\tldi r20, 1\n\tsei\n\t"
+			     "inc r18\n\tinc r18\n\tinc r18\n\tinc r18\n\t"
+			     "inc r18\n\tinc r18\n\tcli"
+			     ::: "r18", "r19", "r20", "memory");
+	PORTA = seen2;
 	PORTA = seen0;
 
 	/* the wake-up halt, pending at SEI: "sei; nop" against "sei; sleep" */
