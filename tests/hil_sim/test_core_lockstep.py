@@ -173,10 +173,12 @@ def test_sleep_that_starts_on_a_quantum_boundary_does_not_skip_the_next_quantum(
     # Run one cycle at a time across the tick: at some step the SLEEP after the
     # interrupt ends exactly on the boundary. The core used to sleep on from
     # there to the next timer event (10 ms), so bytes sent to it meanwhile all
-    # arrived at once and overran its receiver.
+    # arrived at once and overran its receiver. A step may still end past the
+    # boundary by what it began before it: an instruction (up to 4 cycles) or
+    # a wake-up halt (4), then the interrupt response (4).
     c = Cluster(1000)
     m = c.add_mcu(build("idle"), "idle")
     c.run(9_990)
     for until in range(9_991, 10_300):
         c.run(until)
-        assert c.mcu_cycle(m) <= until + 4, (until, c.mcu_cycle(m))
+        assert c.mcu_cycle(m) <= until + 8, (until, c.mcu_cycle(m))

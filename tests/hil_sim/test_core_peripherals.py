@@ -1,6 +1,7 @@
 """One program touching every peripheral, on our ATmega162 core and on simavr's
 stock atmega128 core: the traces must agree where the parts agree, and differ
-only where we deliberately fixed simavr (USART pacing, SPI clocking)."""
+only where we deliberately fixed simavr (USART pacing, SPI clocking, the
+interrupt response)."""
 
 import subprocess
 from pathlib import Path
@@ -66,13 +67,15 @@ def test_timer_periods_match_stock_simavr(traces, timer, period):
     assert all(period <= g <= period + 40 for g in ours_gaps)
 
 
-def test_int0_latency_matches_stock_simavr(traces):
+def test_int0_latency_is_stock_simavr_plus_the_interrupt_response(traces):
     def latency(pins):
         (edge,) = [t for t, v in events(pins) if v == 0x2F]
         (isr,) = [t for t, v in events(pins) if v == 0x20]
         return isr - edge
 
-    assert latency(traces["atmega162"][2]) == latency(traces["atmega128"][2]) < 30
+    # the part takes 4 cycles to push the PC before the vector's JMP; simavr
+    # 1.6 none (docs/simulator-core.md item 17)
+    assert latency(traces["atmega162"][2]) == latency(traces["atmega128"][2]) + 4 < 30
 
 
 def test_eeprom_write_then_read_back(traces):
