@@ -44,6 +44,10 @@ class Deadline:
             return Deadline(None)
         return Deadline(max(0.0, min(left, max(at_least, fraction * left))))
 
+    def capped(self, seconds: float) -> Deadline:
+        """This deadline, or ``seconds`` from now if that comes first."""
+        return Deadline(min(self.remaining(), seconds))
+
     def check(self, what: str) -> None:
         """Raise :class:`PlanningFailure` when the budget is used up."""
         if self.expired():

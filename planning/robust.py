@@ -12,7 +12,9 @@ order (:func:`fillable`); goal modules that wall a void in step aside
 stuck (or exceeds its budget, :func:`direct_budget`), the same search runs
 from the goal back to the start and the moves are reversed (every rotation
 is undone by the opposite one over the same cells); if that fails too, the
-plan goes through a compact middle ball (:mod:`hexbot.planning.middle`:
+local method (:mod:`hexbot.planning.local`: window searches and a kernel
+flow, up to ``LOCAL_LIMIT`` modules) tries; then the plan goes through a
+compact middle ball (:mod:`hexbot.planning.middle`:
 initial -> ball -> goal, both halves direct; plans a few times the distance
 bound) and, when that stalls as well, through a canonical strip
 (:mod:`hexbot.planning.canonical`), which does not stall on notched goals.
@@ -534,7 +536,7 @@ def direct_budget(count: int) -> int:
 
 #: Share of the remaining time budget each method may use before the next one is
 #: tried (the last method gets whatever is left).
-SHARES = {"direct": 0.5, "direct, backwards": 0.3, "middle ball": 0.3}
+SHARES = {"direct": 0.5, "direct, backwards": 0.3, "local": 0.3, "middle ball": 0.3}
 
 
 def plan_robust(
@@ -548,7 +550,9 @@ def plan_robust(
     """Plan a connected, collision-free reconfiguration (see the module docstring).
 
     Methods, in order: the direct one forward, the direct one from the goal
-    backwards (both with a search budget), through a compact middle ball
+    backwards (both with a search budget), the local method
+    (:mod:`hexbot.planning.local`, up to its ``LOCAL_LIMIT`` modules and its own
+    time cap), through a compact middle ball
     (:mod:`hexbot.planning.middle`, up to ``MIDDLE_LIMIT`` modules), then
     through a canonical strip (:mod:`hexbot.planning.canonical`). ``plan.method``
     says which one planned. ``budget`` is the time budget in seconds (None:
@@ -556,6 +560,7 @@ def plan_robust(
     reason when it is used up.
     """
     from hexbot.planning.canonical import replay, via_strip
+    from hexbot.planning.local import LOCAL_LIMIT, local_seconds, via_local
     from hexbot.planning.middle import via_middle
 
     goal = frozenset(goal)
@@ -575,6 +580,9 @@ def plan_robust(
     if n <= BACKWARD_LIMIT or fixed is not None:
         methods.append(("direct, backwards", lambda d: reversed_plan(
             initial, goal, max_moves, fixed, searches, deadline=d)))
+    if n <= LOCAL_LIMIT:
+        methods.append(("local", lambda d: via_local(
+            initial, goal, max_moves, fixed, deadline=d.capped(local_seconds(n)))))
     if n <= MIDDLE_LIMIT:
         methods.append(("middle ball", lambda d: via_middle(
             initial, goal, max_moves, fixed, searches, deadline=d)))

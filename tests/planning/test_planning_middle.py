@@ -48,15 +48,20 @@ def test_ring_is_a_closed_walk_of_neighbours():
 
 
 @pytest.mark.parametrize("seed", range(5))
-def test_pairs_apart_take_the_middle_ball_and_stay_short(seed):
+def test_pairs_apart_stay_short_through_the_local_method_or_the_middle_ball(seed):
     a, b = apart_pair(10, seed)
     plan = plan_robust(Configuration.from_cells(a), b)
     assert plan.reached, plan.reason
-    assert plan.method == "middle ball"
+    assert plan.method in ("local", "middle ball")
     assert_legal(plan)
     assert plan.final.cells == b
     # the strip route took 4.4-5.7x the distance bound on these pairs
     assert plan.move_count < 2.5 * plan.lower_bound
+    # the middle ball alone plans them short too (the local method comes first now)
+    start = Configuration.from_cells(a)
+    serial = via_middle(start, b, 10**6)
+    assert replay(start, serial).cells == b
+    assert len(serial) < 2.5 * plan.lower_bound
 
 
 def test_middle_ball_lies_between_both_configurations():
@@ -97,7 +102,9 @@ def test_small_pair_the_centred_ball_misses_goes_through_a_nudged_ball():
     b = random_blob(25, 880593, compact=0.6)
     with pytest.raises(PlanningFailure):
         _via(Configuration.from_cells(a), b, middles(a, b)[0], 10**6, None, direct_budget(25))
-    plan = plan_robust(Configuration.from_cells(a), b)
-    assert plan.reached and plan.method == "middle ball"
+    start = Configuration.from_cells(a)
+    assert replay(start, via_middle(start, b, 10**6, budget=direct_budget(25))).cells == b
+    plan = plan_robust(start, b)  # the local method now plans it before the middle ball
+    assert plan.reached and plan.method in ("local", "middle ball")
     assert_legal(plan)
     assert plan.final.cells == b

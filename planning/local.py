@@ -1,0 +1,92 @@
+"""The local method of the robust planner: moves that grow with the distance to
+travel, not with the number of modules.
+
+Two planners, each run from the start to the goal and, failing that, from
+the goal back to the start (reversed: every rotation is undone by the
+opposite one over the same cells):
+
+* the **window flow** (:func:`hexbot.planning.windows.window_flow`): the
+  modules off the goal are assigned to the empty goal cells (cheapest
+  assignment), and the nearest pairs are joined by the fewest rotations
+  inside a corridor around them (A*);
+* the **kernel flow** (:mod:`hexbot.planning.flow`): a core of common modules
+  stays, voids next to it are filled in an order that walls in nothing,
+  by journeys and chains (void propagation), with window fixes when stuck.
+
+Both flows run forward and the shorter plan is kept; backward only when
+neither succeeds. Neither is complete (restricted pivoting
+makes that impossible for a fast planner); a failure hands over to the next
+method of :func:`hexbot.planning.robust.plan_robust`. Measured in
+docs/planning.md ("Local method").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline, PlanningFailure
+from hexbot.planning.configuration import Configuration
+from hexbot.planning.flow import kernel_flow
+from hexbot.planning.hexlattice import Cell
+from hexbot.planning.moves import Move
+from hexbot.planning.tracker import Tracker
+from hexbot.planning.windows import window_flow
+
+#: Above this many modules the local method is not tried: it planned none of the
+#: 300-module bench pairs tried (each failure cost 16-53 s) and none at 1,000.
+LOCAL_LIMIT = 150
+
+
+
+def local_seconds(count: int) -> float:
+    """The local method's own time cap: its successes at 100 modules take seconds,
+    its failures can search for minutes (measured in docs/planning.md)."""
+    return 10.0 + count / 5
+
+
+Flow = Callable[[Tracker, frozenset[Cell], Cell | None, Deadline, str], None]
+FLOWS: tuple[tuple[str, Flow], ...] = (("window", window_flow), ("kernel", kernel_flow))
+
+
+def forward(initial: Configuration, goal: frozenset[Cell], flow: Flow, max_moves: int,
+            fixed: Cell | None, deadline: Deadline, method: str) -> list[Move]:
+    tracker = Tracker(initial, max_moves)
+    flow(tracker, goal, fixed, deadline, method)
+    return tracker.moves
+
+
+def backward(initial: Configuration, goal: frozenset[Cell], flow: Flow, max_moves: int,
+             fixed: Cell | None, deadline: Deadline, method: str) -> list[Move]:
+    """Plan goal -> initial with provisional ids, then reverse it onto the real modules."""
+    from hexbot.planning.canonical import replay, undone
+
+    start = Configuration.from_cells(goal, first_id=1_000_000)
+    moves = forward(start, initial.cells, flow, max_moves, fixed, deadline, method)
+    end = replay(start, moves)
+    return undone(moves, {end[c].id: initial[c].id for c in end})
+
+
+def via_local(initial: Configuration, goal: frozenset[Cell], max_moves: int,
+              fixed: Cell | None = None, deadline: Deadline = NO_DEADLINE,
+              method: str = "local") -> list[Move]:
+    """The shorter plan of both flows run forward; only when neither succeeds,
+    both run backward. :class:`PlanningFailure` with the reason of every try
+    when none succeeds; when the time runs out after a success, that plan."""
+    failures = []
+    best: list[Move] | None = None
+    for direction in (forward, backward):
+        for name, flow in FLOWS:
+            try:
+                serial = direction(initial, goal, flow, max_moves, fixed, deadline, method)
+            except BudgetExhausted:
+                if best is not None:
+                    return best
+                raise
+            except PlanningFailure as exc:
+                failures.append(f"{name} {direction.__name__}: {exc}".replace(f"{method}: ", ""))
+                continue
+            if best is None or len(serial) < len(best):
+                best = serial
+        if best is not None:
+            return best
+    raise PlanningFailure(f"{method}: " + "; ".join(failures))

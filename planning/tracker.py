@@ -1,0 +1,37 @@
+"""The configuration a local planner works on, and the moves it has made.
+
+The local planners (:mod:`hexbot.planning.flow`, :mod:`hexbot.planning.windows`)
+think in cells; the plan needs module ids. A :class:`Tracker` keeps both:
+the occupied cells, which module stands on each, and the serial
+:class:`~hexbot.planning.moves.Move` list, appended as rotations are applied.
+"""
+
+from __future__ import annotations
+
+from hexbot.planning.budget import PlanningFailure
+from hexbot.planning.configuration import Configuration
+from hexbot.planning.hexlattice import Cell
+from hexbot.planning.moves import Move
+
+#: One rotation: (from, to, Table 4-3 row, substrate cell).
+Hop = tuple[Cell, Cell, object, Cell]
+
+
+class Tracker:
+    def __init__(self, initial: Configuration, max_moves: int) -> None:
+        self.occupied: set[Cell] = set(initial.cells)
+        self.ids: dict[Cell, int] = {c: m.id for c, m in initial.items()}
+        self.moves: list[Move] = []
+        self.max_moves = max_moves
+
+    def roll(self, hops: list[Hop]) -> None:
+        """Apply rotations in order (one module's journey, or several modules' hops)."""
+        if len(self.moves) + len(hops) > self.max_moves:
+            raise PlanningFailure(f"more than {self.max_moves} moves needed")
+        for src, dst, rule, sub in hops:
+            module = self.ids.pop(src)
+            self.moves.append(Move(module, src, dst, rule.joint, rule.direction, sub,
+                                   self.ids[sub]))
+            self.ids[dst] = module
+            self.occupied.discard(src)
+            self.occupied.add(dst)

@@ -1,0 +1,152 @@
+"""Window search: the shortest local fix, found by A* over a few cells.
+
+A module off the goal (an *end*) and a goal cell still empty (a *void*)
+are joined by the fewest rotations of the modules inside a window around
+them, every other module fixed: best-first over the window's occupied
+cells, each successor one Table 4-3 rotation of a module that is not a cut
+vertex of the whole configuration, until the window's *badness* (modules
+off the goal plus goal cells empty) goes down. Such a fix can shift goal
+modules along the way (the void travels towards the end, the thesis' void
+propagation) and open the inlets that cut the surface into segments
+(:mod:`hexbot.planning.surface`), which a plain journey cannot.
+
+The window is a corridor: the cells within ``radius`` of the hex line from
+the end to the void. Its state space is bounded by ``max_states``.
+"""
+
+from __future__ import annotations
+
+import heapq
+
+import numpy as np
+from scipy.optimize import linear_sum_assignment
+
+from hexbot.planning.hexlattice import Cell, distance, neighbors
+from hexbot.planning.robust import _moves_from
+
+#: One rotation: (from, to, Table 4-3 row, substrate cell).
+Hop = tuple[Cell, Cell, object, Cell]
+
+
+def disc(center: Cell, radius: int) -> set[Cell]:
+    """The cells within ``radius`` of ``center``."""
+    x0, y0 = center
+    return {(x0 + dx, y0 + dy)
+            for dx in range(-radius, radius + 1) for dy in range(-radius, radius + 1)
+            if distance((x0 + dx, y0 + dy), center) <= radius}
+
+
+def corridor(a: Cell, b: Cell, radius: int) -> set[Cell]:
+    """The cells within ``radius`` of the hex line from ``a`` to ``b``."""
+    steps = max(1, distance(a, b))
+    cells: set[Cell] = set()
+    for k in range(steps + 1):
+        point = (round(a[0] + (b[0] - a[0]) * k / steps), round(a[1] + (b[1] - a[1]) * k / steps))
+        cells |= disc(point, radius)
+    return cells
+
+
+def fix_in_window(occupied: set[Cell], goal: frozenset[Cell], window: set[Cell],
+                  fixed: Cell | None = None, max_states: int = 3000) -> list[Hop] | None:
+    """The fewest rotations inside ``window`` that lower its badness, or None
+    (none within ``max_states`` window states)."""
+    outside = occupied - window
+    start = frozenset(occupied & window)
+    holes = [c for c in window if c in goal]
+
+    def badness(state: frozenset[Cell]) -> int:
+        return sum(1 for c in state if c not in goal) + sum(1 for c in holes if c not in state)
+
+    def estimate(state: frozenset[Cell]) -> int:
+        off = [c for c in state if c not in goal]
+        empty = [c for c in holes if c not in state]
+        if not off or not empty:
+            return 0
+        return min(distance(a, b) for a in off for b in empty) - 1
+
+    before = badness(start)
+    parent: dict[frozenset[Cell], tuple[frozenset[Cell], Hop] | None] = {start: None}
+    cost = {start: 0}
+    heap = [(estimate(start), 0, start)]
+    tie = 0
+    while heap and len(parent) < max_states:
+        _, _, state = heapq.heappop(heap)
+        whole = outside | state
+        for cell in sorted(state):
+            if cell == fixed or not _can_leave(whole, cell):
+                continue
+            options = [m for m in _moves_from(cell, whole, cell) if m[2] in window]
+            if not options:
+                continue
+            for rule, sub, dst in options:
+                after = (state - {cell}) | {dst}
+                if after in parent:
+                    continue
+                parent[after] = (state, (cell, dst, rule, sub))
+                cost[after] = cost[state] + 1
+                if badness(after) < before:
+                    return _unwind(parent, after)
+                tie += 1
+                heapq.heappush(heap, (cost[after] + estimate(after), tie, after))
+    return None
+
+
+def _can_leave(occupied: set[Cell] | frozenset[Cell], cell: Cell) -> bool:
+    """Three consecutive sides free (a rotation needs them) and the occupied ones in
+    one arc (so leaving cannot disconnect anything): six look-ups, and most cells
+    of a window fail here before their twelve rotations are tried."""
+    ring = [n in occupied for n in neighbors(cell)]
+    if not any(not ring[i] and not ring[i - 1] and not ring[i - 2] for i in range(6)):
+        return False
+    return sum(1 for i in range(6) if ring[i] and not ring[i - 1]) <= 1
+
+
+def _unwind(parent: dict, state: frozenset[Cell]) -> list[Hop]:
+    hops = []
+    while parent[state] is not None:
+        state, hop = parent[state]
+        hops.append(hop)
+    return hops[::-1]
+
+
+def assigned_pairs(ends: set[Cell], voids: set[Cell]) -> list[tuple[int, Cell, Cell]]:
+    """(distance, end, void) of the cheapest assignment of ends onto voids, nearest first."""
+    ends_, voids_ = sorted(ends), sorted(voids)
+    cost = np.array([[distance(e, v) for v in voids_] for e in ends_])
+    rows, cols = linear_sum_assignment(cost)
+    return sorted((int(cost[r, c]), ends_[r], voids_[c]) for r, c in zip(rows, cols, strict=True))
+
+
+#: Corridor radii tried in turn, pairs tried per radius, window states per search.
+RADII = (1, 2, 3)
+PAIRS_TRIED = 6
+MAX_STATES = 3000
+
+
+def window_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
+                method: str = "local") -> None:
+    """Fix windows until every module is on the goal (raises PlanningFailure when
+    no corridor of the nearest assigned pairs has a fix). Each fix lowers the
+    number of modules off the goal, so the loop ends."""
+    from hexbot.planning.budget import PlanningFailure
+
+    while True:
+        deadline.check(method)
+        ends = tracker.occupied - goal
+        if not ends:
+            return
+        pairs = assigned_pairs(ends, set(goal - tracker.occupied))
+        hops = None
+        for radius in RADII:
+            for _, end, void in pairs[:PAIRS_TRIED]:
+                hops = fix_in_window(tracker.occupied, goal, corridor(end, void, radius), fixed,
+                                     MAX_STATES)
+                if hops:
+                    break
+            if hops:
+                break
+        if not hops:
+            raise PlanningFailure(f"{method}: window search stuck with {len(ends)} modules off "
+                                  f"the goal (no fix in a corridor of radius {RADII[-1]} within "
+                                  f"{MAX_STATES} states)")
+        tracker.roll(hops)
