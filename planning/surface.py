@@ -12,7 +12,7 @@ has four occupied sides, so no rotation enters it).
 This is what makes a "surface flow" planner non-local on random shapes: a
 module can only reach the cells of its own segment, so a local plan must
 first open the inlets between the cells to leave and the cells to fill
-(docs/planning.md, "Why the surface flow is not local yet").
+(docs/planning.md, "Why the surface flow is not local").
 """
 
 from __future__ import annotations
