@@ -19,7 +19,7 @@ instead, as the literature on pivoting modules does:
    shape; the direct planner shifts one onto the other in hops of at most
    ``HOP`` cells (convex shapes have no notches, so it does not stall there).
 3. **strip -> goal** is step 1 run on the goal and reversed: every rotation is
-   undone by the opposite one over the same cells (:func:`reverse_move`).
+   undone by the opposite one over the same cells (:func:`undone`).
 
 Each step raises :class:`PlanningFailure` when it cannot continue; the
 caller then tries a narrower strip (width 1 is a line, which needs the most
@@ -37,13 +37,11 @@ from hexbot.planning.configuration import (
     articulation_points,
     contact_hops,
 )
-from hexbot.planning.hexlattice import Cell, distance, neighbors, rotate_cell, wrap
+from hexbot.planning.hexlattice import ROTATIONS, Cell, distance, neighbors, rotate_cell, wrap
 from hexbot.planning.moves import Move, orientation_after
 from hexbot.planning.robust import (
     PlanningFailure,
-    _moves_from,
     _single_arc,
-    reverse_move,
     serial_moves,
     unwind,
 )
@@ -74,20 +72,44 @@ def strip_shape(anchor: Cell, count: int, width: int) -> frozenset[Cell]:
     return frozenset([anchor, *strip_cells(anchor, count, width)])
 
 
+# Table 4-3 as flat offsets from the mobile module, in the order of ROTATIONS (the
+# order robust._moves_from tries them, so the searches below find the same paths):
+# (rule, substrate dx, dy, goal dx, dy, swept dx, dy three times)
+_FLAT = [(rule, *sub, *goal, *swept[0], *swept[1], *swept[2])
+         for rule, sub, goal, swept in
+         ((r, *r.at((0, 0))) for r in ROTATIONS)]
+
+
 def _path_to(occupied: set[Cell], start: Cell, target: Cell) -> list | None:
-    """Shortest Table 4-3 path of the module at ``start`` to ``target``, others fixed."""
+    """Shortest Table 4-3 path of the module at ``start`` to ``target``, others fixed.
+
+    The hot loop of the strip route: the rotations are tested inline, with the
+    mover taken out of ``occupied`` for the search (it is then neither an obstacle
+    nor a substrate, as in ``robust._moves_from``), and put back."""
     parent: dict[Cell, tuple | None] = {start: None}
     queue = deque([start])
-    while queue:
-        cell = queue.popleft()
-        for rule, sub, goal in _moves_from(cell, occupied, start):
-            if goal in parent:
-                continue
-            parent[goal] = (cell, rule, sub)
-            if goal == target:
-                return unwind(parent, goal)
-            queue.append(goal)
-    return None
+    had = start in occupied
+    occupied.discard(start)
+    try:
+        while queue:
+            cell = queue.popleft()
+            x, y = cell
+            for rule, sx, sy, gx, gy, ax, ay, bx, by, cx, cy in _FLAT:
+                goal = (x + gx, y + gy)
+                if goal in parent or goal in occupied:
+                    continue
+                sub = (x + sx, y + sy)
+                if (sub not in occupied or (x + ax, y + ay) in occupied
+                        or (x + bx, y + by) in occupied or (x + cx, y + cy) in occupied):
+                    continue
+                parent[goal] = (cell, rule, sub)
+                if goal == target:
+                    return unwind(parent, goal)
+                queue.append(goal)
+        return None
+    finally:
+        if had:
+            occupied.add(start)
 
 
 def _reaching(occupied: set[Cell], target: Cell) -> set[Cell]:
@@ -96,12 +118,26 @@ def _reaching(occupied: set[Cell], target: Cell) -> set[Cell]:
     seen = {target}
     queue = deque([target])
     while queue:
-        cell = queue.popleft()
-        for _, _, goal in _moves_from(cell, occupied, cell):
-            if goal not in seen:
-                seen.add(goal)
-                queue.append(goal)
+        x, y = queue.popleft()
+        for _, sx, sy, gx, gy, ax, ay, bx, by, cx, cy in _FLAT:
+            goal = (x + gx, y + gy)
+            if goal in seen or goal in occupied:
+                continue
+            if ((x + sx, y + sy) not in occupied or (x + ax, y + ay) in occupied
+                    or (x + bx, y + by) in occupied or (x + cx, y + cy) in occupied):
+                continue
+            seen.add(goal)
+            queue.append(goal)
     return seen
+
+
+def _first_steps(occupied: set[Cell], cell: Cell):
+    """Cells the module at ``cell`` can roll to in one rotation, others fixed."""
+    x, y = cell
+    return [(x + gx, y + gy) for _, sx, sy, gx, gy, ax, ay, bx, by, cx, cy in _FLAT
+            if (x + sx, y + sy) in occupied and (x + gx, y + gy) not in occupied
+            and (x + ax, y + ay) not in occupied and (x + bx, y + by) not in occupied
+            and (x + cx, y + cy) not in occupied]
 
 
 #: Farthest modules (never cut vertices) tried with a path search each, before the
@@ -131,7 +167,7 @@ def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
     reach = _reaching(occupied, target)
     likely, unsure = [], []
     for k, cell in enumerate(order):  # farthest first: the first good one usually comes soon
-        if not any(g in reach for _, _, g in _moves_from(cell, occupied, cell)):
+        if not any(g in reach for g in _first_steps(occupied, cell)):
             continue
         likely.append(k)
         if k < farthest or _single_arc(occupied, cell):
@@ -186,6 +222,7 @@ def to_strip(config: Configuration, width: int,
         raise ValueError(f"the spine must end at the anchor {anchor}")
     built = set(roots)
     moves: list[Move] = []
+    cell = {}.setdefault
     order: list[Cell] = []
     for target in strip_cells(anchor, len(config) - len(roots) + 1, width):
         deadline.check("canonical strip")
@@ -210,6 +247,8 @@ def to_strip(config: Configuration, width: int,
         module = ids.pop(path[0][0])
         occupied.discard(path[0][0])
         for src, dst, rule, sub in path:
+            # one tuple per cell for the whole plan (millions of moves, a few thousand cells)
+            src, dst, sub = cell(src, src), cell(dst, dst), cell(sub, sub)
             moves.append(Move(module, src, dst, rule.joint, rule.direction, sub, ids[sub]))
         occupied.add(target)
         ids[target] = module
@@ -272,14 +311,23 @@ def reversed_to_strip(goal: frozenset[Cell], strip: Configuration, width: int,
     return undone(backward, real)
 
 
+# (substrate dx, dy, goal dx, dy) from a mobile module -> the rotation (at most one)
+_BY_OFFSETS = {(*rule.at((0, 0))[0], *rule.at((0, 0))[1]): rule for rule in ROTATIONS}
+
+
 def undone(backward: list[Move], real: dict[int, int]) -> list[Move]:
     """``backward`` undone move by move, last first, its provisional module ids
-    renamed by ``real`` (the constructor, not dataclasses.replace: once per move)."""
+    renamed by ``real``: each rotation is undone by the one from its end cell over
+    the same substrate back to its start (``robust.reverse_move``, by a table)."""
     out = []
     for m in reversed(backward):
-        r = reverse_move(m)
-        out.append(Move(real[r.module], r.src, r.dst, r.joint, r.direction, r.substrate,
-                        real[r.substrate_module]))
+        x, y = m.dst
+        rule = _BY_OFFSETS.get((m.substrate[0] - x, m.substrate[1] - y,
+                                m.src[0] - x, m.src[1] - y))
+        if rule is None:
+            raise ValueError(f"no rotation undoes {m}")
+        out.append(Move(real[m.module], m.dst, m.src, rule.joint, rule.direction, m.substrate,
+                        real[m.substrate_module]))
     return out
 
 
@@ -294,15 +342,26 @@ def _rotated(config: Configuration, steps: int) -> Configuration:
     return Configuration({rotate_cell(c, steps): m for c, m in config.items()})
 
 
-def _rotate_move(move: Move, steps: int) -> Move:
-    """The same rotation seen in a frame turned ``steps`` sixth-turns clockwise:
-    cells turn, and joint ``j`` becomes joint ``j + steps`` (sides turn with them)."""
+def _rotate_moves(moves: list[Move], steps: int) -> list[Move]:
+    """The same rotations seen in a frame turned ``steps`` sixth-turns clockwise:
+    cells turn, and joint ``j`` becomes joint ``j + steps`` (sides turn with them).
+    In place (one copy of a long plan at a time); each cell is turned once and
+    shared by the moves that use it."""
     if not steps % 6:
-        return move
-    # the constructor, not dataclasses.replace: this runs once per move of a plan
-    return Move(move.module, rotate_cell(move.src, steps), rotate_cell(move.dst, steps),
-                wrap(move.joint + steps), move.direction,
-                rotate_cell(move.substrate, steps), move.substrate_module)
+        return moves
+    turned: dict[Cell, Cell] = {}
+
+    def turn(cell: Cell) -> Cell:
+        out = turned.get(cell)
+        if out is None:
+            out = turned[cell] = rotate_cell(cell, steps)
+        return out
+
+    joints = {j: wrap(j + steps) for j in range(1, 7)}
+    for i, m in enumerate(moves):
+        moves[i] = Move(m.module, turn(m.src), turn(m.dst), joints[m.joint], m.direction,
+                        turn(m.substrate), m.substrate_module)
+    return moves
 
 
 def _via_strip_once(initial: Configuration, goal: frozenset[Cell], width: int,
@@ -311,8 +370,11 @@ def _via_strip_once(initial: Configuration, goal: frozenset[Cell], width: int,
     at_strip = replay(initial, first)
     shift = shift_strip(at_strip, anchor_of(initial.cells), anchor_of(goal), width, max_moves,
                         deadline)
-    last = reversed_to_strip(goal, replay(at_strip, shift), width, deadline)
-    return first + shift + last
+    at_goal_strip = replay(at_strip, shift)
+    first += shift
+    del shift
+    first += reversed_to_strip(goal, at_goal_strip, width, deadline)
+    return first
 
 
 def strip_estimate(initial: frozenset[Cell], goal: frozenset[Cell], turn: int) -> int:
@@ -376,7 +438,7 @@ def to_fixed_strip(config: Configuration, fixed: Cell, turn: int, width: int,
         stages = len(spine) if stages is None else stages - 1
         if stages < 1:  # cannot happen: each spine is shorter than the last
             raise PlanningFailure("the spine did not shrink")
-        part = [_rotate_move(m, turn) for m in to_strip(turned, width, deadline, keep=spine)]
+        part = _rotate_moves(to_strip(turned, width, deadline, keep=spine), turn)
         moves += part
         current = replay(current, part)
         if len(spine) == 1:
@@ -437,6 +499,6 @@ def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10
                 continue
             if len(moves) > max_moves:
                 raise PlanningFailure(f"more than {max_moves} moves needed")
-            return [_rotate_move(m, turn) for m in moves]
+            return _rotate_moves(moves, turn)
     raise PlanningFailure("no canonical strip could be built (" + "; ".join(failures[:2])
                           + (f"; {len(failures) - 2} more" if len(failures) > 2 else "") + ")")
