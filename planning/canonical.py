@@ -35,9 +35,17 @@ from hexbot.planning.configuration import (
     Configuration,
     Module,
     articulation_points,
-    contact_hops,
 )
-from hexbot.planning.hexlattice import ROTATIONS, Cell, distance, neighbors, rotate_cell, wrap
+from hexbot.planning.hexlattice import (
+    ROTATIONS,
+    SIDE_OFFSETS,
+    SIDES,
+    Cell,
+    distance,
+    neighbors,
+    rotate_cell,
+    wrap,
+)
 from hexbot.planning.moves import Move, orientation_after
 from hexbot.planning.robust import (
     PlanningFailure,
@@ -71,6 +79,8 @@ def strip_cells(anchor: Cell, count: int, width: int) -> list[Cell]:
 def strip_shape(anchor: Cell, count: int, width: int) -> frozenset[Cell]:
     return frozenset([anchor, *strip_cells(anchor, count, width)])
 
+
+_AROUND = [SIDE_OFFSETS[s] for s in SIDES]
 
 # Table 4-3 as flat offsets from the mobile module, in the order of ROTATIONS (the
 # order robust._moves_from tries them, so the searches below find the same paths):
@@ -192,17 +202,22 @@ def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
 
 
 def _hops_from(occupied: set[Cell], roots: list[Cell]) -> dict[Cell, int]:
-    """Contact hops from the nearest of ``roots`` (one breadth-first pass)."""
-    if len(roots) == 1:
-        return contact_hops(occupied, roots[0])
+    """Contact hops from the nearest of ``roots`` (one breadth-first pass, level by
+    level; the same numbers as ``configuration.contact_hops``, inline: to_strip
+    recomputes them whenever a module nearer than the farthest had to move)."""
     hops = dict.fromkeys(roots, 0)
-    queue = deque(roots)
-    while queue:
-        cell = queue.popleft()
-        for n in neighbors(cell):
-            if n in occupied and n not in hops:
-                hops[n] = hops[cell] + 1
-                queue.append(n)
+    frontier = list(roots)
+    depth = 0
+    while frontier:
+        depth += 1
+        reached = []
+        for x, y in frontier:
+            for dx, dy in _AROUND:
+                n = (x + dx, y + dy)
+                if n in occupied and n not in hops:
+                    hops[n] = depth
+                    reached.append(n)
+        frontier = reached
     return hops
 
 
