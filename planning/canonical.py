@@ -28,6 +28,8 @@ moves and stalls least).
 
 from __future__ import annotations
 
+import bisect
+import heapq
 from collections import deque
 
 from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline
@@ -222,6 +224,64 @@ def _hops_from(occupied: set[Cell], roots: list[Cell]) -> dict[Cell, int]:
     return hops
 
 
+def _hops_without(occupied: set[Cell], hops: dict[Cell, int], gone: Cell) -> list[Cell]:
+    """Update ``hops`` (contact hops from the roots) in place for the module at
+    ``gone`` having left ``occupied`` (not a cut vertex: everything stays
+    reachable); return the cells whose hops grew.
+
+    Removing a module can only lengthen paths, and only for the cells whose every
+    shortest path went through it: found level by level from its neighbours one
+    hop farther (a cell keeps its number if a neighbour one hop nearer kept its
+    own), then numbered again from their unaffected neighbours. Usually a few
+    cells; the same numbers as a new search (:func:`_hops_from`), which costs
+    O(n) each time a module nearer than the farthest has to move."""
+    h = hops.pop(gone)
+    x, y = gone
+    level = [n for n in ((x + dx, y + dy) for dx, dy in _AROUND) if hops.get(n) == h + 1]
+    grown: set[Cell] = set()
+    while level:
+        deeper = []
+        for u in level:
+            if u in grown:
+                continue
+            d = hops[u] - 1
+            ux, uy = u
+            around = [(ux + dx, uy + dy) for dx, dy in _AROUND]
+            if any(hops.get(w) == d and w not in grown for w in around):
+                continue
+            grown.add(u)
+            deeper.extend(w for w in around if hops.get(w) == d + 2)
+        level = deeper
+    if not grown:
+        return []
+    for u in grown:
+        del hops[u]
+    heap = []
+    for u in grown:
+        ux, uy = u
+        best = min((hops[w] for w in ((ux + dx, uy + dy) for dx, dy in _AROUND) if w in hops),
+                   default=None)
+        if best is not None:
+            heap.append((best + 1, u))
+    heapq.heapify(heap)
+    while heap:
+        d, u = heapq.heappop(heap)
+        if u in hops:
+            continue
+        hops[u] = d
+        ux, uy = u
+        for dx, dy in _AROUND:
+            w = (ux + dx, uy + dy)
+            if w in grown and w not in hops:
+                heapq.heappush(heap, (d + 1, w))
+    return sorted(grown)
+
+
+#: Above this many cells with longer hops, the order is sorted again (below, each
+#: is moved to its place).
+RESORT = 64
+
+
 def to_strip(config: Configuration, width: int,
              deadline: Deadline = NO_DEADLINE, keep: list[Cell] | None = None) -> list[Move]:
     """Serial moves that gather ``config`` into the strip at its anchor.
@@ -245,8 +305,6 @@ def to_strip(config: Configuration, width: int,
         if target in occupied:  # cannot happen: every cell right of the anchor is empty
             raise PlanningFailure(f"strip cell {target} is occupied")
         if not order:
-            # farthest first; taking a farthest module changes no other distance, so the
-            # order is only recomputed when a nearer module had to go instead
             hops = _hops_from(occupied, roots)
             order = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
         top = hops[order[0]]
@@ -258,10 +316,19 @@ def to_strip(config: Configuration, width: int,
                 f"{len(moves)} moves")
         k, path = picked
         taken = order.pop(k)
-        if hops[taken] != top:
-            order = []
-        module = ids.pop(path[0][0])
-        occupied.discard(path[0][0])
+        module = ids.pop(taken)
+        occupied.discard(taken)
+        # farthest first; taking a farthest module changes no other distance; a nearer
+        # one may lengthen the hops of the cells behind it, which then move forward
+        grown = _hops_without(occupied, hops, taken) if hops[taken] != top else []
+        hops.pop(taken, None)  # (a farthest one: nothing behind it to update)
+        if len(grown) > RESORT:
+            order.sort(key=lambda c: (-hops[c], c))
+        elif grown:
+            moved = set(grown)
+            order = [c for c in order if c not in moved]
+            for c in grown:
+                bisect.insort(order, c, key=lambda c: (-hops[c], c))
         for src, dst, rule, sub in path:
             # one tuple per cell for the whole plan (millions of moves, a few thousand cells)
             src, dst, sub = cell(src, src), cell(dst, dst), cell(sub, sub)
