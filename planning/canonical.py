@@ -379,16 +379,49 @@ def _distances_to(occupied: set[Cell], target: Cell) -> dict[Cell, int]:
     return dist
 
 
+def _free_three(blocked: set[Cell], cell: Cell) -> bool:
+    """Has ``cell`` three consecutive sides outside ``blocked`` (a rotation can enter it)?"""
+    x, y = cell
+    free = [(x + dx, y + dy) not in blocked for dx, dy in _AROUND]
+    return any(free[i] and free[i - 1] and free[i - 2] for i in range(6))
+
+
+def _fill_order(targets: list[Cell], occupied: set[Cell]) -> list[Cell] | None:
+    """``targets`` (in build order) in an order in which each can be entered, the
+    modules in ``occupied`` counted as staying (those that leave may still be
+    there): peeled from the last one filled, the latest in build order first
+    among those with three consecutive free sides; None if some never has."""
+    remaining = set(targets)
+    index = {c: i for i, c in enumerate(targets)}
+    blocked = occupied | remaining
+    heap = [(-index[c], c) for c in targets if _free_three(blocked, c)]
+    heapq.heapify(heap)
+    queued = {c for _, c in heap}
+    peeled = []
+    while heap:
+        _, cell = heapq.heappop(heap)
+        remaining.discard(cell)
+        blocked.discard(cell)
+        peeled.append(cell)
+        x, y = cell
+        for dx, dy in _AROUND:
+            n = (x + dx, y + dy)
+            if n in remaining and n not in queued and _free_three(blocked, n):
+                heapq.heappush(heap, (-index[n], n))
+                queued.add(n)
+    return None if remaining else peeled[::-1]
+
+
 def _hop(config: Configuration, start: Cell, end: Cell, width: int,
          deadline: Deadline) -> list[Move] | None:
     """Serial moves taking the strip at ``start`` to the one at the neighbouring
     anchor ``end``, in the strip's own order; None when it gets stuck.
 
-    The cells to fill are filled in the build order of the new strip (each has
-    the cells before it occupied, so it is enterable, as in :func:`to_strip`);
-    each gets the module, among those that leave, whose first rotation lands
-    nearest to it (one search outward from the cell), that is not a cut vertex
-    (local test) and has a path (a search each). Cells that stay never move.
+    The cells to fill are filled in the build order of the new strip as far as
+    each can then be entered (:func:`_fill_order`); each gets the module, among
+    those that leave, whose first rotation lands nearest to it (one search
+    outward from the cell), that is not a cut vertex (local test) and has a path
+    (a search each). Cells that stay never move.
     The direct method did this before, with its general void-order test on
     every candidate void: most of the time of a strip route at 3,000 modules."""
     count = len(config)
@@ -400,8 +433,11 @@ def _hop(config: Configuration, start: Cell, end: Cell, width: int,
     occupied = set(config.cells)
     ids = {c: m.id for c, m in config.items()}
     leavers = [c for c in reversed(old_order) if c not in new]  # farthest first
+    order = _fill_order([c for c in new_order if c not in occupied], occupied)
+    if order is None:
+        return None
     moves: list[Move] = []
-    for target in (c for c in new_order if c not in occupied):
+    for target in order:
         deadline.check("canonical strip")
         dist = _distances_to(occupied, target)
         ranked = []
