@@ -48,7 +48,7 @@ from hexbot.planning.hexlattice import (
     rotate_cell,
     wrap,
 )
-from hexbot.planning.moves import Move, orientation_after
+from hexbot.planning.moves import Move
 from hexbot.planning.robust import (
     PlanningFailure,
     _single_arc,
@@ -340,15 +340,16 @@ def to_strip(config: Configuration, width: int,
 
 
 def replay(config: Configuration, moves: list[Move]) -> Configuration:
-    """The configuration after ``moves`` (fast: one dict, orientation tracked)."""
-    cells = dict(config.items())
+    """The configuration after ``moves`` (fast: one dict of (id, orientation), the
+    modules made once at the end; a strip route replays millions of moves)."""
+    cells = {c: (m.id, m.orientation) for c, m in config.items()}
+    turn = {"CW": 2, "CCW": -2}
     for move in moves:
-        module = cells.pop(move.src)
-        if module.id != move.module:
+        module, facing = cells.pop(move.src)
+        if module != move.module:
             raise ValueError(f"module {move.module} is not at {move.src}")
-        cells[move.dst] = Module(module.id, orientation_after(module.orientation,
-                                                              move.direction))
-    return Configuration(cells)
+        cells[move.dst] = (module, (facing + turn[move.direction]) % 6)
+    return Configuration({c: Module(i, o) for c, (i, o) in cells.items()})
 
 
 def _hop_anchors(start: Cell, end: Cell, hop: int = HOP) -> list[Cell]:
@@ -517,9 +518,11 @@ _BY_OFFSETS = {(*rule.at((0, 0))[0], *rule.at((0, 0))[1]): rule for rule in ROTA
 def undone(backward: list[Move], real: dict[int, int]) -> list[Move]:
     """``backward`` undone move by move, last first, its provisional module ids
     renamed by ``real``: each rotation is undone by the one from its end cell over
-    the same substrate back to its start (``robust.reverse_move``, by a table)."""
+    the same substrate back to its start (``robust.reverse_move``, by a table).
+    Consumes ``backward`` (empty afterwards)."""
     out = []
-    for m in reversed(backward):
+    while backward:  # consumed from its end: the two lists together hold one plan
+        m = backward.pop()
         x, y = m.dst
         rule = _BY_OFFSETS.get((m.substrate[0] - x, m.substrate[1] - y,
                                 m.src[0] - x, m.src[1] - y))
@@ -664,7 +667,8 @@ def via_fixed_strip(initial: Configuration, goal: frozenset[Cell], fixed: Cell,
     if end.cells != at.cells:  # a bug, not a user error
         raise PlanningFailure("internal error: the two strips at the fixed module differ")
     real = {end[c].id: at[c].id for c in end}
-    return first + undone(backward, real)
+    first += undone(backward, real)
+    return first
 
 
 def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10**7,
