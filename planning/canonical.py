@@ -85,20 +85,36 @@ def strip_shape(anchor: Cell, count: int, width: int) -> frozenset[Cell]:
 
 _AROUND = [SIDE_OFFSETS[s] for s in SIDES]
 
-# Table 4-3 as flat offsets from the mobile module, in the order of ROTATIONS (the
-# order robust._moves_from tries them, so the searches below find the same paths):
-# (rule, substrate dx, dy, goal dx, dy, swept dx, dy three times)
-_FLAT = [(rule, *sub, *goal, *swept[0], *swept[1], *swept[2])
-         for rule, sub, goal, swept in
-         ((r, *r.at((0, 0))) for r in ROTATIONS)]
+# Table 4-3 by the occupancy around a mobile module. Every rotation only looks at
+# the 12 cells within two steps of it (6 neighbours, 6 second-ring cells between
+# them): with those as the bits of a mask, _OPEN[mask] lists the rotations open to
+# it, in the order of ROTATIONS (the order robust._moves_from tries them, so the
+# searches below find the same paths as the generic one): (rule, substrate dx,
+# dy, goal dx, dy). One mask of 12 look-ups per cell, instead of up to 60.
+_RING = sorted({o for r in ROTATIONS for o in (r.substrate, r.goal, *r.swept)})
+_RING_BITS = [(dx, dy, 1 << i) for i, (dx, dy) in enumerate(_RING)]
+
+
+_NEEDS = [((r, *r.substrate, *r.goal), 1 << _RING.index(r.substrate),
+           sum(1 << _RING.index(c) for c in (r.goal, *r.swept))) for r in ROTATIONS]
+_OPEN = [tuple(row for row, sub, free in _NEEDS if mask & sub and not mask & free)
+         for mask in range(1 << len(_RING))]
+
+
+def _mask(occupied: set[Cell], x: int, y: int) -> int:
+    mask = 0
+    for dx, dy, bit in _RING_BITS:
+        if (x + dx, y + dy) in occupied:
+            mask |= bit
+    return mask
 
 
 def _path_to(occupied: set[Cell], start: Cell, target: Cell) -> list | None:
     """Shortest Table 4-3 path of the module at ``start`` to ``target``, others fixed.
 
-    The hot loop of the strip route: the rotations are tested inline, with the
-    mover taken out of ``occupied`` for the search (it is then neither an obstacle
-    nor a substrate, as in ``robust._moves_from``), and put back."""
+    The hot loop of the strip route: the mover is taken out of ``occupied`` for
+    the search (it is then neither an obstacle nor a substrate, as in
+    ``robust._moves_from``) and put back."""
     parent: dict[Cell, tuple | None] = {start: None}
     queue = deque([start])
     had = start in occupied
@@ -107,15 +123,15 @@ def _path_to(occupied: set[Cell], start: Cell, target: Cell) -> list | None:
         while queue:
             cell = queue.popleft()
             x, y = cell
-            for rule, sx, sy, gx, gy, ax, ay, bx, by, cx, cy in _FLAT:
+            mask = 0
+            for dx, dy, bit in _RING_BITS:
+                if (x + dx, y + dy) in occupied:
+                    mask |= bit
+            for rule, sx, sy, gx, gy in _OPEN[mask]:
                 goal = (x + gx, y + gy)
-                if goal in parent or goal in occupied:
+                if goal in parent:
                     continue
-                sub = (x + sx, y + sy)
-                if (sub not in occupied or (x + ax, y + ay) in occupied
-                        or (x + bx, y + by) in occupied or (x + cx, y + cy) in occupied):
-                    continue
-                parent[goal] = (cell, rule, sub)
+                parent[goal] = (cell, rule, (x + sx, y + sy))
                 if goal == target:
                     return unwind(parent, goal)
                 queue.append(goal)
@@ -132,25 +148,18 @@ def _reaching(occupied: set[Cell], target: Cell) -> set[Cell]:
     queue = deque([target])
     while queue:
         x, y = queue.popleft()
-        for _, sx, sy, gx, gy, ax, ay, bx, by, cx, cy in _FLAT:
+        for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y)]:
             goal = (x + gx, y + gy)
-            if goal in seen or goal in occupied:
-                continue
-            if ((x + sx, y + sy) not in occupied or (x + ax, y + ay) in occupied
-                    or (x + bx, y + by) in occupied or (x + cx, y + cy) in occupied):
-                continue
-            seen.add(goal)
-            queue.append(goal)
+            if goal not in seen:
+                seen.add(goal)
+                queue.append(goal)
     return seen
 
 
-def _first_steps(occupied: set[Cell], cell: Cell):
+def _first_steps(occupied: set[Cell], cell: Cell) -> list[Cell]:
     """Cells the module at ``cell`` can roll to in one rotation, others fixed."""
     x, y = cell
-    return [(x + gx, y + gy) for _, sx, sy, gx, gy, ax, ay, bx, by, cx, cy in _FLAT
-            if (x + sx, y + sy) in occupied and (x + gx, y + gy) not in occupied
-            and (x + ax, y + ay) not in occupied and (x + bx, y + by) not in occupied
-            and (x + cx, y + cy) not in occupied]
+    return [(x + gx, y + gy) for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y)]]
 
 
 #: Farthest modules (never cut vertices) tried with a path search each, before the
@@ -368,15 +377,11 @@ def _distances_to(occupied: set[Cell], target: Cell) -> dict[Cell, int]:
         cell = queue.popleft()
         x, y = cell
         d = dist[cell] + 1
-        for _, sx, sy, gx, gy, ax, ay, bx, by, cx, cy in _FLAT:
+        for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y)]:
             goal = (x + gx, y + gy)
-            if goal in dist or goal in occupied:
-                continue
-            if ((x + sx, y + sy) not in occupied or (x + ax, y + ay) in occupied
-                    or (x + bx, y + by) in occupied or (x + cx, y + cy) in occupied):
-                continue
-            dist[goal] = d
-            queue.append(goal)
+            if goal not in dist:
+                dist[goal] = d
+                queue.append(goal)
     return dist
 
 
