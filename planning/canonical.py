@@ -292,8 +292,12 @@ RESORT = 64
 
 
 def to_strip(config: Configuration, width: int,
-             deadline: Deadline = NO_DEADLINE, keep: list[Cell] | None = None) -> list[Move]:
+             deadline: Deadline = NO_DEADLINE, keep: list[Cell] | None = None,
+             turn: int = 0) -> list[Move]:
     """Serial moves that gather ``config`` into the strip at its anchor.
+
+    ``turn``: the moves are given in the frame turned by ``turn`` sixth-turns
+    (as :func:`_rotate_moves` would turn them, without a second copy of them).
 
     ``keep``: a path of modules from a fixed module to the anchor that stays put
     (a *spine*, :func:`spine_to`); the others gather farthest from it first. A
@@ -307,7 +311,8 @@ def to_strip(config: Configuration, width: int,
         raise ValueError(f"the spine must end at the anchor {anchor}")
     built = set(roots)
     moves: list[Move] = []
-    cell = {}.setdefault
+    place = _framer(turn)
+    joints = {j: wrap(j + turn) for j in range(1, 7)}
     order: list[Cell] = []
     for target in strip_cells(anchor, len(config) - len(roots) + 1, width):
         deadline.check("canonical strip")
@@ -339,9 +344,8 @@ def to_strip(config: Configuration, width: int,
             for c in grown:
                 bisect.insort(order, c, key=lambda c: (-hops[c], c))
         for src, dst, rule, sub in path:
-            # one tuple per cell for the whole plan (millions of moves, a few thousand cells)
-            src, dst, sub = cell(src, src), cell(dst, dst), cell(sub, sub)
-            moves.append(Move(module, src, dst, rule.joint, rule.direction, sub, ids[sub]))
+            moves.append(Move(module, place(src), place(dst), joints[rule.joint],
+                              rule.direction, place(sub), ids[sub]))
         occupied.add(target)
         ids[target] = module
         built.add(target)
@@ -507,11 +511,13 @@ def shift_strip(config: Configuration, start: Cell, end: Cell, width: int,
 
 
 def reversed_to_strip(goal: frozenset[Cell], strip: Configuration, width: int,
-                      deadline: Deadline = NO_DEADLINE) -> list[Move]:
-    """Serial moves from ``strip`` (the goal's strip, with real module ids) to ``goal``."""
+                      deadline: Deadline = NO_DEADLINE, turn: int = 0) -> list[Move]:
+    """Serial moves from ``strip`` (the goal's strip, with real module ids) to ``goal``,
+    given in the frame turned by ``turn`` (see :func:`to_strip`)."""
     provisional = Configuration.from_cells(goal, first_id=10**6)
-    backward = to_strip(provisional, width, deadline)
-    end = replay(provisional, backward)
+    backward = to_strip(provisional, width, deadline, turn=turn)
+    end = replay(_rotated(provisional, turn), backward)
+    strip = _rotated(strip, turn)
     real = {end[c].id: strip[c].id for c in end}
     return undone(backward, real)
 
@@ -549,13 +555,9 @@ def _rotated(config: Configuration, steps: int) -> Configuration:
     return Configuration({rotate_cell(c, steps): m for c, m in config.items()})
 
 
-def _rotate_moves(moves: list[Move], steps: int) -> list[Move]:
-    """The same rotations seen in a frame turned ``steps`` sixth-turns clockwise:
-    cells turn, and joint ``j`` becomes joint ``j + steps`` (sides turn with them).
-    In place (one copy of a long plan at a time); each cell is turned once and
-    shared by the moves that use it."""
-    if not steps % 6:
-        return moves
+def _framer(steps: int):
+    """Cell -> the same cell turned ``steps`` sixth-turns, one tuple per cell for a
+    whole plan (millions of moves over a few thousand cells)."""
     turned: dict[Cell, Cell] = {}
 
     def turn(cell: Cell) -> Cell:
@@ -564,6 +566,17 @@ def _rotate_moves(moves: list[Move], steps: int) -> list[Move]:
             out = turned[cell] = rotate_cell(cell, steps)
         return out
 
+    return turn
+
+
+def _rotate_moves(moves: list[Move], steps: int) -> list[Move]:
+    """The same rotations seen in a frame turned ``steps`` sixth-turns clockwise:
+    cells turn, and joint ``j`` becomes joint ``j + steps`` (sides turn with them).
+    In place (one copy of a long plan at a time); each cell is turned once and
+    shared by the moves that use it."""
+    if not steps % 6:
+        return moves
+    turn = _framer(steps)
     joints = {j: wrap(j + steps) for j in range(1, 7)}
     for i, m in enumerate(moves):
         moves[i] = Move(m.module, turn(m.src), turn(m.dst), joints[m.joint], m.direction,
@@ -572,15 +585,21 @@ def _rotate_moves(moves: list[Move], steps: int) -> list[Move]:
 
 
 def _via_strip_once(initial: Configuration, goal: frozenset[Cell], width: int,
-                    max_moves: int, deadline: Deadline = NO_DEADLINE) -> list[Move]:
-    first = to_strip(initial, width, deadline)
-    at_strip = replay(initial, first)
-    shift = shift_strip(at_strip, anchor_of(initial.cells), anchor_of(goal), width, max_moves,
-                        deadline)
+                    max_moves: int, deadline: Deadline = NO_DEADLINE,
+                    turn: int = 0) -> list[Move]:
+    """initial -> strip -> goal's strip -> goal, the strips growing in the frame
+    turned by ``turn``: the problem is turned, planned, and its moves turned back
+    (the two gatherings, nearly all of the moves, make them turned back at once)."""
+    turned = _rotated(initial, -turn)
+    goal_turned = frozenset(rotate_cell(c, -turn) for c in goal)
+    first = to_strip(turned, width, deadline, turn=turn)
+    at_strip = _rotated(replay(initial, first), -turn)
+    shift = shift_strip(at_strip, anchor_of(turned.cells), anchor_of(goal_turned), width,
+                        max_moves, deadline)
     at_goal_strip = replay(at_strip, shift)
-    first += shift
+    first += _rotate_moves(shift, turn)
     del shift
-    first += reversed_to_strip(goal, at_goal_strip, width, deadline)
+    first += reversed_to_strip(goal_turned, at_goal_strip, width, deadline, turn)
     return first
 
 
@@ -645,7 +664,7 @@ def to_fixed_strip(config: Configuration, fixed: Cell, turn: int, width: int,
         stages = len(spine) if stages is None else stages - 1
         if stages < 1:  # cannot happen: each spine is shorter than the last
             raise PlanningFailure("the spine did not shrink")
-        part = _rotate_moves(to_strip(turned, width, deadline, keep=spine), turn)
+        part = to_strip(turned, width, deadline, keep=spine, turn=turn)
         moves += part
         current = replay(current, part)
         if len(spine) == 1:
@@ -697,9 +716,7 @@ def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10
                     if len(moves) > max_moves:
                         raise PlanningFailure(f"more than {max_moves} moves needed")
                     return moves
-                moves = _via_strip_once(_rotated(initial, -turn),
-                                        frozenset(rotate_cell(c, -turn) for c in goal),
-                                        width, max_moves, deadline)
+                moves = _via_strip_once(initial, goal, width, max_moves, deadline, turn)
             except BudgetExhausted:
                 raise
             except PlanningFailure as exc:
@@ -707,6 +724,6 @@ def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10
                 continue
             if len(moves) > max_moves:
                 raise PlanningFailure(f"more than {max_moves} moves needed")
-            return _rotate_moves(moves, turn)
+            return moves
     raise PlanningFailure("no canonical strip could be built (" + "; ".join(failures[:2])
                           + (f"; {len(failures) - 2} more" if len(failures) > 2 else "") + ")")
