@@ -54,6 +54,7 @@ _BITS = [(dx, dy, 1 << i) for i, (dx, dy) in enumerate(_AROUND)]
 
 # (joint, direction) -> offsets of the goal and the three swept cells from the start
 _CELLS = {(r.joint, r.direction): (r.goal, *r.swept) for r in ROTATIONS}
+_FLAT = {key: tuple(v for cell in cells for v in cell) for key, cells in _CELLS.items()}
 
 
 def cells_of(move: Move) -> tuple[Cell, ...]:
@@ -136,45 +137,51 @@ def schedule_parallel(initial: Configuration, serial: list[Move],
     ready: list[int] = []  # heap of moves whose dependencies all ran
     admitted = 0
 
-    def admit(k: int) -> None:
-        move = serial[k]
-        x, y = move.src
-        deps = set()
-        j = last_of.get(move.module)
-        if j is not None and not done[j]:
-            deps.add(j)
-        j = last_use.get(move.substrate)
-        if j is not None and not done[j]:
-            deps.add(j)
-        for c in ((x, y), *[(x + dx, y + dy) for dx, dy in _CELLS[move.joint, move.direction]]):
-            j = last_use.get(c)
-            if j is not None and not done[j]:
-                deps.add(j)
-            leaners = leaning.pop(c, None)
-            if leaners:
-                deps |= leaners
-            last_use[c] = k
-        last_of[move.module] = k
-        leaners = leaning.get(move.substrate)
-        if leaners is None:
-            leaning[move.substrate] = {k}
-        else:
-            leaners.add(k)
-        for j in deps:
-            later = after.get(j)
-            if later is None:
-                after[j] = [k]
-            else:
-                later.append(k)
-        if deps:
-            waiting[k] = len(deps)
-        else:
-            heapq.heappush(ready, k)
+    last_use_get, leaning_pop, leaning_get = last_use.get, leaning.pop, leaning.get
+    after_get, last_of_get = after.get, last_of.get
 
     while admitted < total or ready or waiting:
+        # admit moves into the graph (the hot loop: a list of dependencies, repeats
+        # allowed, each counted and released once per listing)
         while admitted < total and len(waiting) + len(ready) < window:
-            admit(admitted)
+            k = admitted
             admitted += 1
+            move = serial[k]
+            x, y = move.src
+            gx, gy, ax, ay, bx, by, cx, cy = _FLAT[move.joint, move.direction]
+            deps = []
+            j = last_of_get(move.module)
+            if j is not None and not done[j]:
+                deps.append(j)
+            sub = move.substrate
+            j = last_use_get(sub)
+            if j is not None and not done[j]:
+                deps.append(j)
+            for c in ((x, y), (x + gx, y + gy), (x + ax, y + ay), (x + bx, y + by),
+                      (x + cx, y + cy)):
+                j = last_use_get(c)
+                if j is not None and not done[j]:
+                    deps.append(j)
+                leaners = leaning_pop(c, None)
+                if leaners:
+                    deps.extend(leaners)
+                last_use[c] = k
+            last_of[move.module] = k
+            leaners = leaning_get(sub)
+            if leaners is None:
+                leaning[sub] = {k}
+            else:
+                leaners.add(k)
+            if deps:
+                for j in deps:
+                    later = after_get(j)
+                    if later is None:
+                        after[j] = [k]
+                    else:
+                        later.append(k)
+                waiting[k] = len(deps)
+            else:
+                heapq.heappush(ready, k)
         if len(steps) % DEADLINE_EVERY == 0:
             deadline.check("parallel schedule")
         chosen: list[int] = []
