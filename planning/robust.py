@@ -22,7 +22,9 @@ move runs as soon as no earlier pending move touches its cells (start,
 goal, swept cells, substrate) or its module, and the modules that stay put
 in the step remain connected. A moving module is never a substrate and no
 two moves of a step share a cell. If that schedule gets stuck, the serial
-order is packed greedily instead (always possible).
+order is packed greedily instead (always possible). Both live in
+:mod:`hexbot.planning.schedule` and count against the time budget; when it
+runs out there, the plan runs one move per step and says so in a warning.
 
 Failures are reported, never hidden: disconnected inputs, different module
 counts, immobile configurations (Fig. 4-6: no module can rotate without
