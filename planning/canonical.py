@@ -101,54 +101,80 @@ _OPEN = [tuple(row for row, sub, free in _NEEDS if mask & sub and not mask & fre
          for mask in range(1 << len(_RING))]
 
 
-def _mask(occupied: set[Cell], x: int, y: int) -> int:
+#: ring offset -> its bit
+_BIT_AT = {(dx, dy): bit for dx, dy, bit in _RING_BITS}
+
+
+def _mask(occupied: set[Cell], x: int, y: int, masks: dict[Cell, int] | None = None) -> int:
+    """The ring mask of the cell (x, y); ``masks`` caches them for ``occupied``."""
+    if masks is not None:
+        mask = masks.get((x, y))
+        if mask is not None:
+            return mask
     mask = 0
     for dx, dy, bit in _RING_BITS:
         if (x + dx, y + dy) in occupied:
             mask |= bit
+    if masks is not None:
+        masks[x, y] = mask
     return mask
 
 
-def _path_to(occupied: set[Cell], start: Cell, target: Cell) -> list | None:
+def _forget(masks: dict[Cell, int], cell: Cell) -> None:
+    """``cell`` was filled or emptied: drop the masks that include it (the ring is
+    symmetric: the cells whose ring holds ``cell`` are ``cell``'s own ring)."""
+    x, y = cell
+    for dx, dy, _ in _RING_BITS:
+        masks.pop((x + dx, y + dy), None)
+
+
+def _path_to(occupied: set[Cell], start: Cell, target: Cell,
+             masks: dict[Cell, int] | None = None) -> list | None:
     """Shortest Table 4-3 path of the module at ``start`` to ``target``, others fixed.
 
-    The hot loop of the strip route: the mover is taken out of ``occupied`` for
-    the search (it is then neither an obstacle nor a substrate, as in
-    ``robust._moves_from``) and put back."""
+    The hot loop of the strip route. ``masks`` caches the ring masks of
+    ``occupied`` across searches (the movers of a gathering all travel the same
+    surface); the mover counts as absent (neither an obstacle nor a substrate,
+    as in ``robust._moves_from``): its bit is cleared in the masks around it."""
+    if masks is None:
+        masks = {}
+    masks_get = masks.get
+    x0, y0 = start
     parent: dict[Cell, tuple | None] = {start: None}
     queue = deque([start])
-    had = start in occupied
-    occupied.discard(start)
-    try:
-        while queue:
-            cell = queue.popleft()
-            x, y = cell
+    while queue:
+        cell = queue.popleft()
+        x, y = cell
+        mask = masks_get(cell)
+        if mask is None:
             mask = 0
             for dx, dy, bit in _RING_BITS:
                 if (x + dx, y + dy) in occupied:
                     mask |= bit
-            for rule, sx, sy, gx, gy in _OPEN[mask]:
-                goal = (x + gx, y + gy)
-                if goal in parent:
-                    continue
-                parent[goal] = (cell, rule, (x + sx, y + sy))
-                if goal == target:
-                    return unwind(parent, goal)
-                queue.append(goal)
-        return None
-    finally:
-        if had:
-            occupied.add(start)
+            masks[cell] = mask
+        dx, dy = x0 - x, y0 - y
+        if -2 <= dx <= 2 and -2 <= dy <= 2 and (dx, dy) in _BIT_AT:
+            mask &= ~_BIT_AT[dx, dy]
+        for rule, sx, sy, gx, gy in _OPEN[mask]:
+            goal = (x + gx, y + gy)
+            if goal in parent:
+                continue
+            parent[goal] = (cell, rule, (x + sx, y + sy))
+            if goal == target:
+                return unwind(parent, goal)
+            queue.append(goal)
+    return None
 
 
-def _reaching(occupied: set[Cell], target: Cell) -> set[Cell]:
+def _reaching(occupied: set[Cell], target: Cell,
+              masks: dict[Cell, int] | None = None) -> set[Cell]:
     """Empty cells from which a module can roll to ``target`` with every module fixed
     (one search outward from the target: rotations are reversible over the same cells)."""
     seen = {target}
     queue = deque([target])
     while queue:
         x, y = queue.popleft()
-        for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y)]:
+        for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y, masks)]:
             goal = (x + gx, y + gy)
             if goal not in seen:
                 seen.add(goal)
@@ -156,10 +182,11 @@ def _reaching(occupied: set[Cell], target: Cell) -> set[Cell]:
     return seen
 
 
-def _first_steps(occupied: set[Cell], cell: Cell) -> list[Cell]:
+def _first_steps(occupied: set[Cell], cell: Cell,
+                 masks: dict[Cell, int] | None = None) -> list[Cell]:
     """Cells the module at ``cell`` can roll to in one rotation, others fixed."""
     x, y = cell
-    return [(x + gx, y + gy) for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y)]]
+    return [(x + gx, y + gy) for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y, masks)]]
 
 
 #: Farthest modules (never cut vertices) tried with a path search each, before the
@@ -168,7 +195,8 @@ FARTHEST = 4
 
 
 def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
-                farthest: int = 0) -> tuple[int, list] | None:
+                farthest: int = 0,
+                masks: dict[Cell, int] | None = None) -> tuple[int, list] | None:
     """The first module of ``order`` that may leave and roll to ``target``, with its path.
 
     The first ``farthest`` modules of ``order`` are at the largest distance from
@@ -183,17 +211,17 @@ def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
     """
     tries = min(farthest, FARTHEST)
     for k in range(tries):
-        path = _path_to(occupied, order[k], target)
+        path = _path_to(occupied, order[k], target, masks)
         if path:
             return k, path
-    reach = _reaching(occupied, target)
+    reach = _reaching(occupied, target, masks)
     likely, unsure = [], []
     for k, cell in enumerate(order):  # farthest first: the first good one usually comes soon
-        if not any(g in reach for g in _first_steps(occupied, cell)):
+        if not any(g in reach for g in _first_steps(occupied, cell, masks)):
             continue
         likely.append(k)
         if k < farthest or _single_arc(occupied, cell):
-            path = _path_to(occupied, cell, target)
+            path = _path_to(occupied, cell, target, masks)
             if path:
                 return k, path
         else:
@@ -201,13 +229,13 @@ def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
     cuts = articulation_points(occupied)
     for k in unsure:
         if order[k] not in cuts:
-            path = _path_to(occupied, order[k], target)
+            path = _path_to(occupied, order[k], target, masks)
             if path:
                 return k, path
     tried = set(likely)
     for k, cell in enumerate(order):
         if k not in tried and cell not in cuts:
-            path = _path_to(occupied, cell, target)
+            path = _path_to(occupied, cell, target, masks)
             if path:
                 return k, path
     return None
@@ -313,6 +341,7 @@ def to_strip(config: Configuration, width: int,
     moves: list[Move] = []
     place = _framer(turn)
     joints = {j: wrap(j + turn) for j in range(1, 7)}
+    masks: dict[Cell, int] = {}  # ring masks of the cells searched, for ``occupied``
     order: list[Cell] = []
     for target in strip_cells(anchor, len(config) - len(roots) + 1, width):
         deadline.check("canonical strip")
@@ -323,7 +352,7 @@ def to_strip(config: Configuration, width: int,
             order = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
         top = hops[order[0]]
         farthest = next((k for k, c in enumerate(order) if hops[c] != top), len(order))
-        picked = _pick_mover(occupied, order, target, farthest)
+        picked = _pick_mover(occupied, order, target, farthest, masks)
         if picked is None:
             raise PlanningFailure(
                 f"no module can reach strip cell {target} (width {width}) after "
@@ -332,6 +361,7 @@ def to_strip(config: Configuration, width: int,
         taken = order.pop(k)
         module = ids.pop(taken)
         occupied.discard(taken)
+        _forget(masks, taken)
         # farthest first; taking a farthest module changes no other distance; a nearer
         # one may lengthen the hops of the cells behind it, which then move forward
         grown = _hops_without(occupied, hops, taken) if hops[taken] != top else []
@@ -347,6 +377,7 @@ def to_strip(config: Configuration, width: int,
             moves.append(Move(module, place(src), place(dst), joints[rule.joint],
                               rule.direction, place(sub), ids[sub]))
         occupied.add(target)
+        _forget(masks, target)
         ids[target] = module
         built.add(target)
     return moves
@@ -372,7 +403,8 @@ def _hop_anchors(start: Cell, end: Cell, hop: int = HOP) -> list[Cell]:
              start[1] + round((end[1] - start[1]) * k / count)) for k in range(1, count + 1)]
 
 
-def _distances_to(occupied: set[Cell], target: Cell) -> dict[Cell, int]:
+def _distances_to(occupied: set[Cell], target: Cell,
+                  masks: dict[Cell, int] | None = None) -> dict[Cell, int]:
     """Rotations from each empty cell to ``target`` with every module fixed
     (:func:`_reaching` with the distances)."""
     dist = {target: 0}
@@ -381,7 +413,7 @@ def _distances_to(occupied: set[Cell], target: Cell) -> dict[Cell, int]:
         cell = queue.popleft()
         x, y = cell
         d = dist[cell] + 1
-        for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y)]:
+        for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y, masks)]:
             goal = (x + gx, y + gy)
             if goal not in dist:
                 dist[goal] = d
@@ -446,19 +478,20 @@ def _hop(config: Configuration, start: Cell, end: Cell, width: int,
     order = _fill_order([c for c in new_order if c not in occupied], occupied)
     if order is None:
         return None
+    masks: dict[Cell, int] = {}
     moves: list[Move] = []
     for target in order:
         deadline.check("canonical strip")
-        dist = _distances_to(occupied, target)
+        dist = _distances_to(occupied, target, masks)
         ranked = []
         for k, cell in enumerate(leavers):
-            near = [dist[g] for g in _first_steps(occupied, cell) if g in dist]
+            near = [dist[g] for g in _first_steps(occupied, cell, masks) if g in dist]
             if near:
                 ranked.append((min(near), k, cell))
         ranked.sort()
         for _, _k, cell in ranked:
             if stays_connected(occupied, cell):
-                path = _path_to(occupied, cell, target)
+                path = _path_to(occupied, cell, target, masks)
                 if path:
                     break
         else:
@@ -466,9 +499,11 @@ def _hop(config: Configuration, start: Cell, end: Cell, width: int,
         leavers.remove(cell)
         module = ids.pop(cell)
         occupied.discard(cell)
+        _forget(masks, cell)
         for src, dst, rule, sub in path:
             moves.append(Move(module, src, dst, rule.joint, rule.direction, sub, ids[sub]))
         occupied.add(target)
+        _forget(masks, target)
         ids[target] = module
     return moves
 
