@@ -67,10 +67,16 @@ def anchor_of(cells: frozenset[Cell] | set[Cell]) -> Cell:
     return max(cells)
 
 
-def strip_cells(anchor: Cell, count: int, width: int) -> list[Cell]:
-    """The ``count - 1`` cells added right of ``anchor``, in build order."""
-    cells: list[Cell] = []
-    column = 1
+#: Cells of the lead-in: a line from the anchor to the strip's first column.
+LEAD = 2
+
+
+def strip_cells(anchor: Cell, count: int, width: int, lead: int | None = None) -> list[Cell]:
+    """The ``count - 1`` cells added right of ``anchor``, in build order: a
+    line of ``lead`` cells, then the ``width``-row columns."""
+    lead = LEAD if lead is None else lead
+    cells: list[Cell] = [(anchor[0] + k, anchor[1]) for k in range(1, min(lead, count - 1) + 1)]
+    column = len(cells) + 1
     while len(cells) < count - 1:
         for row in range(width):
             if len(cells) < count - 1:
