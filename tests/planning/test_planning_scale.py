@@ -91,3 +91,20 @@ def test_the_checker_catches_movers_far_apart_that_split_a_ring_together():
     assert still_one_piece(ring, {(10, 0)})
     assert not still_one_piece(ring, {(10, 0), (10, 2)})
     assert still_one_piece(ring, {(10, 0), (11, 0)})  # one cluster, the rest is a path
+
+
+@pytest.mark.parametrize(("seed", "n", "width"), [(0, 79, 4), (5, 109, 5), (6, 103, 5)])
+def test_the_lead_in_line_lets_the_strip_gather_where_a_corridor_stopped_it(
+        seed, n, width, monkeypatch):
+    import hexbot.planning.canonical as canonical
+
+    rng = random.Random(seed)
+    rng.randint(30, 120)  # the same draws as the search that found these blobs
+    cells = random_blob(n, seed, compact=rng.random())
+    config = Configuration.from_cells(cells)
+    moves = canonical.to_strip(config, width)
+    anchor = canonical.anchor_of(cells)
+    assert replay(config, moves).cells == strip_shape(anchor, n, width)
+    monkeypatch.setattr(canonical, "LEAD", 0)  # the strip right beside the anchor
+    with pytest.raises(canonical.PlanningFailure, match="no module can reach strip cell"):
+        canonical.to_strip(config, width)
