@@ -5,9 +5,9 @@ and can wall itself in. This module goes through an intermediate shape
 instead, as the literature on pivoting modules does:
 
 1. **initial -> strip.** The module on the *anchor* (the configuration's
-   rightmost cell, topmost among those) never moves. The strip is a
-   ``width``-row parallelogram that grows to the right of it, column by
-   column, bottom to top (:func:`strip_cells`). Every cell right of the
+   rightmost cell, topmost among those) never moves. The strip is a line of
+   ``LEAD`` cells, then a ``width``-row parallelogram that grows to the right
+   of it, column by column, bottom to top (:func:`strip_cells`). Every cell right of the
    anchor's column is empty, so the strip touches the rest only at the anchor.
    For each strip cell in turn, the mover is the module farthest (in contact
    hops) from the anchor that is not a cut vertex and has a Table 4-3 path to
@@ -16,10 +16,12 @@ instead, as the literature on pivoting modules does:
    movers available; the next strip cell always has its occupied sides in
    one arc of at most three (5, 6, 1 for a column cell), so it is enterable.
 2. **strip -> strip.** The strips of the initial and the goal have the same
-   shape; the direct planner shifts one onto the other in hops of at most
-   ``HOP`` cells (convex shapes have no notches, so it does not stall there).
+   shape; they are shifted one onto the other in hops of at most ``HOP``
+   cells, each in the strip's own order (:func:`_hop`), by the direct planner
+   when that stalls (convex shapes have no notches, so it does not stall there).
 3. **strip -> goal** is step 1 run on the goal and reversed: every rotation is
-   undone by the opposite one over the same cells (:func:`undone`).
+   undone by the opposite one over the same cells (:func:`undone`). The goal
+   is gathered first: failures mostly happen there.
 
 Each step raises :class:`PlanningFailure` when it cannot continue; the
 caller then tries a narrower strip (width 1 is a line, which needs the most
