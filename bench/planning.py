@@ -256,6 +256,7 @@ def plan_pair(family: str, n: int, seed: int, fixed: bool, budget: float) -> dic
         "planned": bool(report and report.ok),
         "method": plan.method,
         "reason": plan.reason or (report.problem if report and not report.ok else ""),
+        "warnings": plan.warnings,  # e.g. the schedule ran out of time: one move per step
         "moves": plan.move_count, "move_bound": moves.value, "move_bound_kind": moves.kind,
         "steps": plan.time_steps, "step_bound": steps.value, "step_bound_kind": steps.kind,
         "seconds": round(seconds, 3),

@@ -5,9 +5,9 @@ and can wall itself in. This module goes through an intermediate shape
 instead, as the literature on pivoting modules does:
 
 1. **initial -> strip.** The module on the *anchor* (the configuration's
-   rightmost cell, topmost among those) never moves. The strip is a
-   ``width``-row parallelogram that grows to the right of it, column by
-   column, bottom to top (:func:`strip_cells`). Every cell right of the
+   rightmost cell, topmost among those) never moves. The strip is a line of
+   ``LEAD`` cells, then a ``width``-row parallelogram that grows to the right
+   of it, column by column, bottom to top (:func:`strip_cells`). Every cell right of the
    anchor's column is empty, so the strip touches the rest only at the anchor.
    For each strip cell in turn, the mover is the module farthest (in contact
    hops) from the anchor that is not a cut vertex and has a Table 4-3 path to
@@ -16,10 +16,12 @@ instead, as the literature on pivoting modules does:
    movers available; the next strip cell always has its occupied sides in
    one arc of at most three (5, 6, 1 for a column cell), so it is enterable.
 2. **strip -> strip.** The strips of the initial and the goal have the same
-   shape; the direct planner shifts one onto the other in hops of at most
-   ``HOP`` cells (convex shapes have no notches, so it does not stall there).
+   shape; they are shifted one onto the other in hops of at most ``HOP``
+   cells, each in the strip's own order (:func:`_hop`), by the direct planner
+   when that stalls (convex shapes have no notches, so it does not stall there).
 3. **strip -> goal** is step 1 run on the goal and reversed: every rotation is
-   undone by the opposite one over the same cells (:func:`reverse_move`).
+   undone by the opposite one over the same cells (:func:`undone`). The goal
+   is gathered first: failures mostly happen there.
 
 Each step raises :class:`PlanningFailure` when it cannot continue; the
 caller then tries a narrower strip (width 1 is a line, which needs the most
@@ -28,6 +30,8 @@ moves and stalls least).
 
 from __future__ import annotations
 
+import bisect
+import heapq
 from collections import deque
 
 from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline
@@ -35,18 +39,25 @@ from hexbot.planning.configuration import (
     Configuration,
     Module,
     articulation_points,
-    contact_hops,
 )
-from hexbot.planning.hexlattice import Cell, distance, neighbors, rotate_cell, wrap
-from hexbot.planning.moves import Move, orientation_after
+from hexbot.planning.hexlattice import (
+    ROTATIONS,
+    SIDE_OFFSETS,
+    SIDES,
+    Cell,
+    distance,
+    neighbors,
+    rotate_cell,
+    wrap,
+)
+from hexbot.planning.moves import Move
 from hexbot.planning.robust import (
     PlanningFailure,
-    _moves_from,
     _single_arc,
-    reverse_move,
     serial_moves,
     unwind,
 )
+from hexbot.planning.schedule import stays_connected
 
 #: Largest shift (cells) of one strip -> strip hop of the direct planner.
 HOP = 1
@@ -58,10 +69,16 @@ def anchor_of(cells: frozenset[Cell] | set[Cell]) -> Cell:
     return max(cells)
 
 
-def strip_cells(anchor: Cell, count: int, width: int) -> list[Cell]:
-    """The ``count - 1`` cells added right of ``anchor``, in build order."""
-    cells: list[Cell] = []
-    column = 1
+#: Cells of the lead-in: a line from the anchor to the strip's first column.
+LEAD = 2
+
+
+def strip_cells(anchor: Cell, count: int, width: int, lead: int | None = None) -> list[Cell]:
+    """The ``count - 1`` cells added right of ``anchor``, in build order: a
+    line of ``lead`` cells, then the ``width``-row columns."""
+    lead = LEAD if lead is None else lead
+    cells: list[Cell] = [(anchor[0] + k, anchor[1]) for k in range(1, min(lead, count - 1) + 1)]
+    column = len(cells) + 1
     while len(cells) < count - 1:
         for row in range(width):
             if len(cells) < count - 1:
@@ -74,34 +91,110 @@ def strip_shape(anchor: Cell, count: int, width: int) -> frozenset[Cell]:
     return frozenset([anchor, *strip_cells(anchor, count, width)])
 
 
-def _path_to(occupied: set[Cell], start: Cell, target: Cell) -> list | None:
-    """Shortest Table 4-3 path of the module at ``start`` to ``target``, others fixed."""
+_AROUND = [SIDE_OFFSETS[s] for s in SIDES]
+
+# Table 4-3 by the occupancy around a mobile module. Every rotation only looks at
+# the 12 cells within two steps of it (6 neighbours, 6 second-ring cells between
+# them): with those as the bits of a mask, _OPEN[mask] lists the rotations open to
+# it, in the order of ROTATIONS (the order robust._moves_from tries them, so the
+# searches below find the same paths as the generic one): (rule, substrate dx,
+# dy, goal dx, dy). One mask of 12 look-ups per cell, instead of up to 60.
+_RING = sorted({o for r in ROTATIONS for o in (r.substrate, r.goal, *r.swept)})
+_RING_BITS = [(dx, dy, 1 << i) for i, (dx, dy) in enumerate(_RING)]
+
+
+_NEEDS = [((r, *r.substrate, *r.goal), 1 << _RING.index(r.substrate),
+           sum(1 << _RING.index(c) for c in (r.goal, *r.swept))) for r in ROTATIONS]
+_OPEN = [tuple(row for row, sub, free in _NEEDS if mask & sub and not mask & free)
+         for mask in range(1 << len(_RING))]
+
+
+#: ring offset -> its bit
+_BIT_AT = {(dx, dy): bit for dx, dy, bit in _RING_BITS}
+
+
+def _mask(occupied: set[Cell], x: int, y: int, masks: dict[Cell, int] | None = None) -> int:
+    """The ring mask of the cell (x, y); ``masks`` caches them for ``occupied``."""
+    if masks is not None:
+        mask = masks.get((x, y))
+        if mask is not None:
+            return mask
+    mask = 0
+    for dx, dy, bit in _RING_BITS:
+        if (x + dx, y + dy) in occupied:
+            mask |= bit
+    if masks is not None:
+        masks[x, y] = mask
+    return mask
+
+
+def _forget(masks: dict[Cell, int], cell: Cell) -> None:
+    """``cell`` was filled or emptied: drop the masks that include it (the ring is
+    symmetric: the cells whose ring holds ``cell`` are ``cell``'s own ring)."""
+    x, y = cell
+    for dx, dy, _ in _RING_BITS:
+        masks.pop((x + dx, y + dy), None)
+
+
+def _path_to(occupied: set[Cell], start: Cell, target: Cell,
+             masks: dict[Cell, int] | None = None) -> list | None:
+    """Shortest Table 4-3 path of the module at ``start`` to ``target``, others fixed.
+
+    The hot loop of the strip route. ``masks`` caches the ring masks of
+    ``occupied`` across searches (the movers of a gathering all travel the same
+    surface); the mover counts as absent (neither an obstacle nor a substrate,
+    as in ``robust._moves_from``): its bit is cleared in the masks around it."""
+    if masks is None:
+        masks = {}
+    masks_get = masks.get
+    x0, y0 = start
     parent: dict[Cell, tuple | None] = {start: None}
     queue = deque([start])
     while queue:
         cell = queue.popleft()
-        for rule, sub, goal in _moves_from(cell, occupied, start):
+        x, y = cell
+        mask = masks_get(cell)
+        if mask is None:
+            mask = 0
+            for dx, dy, bit in _RING_BITS:
+                if (x + dx, y + dy) in occupied:
+                    mask |= bit
+            masks[cell] = mask
+        dx, dy = x0 - x, y0 - y
+        if -2 <= dx <= 2 and -2 <= dy <= 2 and (dx, dy) in _BIT_AT:
+            mask &= ~_BIT_AT[dx, dy]
+        for rule, sx, sy, gx, gy in _OPEN[mask]:
+            goal = (x + gx, y + gy)
             if goal in parent:
                 continue
-            parent[goal] = (cell, rule, sub)
+            parent[goal] = (cell, rule, (x + sx, y + sy))
             if goal == target:
                 return unwind(parent, goal)
             queue.append(goal)
     return None
 
 
-def _reaching(occupied: set[Cell], target: Cell) -> set[Cell]:
+def _reaching(occupied: set[Cell], target: Cell,
+              masks: dict[Cell, int] | None = None) -> set[Cell]:
     """Empty cells from which a module can roll to ``target`` with every module fixed
     (one search outward from the target: rotations are reversible over the same cells)."""
     seen = {target}
     queue = deque([target])
     while queue:
-        cell = queue.popleft()
-        for _, _, goal in _moves_from(cell, occupied, cell):
+        x, y = queue.popleft()
+        for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y, masks)]:
+            goal = (x + gx, y + gy)
             if goal not in seen:
                 seen.add(goal)
                 queue.append(goal)
     return seen
+
+
+def _first_steps(occupied: set[Cell], cell: Cell,
+                 masks: dict[Cell, int] | None = None) -> list[Cell]:
+    """Cells the module at ``cell`` can roll to in one rotation, others fixed."""
+    x, y = cell
+    return [(x + gx, y + gy) for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y, masks)]]
 
 
 #: Farthest modules (never cut vertices) tried with a path search each, before the
@@ -110,7 +203,8 @@ FARTHEST = 4
 
 
 def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
-                farthest: int = 0) -> tuple[int, list] | None:
+                farthest: int = 0,
+                masks: dict[Cell, int] | None = None) -> tuple[int, list] | None:
     """The first module of ``order`` that may leave and roll to ``target``, with its path.
 
     The first ``farthest`` modules of ``order`` are at the largest distance from
@@ -125,17 +219,17 @@ def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
     """
     tries = min(farthest, FARTHEST)
     for k in range(tries):
-        path = _path_to(occupied, order[k], target)
+        path = _path_to(occupied, order[k], target, masks)
         if path:
             return k, path
-    reach = _reaching(occupied, target)
+    reach = _reaching(occupied, target, masks)
     likely, unsure = [], []
     for k, cell in enumerate(order):  # farthest first: the first good one usually comes soon
-        if not any(g in reach for _, _, g in _moves_from(cell, occupied, cell)):
+        if not any(g in reach for g in _first_steps(occupied, cell, masks)):
             continue
         likely.append(k)
         if k < farthest or _single_arc(occupied, cell):
-            path = _path_to(occupied, cell, target)
+            path = _path_to(occupied, cell, target, masks)
             if path:
                 return k, path
         else:
@@ -143,36 +237,103 @@ def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
     cuts = articulation_points(occupied)
     for k in unsure:
         if order[k] not in cuts:
-            path = _path_to(occupied, order[k], target)
+            path = _path_to(occupied, order[k], target, masks)
             if path:
                 return k, path
     tried = set(likely)
     for k, cell in enumerate(order):
         if k not in tried and cell not in cuts:
-            path = _path_to(occupied, cell, target)
+            path = _path_to(occupied, cell, target, masks)
             if path:
                 return k, path
     return None
 
 
 def _hops_from(occupied: set[Cell], roots: list[Cell]) -> dict[Cell, int]:
-    """Contact hops from the nearest of ``roots`` (one breadth-first pass)."""
-    if len(roots) == 1:
-        return contact_hops(occupied, roots[0])
+    """Contact hops from the nearest of ``roots`` (one breadth-first pass, level by
+    level; the same numbers as ``configuration.contact_hops``, inline: to_strip
+    recomputes them whenever a module nearer than the farthest had to move)."""
     hops = dict.fromkeys(roots, 0)
-    queue = deque(roots)
-    while queue:
-        cell = queue.popleft()
-        for n in neighbors(cell):
-            if n in occupied and n not in hops:
-                hops[n] = hops[cell] + 1
-                queue.append(n)
+    frontier = list(roots)
+    depth = 0
+    while frontier:
+        depth += 1
+        reached = []
+        for x, y in frontier:
+            for dx, dy in _AROUND:
+                n = (x + dx, y + dy)
+                if n in occupied and n not in hops:
+                    hops[n] = depth
+                    reached.append(n)
+        frontier = reached
     return hops
 
 
+def _hops_without(occupied: set[Cell], hops: dict[Cell, int], gone: Cell) -> list[Cell]:
+    """Update ``hops`` (contact hops from the roots) in place for the module at
+    ``gone`` having left ``occupied`` (not a cut vertex: everything stays
+    reachable); return the cells whose hops grew.
+
+    Removing a module can only lengthen paths, and only for the cells whose every
+    shortest path went through it: found level by level from its neighbours one
+    hop farther (a cell keeps its number if a neighbour one hop nearer kept its
+    own), then numbered again from their unaffected neighbours. Usually a few
+    cells; the same numbers as a new search (:func:`_hops_from`), which costs
+    O(n) each time a module nearer than the farthest has to move."""
+    h = hops.pop(gone)
+    x, y = gone
+    level = [n for n in ((x + dx, y + dy) for dx, dy in _AROUND) if hops.get(n) == h + 1]
+    grown: set[Cell] = set()
+    while level:
+        deeper = []
+        for u in level:
+            if u in grown:
+                continue
+            d = hops[u] - 1
+            ux, uy = u
+            around = [(ux + dx, uy + dy) for dx, dy in _AROUND]
+            if any(hops.get(w) == d and w not in grown for w in around):
+                continue
+            grown.add(u)
+            deeper.extend(w for w in around if hops.get(w) == d + 2)
+        level = deeper
+    if not grown:
+        return []
+    for u in grown:
+        del hops[u]
+    heap = []
+    for u in grown:
+        ux, uy = u
+        best = min((hops[w] for w in ((ux + dx, uy + dy) for dx, dy in _AROUND) if w in hops),
+                   default=None)
+        if best is not None:
+            heap.append((best + 1, u))
+    heapq.heapify(heap)
+    while heap:
+        d, u = heapq.heappop(heap)
+        if u in hops:
+            continue
+        hops[u] = d
+        ux, uy = u
+        for dx, dy in _AROUND:
+            w = (ux + dx, uy + dy)
+            if w in grown and w not in hops:
+                heapq.heappush(heap, (d + 1, w))
+    return sorted(grown)
+
+
+#: Above this many cells with longer hops, the order is sorted again (below, each
+#: is moved to its place).
+RESORT = 64
+
+
 def to_strip(config: Configuration, width: int,
-             deadline: Deadline = NO_DEADLINE, keep: list[Cell] | None = None) -> list[Move]:
+             deadline: Deadline = NO_DEADLINE, keep: list[Cell] | None = None,
+             turn: int = 0) -> list[Move]:
     """Serial moves that gather ``config`` into the strip at its anchor.
+
+    ``turn``: the moves are given in the frame turned by ``turn`` sixth-turns
+    (as :func:`_rotate_moves` would turn them, without a second copy of them).
 
     ``keep``: a path of modules from a fixed module to the anchor that stays put
     (a *spine*, :func:`spine_to`); the others gather farthest from it first. A
@@ -186,47 +347,61 @@ def to_strip(config: Configuration, width: int,
         raise ValueError(f"the spine must end at the anchor {anchor}")
     built = set(roots)
     moves: list[Move] = []
+    place = _framer(turn)
+    joints = {j: wrap(j + turn) for j in range(1, 7)}
+    masks: dict[Cell, int] = {}  # ring masks of the cells searched, for ``occupied``
     order: list[Cell] = []
     for target in strip_cells(anchor, len(config) - len(roots) + 1, width):
         deadline.check("canonical strip")
         if target in occupied:  # cannot happen: every cell right of the anchor is empty
             raise PlanningFailure(f"strip cell {target} is occupied")
         if not order:
-            # farthest first; taking a farthest module changes no other distance, so the
-            # order is only recomputed when a nearer module had to go instead
             hops = _hops_from(occupied, roots)
             order = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
         top = hops[order[0]]
         farthest = next((k for k, c in enumerate(order) if hops[c] != top), len(order))
-        picked = _pick_mover(occupied, order, target, farthest)
+        picked = _pick_mover(occupied, order, target, farthest, masks)
         if picked is None:
             raise PlanningFailure(
                 f"no module can reach strip cell {target} (width {width}) after "
                 f"{len(moves)} moves")
         k, path = picked
         taken = order.pop(k)
-        if hops[taken] != top:
-            order = []
-        module = ids.pop(path[0][0])
-        occupied.discard(path[0][0])
+        module = ids.pop(taken)
+        occupied.discard(taken)
+        _forget(masks, taken)
+        # farthest first; taking a farthest module changes no other distance; a nearer
+        # one may lengthen the hops of the cells behind it, which then move forward
+        grown = _hops_without(occupied, hops, taken) if hops[taken] != top else []
+        hops.pop(taken, None)  # (a farthest one: nothing behind it to update)
+        if len(grown) > RESORT:
+            order.sort(key=lambda c: (-hops[c], c))
+        elif grown:
+            moved = set(grown)
+            order = [c for c in order if c not in moved]
+            for c in grown:
+                bisect.insort(order, c, key=lambda c: (-hops[c], c))
         for src, dst, rule, sub in path:
-            moves.append(Move(module, src, dst, rule.joint, rule.direction, sub, ids[sub]))
+            moves.append(Move(module, place(src), place(dst), joints[rule.joint],
+                              rule.direction, place(sub), ids[sub]))
         occupied.add(target)
+        _forget(masks, target)
         ids[target] = module
         built.add(target)
     return moves
 
 
 def replay(config: Configuration, moves: list[Move]) -> Configuration:
-    """The configuration after ``moves`` (fast: one dict, orientation tracked)."""
-    cells = dict(config.items())
+    """The configuration after ``moves`` (fast: one dict of (id, orientation), the
+    modules made once at the end; a strip route replays millions of moves)."""
+    cells = {c: (m.id, m.orientation) for c, m in config.items()}
+    turn = {"CW": 2, "CCW": -2}
     for move in moves:
-        module = cells.pop(move.src)
-        if module.id != move.module:
+        module, facing = cells.pop(move.src)
+        if module != move.module:
             raise ValueError(f"module {move.module} is not at {move.src}")
-        cells[move.dst] = Module(module.id, orientation_after(module.orientation,
-                                                              move.direction))
-    return Configuration(cells)
+        cells[move.dst] = (module, (facing + turn[move.direction]) % 6)
+    return Configuration({c: Module(i, o) for c, (i, o) in cells.items()})
 
 
 def _hop_anchors(start: Cell, end: Cell, hop: int = HOP) -> list[Cell]:
@@ -236,50 +411,193 @@ def _hop_anchors(start: Cell, end: Cell, hop: int = HOP) -> list[Cell]:
              start[1] + round((end[1] - start[1]) * k / count)) for k in range(1, count + 1)]
 
 
+def _distances_to(occupied: set[Cell], target: Cell,
+                  masks: dict[Cell, int] | None = None) -> dict[Cell, int]:
+    """Rotations from each empty cell to ``target`` with every module fixed
+    (:func:`_reaching` with the distances)."""
+    dist = {target: 0}
+    queue = deque([target])
+    while queue:
+        cell = queue.popleft()
+        x, y = cell
+        d = dist[cell] + 1
+        for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y, masks)]:
+            goal = (x + gx, y + gy)
+            if goal not in dist:
+                dist[goal] = d
+                queue.append(goal)
+    return dist
+
+
+def _free_three(blocked: set[Cell], cell: Cell) -> bool:
+    """Has ``cell`` three consecutive sides outside ``blocked`` (a rotation can enter it)?"""
+    x, y = cell
+    free = [(x + dx, y + dy) not in blocked for dx, dy in _AROUND]
+    return any(free[i] and free[i - 1] and free[i - 2] for i in range(6))
+
+
+def _fill_order(targets: list[Cell], occupied: set[Cell]) -> list[Cell] | None:
+    """``targets`` (in build order) in an order in which each can be entered, the
+    modules in ``occupied`` counted as staying (those that leave may still be
+    there): peeled from the last one filled, the latest in build order first
+    among those with three consecutive free sides; None if some never has."""
+    remaining = set(targets)
+    index = {c: i for i, c in enumerate(targets)}
+    blocked = occupied | remaining
+    heap = [(-index[c], c) for c in targets if _free_three(blocked, c)]
+    heapq.heapify(heap)
+    queued = {c for _, c in heap}
+    peeled = []
+    while heap:
+        _, cell = heapq.heappop(heap)
+        remaining.discard(cell)
+        blocked.discard(cell)
+        peeled.append(cell)
+        x, y = cell
+        for dx, dy in _AROUND:
+            n = (x + dx, y + dy)
+            if n in remaining and n not in queued and _free_three(blocked, n):
+                heapq.heappush(heap, (-index[n], n))
+                queued.add(n)
+    return None if remaining else peeled[::-1]
+
+
+def _hop(config: Configuration, start: Cell, end: Cell, width: int,
+         deadline: Deadline) -> list[Move] | None:
+    """Serial moves taking the strip at ``start`` to the one at the neighbouring
+    anchor ``end``, in the strip's own order; None when it gets stuck.
+
+    The cells to fill are filled in the build order of the new strip as far as
+    each can then be entered (:func:`_fill_order`); each gets the module, among
+    those that leave, whose first rotation lands nearest to it (one search
+    outward from the cell), that is not a cut vertex (local test) and has a path
+    (a search each). Cells that stay never move.
+    The direct method did this before, with its general void-order test on
+    every candidate void: most of the time of a strip route at 3,000 modules."""
+    count = len(config)
+    new_order = [end, *strip_cells(end, count, width)]
+    new = set(new_order)
+    old_order = [start, *strip_cells(start, count, width)]
+    if set(old_order) != config.cells:
+        return None
+    occupied = set(config.cells)
+    ids = {c: m.id for c, m in config.items()}
+    leavers = [c for c in reversed(old_order) if c not in new]  # farthest first
+    order = _fill_order([c for c in new_order if c not in occupied], occupied)
+    if order is None:
+        return None
+    masks: dict[Cell, int] = {}
+    moves: list[Move] = []
+    for target in order:
+        deadline.check("canonical strip")
+        dist = _distances_to(occupied, target, masks)
+        ranked = []
+        for k, cell in enumerate(leavers):
+            near = [dist[g] for g in _first_steps(occupied, cell, masks) if g in dist]
+            if near:
+                ranked.append((min(near), k, cell))
+        ranked.sort()
+        for _, _k, cell in ranked:
+            if stays_connected(occupied, cell):
+                path = _path_to(occupied, cell, target, masks)
+                if path:
+                    break
+        else:
+            return None
+        leavers.remove(cell)
+        module = ids.pop(cell)
+        occupied.discard(cell)
+        _forget(masks, cell)
+        for src, dst, rule, sub in path:
+            moves.append(Move(module, src, dst, rule.joint, rule.direction, sub, ids[sub]))
+        occupied.add(target)
+        _forget(masks, target)
+        ids[target] = module
+    return moves
+
+
+def _direct_hop(config: Configuration, start: Cell, hop: Cell, width: int,
+                max_moves: int, deadline: Deadline) -> list[Move]:
+    """The same hop by the direct method (one cell at a time when it stalls)."""
+    try:
+        return serial_moves(config, strip_shape(hop, len(config), width), max_moves,
+                            deadline=deadline, method="canonical strip")
+    except BudgetExhausted:
+        raise
+    except PlanningFailure:
+        if distance(start, hop) <= 1:
+            raise
+    part, at = [], config
+    for unit in _hop_anchors(start, hop, 1):
+        piece = serial_moves(at, strip_shape(unit, len(config), width), max_moves,
+                             deadline=deadline, method="canonical strip")
+        part += piece
+        at = replay(at, piece)
+    return part
+
+
 def shift_strip(config: Configuration, start: Cell, end: Cell, width: int,
                 max_moves: int, deadline: Deadline = NO_DEADLINE) -> list[Move]:
-    """Serial moves taking the strip anchored at ``start`` to the one at ``end``."""
+    """Serial moves taking the strip anchored at ``start`` to the one at ``end``:
+    unit hops (:func:`_hop`), each by the direct method when that gets stuck."""
     moves: list[Move] = []
     for hop in _hop_anchors(start, end):
-        try:
-            part = serial_moves(config, strip_shape(hop, len(config), width), max_moves,
-                                deadline=deadline, method="canonical strip")
-        except BudgetExhausted:
-            raise
-        except PlanningFailure:
-            if distance(start, hop) <= 1:
-                raise
-            # one cell at a time: a unit shift of a convex strip is the easy case
-            part, at = [], config
-            for unit in _hop_anchors(start, hop, 1):
-                piece = serial_moves(at, strip_shape(unit, len(config), width), max_moves,
-                                     deadline=deadline, method="canonical strip")
-                part += piece
-                at = replay(at, piece)
+        part = _hop(config, start, hop, width, deadline)
+        if part is None:
+            part = _direct_hop(config, start, hop, width, max_moves, deadline)
         moves += part
+        if len(moves) > max_moves:
+            raise PlanningFailure(f"more than {max_moves} moves needed")
         config = replay(config, part)
         start = hop
     return moves
 
 
 def reversed_to_strip(goal: frozenset[Cell], strip: Configuration, width: int,
-                      deadline: Deadline = NO_DEADLINE) -> list[Move]:
-    """Serial moves from ``strip`` (the goal's strip, with real module ids) to ``goal``."""
+                      deadline: Deadline = NO_DEADLINE, turn: int = 0) -> list[Move]:
+    """Serial moves from ``strip`` (the goal's strip, with real module ids) to ``goal``,
+    given in the frame turned by ``turn`` (see :func:`to_strip`)."""
+    provisional, backward = _gather_goal(goal, width, deadline, turn)
+    return _ungather(provisional, backward, strip, turn)
+
+
+def _gather_goal(goal: frozenset[Cell], width: int, deadline: Deadline,
+                 turn: int) -> tuple[Configuration, list[Move]]:
+    """The goal (provisional ids) and its gathering into its strip (moves turned
+    by ``turn``): the first half of :func:`reversed_to_strip`."""
     provisional = Configuration.from_cells(goal, first_id=10**6)
-    backward = to_strip(provisional, width, deadline)
-    end = replay(provisional, backward)
+    return provisional, to_strip(provisional, width, deadline, turn=turn)
+
+
+def _ungather(provisional: Configuration, backward: list[Move], strip: Configuration,
+              turn: int) -> list[Move]:
+    """The gathering undone from ``strip``, with its real module ids (consumes
+    ``backward``): the second half of :func:`reversed_to_strip`."""
+    end = replay(_rotated(provisional, turn), backward)
+    strip = _rotated(strip, turn)
     real = {end[c].id: strip[c].id for c in end}
     return undone(backward, real)
 
 
+# (substrate dx, dy, goal dx, dy) from a mobile module -> the rotation (at most one)
+_BY_OFFSETS = {(*rule.at((0, 0))[0], *rule.at((0, 0))[1]): rule for rule in ROTATIONS}
+
+
 def undone(backward: list[Move], real: dict[int, int]) -> list[Move]:
     """``backward`` undone move by move, last first, its provisional module ids
-    renamed by ``real`` (the constructor, not dataclasses.replace: once per move)."""
+    renamed by ``real``: each rotation is undone by the one from its end cell over
+    the same substrate back to its start (``robust.reverse_move``, by a table).
+    Consumes ``backward`` (empty afterwards)."""
     out = []
-    for m in reversed(backward):
-        r = reverse_move(m)
-        out.append(Move(real[r.module], r.src, r.dst, r.joint, r.direction, r.substrate,
-                        real[r.substrate_module]))
+    while backward:  # consumed from its end: the two lists together hold one plan
+        m = backward.pop()
+        x, y = m.dst
+        rule = _BY_OFFSETS.get((m.substrate[0] - x, m.substrate[1] - y,
+                                m.src[0] - x, m.src[1] - y))
+        if rule is None:
+            raise ValueError(f"no rotation undoes {m}")
+        out.append(Move(real[m.module], m.dst, m.src, rule.joint, rule.direction, m.substrate,
+                        real[m.substrate_module]))
     return out
 
 
@@ -294,25 +612,57 @@ def _rotated(config: Configuration, steps: int) -> Configuration:
     return Configuration({rotate_cell(c, steps): m for c, m in config.items()})
 
 
-def _rotate_move(move: Move, steps: int) -> Move:
-    """The same rotation seen in a frame turned ``steps`` sixth-turns clockwise:
-    cells turn, and joint ``j`` becomes joint ``j + steps`` (sides turn with them)."""
+def _framer(steps: int):
+    """Cell -> the same cell turned ``steps`` sixth-turns, one tuple per cell for a
+    whole plan (millions of moves over a few thousand cells)."""
+    turned: dict[Cell, Cell] = {}
+
+    def turn(cell: Cell) -> Cell:
+        out = turned.get(cell)
+        if out is None:
+            out = turned[cell] = rotate_cell(cell, steps)
+        return out
+
+    return turn
+
+
+def _rotate_moves(moves: list[Move], steps: int) -> list[Move]:
+    """The same rotations seen in a frame turned ``steps`` sixth-turns clockwise:
+    cells turn, and joint ``j`` becomes joint ``j + steps`` (sides turn with them).
+    In place (one copy of a long plan at a time); each cell is turned once and
+    shared by the moves that use it."""
     if not steps % 6:
-        return move
-    # the constructor, not dataclasses.replace: this runs once per move of a plan
-    return Move(move.module, rotate_cell(move.src, steps), rotate_cell(move.dst, steps),
-                wrap(move.joint + steps), move.direction,
-                rotate_cell(move.substrate, steps), move.substrate_module)
+        return moves
+    turn = _framer(steps)
+    joints = {j: wrap(j + steps) for j in range(1, 7)}
+    for i, m in enumerate(moves):
+        moves[i] = Move(m.module, turn(m.src), turn(m.dst), joints[m.joint], m.direction,
+                        turn(m.substrate), m.substrate_module)
+    return moves
 
 
 def _via_strip_once(initial: Configuration, goal: frozenset[Cell], width: int,
-                    max_moves: int, deadline: Deadline = NO_DEADLINE) -> list[Move]:
-    first = to_strip(initial, width, deadline)
-    at_strip = replay(initial, first)
-    shift = shift_strip(at_strip, anchor_of(initial.cells), anchor_of(goal), width, max_moves,
-                        deadline)
-    last = reversed_to_strip(goal, replay(at_strip, shift), width, deadline)
-    return first + shift + last
+                    max_moves: int, deadline: Deadline = NO_DEADLINE,
+                    turn: int = 0) -> list[Move]:
+    """initial -> strip -> goal's strip -> goal, the strips growing in the frame
+    turned by ``turn``: the problem is turned, planned, and its moves turned back
+    (the two gatherings, nearly all of the moves, make them turned back at once).
+
+    The goal is gathered first: when a width or direction fails, it is mostly
+    there (scrambled goals are ragged), and then the initial's gathering, as
+    long, is not wasted (a 10,000-module scramble lost 17-20 s per failed try)."""
+    turned = _rotated(initial, -turn)
+    goal_turned = frozenset(rotate_cell(c, -turn) for c in goal)
+    provisional, backward = _gather_goal(goal_turned, width, deadline, turn)
+    first = to_strip(turned, width, deadline, turn=turn)
+    at_strip = _rotated(replay(initial, first), -turn)
+    shift = shift_strip(at_strip, anchor_of(turned.cells), anchor_of(goal_turned), width,
+                        max_moves, deadline)
+    at_goal_strip = replay(at_strip, shift)
+    first += _rotate_moves(shift, turn)
+    del shift
+    first += _ungather(provisional, backward, at_goal_strip, turn)
+    return first
 
 
 def strip_estimate(initial: frozenset[Cell], goal: frozenset[Cell], turn: int) -> int:
@@ -376,7 +726,7 @@ def to_fixed_strip(config: Configuration, fixed: Cell, turn: int, width: int,
         stages = len(spine) if stages is None else stages - 1
         if stages < 1:  # cannot happen: each spine is shorter than the last
             raise PlanningFailure("the spine did not shrink")
-        part = [_rotate_move(m, turn) for m in to_strip(turned, width, deadline, keep=spine)]
+        part = to_strip(turned, width, deadline, keep=spine, turn=turn)
         moves += part
         current = replay(current, part)
         if len(spine) == 1:
@@ -403,7 +753,8 @@ def via_fixed_strip(initial: Configuration, goal: frozenset[Cell], fixed: Cell,
     if end.cells != at.cells:  # a bug, not a user error
         raise PlanningFailure("internal error: the two strips at the fixed module differ")
     real = {end[c].id: at[c].id for c in end}
-    return first + undone(backward, real)
+    first += undone(backward, real)
+    return first
 
 
 def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10**7,
@@ -427,9 +778,7 @@ def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10
                     if len(moves) > max_moves:
                         raise PlanningFailure(f"more than {max_moves} moves needed")
                     return moves
-                moves = _via_strip_once(_rotated(initial, -turn),
-                                        frozenset(rotate_cell(c, -turn) for c in goal),
-                                        width, max_moves, deadline)
+                moves = _via_strip_once(initial, goal, width, max_moves, deadline, turn)
             except BudgetExhausted:
                 raise
             except PlanningFailure as exc:
@@ -437,6 +786,6 @@ def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10
                 continue
             if len(moves) > max_moves:
                 raise PlanningFailure(f"more than {max_moves} moves needed")
-            return [_rotate_move(m, turn) for m in moves]
+            return moves
     raise PlanningFailure("no canonical strip could be built (" + "; ".join(failures[:2])
                           + (f"; {len(failures) - 2} more" if len(failures) > 2 else "") + ")")

@@ -34,7 +34,7 @@ from scipy.sparse.csgraph import connected_components
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.plan import Step
 from hexbot.protocol.lattice import SIDES, Cell, neighbor
-from hexbot.protocol.rotation_geometry import Rotation
+from hexbot.protocol.rotation_geometry import ROTATIONS, Rotation
 
 
 @dataclass(frozen=True)
@@ -64,28 +64,61 @@ def pieces(cells: set[Cell]) -> int:
 
 def _one_arc(cells: set[Cell] | dict, cell: Cell) -> bool:
     """Do the occupied neighbours of ``cell`` form a single contiguous arc (or ring)?"""
-    around = [neighbor(cell, s) in cells for s in SIDES]
+    x, y = cell
+    around = [(x + dx, y + dy) in cells for dx, dy in _OFFSETS]
     starts = sum(1 for k in range(6) if around[k] and not around[k - 1])
     return starts <= 1
 
 
+#: the six neighbours' offsets, sides 1..6
+_OFFSETS = [(neighbor((0, 0), s)) for s in SIDES]
+
+
+#: Table 4-3 as offsets from the mobile module: (joint, direction) -> substrate,
+#: end cell, the three swept cells (read once from Rotation.at, per move it is slow)
+_TABLE = {(r.joint, r.direction): (r.substrate, r.goal, *r.swept) for r in ROTATIONS}
+
+
 def _around(cell: Cell) -> list[Cell]:
-    return [neighbor(cell, s) for s in SIDES]
+    x, y = cell
+    return [(x + dx, y + dy) for dx, dy in _OFFSETS]
 
 
 def still_one_piece(cells: set[Cell] | dict, removed: set[Cell]) -> bool:
     """Is ``cells`` without ``removed`` one piece, ``cells`` being one piece?
 
-    Every piece left would touch a removed cell, so it is enough that the
-    neighbours of the removed cells stay connected to each other: one
-    breadth-first search from each of them, taking turns, searches that meet
-    merge. They meet within a few cells around a removal that splits nothing;
-    a piece cut off is found when its search runs dry, which the turns make
-    cost no more than the smaller side. Exact, and local in the usual case,
-    where counting the pieces of the whole configuration costs O(n) a step."""
-    seeds = list({n for r in removed for n in _around(r) if n in cells and n not in removed})
-    if len(seeds) <= 1:
-        return True
+    Group the removed cells into clusters of touching ones. A path between two
+    cells left that went through removed cells enters and leaves each cluster
+    through a neighbour of it, so the rest is one piece exactly when, for every
+    cluster, its neighbours left stay connected to each other (:func:`_meet`).
+    That is local: a step's movers are usually far apart, and each cluster's
+    neighbours meet within a few cells (or lie in one arc) when nothing splits."""
+    gone = [r for r in removed if r in cells]
+    seen: set[Cell] = set()
+    for first in gone:
+        if first in seen:
+            continue
+        seen.add(first)
+        cluster = [first]
+        for c in cluster:  # grows while iterated
+            for n in _around(c):
+                if n in removed and n in cells and n not in seen:
+                    seen.add(n)
+                    cluster.append(n)
+        if len(cluster) == 1 and _one_arc(cells, first):
+            continue  # its neighbours are all left (none is removed) and touch in a row
+        seeds = list({n for c in cluster for n in _around(c)
+                      if n in cells and n not in removed})
+        if len(seeds) > 1 and not _meet(cells, removed, seeds):
+            return False
+    return True
+
+
+def _meet(cells: set[Cell] | dict, removed: set[Cell], seeds: list[Cell]) -> bool:
+    """Are ``seeds`` connected in ``cells`` without ``removed``? One breadth-first
+    search from each, taking turns, searches that meet merge: they meet within a
+    few cells when nothing splits; a piece cut off is found when its search runs
+    dry, which the turns make cost no more than the smaller side."""
     owner = {cell: i for i, cell in enumerate(seeds)}
     parent = list(range(len(seeds)))
 
@@ -103,7 +136,9 @@ def still_one_piece(cells: set[Cell] | dict, removed: set[Cell]) -> bool:
                 continue
             if not queue:  # this search ran dry before meeting the others: cut off
                 return False
-            for n in _around(queue.popleft()):
+            x, y = queue.popleft()
+            for dx, dy in _OFFSETS:
+                n = (x + dx, y + dy)
                 if n not in cells or n in removed:
                     continue
                 other = owner.get(n)
@@ -151,7 +186,12 @@ def _check_step(where: dict[Cell, int], step: Step, bolted: int | None) -> str:
             return f"module {m.module} is not at {m.src}"
         if m.module == bolted:
             return f"module {m.module} is fixed to the base and may not move"
-        substrate, end, swept = Rotation(m.joint, m.direction).at(m.src)
+        offsets = _TABLE.get((m.joint, m.direction))
+        if offsets is None:  # not a key of the table as written: let Rotation read it
+            substrate, end, swept = Rotation(m.joint, m.direction).at(m.src)
+        else:
+            x, y = m.src
+            substrate, end, *swept = [(x + dx, y + dy) for dx, dy in offsets]
         if end != m.dst or substrate != m.substrate:
             return (f"module {m.module}: {m.direction} about joint {m.joint} from {m.src} "
                     f"ends in {end} over {substrate}, not {m.dst} over {m.substrate}")

@@ -24,7 +24,9 @@ move runs as soon as no earlier pending move touches its cells (start,
 goal, swept cells, substrate) or its module, and the modules that stay put
 in the step remain connected. A moving module is never a substrate and no
 two moves of a step share a cell. If that schedule gets stuck, the serial
-order is packed greedily instead (always possible).
+order is packed greedily instead (always possible). Both live in
+:mod:`hexbot.planning.schedule` and count against the time budget; when it
+runs out there, the plan runs one move per step and says so in a warning.
 
 Failures are reported, never hidden: disconnected inputs, different module
 counts, immobile configurations (Fig. 4-6: no module can rotate without
@@ -44,6 +46,11 @@ from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.hexlattice import ROTATIONS, Cell, distance, neighbors
 from hexbot.planning.moves import Move
 from hexbot.planning.plan import Plan, Step, distance_lower_bound
+from hexbot.planning.schedule import (  # noqa: F401 - re-exported (exact.py, tests)
+    pack_consecutive,
+    schedule,
+    schedule_parallel,
+)
 
 # Precomputed Table 4-3 offsets: (rule, substrate, goal, swept) relative to (0, 0).
 _RULES = [(rule, *rule.at((0, 0))) for rule in ROTATIONS]
@@ -369,113 +376,6 @@ def _park(state: _State, mover: Cell, pending: set[Cell]) -> list | None:
     return _journey(state, mover, clear) or _journey(state, mover, lambda c: c not in state.goal)
 
 
-def _footprint(move: Move) -> set[Cell]:
-    return move.footprint()
-
-
-#: How many pending serial moves the scheduler looks at (at least, at most), and how
-#: far past the last move it chose in a step it keeps looking. Plans whose journeys
-#: interleave (the direct method) find movers deep in the window; sequential ones
-#: find none past the first few, and the gap stops their scan early. Very long plans
-#: (strip routes, 100,000+ moves) get the narrow window so that scheduling stays
-#: about linear: ``SCAN_WORK / len(plan)`` (measured in docs/planning.md).
-WINDOW = (400, 4000)
-GAP = 300
-SCAN_WORK = 40_000_000
-
-
-def schedule_parallel(initial: Configuration, serial: list[Move]) -> list[Step] | None:
-    """List-schedule the serial moves into time steps (None if it gets stuck).
-
-    Only the first ``WINDOW`` pending moves are candidates, and the scan of a
-    step stops ``GAP`` moves after the last one it chose; a candidate's earlier
-    pending moves have all been scanned, so the check is exact.
-    """
-    width = min(WINDOW[1], max(WINDOW[0], SCAN_WORK // max(1, len(serial))))
-    # footprints of the moves scanned so far and not yet scheduled: memory follows
-    # the window, not the plan (a set per move of a 5-million-move plan is gigabytes)
-    prints: dict[int, set[Cell]] = {}
-    occupied = set(initial.cells)
-    steps: list[Step] = []
-    pending = deque(range(len(serial)))
-    while pending:
-        blocked: set[Cell] = set()  # cells of earlier pending moves and of chosen ones
-        blocked_subs: set[Cell] = set()
-        busy: set[int] = set()
-        static = occupied  # shrinks to the modules that stay put (no copy: it is hot)
-        chosen: list[int] = []
-        rest: list[int] = []
-        last = 0
-        for scanned in range(min(width, len(pending))):
-            if scanned - last > GAP:
-                break
-            k = pending.popleft()
-            move = serial[k]
-            fp = prints.get(k)
-            if fp is None:
-                fp = prints[k] = _footprint(move)
-            ready = (
-                move.module not in busy
-                and not (fp & blocked)
-                and move.substrate not in blocked
-                and not (fp & blocked_subs)
-            )
-            if ready and not is_cut(static, move.src):
-                static.discard(move.src)
-                chosen.append(k)
-                del prints[k]
-                last = scanned
-            else:
-                rest.append(k)
-            busy.add(move.module)
-            blocked |= fp
-            blocked_subs.add(move.substrate)
-        if not chosen:
-            return None
-        step_moves = [serial[k] for k in chosen]
-        for move in step_moves:
-            occupied.add(move.dst)
-        steps.append(Step(step_moves))
-        pending.extendleft(reversed(rest))
-    return steps
-
-
-def pack_consecutive(initial: Configuration, serial: list[Move]) -> list[Step]:
-    """Greedy packing of consecutive independent serial moves (never stuck)."""
-    steps: list[Step] = []
-    occupied = set(initial.cells)
-    i = 0
-    while i < len(serial):
-        static = set(occupied)
-        used: set[Cell] = set()
-        subs: set[Cell] = set()
-        modules: set[int] = set()
-        chosen: list[Move] = []
-        while i < len(serial):
-            move = serial[i]
-            fp = _footprint(move)
-            if chosen and (
-                move.module in modules
-                or fp & used
-                or move.substrate in used
-                or fp & subs
-                or is_cut(static, move.src)
-            ):
-                break
-            static.discard(move.src)
-            used |= fp
-            subs.add(move.substrate)
-            modules.add(move.module)
-            chosen.append(move)
-            i += 1
-        for move in chosen:
-            occupied.discard(move.src)
-        for move in chosen:
-            occupied.add(move.dst)
-        steps.append(Step(chosen))
-    return steps
-
-
 def is_immobile(config: frozenset[Cell] | set[Cell], fixed: Cell | None = None) -> bool:
     """Fig. 4-6: no module can rotate without colliding or disconnecting the rest
     (the module on ``fixed`` is bolted to the base)."""
@@ -608,7 +508,9 @@ def plan_robust(
     if not parallel:
         plan.steps = [Step([m]) for m in serial]
     else:
-        plan.steps = schedule_parallel(initial, serial) or pack_consecutive(initial, serial)
+        plan.steps, late = schedule(initial, serial, deadline)
+        if late:
+            plan.warnings.append(late)
     final = replay(initial, [m for step in plan.steps for m in step.moves])
     plan.reached = final.cells == goal
     if not plan.reached:  # a bug, not a user error: say so loudly

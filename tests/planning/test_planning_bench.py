@@ -12,7 +12,7 @@ def test_family_pairs_share_the_anchor_and_keep_size():
 def test_a_row_is_checked_and_bounded():
     rows = [plan_pair("scramble", 10, seed, True, 30.0) for seed in range(2)]
     for row in rows:
-        assert row["planned"] and row["reason"] == ""
+        assert row["planned"] and row["reason"] == "" and row["warnings"] == []
         assert row["moves"] >= row["move_bound"] > 0
         assert row["steps"] >= row["step_bound"] > 0
         assert row["move_bound_kind"] == "assignment" and row["peak_mib"] > 0
