@@ -1,7 +1,7 @@
 """The local method of the robust planner: moves that grow with the distance to
 travel, not with the number of modules.
 
-Two planners, each run from the start to the goal and, failing that, from
+Two planners, each run from the start to the goal and, when neither plans, from
 the goal back to the start (reversed: every rotation is undone by the
 opposite one over the same cells):
 
@@ -45,7 +45,9 @@ def local_seconds(count: int) -> float:
 
 
 Flow = Callable[[Tracker, frozenset[Cell], Cell | None, Deadline, str], None]
-FLOWS: tuple[tuple[str, Flow], ...] = (("window", window_flow), ("kernel", kernel_flow))
+#: The kernel flow first: on blobs it is the one that plans (and the window flow's
+#: failures there are slow), so its plan is kept when the time cap comes.
+FLOWS: tuple[tuple[str, Flow], ...] = (("kernel", kernel_flow), ("window", window_flow))
 
 
 def forward(initial: Configuration, goal: frozenset[Cell], flow: Flow, max_moves: int,
