@@ -31,6 +31,7 @@ import heapq
 from collections import Counter, deque
 
 from hexbot.planning.budget import PlanningFailure
+from hexbot.planning.canonical import _path_to
 from hexbot.planning.configuration import contact_hops
 from hexbot.planning.hexlattice import Cell, distance, neighbors
 from hexbot.planning.robust import _free_run, _moves_from, fillable, is_cut, unwind
@@ -93,21 +94,6 @@ def kernel(start: frozenset[Cell], goal: frozenset[Cell],
 def _enterable(occupied: set[Cell], cell: Cell) -> bool:
     blocked = {n for n in neighbors(cell) if n in occupied}
     return bool(blocked) and _free_run(blocked, cell)
-
-
-def _path(occupied: set[Cell], start: Cell, target: Cell) -> list | None:
-    parent: dict = {start: None}
-    queue = deque([start])
-    while queue:
-        cell = queue.popleft()
-        for rule, sub, dst in _moves_from(cell, occupied, start):
-            if dst in parent:
-                continue
-            parent[dst] = (cell, rule, sub)
-            if dst == target:
-                return unwind(parent, dst)
-            queue.append(dst)
-    return None
 
 
 def _applied(occupied: set[Cell], chain: list) -> set[Cell]:
@@ -206,7 +192,7 @@ class KernelFlow:
                 end = self.is_end(m)
                 if (not end and len(chain) >= CHAIN_HOPS) or is_cut(occupied, m):
                     continue
-                path = _path(occupied, m, void)
+                path = _path_to(occupied, m, void)
                 if not path:
                     continue
                 if end:
