@@ -28,6 +28,7 @@ from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline, Plann
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.flow import kernel_flow
 from hexbot.planning.hexlattice import Cell
+from hexbot.planning.journey import journey_flow
 from hexbot.planning.moves import Move
 from hexbot.planning.tracker import Tracker
 from hexbot.planning.windows import window_flow
@@ -47,7 +48,8 @@ def local_seconds(count: int) -> float:
 Flow = Callable[[Tracker, frozenset[Cell], Cell | None, Deadline, str], None]
 #: The kernel flow first: on blobs it is the one that plans (and the window flow's
 #: failures there are slow), so its plan is kept when the time cap comes.
-FLOWS: tuple[tuple[str, Flow], ...] = (("kernel", kernel_flow), ("window", window_flow))
+FLOWS: tuple[tuple[str, Flow], ...] = (("journey", journey_flow), ("kernel", kernel_flow),
+                                       ("window", window_flow))
 
 
 def forward(initial: Configuration, goal: frozenset[Cell], flow: Flow, max_moves: int,

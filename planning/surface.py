@@ -49,6 +49,23 @@ def border(occupied: set[Cell] | frozenset[Cell]) -> set[Cell]:
     return {n for c in occupied for n in neighbors(c) if n not in occupied}
 
 
+def border_steps(occupied: set[Cell] | frozenset[Cell], target: Cell) -> dict[Cell, int]:
+    """Steps from ``target`` to every border cell, walking from border cell to
+    adjacent border cell (around the configuration, not through it). A
+    journey's measure of progress: rolling and crossing inlets both move along
+    the border."""
+    dist = {target: 0}
+    queue = deque([target])
+    while queue:
+        cell = queue.popleft()
+        for n in neighbors(cell):
+            if n in dist or n in occupied or not any(m in occupied for m in neighbors(n)):
+                continue
+            dist[n] = dist[cell] + 1
+            queue.append(n)
+    return dist
+
+
 def surface_segments(occupied: set[Cell] | frozenset[Cell]) -> list[set[Cell]]:
     """The border cells grouped by where a module can roll between them (largest first).
 

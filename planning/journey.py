@@ -1,0 +1,235 @@
+"""Journeys across surface segments, and the journey flow built on them.
+
+With every other module fixed, a module rolls only within one *segment* of
+the surface (:mod:`hexbot.planning.surface`): a 120-degree rotation cannot
+cross the mouth of a one-cell inlet. A :func:`journey` still gets a module
+from a cell to leave to a cell to fill, in moves that grow with the distance:
+
+1. it rolls, others fixed, to the cell of its segment nearest the target
+   along the border (:func:`hexbot.planning.surface.border_steps`);
+2. there a *crossing* (:func:`crossing`) takes it over the mouth: an A*
+   search over the modules of a small disc around it (radius 2, then 3),
+   whose only accepted end is the disc as it was with the traveller moved to
+   a border cell nearer the target. The wall modules step aside and come
+   back (the "monkey" moves of Akitaya et al.); the one left on the far side
+   need not be the one that came, the cells are what count;
+3. repeat until the target is reached; each crossing lowers the border
+   distance, so a journey ends or fails within ``CROSSINGS`` crossings.
+
+Every intermediate configuration is connected: the configuration without
+the traveller never changes between crossings (a crossing restores it), the
+traveller starts off a cell that is not a cut vertex, and each module moved
+in a crossing has its occupied sides in one arc (it cannot disconnect
+anything).
+
+The **journey flow** (:func:`journey_flow`) fills the goal's empty cells one
+journey at a time: the ends (modules off the goal) are assigned to the voids
+(cheapest assignment), and for each void its assigned end and the nearest
+others are candidates, preferring fills that wall in no void still to fill
+and no end still to leave (peeling, as :func:`hexbot.planning.robust.fillable`),
+then the shortest. It is a local plan: a journey's moves follow the border
+distance and a few crossings, never the number of modules.
+"""
+
+from __future__ import annotations
+
+import heapq
+from collections import deque
+
+from hexbot.planning.budget import PlanningFailure
+from hexbot.planning.hexlattice import Cell, distance, neighbors
+from hexbot.planning.robust import _moves_from, fillable, is_cut, unwind
+from hexbot.planning.surface import border_steps
+from hexbot.planning.tracker import Hop
+from hexbot.planning.windows import _can_leave, _unwind, assigned_pairs, disc
+
+#: Disc radii of a crossing, tried in turn, and the states one search may visit:
+#: a cheap pass over many candidate journeys first (most crossings need fewer
+#: than 200 states), then a thorough one over the best few.
+CROSSING_RADII = (2, 3)
+CHEAP_STATES = 300
+CROSSING_STATES = 4000
+THOROUGH_TRIES = 8
+#: Walled-in ends tried for a helper (:func:`_make_room`) when no journey is found.
+HELPERS = 4
+#: Crossings one journey may make (each lowers the border distance).
+CROSSINGS = 40
+#: Ends tried per void besides its assigned one (nearest first), and candidate
+#: journeys tried per fill before the flow gives up (failing ones cost most).
+NEAREST_ENDS = 3
+TRIES = 24
+_FAR = 10**9
+
+
+def _rolls(occupied: set[Cell], start: Cell) -> tuple[dict[Cell, tuple | None], dict[Cell, int]]:
+    """Breadth-first (parents, rotations) of every cell the module at ``start``
+    rolls to, others fixed."""
+    parent: dict[Cell, tuple | None] = {start: None}
+    depth = {start: 0}
+    queue = deque([start])
+    while queue:
+        cell = queue.popleft()
+        for rule, sub, dst in _moves_from(cell, occupied, start):
+            if dst not in parent:
+                parent[dst] = (cell, rule, sub)
+                depth[dst] = depth[cell] + 1
+                queue.append(dst)
+    return parent, depth
+
+
+def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dict[Cell, int],
+             fixed: Cell | None, max_states: int = CROSSING_STATES) -> tuple[list[Hop], Cell] | None:
+    """The fewest rotations inside ``window`` after which the window is as before
+    except that ``traveller``'s cell is empty and a cell ``q`` nearer the target
+    (``steps[q] < steps[traveller]``) is occupied: (hops, q), or None.
+
+    A* over the window's occupied cells; the estimate is the number of the
+    window's other modules not home yet (each needs a rotation)."""
+    outside = occupied - window
+    start = frozenset(occupied & window)
+    home = start - {traveller}
+    bound = steps.get(traveller, _FAR)
+    parent: dict[frozenset[Cell], tuple | None] = {start: None}
+    cost = {start: 0}
+    heap = [(1, 0, start)]
+    tie = 0
+    while heap and len(parent) < max_states:
+        _, _, state = heapq.heappop(heap)
+        whole = outside | state
+        after_cost = cost[state] + 1
+        for cell in sorted(state):
+            if cell == fixed or not _can_leave(whole, cell):
+                continue
+            for rule, sub, dst in _moves_from(cell, whole, cell):
+                if dst not in window:
+                    continue
+                after = (state - {cell}) | {dst}
+                if after in parent:
+                    continue
+                parent[after] = (state, (cell, dst, rule, sub))
+                cost[after] = after_cost
+                away = len(home - after)
+                if away == 0:
+                    (arrived,) = after - home
+                    if steps.get(arrived, _FAR) < bound:
+                        return _unwind(parent, after), arrived
+                tie += 1
+                heapq.heappush(heap, (after_cost + away + 1, tie, after))
+    return None
+
+
+def _apply(occupied: set[Cell], hops: list[Hop]) -> None:
+    for src, dst, _, _ in hops:
+        occupied.discard(src)
+        occupied.add(dst)
+
+
+def journey(occupied: set[Cell] | frozenset[Cell], start: Cell, target: Cell,
+            fixed: Cell | None = None, max_states: int = CROSSING_STATES) -> list[Hop] | None:
+    """Rotations taking a module from ``start`` (occupied, not a cut vertex) to
+    ``target`` (empty), rolling within segments and crossing between them; the
+    other cells end as they were. None when a crossing is not found."""
+    occupied = set(occupied)
+    steps = border_steps(occupied - {start}, target)
+    hops: list[Hop] = []
+    here = start
+    for _ in range(CROSSINGS):
+        parent, depth = _rolls(occupied, here)
+        if target in parent:
+            return hops + unwind(parent, target)
+        reached = [c for c in parent if c in steps] or [here]
+        best = min(reached, key=lambda c: (steps.get(c, _FAR), depth[c], c))
+        if best != here:
+            path = unwind(parent, best)
+            _apply(occupied, path)
+            hops += path
+            here = best
+        for radius in CROSSING_RADII:
+            found = crossing(occupied, here, disc(here, radius), steps, fixed, max_states)
+            if found:
+                path, here = found
+                _apply(occupied, path)
+                hops += path
+                break
+        else:
+            return None
+    return None
+
+
+def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
+                 method: str = "local") -> None:
+    """Fill every void by journeys (raises PlanningFailure when no candidate
+    journey is found). Each journey fills one void for good, so the loop ends."""
+    while True:
+        deadline.check(method)
+        occupied = tracker.occupied
+        voids = set(goal - occupied)
+        if not voids:
+            return
+        ends = occupied - goal
+        candidates = [(m, v) for _, m, v in _candidates(occupied, goal, ends, voids, fixed)
+                      if not is_cut(occupied, m)]
+        tries = [(m, v, CHEAP_STATES) for m, v in candidates[:TRIES]]
+        tries += [(m, v, CROSSING_STATES) for m, v in candidates[:THOROUGH_TRIES]]
+        for mover, void, states in tries:
+            hops = journey(occupied, mover, void, fixed, states)
+            if hops:
+                tracker.roll(hops)
+                break
+            deadline.check(method)
+        else:
+            hops = _make_room(occupied, goal, ends, voids, fixed)
+            if hops:
+                tracker.roll(hops)
+                continue
+            raise PlanningFailure(
+                f"{method}: journeys stuck with {len(voids)} goal cells to fill "
+                f"(none of {min(TRIES, len(candidates))} journeys found a crossing within "
+                f"radius {CROSSING_RADII[-1]} and {CROSSING_STATES} states)")
+
+
+def _make_room(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
+               fixed: Cell | None) -> list[Hop] | None:
+    """An end walled in (fewer than three free sides in a row) gets out when a
+    goal module beside it goes to a void first: that module's journey, then the
+    end's journey into the cell it left. The thesis' void propagation, one hop."""
+    walled = sorted(fillable(frozenset(occupied), set(ends)),
+                    key=lambda e: (min(distance(e, v) for v in voids), e))
+    for end in walled[:HELPERS]:
+        for side in neighbors(end):
+            if side not in goal or side not in occupied or side == fixed:
+                continue
+            if is_cut(occupied, side):
+                continue
+            for void in sorted(voids, key=lambda v: (distance(side, v), v))[:2]:
+                first = journey(occupied, side, void, fixed)
+                if not first:
+                    continue
+                after = set(occupied)
+                _apply(after, first)
+                if is_cut(after, end):
+                    continue
+                second = journey(after, end, side, fixed)
+                if second:
+                    return first + second
+    return None
+
+
+def _candidates(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
+                fixed: Cell | None) -> list[tuple[tuple[int, int], Cell, Cell]]:
+    """(rank, end, void): per void its assigned end and the nearest others; fills
+    that wall in nothing first, then those walling in an end, then a void."""
+    walled_voids = fillable(goal, voids)
+    walled_ends = fillable(frozenset(occupied), set(ends))
+    ranked = []
+    for _, end, void in assigned_pairs(ends, voids):
+        walls_void = bool(fillable(goal, voids - {void}) - walled_voids)
+        nearest = sorted(ends, key=lambda e: (distance(e, void), e))[:NEAREST_ENDS]
+        for mover in sorted({end, *nearest}):
+            if mover == fixed:
+                continue
+            shape = frozenset((occupied - {mover}) | {void})
+            walls_end = bool(fillable(shape, ends - {mover}) - walled_ends)
+            ranked.append(((2 * walls_void + walls_end, distance(mover, void)), mover, void))
+    ranked.sort()
+    return ranked
