@@ -78,7 +78,8 @@ def _rolls(occupied: set[Cell], start: Cell) -> tuple[dict[Cell, tuple | None], 
 
 
 def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dict[Cell, int],
-             fixed: Cell | None, max_states: int = CROSSING_STATES) -> tuple[list[Hop], Cell] | None:
+             fixed: Cell | None,
+             max_states: int = CROSSING_STATES) -> tuple[list[Hop], Cell] | None:
     """The fewest rotations inside ``window`` after which the window is as before
     except that ``traveller``'s cell is empty and a cell ``q`` nearer the target
     (``steps[q] < steps[traveller]``) is occupied: (hops, q), or None.
