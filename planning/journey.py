@@ -191,29 +191,40 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
 
 def _make_room(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
                fixed: Cell | None) -> list[Hop] | None:
-    """An end walled in (fewer than three free sides in a row) gets out when a
-    goal module beside it goes to a void first: that module's journey, then the
-    end's journey into the cell it left. The thesis' void propagation, one hop."""
-    walled = sorted(fillable(frozenset(occupied), set(ends)),
-                    key=lambda e: (min(distance(e, v) for v in voids), e))
-    for end in walled[:HELPERS]:
-        for side in neighbors(end):
-            if side not in goal or side not in occupied or side == fixed:
-                continue
-            if is_cut(occupied, side):
-                continue
+    """One hop of the thesis' void propagation: an end walled in (no three free
+    sides in a row) gets out when a goal module beside it goes to a void
+    first, then the end takes its cell. (The mirror case, a void walled in,
+    was tried and never helped on the bench pairs: entering a cell needs three
+    free sides in a row, so two of its neighbours would have to step away.)"""
+    by_distance = sorted(fillable(frozenset(occupied), set(ends)),
+                         key=lambda e: (min(distance(e, v) for v in voids), e))
+    for end in by_distance[:HELPERS]:
+        for side in _helpers(occupied, goal, end, fixed):
             for void in sorted(voids, key=lambda v: (distance(side, v), v))[:2]:
-                first = journey(occupied, side, void, fixed)
-                if not first:
-                    continue
-                after = set(occupied)
-                _apply(after, first)
-                if is_cut(after, end):
-                    continue
-                second = journey(after, end, side, fixed)
-                if second:
-                    return first + second
+                hops = _two_journeys(occupied, (side, void), (end, side), fixed)
+                if hops:
+                    return hops
     return None
+
+
+def _helpers(occupied: set[Cell], goal: frozenset[Cell], cell: Cell,
+             fixed: Cell | None) -> list[Cell]:
+    """Goal modules beside ``cell`` that can leave their cell for a while."""
+    return [n for n in neighbors(cell)
+            if n in goal and n in occupied and n != fixed and not is_cut(occupied, n)]
+
+
+def _two_journeys(occupied: set[Cell], first: tuple[Cell, Cell], second: tuple[Cell, Cell],
+                  fixed: Cell | None) -> list[Hop] | None:
+    hops = journey(occupied, *first, fixed)
+    if not hops:
+        return None
+    after = set(occupied)
+    _apply(after, hops)
+    if is_cut(after, second[0]):
+        return None
+    more = journey(after, *second, fixed)
+    return hops + more if more else None
 
 
 def _candidates(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
