@@ -50,6 +50,9 @@ CROSSING_RADII = (2, 3)
 CHEAP_STATES = 300
 CROSSING_STATES = 4000
 THOROUGH_TRIES = 8
+#: Fills taken back when stuck, and how near a stuck end a fill must be to be taken back.
+BACKTRACKS = 20
+NEAR = 2
 #: Walled-in ends tried for a helper (:func:`_make_room`) when no journey is found.
 HELPERS = 4
 #: Crossings one journey may make (each lowers the border distance).
@@ -86,21 +89,26 @@ def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dic
 
     A* over the window's occupied cells; the estimate is the number of the
     window's other modules not home yet (each needs a rotation)."""
-    outside = occupied - window
-    start = frozenset(occupied & window)
+    # Only the modules within two cells of the window matter to its rotations.
+    rim = {n for c in window for n in neighbors(c)}
+    rim |= {n for c in rim for n in neighbors(c)}
+    outside = {c for c in rim - window if c in occupied}
+    start = frozenset(c for c in window if c in occupied)
     home = start - {traveller}
     bound = steps.get(traveller, _FAR)
     parent: dict[frozenset[Cell], tuple | None] = {start: None}
     cost = {start: 0}
+    whole = outside | start
+    # Modules of a state that can leave their cell: a rotation changes this only
+    # next to the two cells it touches, so a child state rechecks those alone.
+    movable = {start: frozenset(c for c in start if c != fixed and _can_leave(whole, c))}
     heap = [(1, 0, start)]
     tie = 0
     while heap and len(parent) < max_states:
         _, _, state = heapq.heappop(heap)
         whole = outside | state
         after_cost = cost[state] + 1
-        for cell in sorted(state):
-            if cell == fixed or not _can_leave(whole, cell):
-                continue
+        for cell in sorted(movable[state]):
             for rule, sub, dst in _moves_from(cell, whole, cell):
                 if dst not in window:
                     continue
@@ -109,6 +117,8 @@ def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dic
                     continue
                 parent[after] = (state, (cell, dst, rule, sub))
                 cost[after] = after_cost
+                movable[after] = _recheck(movable[state], outside | after, after,
+                                          (cell, dst), fixed)
                 away = len(home - after)
                 if away == 0:
                     (arrived,) = after - home
@@ -117,6 +127,13 @@ def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dic
                 tie += 1
                 heapq.heappush(heap, (after_cost + away + 1, tie, after))
     return None
+
+
+def _recheck(movable: frozenset[Cell], whole: set[Cell], state: frozenset[Cell],
+             changed: tuple[Cell, Cell], fixed: Cell | None) -> frozenset[Cell]:
+    near = {n for c in changed for n in (c, *neighbors(c)) if n in state and n != fixed}
+    kept = {c for c in movable if c not in near and c in state}
+    return frozenset(kept | {c for c in near if _can_leave(whole, c)})
 
 
 def _apply(occupied: set[Cell], hops: list[Hop]) -> None:
@@ -158,9 +175,19 @@ def journey(occupied: set[Cell] | frozenset[Cell], start: Cell, target: Cell,
 
 
 def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
-                 method: str = "local") -> None:
-    """Fill every void by journeys (raises PlanningFailure when no candidate
-    journey is found). Each journey fills one void for good, so the loop ends."""
+                 method: str = "local", spread: float = 0.0) -> None:
+    """Fill every void by journeys; raises PlanningFailure when stuck.
+
+    ``spread`` ranks candidate movers by distance plus ``spread`` times their
+    free sides: the modules that are hard to move go first, the free tips
+    last (they can travel anywhere in the endgame). When no journey fills a
+    void, the flow takes back the latest fill next to a stuck end and makes
+    that void wait until the end has left (at most ``BACKTRACKS`` times).
+    Every fill or take-back changes the state, and take-backs are bounded,
+    so the loop ends."""
+    fills: list[tuple[int, Cell]] = []  # (moves before the fill, void filled)
+    waits: dict[Cell, set[Cell]] = {}  # void -> cells whose end must leave first
+    backtracks = 0
     while True:
         deadline.check(method)
         occupied = tracker.occupied
@@ -168,14 +195,21 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
         if not voids:
             return
         ends = occupied - goal
-        candidates = [(m, v) for _, m, v in _candidates(occupied, goal, ends, voids, fixed)
-                      if not is_cut(occupied, m)]
-        tries = [(m, v, CHEAP_STATES) for m, v in candidates[:TRIES]]
+        ranked = _candidates(occupied, goal, ends, voids, fixed, spread)
+        candidates = []
+        for _, m, v in ranked:
+            if not (waits.get(v, set()) & ends) - {m} and not is_cut(occupied, m):
+                candidates.append((m, v))
+                if len(candidates) == TRIES:
+                    break
+        before = len(tracker.moves)
+        tries = [(m, v, CHEAP_STATES) for m, v in candidates]
         tries += [(m, v, CROSSING_STATES) for m, v in candidates[:THOROUGH_TRIES]]
         for mover, void, states in tries:
             hops = journey(occupied, mover, void, fixed, states)
             if hops:
                 tracker.roll(hops)
+                fills.append((before, void))
                 break
             deadline.check(method)
         else:
@@ -183,10 +217,26 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
             if hops:
                 tracker.roll(hops)
                 continue
-            raise PlanningFailure(
-                f"{method}: journeys stuck with {len(voids)} goal cells to fill "
-                f"(none of {min(TRIES, len(candidates))} journeys found a crossing within "
-                f"radius {CROSSING_RADII[-1]} and {CROSSING_STATES} states)")
+            culprit = _latest_fill_near(fills, ends) if backtracks < BACKTRACKS else None
+            if culprit is None:
+                raise PlanningFailure(
+                    f"{method}: journeys stuck with {len(voids)} goal cells to fill "
+                    f"(none of {len(candidates)} journeys found a crossing within "
+                    f"radius {CROSSING_RADII[-1]} and {CROSSING_STATES} states; "
+                    f"{backtracks} fills taken back)")
+            backtracks += 1
+            moves, void = fills[culprit]
+            del fills[culprit:]
+            tracker.undo_to(moves)
+            waits.setdefault(void, set()).update(e for e in ends if distance(e, void) <= NEAR)
+
+
+def _latest_fill_near(fills: list[tuple[int, Cell]], ends: set[Cell]) -> int | None:
+    """Index of the latest fill within ``NEAR`` of a stuck end, or None."""
+    for index in range(len(fills) - 1, -1, -1):
+        if any(distance(fills[index][1], e) <= NEAR for e in ends):
+            return index
+    return None
 
 
 def _make_room(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
@@ -228,20 +278,58 @@ def _two_journeys(occupied: set[Cell], first: tuple[Cell, Cell], second: tuple[C
 
 
 def _candidates(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
-                fixed: Cell | None) -> list[tuple[tuple[int, int], Cell, Cell]]:
+                fixed: Cell | None, spread: float) -> list[tuple[tuple[int, float], Cell, Cell]]:
     """(rank, end, void): per void its assigned end and the nearest others; fills
-    that wall in nothing first, then those walling in an end, then a void."""
+    that wall in nothing first, then those walling in an end, then a void.
+
+    Peeling is local: cells of two groups that do not touch never block each
+    other, so each check peels only the groups next to what the fill changes."""
     walled_voids = fillable(goal, voids)
     walled_ends = fillable(frozenset(occupied), set(ends))
+    void_group, end_group = _groups(voids), _groups(ends)
     ranked = []
     for _, end, void in assigned_pairs(ends, voids):
-        walls_void = bool(fillable(goal, voids - {void}) - walled_voids)
-        nearest = sorted(ends, key=lambda e: (distance(e, void), e))[:NEAREST_ENDS]
+        walls_void = bool(fillable(goal, void_group[void] - {void}) - walled_voids)
+        nearest = heapq.nsmallest(NEAREST_ENDS, ends, key=lambda e: (distance(e, void), e))
         for mover in sorted({end, *nearest}):
             if mover == fixed:
                 continue
-            shape = frozenset((occupied - {mover}) | {void})
-            walls_end = bool(fillable(shape, ends - {mover}) - walled_ends)
-            ranked.append(((2 * walls_void + walls_end, distance(mover, void)), mover, void))
+            touched = {c for x in (void, mover) for n in (x, *neighbors(x)) if n in end_group
+                       for c in end_group[n]} - {mover}
+            shape = _Moved(occupied, mover, void)
+            walls_end = bool(fillable(shape, touched) - walled_ends)
+            free = sum(1 for n in neighbors(mover) if n not in occupied)
+            ranked.append(((2 * walls_void + walls_end, distance(mover, void) + spread * free),
+                           mover, void))
     ranked.sort()
     return ranked
+
+
+def _groups(cells: set[Cell]) -> dict[Cell, frozenset[Cell]]:
+    """Each cell's group: the cells connected to it through neighbours in ``cells``."""
+    group: dict[Cell, frozenset[Cell]] = {}
+    for cell in sorted(cells):
+        if cell in group:
+            continue
+        seen, queue = {cell}, deque([cell])
+        while queue:
+            for n in neighbors(queue.popleft()):
+                if n in cells and n not in seen:
+                    seen.add(n)
+                    queue.append(n)
+        members = frozenset(seen)
+        for c in members:
+            group[c] = members
+    return group
+
+
+class _Moved:
+    """``occupied`` with one module moved from ``src`` to ``dst``, without a copy."""
+
+    __slots__ = ("occupied", "src", "dst")
+
+    def __init__(self, occupied: set[Cell], src: Cell, dst: Cell) -> None:
+        self.occupied, self.src, self.dst = occupied, src, dst
+
+    def __contains__(self, cell: Cell) -> bool:
+        return cell == self.dst or (cell != self.src and cell in self.occupied)

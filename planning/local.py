@@ -23,6 +23,7 @@ docs/planning.md ("Local method").
 from __future__ import annotations
 
 from collections.abc import Callable
+from functools import partial
 
 from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline, PlanningFailure
 from hexbot.planning.configuration import Configuration
@@ -45,11 +46,19 @@ def local_seconds(count: int) -> float:
     return 10.0 + count / 5
 
 
+#: The second journey flow ranks movers by distance plus this many times their free
+#: sides (hard modules first, free tips last): it planned all six scrambles of 100.
+HARD_FIRST = 3.0
+
 Flow = Callable[[Tracker, frozenset[Cell], Cell | None, Deadline, str], None]
 #: The kernel flow first: on blobs it is the one that plans (and the window flow's
 #: failures there are slow), so its plan is kept when the time cap comes.
-FLOWS: tuple[tuple[str, Flow], ...] = (("journey", journey_flow), ("kernel", kernel_flow),
-                                       ("window", window_flow))
+FLOWS: tuple[tuple[str, Flow], ...] = (
+    ("journey", journey_flow),
+    ("journey, hard first", partial(journey_flow, spread=HARD_FIRST)),
+    ("kernel", kernel_flow),
+    ("window", window_flow),
+)
 
 
 def forward(initial: Configuration, goal: frozenset[Cell], flow: Flow, max_moves: int,

@@ -35,3 +35,11 @@ class Tracker:
             self.ids[dst] = module
             self.occupied.discard(src)
             self.occupied.add(dst)
+
+    def undo_to(self, count: int) -> None:
+        """Take back the moves after the first ``count`` (a planner backtracking)."""
+        while len(self.moves) > count:
+            move = self.moves.pop()
+            self.ids[move.src] = self.ids.pop(move.dst)
+            self.occupied.discard(move.dst)
+            self.occupied.add(move.src)

@@ -21,7 +21,7 @@ import heapq
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
-from hexbot.planning.hexlattice import Cell, distance, neighbors
+from hexbot.planning.hexlattice import SIDE_OFFSETS, Cell, distance
 from hexbot.planning.robust import _moves_from
 
 #: One rotation: (from, to, Table 4-3 row, substrate cell).
@@ -91,14 +91,28 @@ def fix_in_window(occupied: set[Cell], goal: frozenset[Cell], window: set[Cell],
     return None
 
 
-def _can_leave(occupied: set[Cell] | frozenset[Cell], cell: Cell) -> bool:
-    """Three consecutive sides free (a rotation needs them) and the occupied ones in
-    one arc (so leaving cannot disconnect anything): six look-ups, and most cells
-    of a window fail here before their twelve rotations are tried."""
-    ring = [n in occupied for n in neighbors(cell)]
+def _leavable(mask: int) -> bool:
+    ring = [bool(mask >> i & 1) for i in range(6)]
     if not any(not ring[i] and not ring[i - 1] and not ring[i - 2] for i in range(6)):
         return False
     return sum(1 for i in range(6) if ring[i] and not ring[i - 1]) <= 1
+
+
+#: Per ring mask (bit i = side i + 1 occupied): can a module with that ring leave?
+_LEAVABLE = tuple(_leavable(mask) for mask in range(64))
+_OFFSETS = tuple(SIDE_OFFSETS.values())
+
+
+def _can_leave(occupied: set[Cell] | frozenset[Cell], cell: Cell) -> bool:
+    """Three consecutive sides free (a rotation needs them) and the occupied ones in
+    one arc (so leaving cannot disconnect anything): six look-ups and a table,
+    and most cells of a window fail here before their twelve rotations are tried."""
+    x, y = cell
+    mask = 0
+    for bit, (dx, dy) in enumerate(_OFFSETS):
+        if (x + dx, y + dy) in occupied:
+            mask |= 1 << bit
+    return _LEAVABLE[mask]
 
 
 def _unwind(parent: dict, state: frozenset[Cell]) -> list[Hop]:
