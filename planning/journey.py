@@ -81,14 +81,16 @@ def _rolls(occupied: set[Cell], start: Cell) -> tuple[dict[Cell, tuple | None], 
 
 
 def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dict[Cell, int],
-             fixed: Cell | None,
-             max_states: int = CROSSING_STATES) -> tuple[list[Hop], Cell] | None:
+             fixed: Cell | None, max_states: int = CROSSING_STATES,
+             failed: set | None = None) -> tuple[list[Hop], Cell] | None:
     """The fewest rotations inside ``window`` after which the window is as before
     except that ``traveller``'s cell is empty and a cell ``q`` nearer the target
     (``steps[q] < steps[traveller]``) is occupied: (hops, q), or None.
 
     A* over the window's occupied cells; the estimate is the number of the
-    window's other modules not home yet (each needs a rotation)."""
+    window's other modules not home yet (each needs a rotation). ``failed``
+    remembers the searches that found nothing: a flow asks the same question
+    again and again while the cells around a stuck module stay as they are."""
     # Only the modules within two cells of the window matter to its rotations.
     rim = {n for c in window for n in neighbors(c)}
     rim |= {n for c in rim for n in neighbors(c)}
@@ -96,6 +98,11 @@ def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dic
     start = frozenset(c for c in window if c in occupied)
     home = start - {traveller}
     bound = steps.get(traveller, _FAR)
+    if failed is not None:
+        question = (traveller, start, frozenset(outside), max_states, fixed,
+                    frozenset(c for c in window if steps.get(c, _FAR) < bound))
+        if question in failed:
+            return None
     parent: dict[frozenset[Cell], tuple | None] = {start: None}
     cost = {start: 0}
     whole = outside | start
@@ -126,6 +133,8 @@ def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dic
                         return _unwind(parent, after), arrived
                 tie += 1
                 heapq.heappush(heap, (after_cost + away + 1, tie, after))
+    if failed is not None:
+        failed.add(question)
     return None
 
 
@@ -143,7 +152,8 @@ def _apply(occupied: set[Cell], hops: list[Hop]) -> None:
 
 
 def journey(occupied: set[Cell] | frozenset[Cell], start: Cell, target: Cell,
-            fixed: Cell | None = None, max_states: int = CROSSING_STATES) -> list[Hop] | None:
+            fixed: Cell | None = None, max_states: int = CROSSING_STATES,
+            failed: set | None = None) -> list[Hop] | None:
     """Rotations taking a module from ``start`` (occupied, not a cut vertex) to
     ``target`` (empty), rolling within segments and crossing between them; the
     other cells end as they were. None when a crossing is not found."""
@@ -163,7 +173,8 @@ def journey(occupied: set[Cell] | frozenset[Cell], start: Cell, target: Cell,
             hops += path
             here = best
         for radius in CROSSING_RADII:
-            found = crossing(occupied, here, disc(here, radius), steps, fixed, max_states)
+            found = crossing(occupied, here, disc(here, radius), steps, fixed, max_states,
+                             failed)
             if found:
                 path, here = found
                 _apply(occupied, path)
@@ -187,6 +198,7 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     so the loop ends."""
     fills: list[tuple[int, Cell]] = []  # (moves before the fill, void filled)
     waits: dict[Cell, set[Cell]] = {}  # void -> cells whose end must leave first
+    failed: set = set()  # crossings that found nothing (see crossing)
     backtracks = 0
     while True:
         deadline.check(method)
@@ -206,14 +218,14 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
         tries = [(m, v, CHEAP_STATES) for m, v in candidates]
         tries += [(m, v, CROSSING_STATES) for m, v in candidates[:THOROUGH_TRIES]]
         for mover, void, states in tries:
-            hops = journey(occupied, mover, void, fixed, states)
+            hops = journey(occupied, mover, void, fixed, states, failed)
             if hops:
                 tracker.roll(hops)
                 fills.append((before, void))
                 break
             deadline.check(method)
         else:
-            hops = _make_room(occupied, goal, ends, voids, fixed)
+            hops = _make_room(occupied, goal, ends, voids, fixed, failed)
             if hops:
                 tracker.roll(hops)
                 continue
@@ -240,7 +252,7 @@ def _latest_fill_near(fills: list[tuple[int, Cell]], ends: set[Cell]) -> int | N
 
 
 def _make_room(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
-               fixed: Cell | None) -> list[Hop] | None:
+               fixed: Cell | None, failed: set) -> list[Hop] | None:
     """One hop of the thesis' void propagation: an end walled in (no three free
     sides in a row) gets out when a goal module beside it goes to a void
     first, then the end takes its cell. (The mirror case, a void walled in,
@@ -251,7 +263,7 @@ def _make_room(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], void
     for end in by_distance[:HELPERS]:
         for side in _helpers(occupied, goal, end, fixed):
             for void in sorted(voids, key=lambda v: (distance(side, v), v))[:2]:
-                hops = _two_journeys(occupied, (side, void), (end, side), fixed)
+                hops = _two_journeys(occupied, (side, void), (end, side), fixed, failed)
                 if hops:
                     return hops
     return None
@@ -265,15 +277,15 @@ def _helpers(occupied: set[Cell], goal: frozenset[Cell], cell: Cell,
 
 
 def _two_journeys(occupied: set[Cell], first: tuple[Cell, Cell], second: tuple[Cell, Cell],
-                  fixed: Cell | None) -> list[Hop] | None:
-    hops = journey(occupied, *first, fixed)
+                  fixed: Cell | None, failed: set) -> list[Hop] | None:
+    hops = journey(occupied, *first, fixed, failed=failed)
     if not hops:
         return None
     after = set(occupied)
     _apply(after, hops)
     if is_cut(after, second[0]):
         return None
-    more = journey(after, *second, fixed)
+    more = journey(after, *second, fixed, failed=failed)
     return hops + more if more else None
 
 
