@@ -230,17 +230,22 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
                 tracker.roll(hops)
                 continue
             culprit = _latest_fill_near(fills, ends) if backtracks < BACKTRACKS else None
-            if culprit is None:
-                raise PlanningFailure(
-                    f"{method}: journeys stuck with {len(voids)} goal cells to fill "
-                    f"(none of {len(candidates)} journeys found a crossing within "
-                    f"radius {CROSSING_RADII[-1]} and {CROSSING_STATES} states; "
-                    f"{backtracks} fills taken back)")
-            backtracks += 1
-            moves, void = fills[culprit]
-            del fills[culprit:]
-            tracker.undo_to(moves)
-            waits.setdefault(void, set()).update(e for e in ends if distance(e, void) <= NEAR)
+            if culprit is not None:
+                backtracks += 1
+                moves, void = fills[culprit]
+                del fills[culprit:]
+                tracker.undo_to(moves)
+                waits.setdefault(void, set()).update(e for e in ends if distance(e, void) <= NEAR)
+                continue
+            if waits:  # the ends waited for may never leave: let their voids be filled
+                waits.clear()
+                backtracks = BACKTRACKS
+                continue
+            raise PlanningFailure(
+                f"{method}: journeys stuck with {len(voids)} goal cells to fill "
+                f"(none of {len(candidates)} journeys found a crossing within "
+                f"radius {CROSSING_RADII[-1]} and {CROSSING_STATES} states; "
+                f"{backtracks} fills taken back)")
 
 
 def _latest_fill_near(fills: list[tuple[int, Cell]], ends: set[Cell]) -> int | None:
