@@ -34,16 +34,19 @@ from hexbot.planning.moves import Move
 from hexbot.planning.tracker import Tracker
 from hexbot.planning.windows import window_flow
 
-#: Above this many modules the local method is not tried: it planned none of the
-#: 300-module bench pairs tried (each failure cost 16-53 s) and none at 1,000.
+#: Up to this many modules the local method runs all its flows; above, only the
+#: journey flows (the kernel and window flows planned none of the 300-module
+#: bench pairs tried, each failure costing 16-53 s, and none at 1,000).
 LOCAL_LIMIT = 150
 
 
-
 def local_seconds(count: int) -> float:
-    """The local method's own time cap: its successes at 100 modules take seconds,
-    its failures can search for minutes (measured in docs/planning.md)."""
-    return 10.0 + count / 5
+    """The local method's own time cap. Up to ``LOCAL_LIMIT`` modules its
+    successes take seconds and its failures can search for minutes; above, the
+    journey flows plan 1,000-module scrambles in 2-4 s and fail on blobs in
+    7-15 s, so the cap keeps a failure from spending the strip's time
+    (measured in docs/planning.md)."""
+    return 10.0 + count / 5 if count <= LOCAL_LIMIT else 1.0 + count / 250
 
 
 #: The second journey flow ranks movers by distance plus this many times their free
@@ -79,16 +82,21 @@ def backward(initial: Configuration, goal: frozenset[Cell], flow: Flow, max_move
     return undone(moves, {end[c].id: initial[c].id for c in end})
 
 
+def flows_for(count: int) -> tuple[tuple[str, Flow], ...]:
+    """All flows up to ``LOCAL_LIMIT`` modules, the journey flows above."""
+    return FLOWS if count <= LOCAL_LIMIT else tuple(f for f in FLOWS if f[0].startswith("journey"))
+
+
 def via_local(initial: Configuration, goal: frozenset[Cell], max_moves: int,
               fixed: Cell | None = None, deadline: Deadline = NO_DEADLINE,
               method: str = "local") -> list[Move]:
-    """The shorter plan of both flows run forward; only when neither succeeds,
-    both run backward. :class:`PlanningFailure` with the reason of every try
+    """The shortest plan of the flows run forward; only when none succeeds,
+    they run backward. :class:`PlanningFailure` with the reason of every try
     when none succeeds; when the time runs out after a success, that plan."""
     failures = []
     best: list[Move] | None = None
     for direction in (forward, backward):
-        for name, flow in FLOWS:
+        for name, flow in flows_for(len(initial)):
             try:
                 serial = direction(initial, goal, flow, max_moves, fixed, deadline, method)
             except BudgetExhausted:

@@ -458,8 +458,8 @@ def plan_robust(
 
     Methods, in order: the direct one forward, the direct one from the goal
     backwards (both with a search budget), the local method
-    (:mod:`hexbot.planning.local`, up to its ``LOCAL_LIMIT`` modules and its own
-    time cap), through a compact middle ball
+    (:mod:`hexbot.planning.local`, with its own time cap; above its
+    ``LOCAL_LIMIT`` modules it comes first, journey flows only), through a compact middle ball
     (:mod:`hexbot.planning.middle`, up to ``MIDDLE_LIMIT`` modules), then
     through a canonical strip (:mod:`hexbot.planning.canonical`). ``plan.method``
     says which one planned. ``budget`` is the time budget in seconds (None:
@@ -487,9 +487,11 @@ def plan_robust(
     if n <= BACKWARD_LIMIT or fixed is not None:
         methods.append(("direct, backwards", lambda d: reversed_plan(
             initial, goal, max_moves, fixed, searches, deadline=d.capped(direct_seconds(n)))))
-    if n <= LOCAL_LIMIT:
-        methods.append(("local", lambda d: via_local(
-            initial, goal, max_moves, fixed, deadline=d.capped(local_seconds(n)))))
+    local = ("local", lambda d: via_local(
+        initial, goal, max_moves, fixed, deadline=d.capped(local_seconds(n))))
+    # Small: the direct plans are the shortest when they exist. Large: the direct
+    # methods planned none of the bench pairs, the journey flows most scrambles.
+    methods.insert(len(methods) if n <= LOCAL_LIMIT else 0, local)
     if n <= MIDDLE_LIMIT:
         methods.append(("middle ball", lambda d: via_middle(
             initial, goal, max_moves, fixed, searches, deadline=d)))
