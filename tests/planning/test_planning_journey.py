@@ -1,0 +1,109 @@
+"""Journeys across surface segments and the journey flow, checked independently."""
+
+import pytest
+
+from hexbot.bench.planning import make_pair
+from hexbot.planning.bounds import move_lower_bound
+from hexbot.planning.budget import Deadline, PlanningFailure
+from hexbot.planning.canonical import replay
+from hexbot.planning.checker import check_plan
+from hexbot.planning.configuration import Configuration, is_connected
+from hexbot.planning.generate import parallelogram
+from hexbot.planning.journey import journey, journey_flow
+from hexbot.planning.local import forward
+from hexbot.planning.robust import fillable, pack_consecutive, plan_robust
+from hexbot.planning.surface import rolling_distances
+from hexbot.planning.tracker import Tracker
+
+NO_LIMIT = Deadline(None)
+
+#: The 7-module shape of test_planning_surface: a one-cell inlet at (0, -1)
+#: cuts the border; (2, -1) and (-2, 1) are in different segments.
+INLET = {(-1, -1), (-1, 0), (-1, 1), (0, 0), (0, 1), (1, -1), (1, 1)}
+
+
+def legal(initial: Configuration, goal, serial, fixed=None):
+    report = check_plan(initial, goal, pack_consecutive(initial, serial), fixed=fixed)
+    assert report.ok, report.problem
+
+
+def test_a_journey_crosses_a_mouth_no_rolling_module_can_cross():
+    shape = INLET | {(2, -2)}
+    start, target = (2, -2), (-2, 1)
+    # others fixed, the module cannot roll there: the border is cut
+    assert target not in rolling_distances(shape - {start}, [start])
+    hops = journey(shape, start, target)
+    assert hops
+    cells = set(shape)
+    for src, dst, _, _ in hops:
+        assert src in cells and dst not in cells
+        cells.discard(src)
+        cells.add(dst)
+        assert is_connected(cells)
+    # the cells end as before, one module moved from the start to the target
+    assert cells == shape - {start} | {target}
+    goal = frozenset(cells)
+    tracker = Tracker(Configuration.from_cells(shape), 100)
+    tracker.roll(hops)
+    legal(Configuration.from_cells(shape), goal, tracker.moves)
+
+
+def test_a_module_flush_in_a_flat_side_leaves_it():
+    # the middle of a parallelogram's top row has two free sides: it cannot rotate
+    # until a neighbour steps aside
+    shape = parallelogram(7, 3)
+    flush = (3, 2)
+    assert fillable(shape, {flush}) == {flush}
+    goal = frozenset(shape - {flush} | {(7, 0)})
+    start = Configuration.from_cells(shape)
+    serial = forward(start, goal, journey_flow, 10**6, None, NO_LIMIT, "local")
+    assert replay(start, serial).cells == goal
+    legal(start, goal, serial)
+
+
+@pytest.mark.parametrize("seed", range(6))
+def test_scrambles_of_100_are_planned_within_three_times_the_bound(seed):
+    a, b = make_pair("scramble", 100, seed)
+    start = Configuration.from_cells(a)
+    serial = forward(start, b, journey_flow, 10**6, None, NO_LIMIT, "local")
+    legal(start, b, serial)
+    # the strip route took 112-166 times the bound on these pairs
+    assert len(serial) <= 3 * move_lower_bound(a, b).value
+
+
+def test_the_fixed_module_never_moves():
+    a, b = make_pair("scramble", 100, 1)
+    start = Configuration.from_cells(a)
+    serial = forward(start, b, journey_flow, 10**6, (0, 0), NO_LIMIT, "local")
+    assert all(m.src != (0, 0) for m in serial)
+    legal(start, b, serial, fixed=(0, 0))
+
+
+def test_a_stuck_flow_says_why():
+    # blob pair 1 of 100: the last goal cell is walled in by the goal itself
+    a, b = make_pair("blob", 100, 1)
+    with pytest.raises(PlanningFailure, match="journeys stuck with 1 goal cells to fill"):
+        forward(Configuration.from_cells(a), b, journey_flow, 10**6, None, NO_LIMIT, "local")
+
+
+def test_taking_moves_back_restores_the_configuration():
+    a, b = make_pair("scramble", 30, 2)
+    start = Configuration.from_cells(a)
+    tracker = Tracker(start, 10**6)
+    journey_flow(tracker, b, None, NO_LIMIT)
+    assert tracker.occupied == set(b)
+    tracker.undo_to(0)
+    assert tracker.occupied == set(a) and not tracker.moves
+    assert tracker.ids == {c: m.id for c, m in start.items()}
+
+
+def test_a_local_change_of_1000_modules_is_planned_locally():
+    # the goal is 3,000 random moves away; the strip route took 700-1,060 times the bound
+    a, b = make_pair("scramble", 1000, 1)
+    start = Configuration.from_cells(a)
+    plan = plan_robust(start, b)
+    assert plan.reached and plan.method == "local", (plan.method, plan.reason)
+    bound = move_lower_bound(a, b).value
+    assert plan.move_count <= 3 * bound
+    report = check_plan(start, b, plan.steps)
+    assert report.ok, report.problem
