@@ -35,6 +35,7 @@ from __future__ import annotations
 
 import heapq
 from collections import deque
+from dataclasses import dataclass
 
 from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.hexlattice import Cell, distance, neighbors
@@ -57,11 +58,37 @@ NEAR = 2
 HELPERS = 4
 #: Crossings one journey may make (each lowers the border distance).
 CROSSINGS = 40
-#: Ends tried per void besides its assigned one (nearest first), and candidate
-#: journeys tried per fill before the flow gives up (failing ones cost most).
+#: Ends tried per void besides its assigned one (nearest first).
 NEAREST_ENDS = 3
-TRIES = 24
 _FAR = 10**9
+
+
+@dataclass(frozen=True)
+class Policy:
+    """How the journey flow ranks and tries its candidates. The flow is greedy,
+    and which pairs one policy leaves stuck differs from another's, so the
+    local method runs a few (measured in docs/planning.md)."""
+
+    #: Rank movers by distance plus ``spread`` times their free sides (hard
+    #: modules first, free tips last: they travel anywhere in the endgame).
+    spread: float = 0.0
+    #: Candidate journeys tried per fill before the flow is stuck.
+    tries: int = 24
+    #: Per void, also the nearest ends that are not walled in (the nearest
+    #: ends often are).
+    nearest_free: int = 0
+    #: Count a fill beside an end walled in already as walling it in (it loses
+    #: a free side it needs to get out later).
+    guard_walled: bool = False
+
+
+#: The policies the local method runs, in order (the first plans the
+#: 1,000-module scrambles fastest; the second plans more blobs of 100).
+POLICIES = {
+    "journey": Policy(),
+    "journey, wide": Policy(tries=64, nearest_free=2, guard_walled=True),
+    "journey, hard first": Policy(spread=3.0),
+}
 
 
 def _rolls(occupied: set[Cell], start: Cell) -> tuple[dict[Cell, tuple | None], dict[Cell, int]]:
@@ -186,12 +213,10 @@ def journey(occupied: set[Cell] | frozenset[Cell], start: Cell, target: Cell,
 
 
 def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
-                 method: str = "local", spread: float = 0.0) -> None:
+                 method: str = "local", policy: Policy = POLICIES["journey"]) -> None:
     """Fill every void by journeys; raises PlanningFailure when stuck.
 
-    ``spread`` ranks candidate movers by distance plus ``spread`` times their
-    free sides: the modules that are hard to move go first, the free tips
-    last (they can travel anywhere in the endgame). When no journey fills a
+    Candidates are ranked and tried as ``policy`` says. When no journey fills a
     void, the flow takes back the latest fill next to a stuck end and makes
     that void wait until the end has left (at most ``BACKTRACKS`` times).
     Every fill or take-back changes the state, and take-backs are bounded,
@@ -207,12 +232,12 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
         if not voids:
             return
         ends = occupied - goal
-        ranked = _candidates(occupied, goal, ends, voids, fixed, spread)
+        ranked = _candidates(occupied, goal, ends, voids, fixed, policy)
         candidates = []
         for _, m, v in ranked:
             if not (waits.get(v, set()) & ends) - {m} and not is_cut(occupied, m):
                 candidates.append((m, v))
-                if len(candidates) == TRIES:
+                if len(candidates) == policy.tries:
                     break
         before = len(tracker.moves)
         tries = [(m, v, CHEAP_STATES) for m, v in candidates]
@@ -295,7 +320,7 @@ def _two_journeys(occupied: set[Cell], first: tuple[Cell, Cell], second: tuple[C
 
 
 def _candidates(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
-                fixed: Cell | None, spread: float) -> list[tuple[tuple[int, float], Cell, Cell]]:
+                fixed: Cell | None, policy: Policy) -> list[tuple[tuple, Cell, Cell]]:
     """(rank, end, void): per void its assigned end and the nearest others; fills
     that wall in nothing first, then those walling in an end, then a void.
 
@@ -304,20 +329,26 @@ def _candidates(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voi
     walled_voids = fillable(goal, voids)
     walled_ends = fillable(frozenset(occupied), set(ends))
     void_group, end_group = _groups(voids), _groups(ends)
+    free_ends = [e for e in ends if e not in walled_ends]
     ranked = []
     for _, end, void in assigned_pairs(ends, voids):
         walls_void = bool(fillable(goal, void_group[void] - {void}) - walled_voids)
         nearest = heapq.nsmallest(NEAREST_ENDS, ends, key=lambda e: (distance(e, void), e))
+        # and the nearest that can leave at all: the nearest are often walled in
+        nearest += heapq.nsmallest(policy.nearest_free, free_ends,
+                                   key=lambda e: (distance(e, void), e))
         for mover in sorted({end, *nearest}):
             if mover == fixed:
                 continue
             touched = {c for x in (void, mover) for n in (x, *neighbors(x)) if n in end_group
                        for c in end_group[n]} - {mover}
             shape = _Moved(occupied, mover, void)
-            walls_end = bool(fillable(shape, touched) - walled_ends)
+            walls_end = bool(fillable(shape, touched) - walled_ends) or (
+                policy.guard_walled
+                and any(n in walled_ends and n != mover for n in neighbors(void)))
             free = sum(1 for n in neighbors(mover) if n not in occupied)
-            ranked.append(((2 * walls_void + walls_end, distance(mover, void) + spread * free),
-                           mover, void))
+            ranked.append(((2 * walls_void + walls_end,
+                            distance(mover, void) + policy.spread * free), mover, void))
     ranked.sort()
     return ranked
 

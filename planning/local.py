@@ -29,7 +29,7 @@ from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline, Plann
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.flow import kernel_flow
 from hexbot.planning.hexlattice import Cell
-from hexbot.planning.journey import journey_flow
+from hexbot.planning.journey import POLICIES, journey_flow
 from hexbot.planning.moves import Move
 from hexbot.planning.tracker import Tracker
 from hexbot.planning.windows import window_flow
@@ -49,16 +49,11 @@ def local_seconds(count: int) -> float:
     return 10.0 + count / 5 if count <= LOCAL_LIMIT else 1.0 + count / 250
 
 
-#: The second journey flow ranks movers by distance plus this many times their free
-#: sides (hard modules first, free tips last): it planned all six scrambles of 100.
-HARD_FIRST = 3.0
-
 Flow = Callable[[Tracker, frozenset[Cell], Cell | None, Deadline, str], None]
 #: The kernel flow first: on blobs it is the one that plans (and the window flow's
 #: failures there are slow), so its plan is kept when the time cap comes.
 FLOWS: tuple[tuple[str, Flow], ...] = (
-    ("journey", journey_flow),
-    ("journey, hard first", partial(journey_flow, spread=HARD_FIRST)),
+    *((name, partial(journey_flow, policy=policy)) for name, policy in POLICIES.items()),
     ("kernel", kernel_flow),
     ("window", window_flow),
 )
