@@ -38,6 +38,10 @@ from hexbot.planning.windows import window_flow
 #: journey flows (the kernel and window flows planned none of the 300-module
 #: bench pairs tried, each failure costing 16-53 s, and none at 1,000).
 LOCAL_LIMIT = 150
+#: Above this many modules the local method is not tried at all: at 10,000 the
+#: journey flow stalled on the bench scramble with 44 goal cells left after
+#: 299 s, time the strip route needs there.
+JOURNEY_LIMIT = 2000
 
 
 def local_seconds(count: int) -> float:

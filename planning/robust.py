@@ -459,7 +459,8 @@ def plan_robust(
     Methods, in order: the direct one forward, the direct one from the goal
     backwards (both with a search budget), the local method
     (:mod:`hexbot.planning.local`, with its own time cap; above its
-    ``LOCAL_LIMIT`` modules it comes first, journey flows only), through a compact middle ball
+    ``LOCAL_LIMIT`` modules it comes first, journey flows only, up to
+    ``JOURNEY_LIMIT``), through a compact middle ball
     (:mod:`hexbot.planning.middle`, up to ``MIDDLE_LIMIT`` modules), then
     through a canonical strip (:mod:`hexbot.planning.canonical`). ``plan.method``
     says which one planned. ``budget`` is the time budget in seconds (None:
@@ -467,7 +468,7 @@ def plan_robust(
     reason when it is used up.
     """
     from hexbot.planning.canonical import replay, via_strip
-    from hexbot.planning.local import LOCAL_LIMIT, local_seconds, via_local
+    from hexbot.planning.local import JOURNEY_LIMIT, LOCAL_LIMIT, local_seconds, via_local
     from hexbot.planning.middle import via_middle
 
     goal = frozenset(goal)
@@ -491,7 +492,8 @@ def plan_robust(
         initial, goal, max_moves, fixed, deadline=d.capped(local_seconds(n))))
     # Small: the direct plans are the shortest when they exist. Large: the direct
     # methods planned none of the bench pairs, the journey flows most scrambles.
-    methods.insert(len(methods) if n <= LOCAL_LIMIT else 0, local)
+    if n <= JOURNEY_LIMIT:
+        methods.insert(len(methods) if n <= LOCAL_LIMIT else 0, local)
     if n <= MIDDLE_LIMIT:
         methods.append(("middle ball", lambda d: via_middle(
             initial, goal, max_moves, fixed, searches, deadline=d)))
