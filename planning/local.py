@@ -1,10 +1,13 @@
 """The local method of the robust planner: moves that grow with the distance to
 travel, not with the number of modules.
 
-Two planners, each run from the start to the goal and, when neither plans, from
-the goal back to the start (reversed: every rotation is undone by the
-opposite one over the same cells):
+Its planners (*flows*) each run from the start to the goal and, when none
+plans, from the goal back to the start (reversed: every rotation is undone by
+the opposite one over the same cells):
 
+* the **journey flows** (:mod:`hexbot.planning.journey`, three ranking
+  policies): one void at a time, a module rolls along the surface and
+  crosses from segment to segment with wall modules stepping aside and back;
 * the **window flow** (:func:`hexbot.planning.windows.window_flow`): the
   modules off the goal are assigned to the empty goal cells (cheapest
   assignment), and the nearest pairs are joined by the fewest rotations
@@ -13,8 +16,9 @@ opposite one over the same cells):
   stays, voids next to it are filled in an order that walls in nothing,
   by journeys and chains (void propagation), with window fixes when stuck.
 
-Both flows run forward and the shorter plan is kept; backward only when
-neither succeeds. Neither is complete (restricted pivoting
+Up to ``LOCAL_LIMIT`` modules all flows run forward and the shortest plan is
+kept; above it only the journey flows, until the time cap; backward only when
+none succeeds. None is complete (restricted pivoting
 makes that impossible for a fast planner); a failure hands over to the next
 method of :func:`hexbot.planning.robust.plan_robust`. Measured in
 docs/planning.md ("Local method").
