@@ -37,12 +37,14 @@ import heapq
 from collections import deque
 from dataclasses import dataclass
 
+import numpy as np
+
 from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.hexlattice import Cell, distance, neighbors
 from hexbot.planning.robust import _moves_from, fillable, is_cut, unwind
 from hexbot.planning.surface import border_steps
 from hexbot.planning.tracker import Hop
-from hexbot.planning.windows import _can_leave, _unwind, assigned_pairs, disc
+from hexbot.planning.windows import _can_leave, _unwind, assigned_pairs, disc, distance_matrix
 
 #: Disc radii of a crossing, tried in turn, and the states one search may visit:
 #: a cheap pass over many candidate journeys first (most crossings need fewer
@@ -185,7 +187,7 @@ def journey(occupied: set[Cell] | frozenset[Cell], start: Cell, target: Cell,
     ``target`` (empty), rolling within segments and crossing between them; the
     other cells end as they were. None when a crossing is not found."""
     occupied = set(occupied)
-    steps = border_steps(occupied - {start}, target)
+    steps = border_steps(occupied - {start}, target, stop=start)
     hops: list[Hop] = []
     here = start
     for _ in range(CROSSINGS):
@@ -329,14 +331,19 @@ def _candidates(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voi
     walled_voids = fillable(goal, voids)
     walled_ends = fillable(frozenset(occupied), set(ends))
     void_group, end_group = _groups(voids), _groups(ends)
-    free_ends = [e for e in ends if e not in walled_ends]
     ranked = []
-    for _, end, void in assigned_pairs(ends, voids):
+    by_end, by_void = sorted(ends), sorted(voids)
+    cost = distance_matrix(by_end, by_void)
+    column = {v: j for j, v in enumerate(by_void)}
+    free_rows = np.array([i for i, e in enumerate(by_end) if e not in walled_ends], dtype=np.int64)
+    for _, end, void in assigned_pairs(ends, voids, cost):
         walls_void = bool(fillable(goal, void_group[void] - {void}) - walled_voids)
-        nearest = heapq.nsmallest(NEAREST_ENDS, ends, key=lambda e: (distance(e, void), e))
+        far = cost[:, column[void]]
+        nearest = [by_end[i] for i in np.argsort(far, kind="stable")[:NEAREST_ENDS]]
         # and the nearest that can leave at all: the nearest are often walled in
-        nearest += heapq.nsmallest(policy.nearest_free, free_ends,
-                                   key=lambda e: (distance(e, void), e))
+        if policy.nearest_free and len(free_rows):
+            order = np.argsort(far[free_rows], kind="stable")[:policy.nearest_free]
+            nearest += [by_end[i] for i in free_rows[order]]
         for mover in sorted({end, *nearest}):
             if mover == fixed:
                 continue

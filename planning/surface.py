@@ -49,20 +49,25 @@ def border(occupied: set[Cell] | frozenset[Cell]) -> set[Cell]:
     return {n for c in occupied for n in neighbors(c) if n not in occupied}
 
 
-def border_steps(occupied: set[Cell] | frozenset[Cell], target: Cell) -> dict[Cell, int]:
-    """Steps from ``target`` to every border cell, walking from border cell to
+def border_steps(occupied: set[Cell] | frozenset[Cell], target: Cell,
+                 stop: Cell | None = None) -> dict[Cell, int]:
+    """Steps from ``target`` to the border cells, walking from border cell to
     adjacent border cell (around the configuration, not through it). A
     journey's measure of progress: rolling and crossing inlets both move along
-    the border."""
+    the border. With ``stop``, the walk ends with the level that reaches it
+    (a journey from ``stop`` only goes nearer)."""
     dist = {target: 0}
-    queue = deque([target])
-    while queue:
-        cell = queue.popleft()
-        for n in neighbors(cell):
-            if n in dist or n in occupied or not any(m in occupied for m in neighbors(n)):
-                continue
-            dist[n] = dist[cell] + 1
-            queue.append(n)
+    level = [target]
+    while level and (stop is None or stop not in dist):
+        following = []
+        for cell in level:
+            here = dist[cell] + 1
+            for n in neighbors(cell):
+                if n in dist or n in occupied or not any(m in occupied for m in neighbors(n)):
+                    continue
+                dist[n] = here
+                following.append(n)
+        level = following
     return dist
 
 

@@ -123,10 +123,22 @@ def _unwind(parent: dict, state: frozenset[Cell]) -> list[Hop]:
     return hops[::-1]
 
 
-def assigned_pairs(ends: set[Cell], voids: set[Cell]) -> list[tuple[int, Cell, Cell]]:
-    """(distance, end, void) of the cheapest assignment of ends onto voids, nearest first."""
+def distance_matrix(rows: list[Cell], cols: list[Cell]) -> np.ndarray:
+    """Lattice distances between every cell of ``rows`` and every cell of ``cols``."""
+    a = np.array(rows, dtype=np.int64).reshape(-1, 2)
+    b = np.array(cols, dtype=np.int64).reshape(-1, 2)
+    dx = b[None, :, 0] - a[:, None, 0]
+    dy = b[None, :, 1] - a[:, None, 1]
+    return (np.abs(dx) + np.abs(dy) + np.abs(dx + dy)) // 2
+
+
+def assigned_pairs(ends: set[Cell], voids: set[Cell],
+                   cost: np.ndarray | None = None) -> list[tuple[int, Cell, Cell]]:
+    """(distance, end, void) of the cheapest assignment of ends onto voids, nearest
+    first. ``cost``: their :func:`distance_matrix` in sorted order, if known."""
     ends_, voids_ = sorted(ends), sorted(voids)
-    cost = np.array([[distance(e, v) for v in voids_] for e in ends_])
+    if cost is None:
+        cost = distance_matrix(ends_, voids_)
     rows, cols = linear_sum_assignment(cost)
     return sorted((int(cost[r, c]), ends_[r], voids_[c]) for r, c in zip(rows, cols, strict=True))
 
