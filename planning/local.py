@@ -17,8 +17,8 @@ the opposite one over the same cells):
   by journeys and chains (void propagation), with window fixes when stuck.
 
 Up to ``LOCAL_LIMIT`` modules all flows run forward and the shortest plan is
-kept; above it only the journey flows, until the time cap; backward only when
-none succeeds. None is complete (restricted pivoting
+kept; above it only the journey flows, and the first plan is taken; backward
+only when none succeeds. None is complete (restricted pivoting
 makes that impossible for a fast planner); a failure hands over to the next
 method of :func:`hexbot.planning.robust.plan_robust`. Measured in
 docs/planning.md ("Local method").
@@ -111,6 +111,8 @@ def via_local(initial: Configuration, goal: frozenset[Cell], max_moves: int,
                 continue
             if best is None or len(serial) < len(best):
                 best = serial
+            if len(initial) > LOCAL_LIMIT:
+                return best  # large: the first plan, the time cap is tight
         if best is not None:
             return best
     raise PlanningFailure(f"{method}: " + "; ".join(failures))
