@@ -112,12 +112,13 @@ def _rolls(occupied: set[Cell], start: Cell) -> tuple[dict[Cell, tuple | None], 
 def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dict[Cell, int],
              fixed: Cell | None, max_states: int = CROSSING_STATES,
              failed: set | None = None) -> tuple[list[Hop], Cell] | None:
-    """The fewest rotations inside ``window`` after which the window is as before
-    except that ``traveller``'s cell is empty and a cell ``q`` nearer the target
+    """Rotations inside ``window`` after which the window is as before except
+    that ``traveller``'s cell is empty and a cell ``q`` nearer the target
     (``steps[q] < steps[traveller]``) is occupied: (hops, q), or None.
 
-    A* over the window's occupied cells; the estimate is the number of the
-    window's other modules not home yet (each needs a rotation). ``failed``
+    A* over the window's occupied cells (a state is accepted when generated,
+    so the hops are few, not always the fewest); the estimate is the number of
+    the window's other modules not home yet (each needs a rotation). ``failed``
     remembers the searches that found nothing: a flow asks the same question
     again and again while the cells around a stuck module stay as they are."""
     # Only the modules within two cells of the window matter to its rotations.
