@@ -57,7 +57,10 @@ def test_an_interrupt_keeps_the_finished_rows_and_resume_runs_only_the_rest(
 
 
 def test_ctrl_c_on_the_command_exits_130_and_resume_completes(write_spec, tmp_path):
-    spec = write_spec(sweep_text(40))
+    # Enough tasks that the first flush (every 5 s) comes well before the end:
+    # with 40 tasks of ~0.1 s a quiet machine once finished them all first.
+    tasks = 200
+    spec = write_spec(sweep_text(tasks))
     out = tmp_path / "out"
     argv = [str(HEXBOT), "sweep", str(spec), "--out", str(out), "--workers", "1"]
     proc = subprocess.Popen(argv, stderr=subprocess.PIPE, text=True, start_new_session=True)
@@ -75,16 +78,17 @@ def test_ctrl_c_on_the_command_exits_130_and_resume_completes(write_spec, tmp_pa
             proc.wait()
     assert proc.returncode == 130, err
     kept = seconds_by_task(out)
-    assert 0 < len(kept) < 40
-    assert f"interrupted: {40 - len(kept)} tasks not run; add --resume" in err
+    assert 0 < len(kept) < tasks
+    assert f"interrupted: {tasks - len(kept)} tasks not run; add --resume" in err
     assert "Traceback" not in err
 
     done = subprocess.run([*argv, "--resume", "--no-progress"], capture_output=True, text=True,
                           timeout=300)
     assert done.returncode == 0, done.stderr
-    assert re.search(rf"40 of 40 tasks stored \({40 - len(kept)} by this run", done.stderr)
+    assert re.search(rf"{tasks} of {tasks} tasks stored \({tasks - len(kept)} by this run",
+                     done.stderr)
     after = seconds_by_task(out)
-    assert len(after) == 40 and {t: after[t] for t in kept} == kept
+    assert len(after) == tasks and {t: after[t] for t in kept} == kept
 
 
 def test_a_resume_right_after_an_interrupt_loses_no_task(write_spec, embedded_client, tmp_path):
