@@ -51,15 +51,16 @@ JOURNEY_LIMIT = 2000
 def local_seconds(count: int) -> float:
     """The local method's own time cap. Up to ``LOCAL_LIMIT`` modules its
     successes take seconds and its failures can search for minutes; above, the
-    journey flows plan 1,000-module scrambles in 2-4 s and fail on blobs in
+    journey flows plan 1,000-module scrambles in 1.7-3.1 s and fail on blobs in
     7-15 s, so the cap keeps a failure from spending the strip's time
     (measured in docs/planning.md)."""
     return 10.0 + count / 5 if count <= LOCAL_LIMIT else 1.0 + count / 250
 
 
 Flow = Callable[[Tracker, frozenset[Cell], Cell | None, Deadline, str], None]
-#: The kernel flow first: on blobs it is the one that plans (and the window flow's
-#: failures there are slow), so its plan is kept when the time cap comes.
+#: The journey flows first (they plan the most bench pairs, and fast), then the
+#: kernel flow (it plans a blob of 100 the journeys miss), then the window flow
+#: (its failures are slow): what has planned is kept when the time cap comes.
 FLOWS: tuple[tuple[str, Flow], ...] = (
     *((name, partial(journey_flow, policy=policy)) for name, policy in POLICIES.items()),
     ("kernel", kernel_flow),
