@@ -150,10 +150,13 @@ class Terminal(Vertical):
             elif isinstance(ev, ControlMessage):
                 self.last_msg = f"{code_name(ev.code)} {' '.join(map(str, ev.args))}"
         self._update_info()
-        log = self.query_one(RichLog)
-        for line in self._view.add(entry):
-            if self._matches(line):
-                log.write(line)
+        lines = self._view.add(entry)
+        # Traffic may still arrive while the app tears the widget down: the entry
+        # is kept (above), there is just no log left to show it in.
+        for log in self.query(RichLog).results(RichLog):
+            for line in lines:
+                if self._matches(line):
+                    log.write(line)
         self._show_pending()
 
     def _matches(self, line: Text) -> bool:

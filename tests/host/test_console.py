@@ -95,6 +95,23 @@ async def test_terminal_search_views_and_save(responder, tmp_path):
 
 
 @sync
+async def test_traffic_after_the_log_is_gone_is_kept_without_an_error(responder):
+    # seen once on a fresh clone: the port's LOST state arrived while the app
+    # was tearing the terminal down, and query_one(RichLog) raised NoMatches
+    from textual.widgets import RichLog
+
+    from hexbot.host.console.terminal import Entry
+
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        term = app.query_one("#ir-term", Terminal)
+        await term.query_one(RichLog).remove()
+        await pilot.pause()
+        term.add(Entry(1.0, "state", text="lost port closed"))
+        assert "lost port closed" in ir_text(app)
+
+
+@sync
 async def test_replies_without_id_add_no_module(responder):
     """Issue 13, defect 2: before any Select every module answers ``M: ACK``
     at once; the console made a module row ``M`` and counted it."""
