@@ -195,6 +195,13 @@ class HexBotConsole(App[None]):
             self._update_status()
             self._open_session()
 
+    def _shown(self) -> bool:
+        """The main screen's widgets are up. Port readers post messages from their
+        own threads, so traffic can arrive after the screens are gone, or while
+        the app tears the main screen's widgets down at exit (seen in tests as
+        NoMatches for '#status' on an emptied screen)."""
+        return bool(self.screen_stack) and bool(self.screen_stack[0].query("#status"))
+
     def main_query(self, selector, expect_type=None):
         """A widget of the main screen, also while a dialog is on top (the
         app's own ``query_one`` looks at the active screen only)."""
@@ -311,19 +318,19 @@ class HexBotConsole(App[None]):
         return self.main_query("#ir-term" if port == IR else "#debug-term", Terminal)
 
     def on_traffic(self, msg: TrafficMsg) -> None:
-        if not self.screen_stack:  # the reader outlived the app's screens
+        if not self._shown():
             return
         self.terminal(msg.port).add(Entry(msg.t, msg.direction, data=msg.data, wall=msg.wall))
 
     def on_parsed(self, msg: Parsed) -> None:
-        if not self.screen_stack:  # the reader outlived the app's screens
+        if not self._shown():
             return
         obs = msg.observed
         self.terminal(msg.port).add(Entry(obs.t, "event", event=obs.event))
         self.refresh_soon()
 
     def on_sim_event(self, msg: SimEvent) -> None:
-        if not self.screen_stack:  # the reader outlived the app's screens
+        if not self._shown():
             return
         verdict = msg.verdict
         self.sim_log = [*self.sim_log, verdict][-SIM_LOG_LINES:]
@@ -334,7 +341,7 @@ class HexBotConsole(App[None]):
         self.refresh_soon()
 
     def on_port_state(self, msg: PortState) -> None:
-        if not self.screen_stack:  # the reader outlived the app's screens
+        if not self._shown():
             return
         self.port_states[msg.port] = (msg.state, msg.detail)
         self.terminal(msg.port).add(Entry(msg.t, "state", wall=msg.wall,
