@@ -14,6 +14,12 @@ import time
 #: Default time budget of one ``hexbot plan`` call, in seconds (10,000 modules fit in it).
 DEFAULT_BUDGET = 300.0
 
+#: The most moves a plan may have: a memory guard (a move costs about 140 bytes
+#: with the schedule's share). The fixed module's spine route needs 11.5 million
+#: at 10,000 modules (1.6 GiB at peak); the old ceiling of 10 million failed every
+#: direction there, after a minute each, until the time budget was gone.
+MAX_MOVES = 30_000_000
+
 
 class PlanningFailure(Exception):
     """A planner cannot continue; the message says why."""

@@ -34,7 +34,7 @@ import bisect
 import heapq
 from collections import deque
 
-from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline
+from hexbot.planning.budget import MAX_MOVES, NO_DEADLINE, BudgetExhausted, Deadline
 from hexbot.planning.configuration import (
     Configuration,
     Module,
@@ -736,15 +736,19 @@ def to_fixed_strip(config: Configuration, fixed: Cell, turn: int, width: int,
 
 def via_fixed_strip(initial: Configuration, goal: frozenset[Cell], fixed: Cell,
                     width: int, turn: int,
-                    deadline: Deadline = NO_DEADLINE) -> list[Move]:
+                    deadline: Deadline = NO_DEADLINE,
+                    max_moves: int = MAX_MOVES) -> list[Move]:
     """initial -> strip at the fixed module -> goal, the fixed module never moving
     (:func:`to_fixed_strip` both ways; the two strips grow in the same frame or
     in opposite ones, and the fixed module is extreme in both, so one more
-    gathering turns one into the other)."""
+    gathering turns one into the other). Gives up as soon as the moves pass
+    ``max_moves`` (each side of a 10,000-module pair takes half a minute)."""
     first, end_turn = to_fixed_strip(initial, fixed, turn, width, deadline)
+    _within(len(first), max_moves)
     at = replay(initial, first)
     provisional = Configuration.from_cells(goal, first_id=10**6)
     backward, goal_turn = to_fixed_strip(provisional, fixed, turn, width, deadline)
+    _within(len(first) + len(backward), max_moves)
     if goal_turn != end_turn:
         turn_over, _ = to_fixed_strip(at, fixed, goal_turn, width, deadline)
         first += turn_over
@@ -757,7 +761,12 @@ def via_fixed_strip(initial: Configuration, goal: frozenset[Cell], fixed: Cell,
     return first
 
 
-def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10**7,
+def _within(count: int, max_moves: int) -> None:
+    if count > max_moves:
+        raise PlanningFailure(f"more than {max_moves} moves needed")
+
+
+def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = MAX_MOVES,
               widths: list[int] | None = None, fixed: Cell | None = None,
               deadline: Deadline = NO_DEADLINE) -> list[Move]:
     """Serial moves initial -> strip -> goal's strip -> goal (raises PlanningFailure).
@@ -774,9 +783,9 @@ def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10
         for turn in turns:
             try:
                 if fixed is not None:
-                    moves = via_fixed_strip(initial, goal, fixed, width, turn, deadline)
-                    if len(moves) > max_moves:
-                        raise PlanningFailure(f"more than {max_moves} moves needed")
+                    moves = via_fixed_strip(initial, goal, fixed, width, turn, deadline,
+                                            max_moves)
+                    _within(len(moves), max_moves)
                     return moves
                 moves = _via_strip_once(initial, goal, width, max_moves, deadline, turn)
             except BudgetExhausted:
@@ -784,8 +793,7 @@ def via_strip(initial: Configuration, goal: frozenset[Cell], max_moves: int = 10
             except PlanningFailure as exc:
                 failures.append(f"width {width}, direction {turn}: {exc}")
                 continue
-            if len(moves) > max_moves:
-                raise PlanningFailure(f"more than {max_moves} moves needed")
+            _within(len(moves), max_moves)
             return moves
     raise PlanningFailure("no canonical strip could be built (" + "; ".join(failures[:2])
                           + (f"; {len(failures) - 2} more" if len(failures) > 2 else "") + ")")

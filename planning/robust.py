@@ -41,7 +41,13 @@ from collections import Counter, deque
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
-from hexbot.planning.budget import DEFAULT_BUDGET, NO_DEADLINE, Deadline, PlanningFailure
+from hexbot.planning.budget import (
+    DEFAULT_BUDGET,
+    MAX_MOVES,
+    NO_DEADLINE,
+    Deadline,
+    PlanningFailure,
+)
 from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.hexlattice import ROTATIONS, Cell, distance, neighbors
 from hexbot.planning.moves import Move
@@ -450,7 +456,7 @@ def plan_robust(
     initial: Configuration,
     goal: frozenset[Cell],
     parallel: bool = True,
-    max_moves: int = 10_000_000,
+    max_moves: int = MAX_MOVES,
     fixed: Cell | None = None,
     budget: float | None = DEFAULT_BUDGET,
 ) -> Plan:

@@ -6,6 +6,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.checker import check_plan
 from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.generate import parallelogram, random_blob
@@ -171,6 +172,26 @@ def test_the_spine_route_ends_in_the_strip_at_the_fixed_module():
         config = replay(config, [move])
     strip = {rotate_cell(c, turn) for c in strip_shape(rotate_cell(fixed, -turn), 40, 3)}
     assert config.cells == strip
+
+
+def test_the_spine_route_gives_up_on_the_move_ceiling_before_the_goal_side(monkeypatch):
+    """At 10,000 modules each side takes half a minute: a direction whose first
+    side already passes the ceiling must not gather the goal too."""
+    from hexbot.planning import canonical
+
+    a, b = random_blob(60, 0, 0.8), random_blob(60, 1, 0.8)
+    gathered = []
+    real = canonical.to_fixed_strip
+
+    def counting(config, *args, **kwargs):
+        gathered.append(len(config))
+        return real(config, *args, **kwargs)
+
+    monkeypatch.setattr(canonical, "to_fixed_strip", counting)
+    with pytest.raises(PlanningFailure, match="more than 50 moves needed"):
+        canonical.via_strip(Configuration.from_cells(a), b, max_moves=50, widths=[3],
+                            fixed=(0, 0))
+    assert len(gathered) == 6  # one side per direction, never the goal's
 
 
 def test_fixed_module_at_the_extreme_of_both_keeps_still_on_the_strip_route():
