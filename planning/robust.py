@@ -476,6 +476,7 @@ def plan_robust(
     from hexbot.planning.canonical import replay, via_strip
     from hexbot.planning.local import JOURNEY_LIMIT, LOCAL_LIMIT, local_seconds, via_local
     from hexbot.planning.middle import via_middle
+    from hexbot.planning.tidy import shorten
 
     goal = frozenset(goal)
     deadline = Deadline(budget)
@@ -522,6 +523,7 @@ def plan_robust(
     if serial is None:
         plan.reason = "no plan found: " + "; ".join(failures)
         return plan
+    serial = shorten(initial, serial, deadline)
     if not parallel:
         plan.steps = [Step([m]) for m in serial]
     else:
