@@ -523,7 +523,8 @@ def plan_robust(
     if serial is None:
         plan.reason = "no plan found: " + "; ".join(failures)
         return plan
-    serial = shorten(initial, serial, deadline)
+    if plan.method != "canonical strip":  # its journeys are shortest rolls already
+        serial = shorten(initial, serial, deadline)
     if not parallel:
         plan.steps = [Step([m]) for m in serial]
     else:
