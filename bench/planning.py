@@ -30,6 +30,11 @@ Families of ``--cases`` (deterministic, no randomness outside the given seeds):
 * ``--scan N``: N random pairs of 3 to 30 modules, the initial of random
   compactness (the property test's generator); prints how many each method
   planned and every failure.
+* ``--exhaustive N``: every ordered pair of distinct connected configurations
+  of N modules (all polyhexes, sharing their smallest cell), free and with
+  that cell's module fixed, each plan replayed by the independent checker;
+* ``--hub N``: every connected configuration of N modules to the ball of N
+  cells and back (so every pair is reachable through it), the same way.
 
 Columns: ``method`` (robust mode: direct, direct backwards, middle ball, canonical strip),
 moves and time steps with their lower bounds and the ratio plan / bound.
@@ -134,6 +139,59 @@ def scan(count: int) -> None:
     print(f"{count} random pairs: " + ", ".join(f"{k}: {v}" for k, v in methods.most_common()))
 
 
+def exhaustive(size: int) -> int:
+    """Every ordered pair of distinct connected configurations of ``size``
+    modules (all polyhexes, both placed with their smallest cell at (0, 0)),
+    free and with that shared cell's module fixed. Prints the counts and every
+    failure; 1 if any."""
+    from hexbot.planning.generate import polyhexes
+
+    shapes = polyhexes(size)
+    pairs = [(a, b) for a in shapes for b in shapes if a != b]
+    return _plan_all(pairs, f"{size} modules, {len(shapes)} shapes, {len(pairs)} pairs")
+
+
+def through_hub(size: int) -> int:
+    """Every connected configuration of ``size`` modules to a compact one (the
+    hub: the ball of ``size`` cells, placed like the others with its smallest
+    cell at (0, 0)) and back, free and with the (0, 0) module fixed. If all are
+    planned, every ordered pair is reachable (through the hub). Prints the
+    counts and every failure; 1 if any."""
+    from hexbot.planning.generate import hub, polyhexes
+
+    shapes = polyhexes(size)
+    middle = hub(size)
+    pairs = [p for shape in shapes if shape != middle for p in ((shape, middle), (middle, shape))]
+    return _plan_all(pairs, f"{size} modules, {len(shapes)} shapes to the hub and back")
+
+
+def _plan_all(pairs: list[tuple[frozenset, frozenset]], label: str) -> int:
+    """Plan every pair free and with the (0, 0) module fixed, each plan replayed
+    by the independent checker; one line of counts per case, one per failure."""
+    from collections import Counter
+
+    from hexbot.planning.checker import check_plan
+
+    failures = 0
+    for fixed in (None, (0, 0)):
+        methods: Counter[str] = Counter()
+        t0 = time.perf_counter()
+        for a, b in pairs:
+            start = Configuration.from_cells(a)
+            plan = plan_robust(start, b, fixed=fixed)
+            report = check_plan(start, b, plan.steps, fixed=fixed) if plan.reached else None
+            if report is not None and report.ok:
+                methods[plan.method] += 1
+                continue
+            failures += 1
+            why = plan.reason or (report.problem if report else "")
+            print(f"{sorted(a)} -> {sorted(b)} (fixed {fixed}): {why}")
+        print(f"{label}, fixed {fixed}: "
+              + ", ".join(f"{k} {v}" for k, v in methods.most_common())
+              + f"; {time.perf_counter() - t0:.1f} s")
+    return 1 if failures else 0
+
+
 def bench_thesis() -> list[dict]:
     initial = load_configuration(EXAMPLES / "test_all_s02_initial.txt")
     goal = load_configuration(EXAMPLES / "test_all_s02_goal.txt").cells
@@ -174,12 +232,22 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="only: exact vs robust on the small bank (optimality gap)")
     parser.add_argument("--scan", type=int, metavar="N",
                         help="only: completion over N small random pairs")
+    parser.add_argument("--exhaustive", type=int, metavar="N",
+                        help="only: every pair of connected configurations of N modules, "
+                             "free and fixed")
+    parser.add_argument("--hub", type=int, metavar="N",
+                        help="only: every connected configuration of N modules to a compact "
+                             "one and back, free and fixed")
 
 
 def run(args: argparse.Namespace) -> int:
     if args.scan:
         scan(args.scan)
         return 0
+    if args.exhaustive:
+        return exhaustive(args.exhaustive)
+    if args.hub:
+        return through_hub(args.hub)
     if args.small:
         return run_small(args)
     if not args.cases:

@@ -36,6 +36,32 @@ def parallelogram(width: int, height: int, origin: Cell = (0, 0)) -> frozenset[C
     return frozenset((ox + x, oy + y) for x in range(width) for y in range(height))
 
 
+def polyhexes(size: int) -> list[frozenset[Cell]]:
+    """Every connected configuration of ``size`` cells up to translation (the
+    fixed polyhexes: 1, 3, 11, 44, 186, 814, ... for 1, 2, 3, ... cells), each
+    placed with its smallest cell at (0, 0), in a fixed order."""
+    def placed(cells: frozenset[Cell]) -> frozenset[Cell]:
+        x0, y0 = min(cells)
+        return frozenset((x - x0, y - y0) for x, y in cells)
+
+    shapes = {frozenset([(0, 0)])}
+    for _ in range(size - 1):
+        shapes = {placed(shape | {n}) for shape in shapes for cell in shape
+                  for n in neighbors(cell) if n not in shape}
+    return sorted(shapes, key=sorted)
+
+
+def hub(size: int) -> frozenset[Cell]:
+    """The compact configuration of ``size`` cells that every polyhex goes to
+    and comes back from in ``hexbot bench planning --hub`` (the middle ball,
+    placed like :func:`polyhexes` with its smallest cell at (0, 0))."""
+    from hexbot.planning.middle import ball
+
+    cells = ball((0, 0), size)
+    x0, y0 = min(cells)
+    return frozenset((x - x0, y - y0) for x, y in cells)
+
+
 def blob_pair(size: int, seed: int,
               compact: float = 0.8) -> tuple[frozenset[Cell], frozenset[Cell]]:
     """The benchmark's "blob" family: two independent random blobs of ``size`` cells,
