@@ -19,6 +19,10 @@ initial -> ball -> goal, both halves direct; plans a few times the distance
 bound) and, when that stalls as well, through a canonical strip
 (:mod:`hexbot.planning.canonical`), which does not stall on notched goals.
 
+Detours. Before the schedule, a module's moves that a shorter roll can
+replace, with the others' moves in between still legal, are replaced
+(:mod:`hexbot.planning.tidy`; round trips are dropped).
+
 Parallel schedule. The serial moves are list-scheduled into time steps: a
 move runs as soon as no earlier pending move touches its cells (start,
 goal, swept cells, substrate) or its module, and the modules that stay put
@@ -469,9 +473,11 @@ def plan_robust(
     ``JOURNEY_LIMIT``), through a compact middle ball
     (:mod:`hexbot.planning.middle`, up to ``MIDDLE_LIMIT`` modules), then
     through a canonical strip (:mod:`hexbot.planning.canonical`). ``plan.method``
-    says which one planned. ``budget`` is the time budget in seconds (None:
-    none); each method gets its ``SHARES`` of what is left and gives up with a
-    reason when it is used up.
+    says which one planned. The serial plan then loses the detours nothing
+    needed (:mod:`hexbot.planning.tidy`; not the strip's) before the schedule.
+    ``budget`` is the time budget in seconds (None: none); each method gets
+    its ``SHARES`` of what is left and gives up with a reason when it is used
+    up.
     """
     from hexbot.planning.canonical import replay, via_strip
     from hexbot.planning.local import JOURNEY_LIMIT, LOCAL_LIMIT, local_seconds, via_local
