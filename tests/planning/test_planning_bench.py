@@ -18,3 +18,27 @@ def test_a_row_is_checked_and_bounded():
         assert row["move_bound_kind"] == "assignment" and row["peak_mib"] > 0
     table = summary(rows)
     assert "| scramble | 10 | yes | 2/2 |" in table
+
+
+def test_the_exhaustive_and_hub_runs_count_every_pair(capsys):
+    from hexbot.bench.planning import exhaustive, through_hub
+
+    assert exhaustive(3) == 0
+    out = capsys.readouterr().out
+    # 11 shapes of three modules: 110 ordered pairs, each planned free and fixed
+    assert "3 modules, 11 shapes, 110 pairs, fixed None: direct 110" in out
+    assert "fixed (0, 0): direct 110" in out
+    assert through_hub(4) == 0
+    assert "44 shapes to the hub and back, fixed None: direct 86" in capsys.readouterr().out
+
+
+def test_a_failed_pair_is_listed_and_the_run_fails(monkeypatch, capsys):
+    from hexbot.bench import planning as bench
+    from hexbot.planning.plan import Plan
+
+    def refusing(initial, goal, fixed=None):
+        return Plan(mode="robust", initial=initial, goal=goal, reason="no plan found: test")
+
+    monkeypatch.setattr(bench, "plan_robust", refusing)
+    assert bench.exhaustive(2) == 1
+    assert "no plan found: test" in capsys.readouterr().out
