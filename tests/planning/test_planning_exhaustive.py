@@ -26,16 +26,22 @@ def pairs(size: int, every: int = 1):
     return ordered[::every]
 
 
-@pytest.mark.parametrize("fixed", [None, (0, 0)], ids=["free", "fixed"])
-@pytest.mark.parametrize("size, every", [(3, 1), (4, 1), (5, 25)])
-def test_every_pair_of_small_clusters_is_planned(size, every, fixed):
+def unplanned(pairs, fixed):
+    """The pairs the robust mode does not plan, or plans wrongly (the checker)."""
     failed = []
-    for a, b in pairs(size, every):
+    for a, b in pairs:
         start = Configuration.from_cells(a)
         plan = plan_robust(start, b, fixed=fixed)
         report = check_plan(start, b, plan.steps, fixed=fixed) if plan.reached else None
         if report is None or not report.ok:
             failed.append((sorted(a), sorted(b), plan.reason or report.problem))
+    return failed
+
+
+@pytest.mark.parametrize("fixed", [None, (0, 0)], ids=["free", "fixed"])
+@pytest.mark.parametrize("size, every", [(3, 1), (4, 1), (5, 25)])
+def test_every_pair_of_small_clusters_is_planned(size, every, fixed):
+    failed = unplanned(pairs(size, every), fixed)
     assert not failed, failed[:3]
 
 
@@ -45,14 +51,7 @@ def test_clusters_of_seven_reach_the_hub_and_back(fixed):
     compact one and comes back, so every pair is reachable through it (all
     3,652 shapes: `hexbot bench planning --hub 7`; here every 40th)."""
     middle = hub(7)
-    failed = []
-    for shape in polyhexes(7)[::40]:
-        for a, b in ((shape, middle), (middle, shape)):
-            if a == b:
-                continue
-            start = Configuration.from_cells(a)
-            plan = plan_robust(start, b, fixed=fixed)
-            report = check_plan(start, b, plan.steps, fixed=fixed) if plan.reached else None
-            if report is None or not report.ok:
-                failed.append((sorted(a), sorted(b), plan.reason or report.problem))
+    trips = [p for shape in polyhexes(7)[::40] if shape != middle
+             for p in ((shape, middle), (middle, shape))]
+    failed = unplanned(trips, fixed)
     assert not failed, failed[:3]
