@@ -40,15 +40,17 @@ def polyhexes(size: int) -> list[frozenset[Cell]]:
     """Every connected configuration of ``size`` cells up to translation (the
     fixed polyhexes: 1, 3, 11, 44, 186, 814, ... for 1, 2, 3, ... cells), each
     placed with its smallest cell at (0, 0), in a fixed order."""
-    def placed(cells: frozenset[Cell]) -> frozenset[Cell]:
-        x0, y0 = min(cells)
-        return frozenset((x - x0, y - y0) for x, y in cells)
-
     shapes = {frozenset([(0, 0)])}
     for _ in range(size - 1):
-        shapes = {placed(shape | {n}) for shape in shapes for cell in shape
+        shapes = {_placed(shape | {n}) for shape in shapes for cell in shape
                   for n in neighbors(cell) if n not in shape}
     return sorted(shapes, key=sorted)
+
+
+def _placed(cells: frozenset[Cell]) -> frozenset[Cell]:
+    """``cells`` moved so that the smallest is at (0, 0)."""
+    x0, y0 = min(cells)
+    return frozenset((x - x0, y - y0) for x, y in cells)
 
 
 def hub(size: int) -> frozenset[Cell]:
@@ -57,9 +59,7 @@ def hub(size: int) -> frozenset[Cell]:
     placed like :func:`polyhexes` with its smallest cell at (0, 0))."""
     from hexbot.planning.middle import ball
 
-    cells = ball((0, 0), size)
-    x0, y0 = min(cells)
-    return frozenset((x - x0, y - y0) for x, y in cells)
+    return _placed(ball((0, 0), size))
 
 
 def blob_pair(size: int, seed: int,
