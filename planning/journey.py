@@ -40,9 +40,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from hexbot.planning.budget import PlanningFailure
-from hexbot.planning.configuration import articulation_points
 from hexbot.planning.hexlattice import Cell, distance, neighbors
 from hexbot.planning.robust import _moves_from, _single_arc, fillable, is_cut, unwind
+from hexbot.planning.schedule import stays_connected
 from hexbot.planning.surface import border_steps
 from hexbot.planning.tracker import Hop
 from hexbot.planning.windows import _can_leave, _unwind, assigned_pairs, disc, distance_matrix
@@ -280,19 +280,22 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
 
 class _CutTest:
     """``is_cut`` for many cells of one configuration: the local arc test first,
-    and instead of a search per cell, one articulation-point pass when a cell
-    needs it (a search per candidate was most of the time at 3,000 modules)."""
+    then :func:`~hexbot.planning.schedule.stays_connected`, whose searches
+    from the neighbours meet nearby unless the cell does cut (then the smaller
+    side is searched). One articulation-point pass per flow step cost more at
+    1,000 modules; a plain search per candidate, most of the time at 3,000."""
 
     def __init__(self, occupied: set[Cell]) -> None:
         self.occupied = occupied
-        self.cuts: set[Cell] | None = None
+        self.known: dict[Cell, bool] = {}
 
     def __call__(self, cell: Cell) -> bool:
         if _single_arc(self.occupied, cell):
             return False
-        if self.cuts is None:
-            self.cuts = articulation_points(self.occupied)
-        return cell in self.cuts
+        cut = self.known.get(cell)
+        if cut is None:
+            cut = self.known[cell] = not stays_connected(self.occupied, cell)
+        return cut
 
 
 def _latest_fill_near(fills: list[tuple[int, Cell]], ends: set[Cell]) -> int | None:

@@ -53,7 +53,7 @@ from hexbot.planning.budget import (
     PlanningFailure,
 )
 from hexbot.planning.configuration import Configuration, is_connected
-from hexbot.planning.hexlattice import ROTATIONS, Cell, distance, neighbors
+from hexbot.planning.hexlattice import LETTER_CELLS, ROTATIONS, Cell, distance, neighbors
 from hexbot.planning.moves import Move
 from hexbot.planning.plan import Plan, Step, distance_lower_bound
 from hexbot.planning.schedule import (  # noqa: F401 - re-exported (exact.py, tests)
@@ -87,24 +87,31 @@ def is_cut(occupied: set[Cell], cell: Cell) -> bool:
     return not is_connected(occupied - {cell})
 
 
+# The twelve cells a rotation can need (Fig. 4-30's A..L: substrate, goal and
+# swept cells all lie among them), and per occupancy mask of those twelve the
+# rotations open: twelve look-ups and a table instead of up to sixty.
+_AROUND12 = tuple(LETTER_CELLS.values())
+_BIT12 = {cell: 1 << i for i, cell in enumerate(_AROUND12)}
+_OPEN12 = [
+    tuple((rule, sub, goal) for rule, sub, goal, swept in _RULES
+          if mask & _BIT12[sub] and not mask & _BIT12[goal]
+          and not any(mask & _BIT12[c] for c in swept))
+    for mask in range(1 << 12)
+]
+
+
 def _moves_from(cell: Cell, occupied: set[Cell], mover: Cell):
-    """Rotations open to the module travelling from ``mover`` when it stands at ``cell``."""
+    """Rotations open to the module travelling from ``mover`` when it stands at
+    ``cell`` (``mover``'s own cell counts as empty)."""
     x, y = cell
-    for rule, (sx, sy), (gx, gy), swept in _RULES:
-        sub = (x + sx, y + sy)
-        if sub not in occupied or sub == mover:
-            continue
-        goal = (x + gx, y + gy)
-        if goal in occupied and goal != mover:
-            continue
-        blocked = False
-        for dx, dy in swept:
-            c = (x + dx, y + dy)
-            if c in occupied and c != mover:
-                blocked = True
-                break
-        if not blocked:
-            yield rule, sub, goal
+    mask = 0
+    bit = 1
+    for dx, dy in _AROUND12:
+        c = (x + dx, y + dy)
+        if c in occupied and c != mover:
+            mask |= bit
+        bit <<= 1
+    return [(rule, (x + sx, y + sy), (x + gx, y + gy)) for rule, (sx, sy), (gx, gy) in _OPEN12[mask]]
 
 
 def _free_run(blocked: set[Cell], cell: Cell) -> bool:

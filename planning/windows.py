@@ -21,7 +21,7 @@ import heapq
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
-from hexbot.planning.hexlattice import SIDE_OFFSETS, Cell, distance
+from hexbot.planning.hexlattice import Cell, distance, neighbors
 from hexbot.planning.robust import _moves_from
 
 #: One rotation: (from, to, Table 4-3 row, substrate cell).
@@ -100,19 +100,15 @@ def _leavable(mask: int) -> bool:
 
 #: Per ring mask (bit i = side i + 1 occupied): can a module with that ring leave?
 _LEAVABLE = tuple(_leavable(mask) for mask in range(64))
-_OFFSETS = tuple(SIDE_OFFSETS.values())
 
 
 def _can_leave(occupied: set[Cell] | frozenset[Cell], cell: Cell) -> bool:
     """Three consecutive sides free (a rotation needs them) and the occupied ones in
     one arc (so leaving cannot disconnect anything): six look-ups and a table,
     and most cells of a window fail here before their twelve rotations are tried."""
-    x, y = cell
-    mask = 0
-    for bit, (dx, dy) in enumerate(_OFFSETS):
-        if (x + dx, y + dy) in occupied:
-            mask |= 1 << bit
-    return _LEAVABLE[mask]
+    a, b, c, d, e, f = neighbors(cell)
+    return _LEAVABLE[(a in occupied) | (b in occupied) << 1 | (c in occupied) << 2
+                     | (d in occupied) << 3 | (e in occupied) << 4 | (f in occupied) << 5]
 
 
 def _unwind(parent: dict, state: frozenset[Cell]) -> list[Hop]:
