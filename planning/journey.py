@@ -28,7 +28,10 @@ journey at a time: the ends (modules off the goal) are assigned to the voids
 others are candidates, preferring fills that wall in no void still to fill
 and no end still to leave (peeling, as :func:`hexbot.planning.robust.fillable`),
 then the shortest. It is a local plan: a journey's moves follow the border
-distance and a few crossings, never the number of modules.
+distance and a few crossings, never the number of modules. A goal cell that
+no order of fills can enter (a hole, a one-cell notch: entering needs three
+free sides in a row) is opened first: the goal modules walling it in step
+aside off the goal (:func:`channels`) and are refilled later like any void.
 """
 
 from __future__ import annotations
@@ -59,6 +62,14 @@ BACKTRACKS = 20
 NEAR = 2
 #: Walled-in ends tried for a helper (:func:`_make_room`) when no journey is found.
 HELPERS = 4
+#: Walls stepping aside (:func:`channels`): at most this many at once (a pair
+#: needing more is left to the other methods), parking within ``PARK_RADIUS``
+#: of the wall, ``PARKS`` cells tried each; a stuck flow opens walls again at
+#: most ``ASIDES`` times (the fills close them, so this keeps the flow finite).
+ASIDE_LIMIT = 100
+PARK_RADIUS = 3
+PARKS = 4
+ASIDES = 2
 #: Crossings one journey may make (each lowers the border distance).
 CROSSINGS = 40
 #: Ends tried per void besides its assigned one (nearest first).
@@ -220,15 +231,21 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
                  method: str = "local", policy: Policy = POLICIES["journey"]) -> None:
     """Fill every void by journeys; raises PlanningFailure when stuck.
 
+    First the goal modules walling in a void that no order of fills can enter
+    step aside (:func:`channels`, :func:`_step_aside`), and again when the
+    flow is stuck after its take-backs (at most ``ASIDES`` times).
+
     Candidates are ranked and tried as ``policy`` says. When no journey fills a
     void, the flow takes back the latest fill next to a stuck end and makes
     that void wait until the end has left (at most ``BACKTRACKS`` times).
     Every fill or take-back changes the state, and take-backs are bounded,
     so the loop ends."""
+    _step_aside(tracker, goal, fixed)
     fills: list[tuple[int, Cell]] = []  # (moves before the fill, void filled)
     waits: dict[Cell, set[Cell]] = {}  # void -> cells whose end must leave first
     failed: set = set()  # crossings that found nothing (see crossing)
     backtracks = 0
+    asides = ASIDES
     while True:
         deadline.check(method)
         occupied = tracker.occupied
@@ -271,11 +288,116 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
                 waits.clear()
                 backtracks = BACKTRACKS
                 continue
+            if asides and _step_aside(tracker, goal, fixed):  # the fills walled voids in
+                asides -= 1
+                continue
             raise PlanningFailure(
                 f"{method}: journeys stuck with {len(voids)} goal cells to fill "
                 f"(none of {len(candidates)} journeys found a crossing within "
                 f"radius {CROSSING_RADII[-1]} and {CROSSING_STATES} states; "
                 f"{backtracks} fills taken back)")
+
+
+def _step_aside(tracker, goal: frozenset[Cell], fixed: Cell | None) -> bool:
+    """Goal modules that wall a void in whatever the order of the fills
+    (:func:`channels`) leave the goal, each by a journey to a near empty cell
+    off the goal; the flow then refills their cells like any void. A wall
+    that cannot leave stays. True when one left."""
+    occupied = tracker.occupied
+    walls = channels(goal, set(goal - occupied), fixed)
+    if not walls or len(walls) > ASIDE_LIMIT:
+        return False
+    left = set(walls & occupied)
+    moved, any_moved = True, False
+    while left and moved:  # the outer walls first: the inner ones get out after them
+        moved = False
+        for wall in sorted(left):
+            if wall == fixed or not _can_leave(occupied, wall) or is_cut(occupied, wall):
+                continue
+            parks = sorted({n for c in disc(wall, PARK_RADIUS) if c in occupied
+                            for n in neighbors(c) if n not in occupied and n not in goal},
+                           key=lambda c: (distance(c, wall), c))
+            for park in parks[:PARKS]:
+                hops = journey(occupied, wall, park, fixed)
+                if hops:
+                    tracker.roll(hops)
+                    occupied = tracker.occupied
+                    left.discard(wall)
+                    moved = any_moved = True
+                    break
+    return any_moved
+
+
+def channels(goal: frozenset[Cell], voids: set[Cell], fixed: Cell | None) -> set[Cell]:
+    """Goal cells to empty first so that every void can be filled in some order
+    (:func:`hexbot.planning.robust.fillable` finds none left): for pockets no
+    order fills, the fewest goal cells from them to the outside (a hole);
+    around a cell still walled in, the three sides in a row holding the fewest
+    goal modules (a narrow notch: entering needs three free sides in a row);
+    when neither adds a cell (a way one cell wide), every goal neighbour of
+    the cells still walled in. Empty when there is nothing to open; more than
+    ``ASIDE_LIMIT`` cells when opening costs that much (then none is opened)."""
+    walls: set[Cell] = set()
+    remaining = fillable(goal, voids)
+    while remaining:
+        add = _way_out(goal, remaining, voids | walls, fixed)
+        if not add:
+            for cell in sorted(remaining):
+                add |= _widest_side(goal, cell, voids | walls, fixed)
+        if not add - walls:  # a way one cell wide: open it wider
+            add = {n for c in remaining for n in neighbors(c)
+                   if n in goal and n != fixed} - voids
+        add -= walls
+        if not add or len(walls) + len(add) > ASIDE_LIMIT:
+            return walls | add
+        walls |= add
+        remaining = fillable(goal, voids | walls)
+    return walls
+
+
+def _widest_side(goal: frozenset[Cell], cell: Cell, free: set[Cell],
+                 fixed: Cell | None) -> set[Cell]:
+    """The goal modules in the three sides in a row of ``cell`` that hold fewest."""
+    ring = neighbors(cell)
+    best: set[Cell] | None = None
+    for i in range(6):
+        window = {ring[(i + k) % 6] for k in range(3)}
+        blocked = {c for c in window if c in goal and c not in free}
+        if fixed in blocked:
+            continue
+        if best is None or len(blocked) < len(best):
+            best = blocked
+    return best or set()
+
+
+def _way_out(goal: frozenset[Cell], sources: set[Cell], free: set[Cell],
+             fixed: Cell | None) -> set[Cell]:
+    """The fewest goal cells (not in ``free``) on a way from ``sources`` to a cell
+    off the goal (0-1 breadth-first search; the fixed module is no way)."""
+    cost = dict.fromkeys(sources, 0)
+    parent: dict[Cell, Cell | None] = dict.fromkeys(sources)
+    queue = deque(sorted(sources))
+    while queue:
+        cell = queue.popleft()
+        if cell not in goal:
+            path = set()
+            while cell is not None:
+                if cell in goal and cell not in free:
+                    path.add(cell)
+                cell = parent[cell]
+            return path
+        for n in neighbors(cell):
+            if n == fixed:
+                continue
+            step = 0 if (n not in goal or n in free) else 1
+            if n not in cost or cost[cell] + step < cost[n]:
+                cost[n] = cost[cell] + step
+                parent[n] = cell
+                if step:
+                    queue.append(n)
+                else:
+                    queue.appendleft(n)
+    return set()
 
 
 class _CutTest:

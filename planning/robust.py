@@ -111,7 +111,8 @@ def _moves_from(cell: Cell, occupied: set[Cell], mover: Cell):
         if c in occupied and c != mover:
             mask |= bit
         bit <<= 1
-    return [(rule, (x + sx, y + sy), (x + gx, y + gy)) for rule, (sx, sy), (gx, gy) in _OPEN12[mask]]
+    return [(rule, (x + sx, y + sy), (x + gx, y + gy))
+            for rule, (sx, sy), (gx, gy) in _OPEN12[mask]]
 
 
 def _free_run(blocked: set[Cell], cell: Cell) -> bool:
