@@ -97,3 +97,26 @@ def test_two_rotations_reach_each_neighbour():
     for side in range(1, 7):
         joints = sorted((r.joint, r.direction) for r in rotations_to(side))
         assert joints == sorted([(wrap(side + 1), "CW"), (side, "CCW")])
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_the_open_rotations_table_matches_table_4_3_row_by_row(seed):
+    # the planners look the open rotations up by the occupancy of the twelve
+    # cells around a module; each row of Table 4-3 checked on its own must agree
+    import random
+
+    from hexbot.planning.robust import _moves_from
+
+    rng = random.Random(seed)
+    around = [(x, y) for x in range(-3, 4) for y in range(-3, 4)]
+    for _ in range(400):
+        occupied = {c for c in around if rng.random() < 0.45}
+        cell = (0, 0)
+        mover = rng.choice(around)  # where the traveller started: counts as empty
+        taken = occupied - {mover}
+        expected = set()
+        for rule in ROTATIONS:
+            substrate, goal, swept = rule.at(cell)
+            if substrate in taken and goal not in taken and not set(swept) & taken:
+                expected.add((rule, substrate, goal))
+        assert set(_moves_from(cell, occupied, mover)) == expected
