@@ -30,16 +30,22 @@ class BudgetExhausted(PlanningFailure):
 
 
 class Deadline:
-    """A point in time after which a method must give up."""
+    """A point in time after which a method must give up: ``seconds`` of wall
+    time, and optionally ``cpu_seconds`` of this process's CPU time (a method's
+    own cap, see :meth:`capped`), whichever comes first."""
 
-    def __init__(self, seconds: float | None = DEFAULT_BUDGET) -> None:
-        self.seconds = seconds
+    def __init__(self, seconds: float | None = DEFAULT_BUDGET,
+                 cpu_seconds: float | None = None) -> None:
+        self.seconds = seconds if cpu_seconds is None else cpu_seconds
         self._end = None if seconds is None else time.monotonic() + seconds
+        self._cpu_end = None if cpu_seconds is None else time.process_time() + cpu_seconds
 
     def remaining(self) -> float:
         return float("inf") if self._end is None else self._end - time.monotonic()
 
     def expired(self) -> bool:
+        if self._cpu_end is not None and time.process_time() >= self._cpu_end:
+            return True
         return self.remaining() <= 0
 
     def share(self, fraction: float, at_least: float = 0.0) -> Deadline:
@@ -51,8 +57,14 @@ class Deadline:
         return Deadline(max(0.0, min(left, max(at_least, fraction * left))))
 
     def capped(self, seconds: float) -> Deadline:
-        """This deadline, or ``seconds`` from now if that comes first."""
-        return Deadline(min(self.remaining(), seconds))
+        """This deadline, or once the planner has used ``seconds`` of CPU time
+        from now if that comes first. A method's cap counts CPU time, not wall
+        time: on a machine busy with other jobs a method gets as much work done
+        before its cap, so the plans are the same (a blob of 100 lost its local
+        plan to the strip's, 218 -> 6,396 moves, in a bench run beside other
+        jobs when the caps were wall time)."""
+        left = self.remaining()
+        return Deadline(None if left == float("inf") else left, cpu_seconds=seconds)
 
     def check(self, what: str) -> None:
         """Raise :class:`PlanningFailure` when the budget is used up."""

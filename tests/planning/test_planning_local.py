@@ -1,5 +1,7 @@
 """The local method: window searches and the kernel flow, checked independently."""
 
+import time
+
 import pytest
 
 from hexbot.bench.planning import make_pair
@@ -79,6 +81,19 @@ def test_the_time_cap_stops_it_with_a_reason():
     a, b = make_pair("scramble", 30, 8)
     with pytest.raises(BudgetExhausted, match="local: gave up"):
         via_local(Configuration.from_cells(a), b, 10**6, deadline=Deadline(0.0))
+
+
+def test_a_methods_cap_counts_cpu_time_so_waiting_does_not_use_it_up():
+    # a machine busy with other jobs must not cut a method short: the cap is
+    # the planner's own CPU time, the overall budget stays wall time
+    cap = Deadline(None).capped(0.05)
+    time.sleep(0.1)
+    assert not cap.expired()
+    spins = 0
+    while not cap.expired():  # work: the cap runs out
+        spins += 1
+    assert spins > 0
+    assert Deadline(0.0).capped(10.0).expired()
 
 
 def test_robust_mode_takes_the_local_method_where_direct_stalls():
