@@ -27,6 +27,15 @@ def legal(initial: Configuration, goal, serial, fixed=None):
     assert report.ok, report.problem
 
 
+def flow_moves_per_bound(family: str, n: int, seed: int) -> float:
+    """The journey flow's plan of a bench pair, checked; its moves / the bound."""
+    a, b = make_pair(family, n, seed)
+    start = Configuration.from_cells(a)
+    serial = forward(start, b, journey_flow, 10**6, None, NO_LIMIT, "local")
+    legal(start, b, serial)
+    return len(serial) / move_lower_bound(a, b).value
+
+
 def test_a_journey_crosses_a_mouth_no_rolling_module_can_cross():
     shape = INLET | {(2, -2)}
     start, target = (2, -2), (-2, 1)
@@ -63,12 +72,8 @@ def test_a_module_flush_in_a_flat_side_leaves_it():
 
 @pytest.mark.parametrize("seed", range(6))
 def test_scrambles_of_100_are_planned_within_three_times_the_bound(seed):
-    a, b = make_pair("scramble", 100, seed)
-    start = Configuration.from_cells(a)
-    serial = forward(start, b, journey_flow, 10**6, None, NO_LIMIT, "local")
-    legal(start, b, serial)
     # the strip route took 112-166 times the bound on these pairs
-    assert len(serial) <= 3 * move_lower_bound(a, b).value
+    assert flow_moves_per_bound("scramble", 100, seed) <= 3
 
 
 def test_the_fixed_module_never_moves():
@@ -102,11 +107,7 @@ def test_blobs_with_walled_goal_cells_are_planned_by_journeys(seed):
     # the walls step aside first and are refilled like any goal cell; before,
     # the robust planner took the middle ball (seed 1, 3.1 times the bound) and
     # the strip route (seed 2, 26.6 times the bound)
-    a, b = make_pair("blob", 100, seed)
-    start = Configuration.from_cells(a)
-    serial = forward(start, b, journey_flow, 10**6, None, NO_LIMIT, "local")
-    legal(start, b, serial)
-    assert len(serial) <= 4 * move_lower_bound(a, b).value
+    assert flow_moves_per_bound("blob", 100, seed) <= 4
 
 
 def test_taking_moves_back_restores_the_configuration():
