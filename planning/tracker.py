@@ -10,11 +10,13 @@ from __future__ import annotations
 
 from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.configuration import Configuration
-from hexbot.planning.hexlattice import Cell
+from hexbot.planning.hexlattice import ROTATIONS, Cell
 from hexbot.planning.moves import Move
 
 #: One rotation: (from, to, Table 4-3 row, substrate cell).
 Hop = tuple[Cell, Cell, object, Cell]
+
+_ROW = {(r.joint, r.direction): r for r in ROTATIONS}
 
 
 class Tracker:
@@ -23,11 +25,14 @@ class Tracker:
         self.ids: dict[Cell, int] = {c: m.id for c, m in initial.items()}
         self.moves: list[Move] = []
         self.max_moves = max_moves
+        #: where each roll's moves begin (a journey, or a planner's group of hops)
+        self.rolls: list[int] = []
 
     def roll(self, hops: list[Hop]) -> None:
         """Apply rotations in order (one module's journey, or several modules' hops)."""
         if len(self.moves) + len(hops) > self.max_moves:
             raise PlanningFailure(f"more than {self.max_moves} moves needed")
+        self.rolls.append(len(self.moves))
         for src, dst, rule, sub in hops:
             module = self.ids.pop(src)
             self.moves.append(Move(module, src, dst, rule.joint, rule.direction, sub,
@@ -38,8 +43,17 @@ class Tracker:
 
     def undo_to(self, count: int) -> None:
         """Take back the moves after the first ``count`` (a planner backtracking)."""
+        while self.rolls and self.rolls[-1] >= count:
+            self.rolls.pop()
         while len(self.moves) > count:
             move = self.moves.pop()
             self.ids[move.src] = self.ids.pop(move.dst)
             self.occupied.discard(move.dst)
             self.occupied.add(move.src)
+
+    def rolled(self) -> list[list[Hop]]:
+        """The rotations of each roll so far, in order."""
+        ends = self.rolls[1:] + [len(self.moves)]
+        return [[(m.src, m.dst, _ROW[m.joint, m.direction], m.substrate)
+                 for m in self.moves[begin:end]]
+                for begin, end in zip(self.rolls, ends, strict=True)]

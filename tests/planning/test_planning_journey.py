@@ -1,8 +1,11 @@
 """Journeys across surface segments and the journey flow, checked independently."""
 
+from collections import Counter
+
 import pytest
 
 from hexbot.bench.planning import make_pair
+from hexbot.planning import journey as journeys
 from hexbot.planning.bounds import move_lower_bound
 from hexbot.planning.budget import Deadline, PlanningFailure
 from hexbot.planning.canonical import replay
@@ -12,6 +15,7 @@ from hexbot.planning.generate import parallelogram
 from hexbot.planning.journey import channels, journey, journey_flow
 from hexbot.planning.local import forward
 from hexbot.planning.robust import fillable, pack_consecutive, plan_robust
+from hexbot.planning.schedule import schedule_parallel
 from hexbot.planning.surface import rolling_distances
 from hexbot.planning.tracker import Tracker
 
@@ -117,8 +121,44 @@ def test_taking_moves_back_restores_the_configuration():
     journey_flow(tracker, b, None, NO_LIMIT)
     assert tracker.occupied == set(b)
     tracker.undo_to(0)
-    assert tracker.occupied == set(a) and not tracker.moves
+    assert tracker.occupied == set(a) and not tracker.moves and not tracker.rolls
     assert tracker.ids == {c: m.id for c, m in start.items()}
+
+
+def _flow_and_schedule(start, goal):
+    tracker = Tracker(start, 10**6)
+    journey_flow(tracker, goal, None, NO_LIMIT)
+    steps = schedule_parallel(start, tracker.moves)
+    report = check_plan(start, goal, steps)
+    assert report.ok, report.problem
+    return tracker, steps
+
+
+def test_a_long_journey_runs_as_a_relay(monkeypatch):
+    # a module crossing a bumpy row to its far end: alone it rolls 20 times in a
+    # row; as a relay the bumps pass it on, each rolling a short leg at once
+    bumps = {(x, 2) for x in range(1, 15, 3)}
+    shape = set(parallelogram(16, 2)) | bumps
+    start = Configuration.from_cells(shape | {(0, 2)})
+    goal = frozenset(shape | {(15, 2)})
+    relayed, steps = _flow_and_schedule(start, goal)
+    monkeypatch.setattr(journeys, "RELAY_LONG", 10**6)
+    single, single_steps = _flow_and_schedule(start, goal)
+    assert len(single.rolls) == 1 and len(single_steps) == len(single.moves) == 20
+    assert len(relayed.rolls) > 1 and len(relayed.moves) <= len(single.moves)
+    assert len(steps) <= 8
+    assert max(Counter(m.module for m in relayed.moves).values()) <= 8
+
+
+def test_relays_shorten_the_makespan_of_a_scramble(monkeypatch):
+    # scramble 300, seed 2: 34 time steps without relays, 20 with them
+    a, b = make_pair("scramble", 300, 2)
+    start = Configuration.from_cells(a)
+    relayed, steps = _flow_and_schedule(start, b)
+    monkeypatch.setattr(journeys, "RELAY_LONG", 10**6)
+    single, single_steps = _flow_and_schedule(start, b)
+    assert len(steps) <= 0.75 * len(single_steps)
+    assert len(relayed.moves) <= len(single.moves)
 
 
 def test_a_local_change_of_1000_modules_is_planned_locally():
