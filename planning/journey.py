@@ -32,6 +32,9 @@ distance and a few crossings, never the number of modules. A goal cell that
 no order of fills can enter (a hole, a one-cell notch: entering needs three
 free sides in a row) is opened first: the goal modules walling it in step
 aside off the goal (:func:`channels`) and are refilled later like any void.
+When the flow has planned, its long journeys become **relays**
+(:func:`relay`): a goal module beside the route takes the first leg, the
+traveller the second, and the schedule runs both legs at once.
 """
 
 from __future__ import annotations
