@@ -49,9 +49,9 @@ from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import Cell, distance, neighbors
 from hexbot.planning.robust import _moves_from, _single_arc, fillable, is_cut, unwind
-from hexbot.planning.schedule import schedule_parallel, stays_connected
+from hexbot.planning.schedule import cells_of, schedule_parallel, stays_connected
 from hexbot.planning.surface import border_steps
-from hexbot.planning.tracker import Hop
+from hexbot.planning.tracker import Hop, Tracker
 from hexbot.planning.windows import _can_leave, _unwind, assigned_pairs, disc, distance_matrix
 
 #: Disc radii of a crossing, tried in turn, and the states one search may visit:
@@ -86,6 +86,8 @@ RELAY_LONG = 8
 RELAY_TRIES = 6
 RELAY_GAIN = 0.8
 RELAY_DEPTH = 3
+#: Longest run of journeys on the critical path reversed (:func:`_reorder`).
+REORDER_RUN = 4
 _FAR = 10**9
 
 
@@ -335,18 +337,130 @@ def relay(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline) -> None:
     serial = list(tracker.moves)
     tracker.undo_to(0)
     initial = Configuration.from_cells(tracker.occupied)
+    legs: list[list[Hop]] = []
     for hops in rolls:
         occupied = tracker.occupied
         parts = [hops] if deadline.expired() else _split(occupied, hops, goal, fixed, RELAY_DEPTH)
         for part in parts:
             tracker.roll(part)
+        legs += parts
+    legs = _reorder(initial, legs, fixed, deadline, tracker.max_moves)
+    _reroll(tracker, legs)
     # The list schedule can jam on a reordered plan (then it packs the serial
     # order, a far longer makespan): keep the relays only when they schedule.
     relayed = schedule_parallel(initial, tracker.moves)
     if relayed is None or len(relayed) > len(schedule_parallel(initial, serial) or serial):
-        tracker.undo_to(0)
-        for hops in rolls:
-            tracker.roll(hops)
+        _reroll(tracker, rolls)
+
+
+def _reroll(tracker, rolls: list[list[Hop]]) -> None:
+    tracker.undo_to(0)
+    for hops in rolls:
+        tracker.roll(hops)
+
+
+def _reorder(initial: Configuration, rolls: list[list[Hop]], fixed: Cell | None, deadline,
+             max_moves: int) -> list[list[Hop]]:
+    """Reverse runs of ``REORDER_RUN`` journeys or fewer on the critical path
+    when that shortens it. A journey rolls over the cells the one before it
+    filled, so a run of fills in one place is a chain; in reverse order each
+    traveller goes on further while the next follows. Each journey of the
+    reversed run is planned again (same cells left and filled, so the rolls
+    after it stay legal); kept when the critical path gets shorter."""
+    tracker = Tracker(initial, max_moves)
+    _reroll(tracker, rolls)
+    best, chain = _critical_path(tracker.moves, tracker.rolls)
+    tried: set[tuple[int, int]] = set()
+    improved = True
+    while improved and not deadline.expired():
+        improved = False
+        for index in sorted(chain):
+            for first, last in _runs_around(index, len(rolls)):
+                if (first, last) in tried or deadline.expired():
+                    continue
+                tried.add((first, last))
+                reversed_run = _reversed(initial, rolls, first, last, fixed)
+                if reversed_run is None:
+                    continue
+                trial = rolls[:first] + reversed_run + rolls[last:]
+                _reroll(tracker, trial)
+                length, trial_chain = _critical_path(tracker.moves, tracker.rolls)
+                if length < best:
+                    rolls, best, chain, improved = trial, length, trial_chain, True
+                    tried.clear()
+                    break
+            if improved:
+                break
+    return rolls
+
+
+def _runs_around(index: int, count: int):
+    """(first, last) of the runs of 2..``REORDER_RUN`` rolls holding ``index``."""
+    for size in range(2, REORDER_RUN + 1):
+        for first in range(max(0, index - size + 1), min(index, count - size) + 1):
+            yield first, first + size
+
+
+def _reversed(initial: Configuration, rolls: list[list[Hop]], first: int, last: int,
+              fixed: Cell | None) -> list[list[Hop]] | None:
+    """Rolls ``first:last`` planned again in reverse order (None if one is no journey)."""
+    occupied = set(initial.cells)
+    for hops in rolls[:first]:
+        _apply(occupied, hops)
+    moved = [_moved_cells(hops) for hops in rolls[first:last]]
+    if any(m is None for m in moved):
+        return None
+    if {src for src, _ in moved} & {dst for _, dst in moved}:
+        return None  # a relay: its legs meet at the helper's cell
+    replanned = []
+    for src, dst in reversed(moved):
+        if is_cut(occupied, src):
+            return None
+        hops = journey(occupied, src, dst, fixed, CHEAP_STATES)
+        if not hops:
+            return None
+        _apply(occupied, hops)
+        replanned.append(hops)
+    return replanned
+
+
+def _critical_path(moves: list, starts: list[int]) -> tuple[int, set[int]]:
+    """Length of the longest chain of moves that share a cell, a substrate or a
+    module (serial order), and the rolls on it: the schedule's dependencies,
+    without its connectivity hold-ups."""
+    roll_of = [0] * len(moves)
+    for index, begin in enumerate(starts):
+        end = starts[index + 1] if index + 1 < len(starts) else len(moves)
+        roll_of[begin:end] = [index] * (end - begin)
+    level: list[int] = []
+    before: list[int | None] = []
+    last_at: dict[Cell, int] = {}
+    last_of: dict[int, int] = {}
+    for k, move in enumerate(moves):
+        depth, parent = 0, None
+        j = last_of.get(move.module)
+        if j is not None:
+            depth, parent = level[j] + 1, j
+        cells = (*cells_of(move), move.substrate)
+        for cell in cells:
+            j = last_at.get(cell)
+            if j is not None and level[j] + 1 > depth:
+                depth, parent = level[j] + 1, j
+        level.append(depth)
+        before.append(parent)
+        for cell in cells:
+            j = last_at.get(cell)
+            if j is None or level[j] <= depth:
+                last_at[cell] = k
+        last_of[move.module] = k
+    if not moves:
+        return 0, set()
+    k: int | None = max(range(len(moves)), key=level.__getitem__)
+    on_path = set()
+    while k is not None:
+        on_path.add(roll_of[k])
+        k = before[k]
+    return max(level) + 1, on_path
 
 
 def _split(occupied: set[Cell], hops: list[Hop], goal: frozenset[Cell], fixed: Cell | None,
