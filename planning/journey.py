@@ -66,6 +66,8 @@ BACKTRACKS = 20
 NEAR = 2
 #: Walled-in ends tried for a helper (:func:`_make_room`) when no journey is found.
 HELPERS = 4
+#: Goal modules tried per end to hand over to (:func:`_hand_over`).
+HAND_OVERS = 16
 #: Walls stepping aside (:func:`channels`): at most this many at once (a pair
 #: needing more is left to the other methods), parking within ``PARK_RADIUS``
 #: of the wall, ``PARKS`` cells tried each; a stuck flow opens walls again at
@@ -252,8 +254,10 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     Candidates are ranked and tried as ``policy`` says. When no journey fills a
     void, the flow takes back the latest fill next to a stuck end and makes
     that void wait until the end has left (at most ``BACKTRACKS`` times).
-    Every fill or take-back changes the state, and take-backs are bounded,
-    so the loop ends."""
+    The last resort is a hand-over (:func:`_hand_over`). Every fill or
+    take-back changes the state, take-backs are bounded, and a hand-over
+    fills a void, so the loop ends. A finished flow's long journeys become
+    relays (:func:`relay`)."""
     _step_aside(tracker, goal, fixed)
     fills: list[tuple[int, Cell]] = []  # (moves before the fill, void filled)
     waits: dict[Cell, set[Cell]] = {}  # void -> cells whose end must leave first
@@ -306,6 +310,10 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
             if asides and _step_aside(tracker, goal, fixed):  # the fills walled voids in
                 asides -= 1
                 continue
+            hops = _hand_over(occupied, goal, ends, voids, fixed, failed, deadline)
+            if hops:  # the last resort: it tries many pairs of journeys
+                tracker.roll(hops)
+                continue
             raise PlanningFailure(
                 f"{method}: journeys stuck with {len(voids)} goal cells to fill "
                 f"(none of {len(candidates)} journeys found a crossing within "
@@ -314,8 +322,8 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
 
 
 def relay_seconds(count: int) -> float:
-    """CPU time the relays of a finished flow may take (:func:`relay`): they
-    took 1.2-2.3 s on the 1,000-module bench scrambles."""
+    """CPU time the relays and reversed runs of a finished flow may take
+    (:func:`relay`): 1.4-2.1 s on the 1,000-module bench scrambles."""
     return 1.0 + count / 400
 
 
@@ -646,6 +654,37 @@ def _make_room(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], void
                          key=lambda e: (min(distance(e, v) for v in voids), e))
     for end in by_distance[:HELPERS]:
         for side in _helpers(occupied, goal, end, fixed):
+            for void in sorted(voids, key=lambda v: (distance(side, v), v))[:2]:
+                hops = _two_journeys(occupied, (side, void), (end, side), fixed, failed)
+                if hops:
+                    return hops
+    return None
+
+
+def _hand_over(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
+               fixed: Cell | None, failed: set, deadline) -> list[Hop] | None:
+    """An end that rolls but finds no crossing out of its stretch of the surface
+    (a bay whose two mouths no crossing passes) hands over: a goal module
+    beside that stretch goes to a void by the outer way, then the end takes
+    its cell (``HELPERS`` ends, nearest the voids first, ``HAND_OVERS``
+    helpers each). The same two journeys as :func:`_make_room`, from further
+    away. None when the deadline has passed (the flow then says so)."""
+    tried = 0
+    for end in sorted(ends, key=lambda e: (min(distance(e, v) for v in voids), e)):
+        if tried == HELPERS or deadline.expired():
+            return None
+        if end == fixed or is_cut(occupied, end):
+            continue
+        reach = set(_rolls(occupied, end)[0])
+        if len(reach) < 2:
+            continue
+        tried += 1
+        helpers = {n for c in reach for n in neighbors(c)
+                   if n in occupied and n in goal and n not in (end, fixed)}
+        ranked = sorted(helpers, key=lambda h: (min(distance(h, v) for v in voids), h))
+        for side in ranked[:HAND_OVERS]:
+            if is_cut(occupied, side):
+                continue
             for void in sorted(voids, key=lambda v: (distance(side, v), v))[:2]:
                 hops = _two_journeys(occupied, (side, void), (end, side), fixed, failed)
                 if hops:
