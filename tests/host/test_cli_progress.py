@@ -14,12 +14,20 @@ import sys
 import time
 
 
+def _ctrl_c_as_on_a_terminal() -> None:
+    # A suite started in the background (`make test &`) passes Ctrl-C on as
+    # ignored, and Python then never raises KeyboardInterrupt: give the child
+    # the default, as a terminal would.
+    signal.signal(signal.SIGINT, signal.SIG_DFL)
+
+
 def _start(*argv: str) -> tuple[subprocess.Popen, int]:
     """The CLI with stderr on a pty (a terminal: bars are drawn), stdout piped."""
     master, slave = os.openpty()
     proc = subprocess.Popen([sys.executable, "-m", "hexbot.cli", *argv],
                             stdout=subprocess.PIPE, stderr=slave, text=True,
-                            env={**os.environ, "COLUMNS": "120", "TERM": "xterm"})
+                            env={**os.environ, "COLUMNS": "120", "TERM": "xterm"},
+                            preexec_fn=_ctrl_c_as_on_a_terminal)
     os.close(slave)
     return proc, master
 

@@ -63,7 +63,10 @@ def test_ctrl_c_on_the_command_exits_130_and_resume_completes(write_spec, tmp_pa
     spec = write_spec(sweep_text(tasks))
     out = tmp_path / "out"
     argv = [str(HEXBOT), "sweep", str(spec), "--out", str(out), "--workers", "1"]
-    proc = subprocess.Popen(argv, stderr=subprocess.PIPE, text=True, start_new_session=True)
+    # preexec: a suite started in the background (`make test &`) passes Ctrl-C
+    # on as ignored; the command gets the default, as from a terminal
+    proc = subprocess.Popen(argv, stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     try:
         deadline = time.monotonic() + 120
         while not part_files(out):  # rows are on disk: the sweep is under way
