@@ -345,12 +345,12 @@ def relay(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline) -> None:
     serial = list(tracker.moves)
     tracker.undo_to(0)
     initial = Configuration.from_cells(tracker.occupied)
+    occupied = set(tracker.occupied)
     legs: list[list[Hop]] = []
     for hops in rolls:
-        occupied = tracker.occupied
         parts = [hops] if deadline.expired() else _split(occupied, hops, goal, fixed, RELAY_DEPTH)
         for part in parts:
-            tracker.roll(part)
+            _apply(occupied, part)
         legs += parts
     legs = _reorder(initial, legs, fixed, deadline, tracker.max_moves)
     _reroll(tracker, legs)
@@ -654,10 +654,9 @@ def _make_room(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], void
                          key=lambda e: (min(distance(e, v) for v in voids), e))
     for end in by_distance[:HELPERS]:
         for side in _helpers(occupied, goal, end, fixed):
-            for void in sorted(voids, key=lambda v: (distance(side, v), v))[:2]:
-                hops = _two_journeys(occupied, (side, void), (end, side), fixed, failed)
-                if hops:
-                    return hops
+            hops = _take_place(occupied, end, side, voids, fixed, failed)
+            if hops:
+                return hops
     return None
 
 
@@ -683,12 +682,21 @@ def _hand_over(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], void
                    if n in occupied and n in goal and n not in (end, fixed)}
         ranked = sorted(helpers, key=lambda h: (min(distance(h, v) for v in voids), h))
         for side in ranked[:HAND_OVERS]:
-            if is_cut(occupied, side):
-                continue
-            for void in sorted(voids, key=lambda v: (distance(side, v), v))[:2]:
-                hops = _two_journeys(occupied, (side, void), (end, side), fixed, failed)
-                if hops:
-                    return hops
+            hops = None if is_cut(occupied, side) else _take_place(
+                occupied, end, side, voids, fixed, failed)
+            if hops:
+                return hops
+    return None
+
+
+def _take_place(occupied: set[Cell], end: Cell, side: Cell, voids: set[Cell],
+                fixed: Cell | None, failed: set) -> list[Hop] | None:
+    """The goal module at ``side`` journeys to one of its two nearest voids,
+    then the end takes its cell."""
+    for void in sorted(voids, key=lambda v: (distance(side, v), v))[:2]:
+        hops = _two_journeys(occupied, (side, void), (end, side), fixed, failed)
+        if hops:
+            return hops
     return None
 
 
