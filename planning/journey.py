@@ -244,7 +244,8 @@ def journey(occupied: set[Cell] | frozenset[Cell], start: Cell, target: Cell,
 
 
 def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
-                 method: str = "local", policy: Policy = POLICIES["journey"]) -> None:
+                 method: str = "local", policy: Policy = POLICIES["journey"],
+                 digs: bool = False) -> None:
     """Fill every void by journeys; raises PlanningFailure when stuck.
 
     First the goal modules walling in a void that no order of fills can enter
@@ -254,16 +255,23 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     Candidates are ranked and tried as ``policy`` says. When no journey fills a
     void, the flow takes back the latest fill next to a stuck end and makes
     that void wait until the end has left (at most ``BACKTRACKS`` times).
-    The last resort is a hand-over (:func:`_hand_over`). Every fill or
-    take-back changes the state, take-backs are bounded, and a hand-over
-    fills a void, so the loop ends. A finished flow's long journeys become
-    relays (:func:`relay`)."""
+    Then a hand-over (:func:`_hand_over`). With ``digs`` (the local method
+    above ``LOCAL_LIMIT``), a stuck flow first digs into a hole of the goal,
+    and after the hand-overs sweeps every free end to its nearest voids and
+    digs walled-in ends out (:mod:`hexbot.planning.dig`). Every fill or
+    take-back changes the state, take-backs and digs are bounded, and a
+    hand-over fills a void, so the loop ends. A finished flow's long
+    journeys become relays (:func:`relay`)."""
+    from hexbot.planning import dig  # dig rolls modules by journeys from here
+
+
     _step_aside(tracker, goal, fixed)
     fills: list[tuple[int, Cell]] = []  # (moves before the fill, void filled)
     waits: dict[Cell, set[Cell]] = {}  # void -> cells whose end must leave first
     failed: set = set()  # crossings that found nothing (see crossing)
     backtracks = 0
     asides = ASIDES
+    digs_left = dig.DIGS if digs else 0
     while True:
         deadline.check(method)
         occupied = tracker.occupied
@@ -291,6 +299,9 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
                 break
             deadline.check(method)
         else:
+            if digs_left and dig.dig_holes(tracker, goal, fixed, deadline):
+                digs_left -= 1
+                continue
             hops = _make_room(occupied, goal, ends, voids, fixed, failed)
             if hops:
                 tracker.roll(hops)
@@ -311,8 +322,16 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
                 asides -= 1
                 continue
             hops = _hand_over(occupied, goal, ends, voids, fixed, failed, deadline)
-            if hops:  # the last resort: it tries many pairs of journeys
+            if hops:  # it tries many pairs of journeys
                 tracker.roll(hops)
+                continue
+            hops = dig.sweep(occupied, goal, ends, voids, fixed, failed) if digs else None
+            if hops:
+                tracker.roll(hops)
+                continue
+            if digs_left and (dig.dig_holes(tracker, goal, fixed, deadline)
+                              or dig.dig_ends(tracker, goal, fixed, deadline)):
+                digs_left -= 1
                 continue
             raise PlanningFailure(
                 f"{method}: journeys stuck with {len(voids)} goal cells to fill "

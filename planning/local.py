@@ -17,7 +17,8 @@ the opposite one over the same cells):
   by journeys and chains (void propagation), with window fixes when stuck.
 
 Up to ``LOCAL_LIMIT`` modules all flows run forward and the shortest plan is
-kept; above it only the journey flows, and the first plan is taken; backward
+kept; above it only the journey flows, with digs (:mod:`hexbot.planning.dig`),
+and the first plan is taken; backward
 only when none succeeds. None is complete (restricted pivoting
 makes that impossible for a fast planner); a failure hands over to the next
 method of :func:`hexbot.planning.robust.plan_robust`. Measured in
@@ -46,6 +47,10 @@ LOCAL_LIMIT = 150
 #: journey flow stalled on the bench scramble with 44 goal cells left after
 #: 299 s, time the strip route needs there.
 JOURNEY_LIMIT = 2000
+#: Up to this many modules (above ``LOCAL_LIMIT``) the local method may take
+#: ``DIG_SECONDS`` of CPU time, for its digs.
+DIG_SIZE = 500
+DIG_SECONDS = 20.0
 
 
 def local_seconds(count: int) -> float:
@@ -54,8 +59,14 @@ def local_seconds(count: int) -> float:
     journey flows plan the 1,000-module bench scrambles in 1.2-2.3 s (300: at
     most 1.0 s) and fail on blobs, so the cap (3.5 s at 1,000, 1.5 times the
     slowest success) keeps a failure from spending the strip's time (measured
-    in docs/planning.md)."""
-    return 10.0 + count / 5 if count <= LOCAL_LIMIT else 1.0 + count / 400
+    in docs/planning.md). Up to ``DIG_SIZE`` modules it is ``DIG_SECONDS``:
+    the digs plan blobs of 300 in 6-16 s, where the strip's plans are 30
+    times longer in moves (there is no time goal below 1,000 modules)."""
+    if count <= LOCAL_LIMIT:
+        return 10.0 + count / 5
+    if count <= DIG_SIZE:
+        return DIG_SECONDS
+    return 1.0 + count / 400
 
 
 Flow = Callable[[Tracker, frozenset[Cell], Cell | None, Deadline, str], None]
@@ -87,9 +98,14 @@ def backward(initial: Configuration, goal: frozenset[Cell], flow: Flow, max_move
     return undone(moves, {end[c].id: initial[c].id for c in end})
 
 
+#: Above ``LOCAL_LIMIT``: the journey flows with digs (:mod:`hexbot.planning.dig`).
+LARGE_FLOWS: tuple[tuple[str, Flow], ...] = tuple(
+    (name, partial(journey_flow, policy=policy, digs=True)) for name, policy in POLICIES.items())
+
+
 def flows_for(count: int) -> tuple[tuple[str, Flow], ...]:
-    """All flows up to ``LOCAL_LIMIT`` modules, the journey flows above."""
-    return FLOWS if count <= LOCAL_LIMIT else tuple(f for f in FLOWS if f[0].startswith("journey"))
+    """All flows up to ``LOCAL_LIMIT`` modules, the journey flows with digs above."""
+    return FLOWS if count <= LOCAL_LIMIT else LARGE_FLOWS
 
 
 def via_local(initial: Configuration, goal: frozenset[Cell], max_moves: int,

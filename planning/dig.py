@@ -1,0 +1,317 @@
+"""Digs: the journey flow's way into a goal cell, or out of a cell, that goal
+modules wall in (used above the local method's ``LOCAL_LIMIT``).
+
+A *hole* is a goal cell that no order of fills can enter: entering needs three
+free sides in a row, and the goal modules around it stay. A walled-in *end*
+is the same seen from a module off the goal that must leave. Blobs of 300
+modules stall on both (docs/planning.md, "Digs").
+
+A dig empties a set of cells, does the hole or the end, and fills the set
+again:
+
+* **a hole**: the goal is peeled once from the outside in (:func:`goal_peel`:
+  each goal cell keeps the trio of cells peeled before it with the fewest
+  cells behind them). Everything built after the hole in that order is the
+  set; the modules on it, and the ends on the free sides its build needs,
+  park where they can roll; a parked module fills the hole, and the others
+  refill the set in build order (the outermost cells may stay voids, which
+  the flow fills later from outside);
+* **an end**: the current shape is peeled around it (:func:`_peeled`); the
+  cells the cheapest trio of its sides needs park, the end leaves to a park,
+  and the set is refilled in the reverse order.
+
+A dig is kept only when fewer goal cells and ends are walled in afterwards,
+so the flow's digs are bounded by ``DIGS`` and cannot undo one another.
+Every module moves by rolls or journeys (:func:`hexbot.planning.journey.journey`),
+so each intermediate configuration is connected and every rotation legal.
+"""
+
+from __future__ import annotations
+
+from hexbot.planning.hexlattice import Cell, distance, neighbors
+from hexbot.planning.robust import _free_run, fillable, is_cut, unwind
+from hexbot.planning.windows import _can_leave, disc
+
+#: Digs one flow may make; modules one dig may park.
+DIGS = 40
+DIG_LIMIT = 30
+#: How far around an end its shape is peeled.
+DIG_REACH = 6
+#: Parks: the farthest cell a module rolls to within ``PARK_DEPTH`` rotations
+#: (so the next modules of the set still get out past it), else a journey to
+#: one of the ``PARKS`` nearest border cells within ``PARK_RADIUS``.
+PARK_DEPTH = 10
+PARKS = 10
+PARK_RADIUS = 6
+#: A stuck flow's sweep: each end that can roll, to this many nearest voids.
+SWEEP_VOIDS = 4
+#: States of a journey to a park (a cheap pass: most parks are rolls).
+PARK_STATES = 300
+
+_PEELS: dict = {}
+
+
+def dig_holes(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline) -> bool:
+    """Dig into one hole of the goal (nearest first in cell order). True when one was filled."""
+    for hole in sorted(fillable(goal, set(goal - tracker.occupied))):
+        if deadline.expired():
+            return False
+        if _kept(tracker, goal, fixed, hole):
+            return True
+    return False
+
+
+def dig_ends(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline) -> bool:
+    """Dig one walled-in end out. True when one left."""
+    occupied = tracker.occupied
+    for end in sorted(fillable(frozenset(occupied), occupied - goal) - {fixed}):
+        if deadline.expired():
+            return False
+        if _kept(tracker, goal, fixed, end):
+            return True
+    return False
+
+
+def sweep(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
+          fixed: Cell | None, failed: set):
+    """A journey of any end that can roll to one of its ``SWEEP_VOIDS`` nearest
+    voids that can be entered now (the flow's ranked candidates pair voids with
+    their nearest ends, which are often walled in), fills that wall nothing in
+    first, then the shortest. The hops, or None."""
+    from hexbot.planning.journey import CROSSING_STATES, journey
+
+    walled = fillable(goal, voids)
+    open_voids = [v for v in sorted(voids) if _enterable(occupied, v)]
+    tries = []
+    for end in sorted(ends):
+        if end == fixed or not _can_leave(occupied, end) or is_cut(occupied, end):
+            continue
+        for void in sorted(open_voids, key=lambda v: (distance(end, v), v))[:SWEEP_VOIDS]:
+            walls = bool(fillable(goal, voids - {void}) - walled)
+            tries.append((walls, distance(end, void), end, void))
+    for _, _, end, void in sorted(tries):
+        hops = journey(occupied, end, void, fixed, CROSSING_STATES, failed)
+        if hops:
+            return hops
+    return None
+
+
+def goal_peel(goal: frozenset[Cell]):
+    """The goal peeled from the outside in (a cell goes when three sides in a
+    row are off the goal or gone): per goal cell its round, its closure (the
+    cell and every goal cell built after it that its build needs) and its
+    trio. Cached for the last goal (a flow asks again and again)."""
+    cached = _PEELS.get(goal)
+    if cached is not None:
+        return cached
+    rounds: dict[Cell, int] = {}
+    closure: dict[Cell, frozenset[Cell]] = {}
+    trios: dict[Cell, tuple[Cell, ...]] = {}
+    left = set(goal)
+    level = 0
+    while left:
+        peeled = {}
+        for cell in left:
+            best = None
+            for trio in _trios(cell):
+                if all(n not in goal or n in rounds for n in trio):
+                    cells = frozenset({cell}).union(*(closure[n] for n in trio if n in goal))
+                    if best is None or len(cells) < len(best[0]):
+                        best = (cells, trio)
+            if best is not None:
+                peeled[cell] = best
+        if not peeled:
+            break  # the rest cannot be built from outside: no dig into it
+        for cell, (cells, trio) in peeled.items():
+            rounds[cell], closure[cell], trios[cell] = level, cells, trio
+        left -= set(peeled)
+        level += 1
+    _PEELS.clear()
+    _PEELS[goal] = (rounds, closure, trios)
+    return rounds, closure, trios
+
+
+def _trios(cell: Cell) -> list[tuple[Cell, ...]]:
+    """The six runs of three sides in a row."""
+    ring = neighbors(cell)
+    return [(ring[i], ring[(i + 1) % 6], ring[(i + 2) % 6]) for i in range(6)]
+
+
+def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> bool:
+    """Dig at ``target``; kept when fewer cells are walled in afterwards."""
+    def walled() -> int:
+        occupied = tracker.occupied
+        return (len(fillable(goal, set(goal - occupied)))
+                + len(fillable(frozenset(occupied), occupied - goal)))
+
+    before = walled()
+    start = len(tracker.moves)
+    if target in tracker.occupied:
+        done = _dig_end(tracker, goal, fixed, target)
+    else:
+        done = _dig_hole(tracker, goal, fixed, target)
+    if done and walled() < before:
+        return True
+    tracker.undo_to(start)
+    return False
+
+
+def _dig_hole(tracker, goal: frozenset[Cell], fixed: Cell | None, hole: Cell) -> bool:
+    rounds, closure, trios = goal_peel(goal)
+    if hole not in closure:
+        return False
+    occupied = tracker.occupied
+    cells = set(closure[hole] - {hole})
+    # the free sides the build needs: the ends sitting there leave too
+    kept_free = cells | {hole} | {n for c in closure[hole] for n in trios[c]}
+    removed = kept_free & occupied
+    if fixed in removed or len(removed) > DIG_LIMIT:
+        return False
+    parked = _empty(tracker, goal, fixed, hole, removed, kept_free, margin=False)
+    if parked is None:
+        return False
+    for cell in sorted(cells | {hole}, key=lambda c: (-rounds[c], c)):
+        if not parked:
+            break
+        if cell in occupied:
+            continue
+        if not _fill_from(tracker, parked, cell, fixed):
+            return cell != hole  # the outermost cells may stay voids
+    return True
+
+
+def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell) -> bool:
+    occupied = tracker.occupied
+    gone, close = _peeled(frozenset(occupied), end, fixed)
+    sets = [frozenset().union(*(close(n) for n in trio if n in occupied))
+            for trio in _trios(end) if all(n not in occupied or n in gone for n in trio)]
+    for removed in sorted(sets, key=lambda c: (len(c), sorted(c)))[:2]:
+        if fixed in removed or len(removed) > DIG_LIMIT:
+            continue
+        start = len(tracker.moves)
+        order: list[Cell] = []
+        parked = _empty(tracker, goal, fixed, end, set(removed), set(removed) | {end}, order=order)
+        if parked is not None and not is_cut(occupied, end):
+            found = _park(occupied, goal, end, fixed, set(removed))
+            if found:
+                tracker.roll(found[0])
+                for cell in reversed(order):  # the outermost cells may stay voids
+                    if cell in goal and not _fill_from(tracker, parked, cell, fixed):
+                        break
+                return True
+        tracker.undo_to(start)
+    return False
+
+
+def _peeled(occupied: frozenset[Cell], target: Cell, fixed: Cell | None):
+    """The occupied cells within ``DIG_REACH`` of ``target`` peeled from the
+    outside in: the cells that can go, and a function giving a cell's closure
+    (the cell and the peeled cells that had to go before it)."""
+    region = {c for c in disc(target, DIG_REACH)
+              if c in occupied and c != fixed and c != target}
+    gone: set[Cell] = set()
+    needs: dict[Cell, list[Cell]] = {}
+    changed = True
+    while changed:
+        changed = False
+        for cell in sorted(region - gone):
+            best = None
+            for trio in _trios(cell):
+                if all(n not in occupied or n in gone for n in trio):
+                    used = [n for n in trio if n in gone]
+                    if best is None or len(used) < len(best):
+                        best = used
+            if best is not None:
+                needs[cell] = best
+                gone.add(cell)
+                changed = True
+    closure: dict[Cell, frozenset[Cell]] = {}
+
+    def close(cell: Cell) -> frozenset[Cell]:
+        if cell not in closure:
+            closure[cell] = frozenset()  # a cycle cannot recurse
+            closure[cell] = frozenset({cell}).union(*(close(n) for n in needs.get(cell, ())))
+        return closure[cell]
+
+    return gone, close
+
+
+def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
+           removed: set[Cell], kept_free: set[Cell], order: list[Cell] | None = None,
+           margin: bool = True) -> list[Cell] | None:
+    """Park the modules of ``removed``, farthest from ``target`` first, off
+    ``kept_free``: the parked cells (last parked last), or None when stuck."""
+    occupied = tracker.occupied
+    left = set(removed)
+    parked: list[Cell] = []
+    while left:
+        ready = sorted((c for c in left if _rolls_out(occupied, c) and not is_cut(occupied, c)),
+                       key=lambda c: (-distance(c, target), c))
+        for cell in ready[:3]:
+            found = _park(occupied, goal, cell, fixed, kept_free, margin)
+            if found:
+                tracker.roll(found[0])
+                parked.append(found[1])
+                if order is not None:
+                    order.append(cell)
+                left.discard(cell)
+                break
+        else:
+            return None
+    return parked
+
+
+def _park(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, fixed: Cell | None,
+          avoid: set[Cell], margin: bool = True):
+    """(hops, park) taking the module at ``cell`` off ``avoid`` (and, with
+    ``margin``, off its neighbours), or None."""
+    from hexbot.planning.journey import _rolls, journey
+
+    def allowed(p: Cell) -> bool:
+        return p not in avoid and not (margin and any(n in avoid for n in neighbors(p)))
+
+    parent, depth = _rolls(occupied, cell)
+    rolled = [p for p in parent if p != cell and allowed(p)]
+    if rolled:
+        near = [p for p in rolled if depth[p] <= PARK_DEPTH]
+        off_goal = [p for p in near if p not in goal]
+        if off_goal or near:
+            park = max(off_goal or near, key=lambda p: (depth[p], p))
+        else:
+            park = min(rolled, key=lambda p: (depth[p], p))
+        return unwind(parent, park), park
+    border = {n for c in disc(cell, PARK_RADIUS) if c in occupied
+              for n in neighbors(c) if n not in occupied}
+    for park in sorted((p for p in border if allowed(p)),
+                       key=lambda p: (p in goal, distance(p, cell), p))[:PARKS]:
+        hops = journey(occupied, cell, park, fixed, PARK_STATES)
+        if hops:
+            return hops, park
+    return None
+
+
+def _fill_from(tracker, parked: list[Cell], cell: Cell, fixed: Cell | None) -> bool:
+    """A parked module (the last parked first) journeys to ``cell``."""
+    from hexbot.planning.journey import journey
+
+    occupied = tracker.occupied
+    for i in reversed(range(len(parked))):
+        if is_cut(occupied, parked[i]):
+            continue
+        hops = journey(occupied, parked[i], cell, fixed)
+        if hops:
+            tracker.roll(hops)
+            parked.pop(i)
+            return True
+    return False
+
+
+def _rolls_out(occupied: set[Cell], cell: Cell) -> bool:
+    """Three sides in a row free (connectivity aside)."""
+    return _free_run({n for n in neighbors(cell) if n in occupied}, cell)
+
+
+def _enterable(occupied: set[Cell], cell: Cell) -> bool:
+    """Three sides in a row free and one occupied: a rotation can end here."""
+    near = {n for n in neighbors(cell) if n in occupied}
+    return bool(near) and _free_run(near, cell)

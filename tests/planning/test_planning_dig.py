@@ -1,0 +1,82 @@
+"""Digs: into goal cells that goal modules wall in, and out for walled-in ends."""
+
+from functools import partial
+
+import pytest
+
+from hexbot.bench.planning import make_pair
+from hexbot.planning import dig
+from hexbot.planning.bounds import move_lower_bound
+from hexbot.planning.budget import Deadline, PlanningFailure
+from hexbot.planning.checker import check_plan
+from hexbot.planning.configuration import Configuration
+from hexbot.planning.generate import parallelogram
+from hexbot.planning.journey import journey_flow
+from hexbot.planning.local import forward
+from hexbot.planning.robust import fillable, pack_consecutive, plan_robust
+from hexbot.planning.tracker import Tracker
+
+NO_LIMIT = Deadline(None)
+
+
+def test_the_goal_peel_puts_the_cells_built_after_a_hole_in_its_closure():
+    goal = parallelogram(5, 5)
+    rounds, closure, trios = dig.goal_peel(goal)
+    assert set(rounds) == set(goal)
+    centre = (2, 2)
+    # the centre is built first, every cell of its closure later (a smaller round)
+    assert rounds[centre] == max(rounds.values())
+    assert centre in closure[centre] and closure[centre] <= goal
+    assert all(rounds[c] < rounds[centre] for c in closure[centre] - {centre})
+    # its trio is three sides in a row, all built after it
+    assert len(trios[centre]) == 3 and all(rounds[c] < rounds[centre] for c in trios[centre])
+
+
+def test_a_hole_in_a_block_is_dug_and_filled_and_the_shape_stays_connected():
+    goal = parallelogram(6, 6)
+    hole = (2, 3)
+    start = Configuration.from_cells((goal - {hole}) | {(6, 0)})  # one end outside
+    tracker = Tracker(start, 10**6)
+    assert fillable(goal, {hole}) == {hole}  # no order of fills enters it
+    assert dig.dig_holes(tracker, goal, None, NO_LIMIT)
+    assert hole in tracker.occupied
+    # the void went out to where the flow can fill it, and the moves are legal
+    voids = set(goal - tracker.occupied)
+    assert len(voids) == 1 and not fillable(goal, voids)
+    report = check_plan(start, frozenset(tracker.occupied),
+                        pack_consecutive(start, tracker.moves))
+    assert report.ok, report.problem
+
+
+def test_a_dig_that_walls_in_no_fewer_cells_is_taken_back():
+    # a block with nothing walled in: no dig, and the moves are untouched
+    goal = parallelogram(4, 4)
+    start = Configuration.from_cells((goal - {(3, 3)}) | {(4, 0)})
+    tracker = Tracker(start, 10**6)
+    assert not dig.dig_holes(tracker, goal, None, NO_LIMIT)
+    assert not dig.dig_ends(tracker, goal, None, NO_LIMIT)
+    assert tracker.moves == [] and tracker.occupied == set(start.cells)
+
+
+def test_digs_plan_a_blob_of_300_the_journeys_alone_leave_stuck():
+    # blob 300, seed 0: the journeys stall with holes left (24 goal cells);
+    # with digs the flow plans it at about 5 times the bound (the strip
+    # route's plan was 28,855 moves, 48 times)
+    a, b = make_pair("blob", 300, 0)
+    start = Configuration.from_cells(a)
+    with pytest.raises(PlanningFailure):
+        forward(start, b, journey_flow, 10**6, None, NO_LIMIT, "local")
+    serial = forward(start, b, partial(journey_flow, digs=True), 10**6, None, NO_LIMIT, "local")
+    report = check_plan(start, b, pack_consecutive(start, serial))
+    assert report.ok, report.problem
+    assert len(serial) <= 6 * move_lower_bound(a, b).value
+
+
+def test_the_planner_plans_a_blob_of_300_locally_within_its_cap():
+    a, b = make_pair("blob", 300, 0)
+    start = Configuration.from_cells(a)
+    plan = plan_robust(start, b)
+    assert plan.reached and plan.method == "local", (plan.method, plan.reason)
+    assert plan.move_count <= 6 * move_lower_bound(a, b).value
+    report = check_plan(start, b, plan.steps)
+    assert report.ok, report.problem
