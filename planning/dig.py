@@ -52,7 +52,7 @@ _PEELS: dict = {}
 
 
 def dig_holes(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline) -> bool:
-    """Dig into one hole of the goal (nearest first in cell order). True when one was filled."""
+    """Dig into one hole of the goal (tried in cell order). True when one was filled."""
     for hole in sorted(fillable(goal, set(goal - tracker.occupied))):
         if deadline.expired():
             return False
