@@ -37,10 +37,12 @@ DIGS = 40
 DIG_LIMIT = 30
 #: How far around an end its shape is peeled.
 DIG_REACH = 6
-#: Parks: the farthest cell a module rolls to within ``PARK_DEPTH`` rotations
-#: (so the next modules of the set still get out past it), else a journey to
-#: one of the ``PARKS`` nearest border cells within ``PARK_RADIUS``.
-PARK_DEPTH = 10
+#: Parks: the farthest cell a module rolls to within a depth of rotations (so
+#: the next modules of the set still get out past it), else a journey to one of
+#: the ``PARKS`` nearest border cells within ``PARK_RADIUS``. A dig whose
+#: modules cannot all park is tried again with the next depth (10 alone left
+#: one blob of 300 stuck, 15 alone another: docs/planning.md, "Digs").
+PARK_DEPTHS = (10, 15)
 PARKS = 10
 PARK_RADIUS = 6
 #: A stuck flow's sweep: each end that can roll, to this many nearest voids.
@@ -146,17 +148,19 @@ def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> b
 
     before = walled()
     start = len(tracker.moves)
-    if target in tracker.occupied:
-        done = _dig_end(tracker, goal, fixed, target)
-    else:
-        done = _dig_hole(tracker, goal, fixed, target)
-    if done and walled() < before:
-        return True
-    tracker.undo_to(start)
+    for depth in PARK_DEPTHS:
+        if target in tracker.occupied:
+            done = _dig_end(tracker, goal, fixed, target, depth)
+        else:
+            done = _dig_hole(tracker, goal, fixed, target, depth)
+        if done and walled() < before:
+            return True
+        tracker.undo_to(start)
     return False
 
 
-def _dig_hole(tracker, goal: frozenset[Cell], fixed: Cell | None, hole: Cell) -> bool:
+def _dig_hole(tracker, goal: frozenset[Cell], fixed: Cell | None, hole: Cell,
+              depth: int) -> bool:
     rounds, closure, trios = goal_peel(goal)
     if hole not in closure:
         return False
@@ -167,7 +171,7 @@ def _dig_hole(tracker, goal: frozenset[Cell], fixed: Cell | None, hole: Cell) ->
     removed = kept_free & occupied
     if fixed in removed or len(removed) > DIG_LIMIT:
         return False
-    parked = _empty(tracker, goal, fixed, hole, removed, kept_free, margin=False)
+    parked = _empty(tracker, goal, fixed, hole, removed, kept_free, depth, margin=False)
     if parked is None:
         return False
     for cell in sorted(cells | {hole}, key=lambda c: (-rounds[c], c)):
@@ -180,7 +184,8 @@ def _dig_hole(tracker, goal: frozenset[Cell], fixed: Cell | None, hole: Cell) ->
     return True
 
 
-def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell) -> bool:
+def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
+             depth: int) -> bool:
     occupied = tracker.occupied
     gone, close = _peeled(frozenset(occupied), end, fixed)
     sets = [frozenset().union(*(close(n) for n in trio if n in occupied))
@@ -190,9 +195,10 @@ def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell) -> b
             continue
         start = len(tracker.moves)
         order: list[Cell] = []
-        parked = _empty(tracker, goal, fixed, end, set(removed), set(removed) | {end}, order=order)
+        parked = _empty(tracker, goal, fixed, end, set(removed), set(removed) | {end}, depth,
+                        order=order)
         if parked is not None and not is_cut(occupied, end):
-            found = _park(occupied, goal, end, fixed, set(removed))
+            found = _park(occupied, goal, end, fixed, set(removed), depth)
             if found:
                 tracker.roll(found[0])
                 for cell in reversed(order):  # the outermost cells may stay voids
@@ -237,8 +243,8 @@ def _peeled(occupied: frozenset[Cell], target: Cell, fixed: Cell | None):
 
 
 def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
-           removed: set[Cell], kept_free: set[Cell], order: list[Cell] | None = None,
-           margin: bool = True) -> list[Cell] | None:
+           removed: set[Cell], kept_free: set[Cell], depth: int,
+           order: list[Cell] | None = None, margin: bool = True) -> list[Cell] | None:
     """Park the modules of ``removed``, farthest from ``target`` first, off
     ``kept_free``: the parked cells (last parked last), or None when stuck."""
     occupied = tracker.occupied
@@ -248,7 +254,7 @@ def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
         ready = sorted((c for c in left if _rolls_out(occupied, c) and not is_cut(occupied, c)),
                        key=lambda c: (-distance(c, target), c))
         for cell in ready[:3]:
-            found = _park(occupied, goal, cell, fixed, kept_free, margin)
+            found = _park(occupied, goal, cell, fixed, kept_free, depth, margin)
             if found:
                 tracker.roll(found[0])
                 parked.append(found[1])
@@ -262,7 +268,7 @@ def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
 
 
 def _park(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, fixed: Cell | None,
-          avoid: set[Cell], margin: bool = True):
+          avoid: set[Cell], depth_limit: int, margin: bool = True):
     """(hops, park) taking the module at ``cell`` off ``avoid`` (and, with
     ``margin``, off its neighbours), or None."""
     from hexbot.planning.journey import _rolls, journey
@@ -273,7 +279,7 @@ def _park(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, fixed: Cell | 
     parent, depth = _rolls(occupied, cell)
     rolled = [p for p in parent if p != cell and allowed(p)]
     if rolled:
-        near = [p for p in rolled if depth[p] <= PARK_DEPTH]
+        near = [p for p in rolled if depth[p] <= depth_limit]
         off_goal = [p for p in near if p not in goal]
         if off_goal or near:
             park = max(off_goal or near, key=lambda p: (depth[p], p))

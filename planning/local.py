@@ -60,8 +60,8 @@ def local_seconds(count: int) -> float:
     most 1.0 s) and fail on blobs, so the cap (3.5 s at 1,000, 1.5 times the
     slowest success) keeps a failure from spending the strip's time (measured
     in docs/planning.md). Up to ``DIG_SIZE`` modules it is ``DIG_SECONDS``:
-    the digs plan blobs of 300 in 6-16 s, where the strip's plans are 30
-    times longer in moves (there is no time goal below 1,000 modules)."""
+    the digs plan the blobs of 300 in 6.6-13.1 s, where the strip's plans
+    are 9-46 times longer in moves (there is no time goal below 1,000 modules)."""
     if count <= LOCAL_LIMIT:
         return 10.0 + count / 5
     if count <= DIG_SIZE:
