@@ -20,8 +20,9 @@ again:
   cells the cheapest trio of its sides needs park, the end leaves to a park,
   and the set is refilled in the reverse order.
 
-A dig is kept only when fewer goal cells and ends are walled in afterwards,
-so the flow's digs are bounded by ``DIGS`` and cannot undo one another.
+A dig is kept only when fewer goal cells and ends are walled in afterwards
+(so two digs in a row cannot undo each other), and a flow makes at most
+``DIGS``.
 Every module moves by rolls or journeys (:func:`hexbot.planning.journey.journey`),
 so each intermediate configuration is connected and every rotation legal.
 """
