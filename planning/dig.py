@@ -29,7 +29,9 @@ so each intermediate configuration is connected and every rotation legal.
 
 from __future__ import annotations
 
+from hexbot.planning.flow import _enterable
 from hexbot.planning.hexlattice import Cell, distance, neighbors
+from hexbot.planning.journey import CROSSING_STATES, _rolls, journey
 from hexbot.planning.robust import _free_run, fillable, is_cut, unwind
 from hexbot.planning.windows import _can_leave, disc
 
@@ -81,8 +83,6 @@ def sweep(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: se
     voids that can be entered now (the flow's ranked candidates pair voids with
     their nearest ends, which are often walled in), fills that wall nothing in
     first, then the shortest. The hops, or None."""
-    from hexbot.planning.journey import CROSSING_STATES, journey
-
     walled = fillable(goal, voids)
     open_voids = [v for v in sorted(voids) if _enterable(occupied, v)]
     tries = []
@@ -252,7 +252,7 @@ def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
     left = set(removed)
     parked: list[Cell] = []
     while left:
-        ready = sorted((c for c in left if _rolls_out(occupied, c) and not is_cut(occupied, c)),
+        ready = sorted((c for c in left if _free_run(occupied, c) and not is_cut(occupied, c)),
                        key=lambda c: (-distance(c, target), c))
         for cell in ready[:3]:
             found = _park(occupied, goal, cell, fixed, kept_free, depth, margin)
@@ -272,8 +272,6 @@ def _park(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, fixed: Cell | 
           avoid: set[Cell], depth_limit: int, margin: bool = True):
     """(hops, park) taking the module at ``cell`` off ``avoid`` (and, with
     ``margin``, off its neighbours), or None."""
-    from hexbot.planning.journey import _rolls, journey
-
     def allowed(p: Cell) -> bool:
         return p not in avoid and not (margin and any(n in avoid for n in neighbors(p)))
 
@@ -299,8 +297,6 @@ def _park(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, fixed: Cell | 
 
 def _fill_from(tracker, parked: list[Cell], cell: Cell, fixed: Cell | None) -> bool:
     """A parked module (the last parked first) journeys to ``cell``."""
-    from hexbot.planning.journey import journey
-
     occupied = tracker.occupied
     for i in reversed(range(len(parked))):
         if is_cut(occupied, parked[i]):
@@ -312,13 +308,3 @@ def _fill_from(tracker, parked: list[Cell], cell: Cell, fixed: Cell | None) -> b
             return True
     return False
 
-
-def _rolls_out(occupied: set[Cell], cell: Cell) -> bool:
-    """Three sides in a row free (connectivity aside)."""
-    return _free_run({n for n in neighbors(cell) if n in occupied}, cell)
-
-
-def _enterable(occupied: set[Cell], cell: Cell) -> bool:
-    """Three sides in a row free and one occupied: a rotation can end here."""
-    near = {n for n in neighbors(cell) if n in occupied}
-    return bool(near) and _free_run(near, cell)
