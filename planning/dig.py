@@ -39,7 +39,7 @@ from hexbot.planning.windows import _can_leave, disc
 DIGS = 40
 DIG_LIMIT = 30
 #: How far around an end its shape is peeled.
-DIG_REACH = 6
+DIG_REACH = 10
 #: Parks: the farthest cell a module rolls to within a depth of rotations (so
 #: the next modules of the set still get out past it), else a journey to one of
 #: the ``PARKS`` nearest border cells within ``PARK_RADIUS``. A dig whose
@@ -50,8 +50,17 @@ PARKS = 10
 PARK_RADIUS = 6
 #: A stuck flow's sweep: each end that can roll, to this many nearest voids.
 SWEEP_VOIDS = 4
+#: Void propagation: how far from the void its filler may be, fillers tried
+#: per void, and propagations per flow (each moves a void nearer an end).
+PROPAGATE_REACH = 4
+PROPAGATE_TRIES = 6
+PROPAGATIONS = 400
 #: States of a journey to a park (a cheap pass: most parks are rolls).
 PARK_STATES = 300
+#: Parts hanging on a dig's set smaller than this leave with it.
+HANGING = 5
+TO_VOIDS = True
+VOID_DEPTH = 30
 
 _PEELS: dict = {}
 
@@ -96,6 +105,36 @@ def sweep(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: se
         hops = journey(occupied, end, void, fixed, CROSSING_STATES, failed)
         if hops:
             return hops
+    return None
+
+
+def propagate(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
+              fixed: Cell | None, failed: set):
+    """The thesis' void propagation, for a void no end reaches: a goal module
+    within ``PROPAGATE_REACH`` of the void and nearer the void's nearest free
+    end fills it, so the void moves towards that end. Nothing is walled in.
+    The hops, or None."""
+    free_ends = [e for e in sorted(ends)
+                 if e != fixed and _can_leave(occupied, e) and not is_cut(occupied, e)]
+    if not free_ends:
+        return None
+    walled = fillable(goal, voids)
+    for void in sorted(voids - walled, key=lambda v: (min(distance(v, e) for e in free_ends), v)):
+        end = min(free_ends, key=lambda e: (distance(void, e), e))
+        far = distance(void, end)
+        movers = [m for m in disc(void, PROPAGATE_REACH)
+                  if m in occupied and m in goal and m != fixed and distance(m, end) < far
+                  and _can_leave(occupied, m)]
+        tried = 0
+        for m in sorted(movers, key=lambda m: (distance(m, void) + distance(m, end), m)):
+            if tried == PROPAGATE_TRIES:
+                break
+            if is_cut(occupied, m) or fillable(goal, (voids - {void}) | {m}) - walled:
+                continue
+            tried += 1
+            hops = journey(occupied, m, void, fixed, CROSSING_STATES, failed)
+            if hops:
+                return hops
     return None
 
 
@@ -172,7 +211,8 @@ def _dig_hole(tracker, goal: frozenset[Cell], fixed: Cell | None, hole: Cell,
     removed = kept_free & occupied
     if fixed in removed or len(removed) > DIG_LIMIT:
         return False
-    parked = _empty(tracker, goal, fixed, hole, removed, kept_free, depth, margin=False)
+    parked = _empty(tracker, goal, fixed, hole, removed, kept_free, depth, margin=False,
+                    to_voids=TO_VOIDS)
     if parked is None:
         return False
     for cell in sorted(cells | {hole}, key=lambda c: (-rounds[c], c)):
@@ -199,11 +239,17 @@ def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
         parked = _empty(tracker, goal, fixed, end, set(removed), set(removed) | {end}, depth,
                         order=order)
         if parked is not None and not is_cut(occupied, end):
-            found = _park(occupied, goal, end, fixed, set(removed), depth)
+            refill = [c for c in reversed(order) if c in goal]
+            parent = _rolls(occupied, end)[0]
+            # the end takes the deepest emptied goal cell it rolls to (a parked
+            # module stays out in its place), else it leaves to a park
+            shift = next((c for c in refill if c in parent), None)
+            found = ((unwind(parent, shift), shift) if shift is not None
+                     else _park(occupied, goal, end, fixed, set(removed), depth))
             if found:
                 tracker.roll(found[0])
-                for cell in reversed(order):  # the outermost cells may stay voids
-                    if cell in goal and not _fill_from(tracker, parked, cell, fixed):
+                for cell in refill:  # the outermost cells may stay voids
+                    if cell != shift and not _fill_from(tracker, parked, cell, fixed):
                         break
                 return True
         tracker.undo_to(start)
@@ -245,7 +291,8 @@ def _peeled(occupied: frozenset[Cell], target: Cell, fixed: Cell | None):
 
 def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
            removed: set[Cell], kept_free: set[Cell], depth: int,
-           order: list[Cell] | None = None, margin: bool = True) -> list[Cell] | None:
+           order: list[Cell] | None = None, margin: bool = True,
+           to_voids: bool = False) -> list[Cell] | None:
     """Park the modules of ``removed``, farthest from ``target`` first, off
     ``kept_free``: the parked cells (last parked last), or None when stuck."""
     occupied = tracker.occupied
@@ -254,18 +301,48 @@ def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
     while left:
         ready = sorted((c for c in left if _free_run(occupied, c) and not is_cut(occupied, c)),
                        key=lambda c: (-distance(c, target), c))
+        if not ready:  # modules hanging on the set alone leave first
+            hanging = set().union(*(_hanging(occupied, c) for c in left
+                                    if _free_run(occupied, c))) - left - {fixed}
+            ready = sorted(c for c in hanging if _free_run(occupied, c)
+                           and not is_cut(occupied, c))
         for cell in ready[:3]:
+            found = None
+            if to_voids and len(left) > 1:
+                found = _to_void(occupied, goal, cell, kept_free, depth)
+            if found:
+                tracker.roll(found[0])
+                left.discard(cell)
+                break
             found = _park(occupied, goal, cell, fixed, kept_free, depth, margin)
             if found:
                 tracker.roll(found[0])
                 parked.append(found[1])
-                if order is not None:
+                if order is not None and cell in left:
                     order.append(cell)
                 left.discard(cell)
                 break
         else:
             return None
     return parked
+
+
+def _hanging(occupied: set[Cell], cell: Cell) -> set[Cell]:
+    """The modules that hold on to the structure only through ``cell``: its
+    neighbours' parts of fewer than ``HANGING`` cells once ``cell`` is empty."""
+    hanging: set[Cell] = set()
+    for n in neighbors(cell):
+        if n not in occupied or n in hanging:
+            continue
+        part, queue = {n}, [n]
+        while queue and len(part) < HANGING:
+            for m in neighbors(queue.pop()):
+                if m in occupied and m != cell and m not in part:
+                    part.add(m)
+                    queue.append(m)
+        if len(part) < HANGING:
+            hanging |= part
+    return hanging
 
 
 def _park(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, fixed: Cell | None,
@@ -292,6 +369,22 @@ def _park(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, fixed: Cell | 
         hops = journey(occupied, cell, park, fixed, PARK_STATES)
         if hops:
             return hops, park
+    return None
+
+
+def _to_void(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, avoid: set[Cell],
+             depth_limit: int):
+    """(hops, void): the module at ``cell`` rolls to the nearest void of the goal
+    off ``avoid`` whose fill walls in no other void, or None."""
+    parent, depth = _rolls(occupied, cell)
+    voids = set(goal - occupied)
+    walled = None
+    for p in sorted((p for p in parent if p in voids and p not in avoid
+                     and depth[p] <= VOID_DEPTH), key=lambda p: (depth[p], p)):
+        if walled is None:
+            walled = fillable(goal, voids)
+        if not fillable(goal, voids - {p}) - walled:
+            return unwind(parent, p), p
     return None
 
 

@@ -198,9 +198,10 @@ def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dic
 
 def _recheck(movable: frozenset[Cell], whole: set[Cell], state: frozenset[Cell],
              changed: tuple[Cell, Cell], fixed: Cell | None) -> frozenset[Cell]:
-    near = {n for c in changed for n in (c, *neighbors(c)) if n in state and n != fixed}
-    kept = {c for c in movable if c not in near and c in state}
-    return frozenset(kept | {c for c in near if _can_leave(whole, c)})
+    src, dst = changed
+    near = {src, dst, *neighbors(src), *neighbors(dst)}
+    return (movable - near) | {c for c in near
+                               if c in state and c != fixed and _can_leave(whole, c)}
 
 
 def _apply(occupied: set[Cell], hops: list[Hop]) -> None:
@@ -272,6 +273,7 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     backtracks = 0
     asides = ASIDES
     digs_left = dig.DIGS if digs else 0
+    propagations = dig.PROPAGATIONS
     while True:
         deadline.check(method)
         occupied = tracker.occupied
@@ -301,8 +303,10 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
         else:
             if digs_left and dig.dig_holes(tracker, goal, fixed, deadline):
                 digs_left -= 1
+                fills.clear()  # a take-back must not undo the dig
                 continue
-            hops = _make_room(occupied, goal, ends, voids, fixed, failed)
+            targets = _safe_voids(goal, voids) if digs else voids
+            hops = None if digs else _make_room(occupied, goal, ends, voids, fixed, failed)
             if hops:
                 tracker.roll(hops)
                 continue
@@ -321,7 +325,7 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
             if asides and _step_aside(tracker, goal, fixed):  # the fills walled voids in
                 asides -= 1
                 continue
-            hops = _hand_over(occupied, goal, ends, voids, fixed, failed, deadline)
+            hops = _hand_over(occupied, goal, ends, voids, fixed, failed, deadline, targets)
             if hops:  # it tries many pairs of journeys
                 tracker.roll(hops)
                 continue
@@ -329,9 +333,16 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
             if hops:
                 tracker.roll(hops)
                 continue
+            if digs and propagations:
+                hops = dig.propagate(occupied, goal, ends, voids, fixed, failed)
+                if hops:
+                    propagations -= 1
+                    tracker.roll(hops)
+                    continue
             if digs_left and (dig.dig_holes(tracker, goal, fixed, deadline)
                               or dig.dig_ends(tracker, goal, fixed, deadline)):
                 digs_left -= 1
+                fills.clear()
                 continue
             raise PlanningFailure(
                 f"{method}: journeys stuck with {len(voids)} goal cells to fill "
@@ -663,7 +674,8 @@ def _latest_fill_near(fills: list[tuple[int, Cell]], ends: set[Cell]) -> int | N
 
 
 def _make_room(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
-               fixed: Cell | None, failed: set) -> list[Hop] | None:
+               fixed: Cell | None, failed: set, targets: set[Cell] | None = None,
+               ) -> list[Hop] | None:
     """One hop of the thesis' void propagation: an end walled in (no three free
     sides in a row) gets out when a goal module beside it goes to a void
     first, then the end takes its cell. (The mirror case, a void walled in,
@@ -673,14 +685,15 @@ def _make_room(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], void
                          key=lambda e: (min(distance(e, v) for v in voids), e))
     for end in by_distance[:HELPERS]:
         for side in _helpers(occupied, goal, end, fixed):
-            hops = _take_place(occupied, end, side, voids, fixed, failed)
+            hops = _take_place(occupied, end, side, targets or voids, fixed, failed)
             if hops:
                 return hops
     return None
 
 
 def _hand_over(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
-               fixed: Cell | None, failed: set, deadline) -> list[Hop] | None:
+               fixed: Cell | None, failed: set, deadline,
+               targets: set[Cell] | None = None) -> list[Hop] | None:
     """An end that rolls but finds no crossing out of its stretch of the surface
     (a bay whose two mouths no crossing passes) hands over: a goal module
     beside that stretch goes to a void by the outer way, then the end takes
@@ -702,10 +715,17 @@ def _hand_over(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], void
         ranked = sorted(helpers, key=lambda h: (min(distance(h, v) for v in voids), h))
         for side in ranked[:HAND_OVERS]:
             hops = None if is_cut(occupied, side) else _take_place(
-                occupied, end, side, voids, fixed, failed)
+                occupied, end, side, targets or voids, fixed, failed)
             if hops:
                 return hops
     return None
+
+
+def _safe_voids(goal: frozenset[Cell], voids: set[Cell]) -> set[Cell]:
+    """The voids whose fill walls in no other void (peeled per group of voids)."""
+    walled = fillable(goal, voids)
+    group = _groups(voids)
+    return {v for v in voids if not fillable(goal, group[v] - {v}) - walled}
 
 
 def _take_place(occupied: set[Cell], end: Cell, side: Cell, voids: set[Cell],

@@ -115,10 +115,17 @@ def _moves_from(cell: Cell, occupied: set[Cell], mover: Cell):
             for rule, (sx, sy), (gx, gy) in _OPEN12[mask]]
 
 
-def _free_run(blocked: set[Cell], cell: Cell) -> bool:
+#: Per ring mask (bit i = side i + 1 blocked): three sides in a row free?
+_RUN_FREE = tuple(any(not mask >> i & 1 and not mask >> (i + 1) % 6 & 1
+                      and not mask >> (i + 2) % 6 & 1 for i in range(6))
+                  for mask in range(64))
+
+
+def _free_run(blocked, cell: Cell) -> bool:
     """Does ``cell`` keep three consecutive sides free of ``blocked``?"""
-    ring = [n not in blocked for n in neighbors(cell)]
-    return any(ring[i] and ring[(i + 1) % 6] and ring[(i + 2) % 6] for i in range(6))
+    a, b, c, d, e, f = neighbors(cell)
+    return _RUN_FREE[(a in blocked) | (b in blocked) << 1 | (c in blocked) << 2
+                     | (d in blocked) << 3 | (e in blocked) << 4 | (f in blocked) << 5]
 
 
 @dataclass
@@ -156,17 +163,21 @@ def fillable(goal: frozenset[Cell], voids: set[Cell]) -> set[Cell]:
     finds an order whenever one exists; what is left cannot be entered.
     """
     remaining = set(voids)
-    queue = deque(sorted(remaining))
+    queue = deque(remaining)  # the peel's result does not depend on its order
     queued = set(remaining)
     while queue:
         v = queue.popleft()
         queued.discard(v)
         if v not in remaining:
             continue
-        blocked = {n for n in neighbors(v) if n in goal and (n not in voids or n in remaining)}
-        if _free_run(blocked, v):
+        ring = neighbors(v)
+        mask = 0
+        for i, n in enumerate(ring):
+            if n in goal and (n in remaining or n not in voids):
+                mask |= 1 << i
+        if _RUN_FREE[mask]:
             remaining.discard(v)
-            for n in neighbors(v):
+            for n in ring:
                 if n in remaining and n not in queued:
                     queue.append(n)
                     queued.add(n)
