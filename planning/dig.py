@@ -17,8 +17,16 @@ again:
   refill the set in build order (the outermost cells may stay voids, which
   the flow fills later from outside);
 * **an end**: the current shape is peeled around it (:func:`_peeled`); the
-  cells the cheapest trio of its sides needs park, the end leaves to a park,
-  and the set is refilled in the reverse order.
+  cells the cheapest trio of its sides needs park, the end takes the
+  deepest emptied goal cell it can roll to (or leaves to a park), and the
+  set is refilled in the reverse order.
+
+A module of a hole's set that rolls to a void of the goal (one whose fill
+walls in nothing) stays there instead of parking: the flow refills the set
+later from the ends, which have to travel anyway. Modules that hang on the
+set alone leave with it. A dig that failed is not tried again until a
+module near it has moved. For a void that no end reaches, a goal module
+nearer the end fills it (:func:`propagate`, the thesis' void propagation).
 
 A dig is kept only when fewer goal cells and ends are walled in afterwards
 (so two digs in a row cannot undo each other), and a flow makes at most
@@ -40,6 +48,9 @@ DIGS = 40
 DIG_LIMIT = 30
 #: How far around an end its shape is peeled.
 DIG_REACH = 10
+#: A dig that failed is not tried again until a module within this distance
+#: of its target has moved.
+SAME_RADIUS = 12
 #: Parks: the farthest cell a module rolls to within a depth of rotations (so
 #: the next modules of the set still get out past it), else a journey to one of
 #: the ``PARKS`` nearest border cells within ``PARK_RADIUS``. A dig whose
@@ -65,24 +76,43 @@ VOID_DEPTH = 30
 _PEELS: dict = {}
 
 
-def dig_holes(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline) -> bool:
+def dig_holes(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
+              failed: set | None = None) -> bool:
     """Dig into one hole of the goal (tried in cell order). True when one was filled."""
     for hole in sorted(fillable(goal, set(goal - tracker.occupied))):
         if deadline.expired():
             return False
-        if _kept(tracker, goal, fixed, hole):
+        if _tried(tracker, goal, fixed, hole, failed):
             return True
     return False
 
 
-def dig_ends(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline) -> bool:
+def dig_ends(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
+             failed: set | None = None) -> bool:
     """Dig one walled-in end out. True when one left."""
     occupied = tracker.occupied
     for end in sorted(fillable(frozenset(occupied), occupied - goal) - {fixed}):
         if deadline.expired():
             return False
-        if _kept(tracker, goal, fixed, end):
+        if _tried(tracker, goal, fixed, end, failed):
             return True
+    return False
+
+
+def _tried(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
+           failed: set | None) -> bool:
+    """:func:`_kept`, skipped when it failed before with the same modules
+    within ``SAME_RADIUS`` (a stuck flow asks again after every change
+    elsewhere)."""
+    if failed is None:
+        return _kept(tracker, goal, fixed, target)
+    occupied = tracker.occupied
+    question = ("dig", target, frozenset(c for c in disc(target, SAME_RADIUS) if c in occupied))
+    if question in failed:
+        return False
+    if _kept(tracker, goal, fixed, target):
+        return True
+    failed.add(question)
     return False
 
 
@@ -298,14 +328,16 @@ def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
     occupied = tracker.occupied
     left = set(removed)
     parked: list[Cell] = []
+    spare = HANGING  # modules hanging on the set that may leave first
     while left:
         ready = sorted((c for c in left if _free_run(occupied, c) and not is_cut(occupied, c)),
                        key=lambda c: (-distance(c, target), c))
-        if not ready:  # modules hanging on the set alone leave first
+        if not ready and spare:  # modules hanging on the set alone leave first
             hanging = set().union(*(_hanging(occupied, c) for c in left
                                     if _free_run(occupied, c))) - left - {fixed}
             ready = sorted(c for c in hanging if _free_run(occupied, c)
                            and not is_cut(occupied, c))
+            spare -= 1
         for cell in ready[:3]:
             found = None
             if to_voids and len(left) > 1:
@@ -314,7 +346,9 @@ def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
                 tracker.roll(found[0])
                 left.discard(cell)
                 break
-            found = _park(occupied, goal, cell, fixed, kept_free, depth, margin)
+            # (a hanging module parks off the set's sides, not to hang on it again)
+            found = _park(occupied, goal, cell, fixed, kept_free, depth,
+                          margin or cell not in left)
             if found:
                 tracker.roll(found[0])
                 parked.append(found[1])

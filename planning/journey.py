@@ -90,6 +90,9 @@ RELAY_GAIN = 0.8
 RELAY_DEPTH = 3
 #: Longest run of journeys on the critical path reversed (:func:`_reorder`).
 REORDER_RUN = 4
+#: With digs, a failed journey is tried again only when a module within this
+#: distance of its mover or its void has moved.
+SAME_AROUND = 4
 _FAR = 10**9
 
 
@@ -172,6 +175,9 @@ def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dic
     while heap and len(parent) < max_states:
         _, _, state = heapq.heappop(heap)
         whole = outside | state
+        if state not in movable:  # worked out when expanded: most states never are
+            before, (src, dst, _, _) = parent[state]
+            movable[state] = _recheck(movable[before], whole, state, (src, dst), fixed)
         after_cost = cost[state] + 1
         for cell in sorted(movable[state]):
             for rule, sub, dst in _moves_from(cell, whole, cell):
@@ -182,8 +188,6 @@ def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dic
                     continue
                 parent[after] = (state, (cell, dst, rule, sub))
                 cost[after] = after_cost
-                movable[after] = _recheck(movable[state], outside | after, after,
-                                          (cell, dst), fixed)
                 away = len(home - after)
                 if away == 0:
                     (arrived,) = after - home
@@ -294,19 +298,28 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
         tries = [(m, v, CHEAP_STATES) for m, v in candidates]
         tries += [(m, v, CROSSING_STATES) for m, v in candidates[:THOROUGH_TRIES]]
         for mover, void, states in tries:
+            # with digs (large flows), a journey that failed is not tried again
+            # until the modules around its two ends change
+            question = ("journey", mover, void, states, _around(occupied, mover),
+                        _around(occupied, void)) if digs else None
+            if question in failed:
+                continue
             hops = journey(occupied, mover, void, fixed, states, failed)
             if hops:
                 tracker.roll(hops)
                 fills.append((before, void))
                 break
+            if digs:
+                failed.add(question)
             deadline.check(method)
         else:
-            if digs_left and dig.dig_holes(tracker, goal, fixed, deadline):
+            if digs_left and dig.dig_holes(tracker, goal, fixed, deadline, failed):
                 digs_left -= 1
                 fills.clear()  # a take-back must not undo the dig
                 continue
             targets = _safe_voids(goal, voids) if digs else voids
-            hops = None if digs else _make_room(occupied, goal, ends, voids, fixed, failed)
+            hops = _make_room(occupied, goal, ends, voids, fixed, failed, targets,
+                              remember=digs)
             if hops:
                 tracker.roll(hops)
                 continue
@@ -325,7 +338,8 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
             if asides and _step_aside(tracker, goal, fixed):  # the fills walled voids in
                 asides -= 1
                 continue
-            hops = _hand_over(occupied, goal, ends, voids, fixed, failed, deadline, targets)
+            hops = _hand_over(occupied, goal, ends, voids, fixed, failed, deadline, targets,
+                              remember=digs)
             if hops:  # it tries many pairs of journeys
                 tracker.roll(hops)
                 continue
@@ -339,8 +353,8 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
                     propagations -= 1
                     tracker.roll(hops)
                     continue
-            if digs_left and (dig.dig_holes(tracker, goal, fixed, deadline)
-                              or dig.dig_ends(tracker, goal, fixed, deadline)):
+            if digs_left and (dig.dig_holes(tracker, goal, fixed, deadline, failed)
+                              or dig.dig_ends(tracker, goal, fixed, deadline, failed)):
                 digs_left -= 1
                 fills.clear()
                 continue
@@ -349,6 +363,10 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
                 f"(none of {len(candidates)} journeys found a crossing within "
                 f"radius {CROSSING_RADII[-1]} and {CROSSING_STATES} states; "
                 f"{backtracks} fills taken back)")
+
+
+def _around(occupied: set[Cell], cell: Cell) -> frozenset[Cell]:
+    return frozenset(c for c in disc(cell, SAME_AROUND) if c in occupied)
 
 
 def relay_seconds(count: int) -> float:
@@ -675,7 +693,7 @@ def _latest_fill_near(fills: list[tuple[int, Cell]], ends: set[Cell]) -> int | N
 
 def _make_room(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
                fixed: Cell | None, failed: set, targets: set[Cell] | None = None,
-               ) -> list[Hop] | None:
+               remember: bool = False) -> list[Hop] | None:
     """One hop of the thesis' void propagation: an end walled in (no three free
     sides in a row) gets out when a goal module beside it goes to a void
     first, then the end takes its cell. (The mirror case, a void walled in,
@@ -685,15 +703,21 @@ def _make_room(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], void
                          key=lambda e: (min(distance(e, v) for v in voids), e))
     for end in by_distance[:HELPERS]:
         for side in _helpers(occupied, goal, end, fixed):
+            question = ("make room", end, side, _around(occupied, end)) if remember else None
+            if question in failed:
+                continue
             hops = _take_place(occupied, end, side, targets or voids, fixed, failed)
             if hops:
                 return hops
+            if remember:
+                failed.add(question)
     return None
 
 
 def _hand_over(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: set[Cell],
                fixed: Cell | None, failed: set, deadline,
-               targets: set[Cell] | None = None) -> list[Hop] | None:
+               targets: set[Cell] | None = None, remember: bool = False,
+               ) -> list[Hop] | None:
     """An end that rolls but finds no crossing out of its stretch of the surface
     (a bay whose two mouths no crossing passes) hands over: a goal module
     beside that stretch goes to a void by the outer way, then the end takes
@@ -714,10 +738,17 @@ def _hand_over(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], void
                    if n in occupied and n in goal and n not in (end, fixed)}
         ranked = sorted(helpers, key=lambda h: (min(distance(h, v) for v in voids), h))
         for side in ranked[:HAND_OVERS]:
+            # ``remember``: not again until the modules around the two change
+            question = ("hand-over", end, side, _around(occupied, end),
+                        _around(occupied, side)) if remember else None
+            if question in failed:
+                continue
             hops = None if is_cut(occupied, side) else _take_place(
                 occupied, end, side, targets or voids, fixed, failed)
             if hops:
                 return hops
+            if remember:
+                failed.add(question)
     return None
 
 

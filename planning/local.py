@@ -48,20 +48,22 @@ LOCAL_LIMIT = 150
 #: 299 s, time the strip route needs there.
 JOURNEY_LIMIT = 2000
 #: Up to this many modules (above ``LOCAL_LIMIT``) the local method may take
-#: ``DIG_SECONDS`` of CPU time, for its digs.
-DIG_SIZE = 500
-DIG_SECONDS = 20.0
+#: ``DIG_SECONDS`` of CPU time, for its digs (the slowest blob of 1,000 takes
+#: about 18 s).
+DIG_SIZE = 1000
+DIG_SECONDS = 30.0
 
 
 def local_seconds(count: int) -> float:
     """The local method's own time cap. Up to ``LOCAL_LIMIT`` modules its
-    successes take seconds and its failures can search for minutes; above, the
-    journey flows plan the 1,000-module bench scrambles in 1.2-2.3 s (300: at
-    most 1.0 s) and fail on blobs, so the cap (3.5 s at 1,000, 1.5 times the
-    slowest success) keeps a failure from spending the strip's time (measured
-    in docs/planning.md). Up to ``DIG_SIZE`` modules it is ``DIG_SECONDS``:
-    the digs plan the blobs of 300 in 6.6-13.1 s, where the strip's plans
-    are 9-46 times longer in moves (there is no time goal below 1,000 modules)."""
+    successes take seconds and its failures can search for minutes. Above
+    ``DIG_SIZE`` (1 s + n/400) the cap keeps a failure from spending the
+    strip's time; the local method is not tried above ``JOURNEY_LIMIT``.
+    Up to ``DIG_SIZE`` modules it is ``DIG_SECONDS``:
+    the digs plan the blobs of 300 in 4-11 s and those of 1,000 in 10-18 s,
+    where the strip's plans are 9-46 (300) and 126-176 (1,000) times longer
+    in moves: a plan that takes hours less to carry out is worth the
+    seconds (docs/planning.md, "Digs")."""
     if count <= LOCAL_LIMIT:
         return 10.0 + count / 5
     if count <= DIG_SIZE:

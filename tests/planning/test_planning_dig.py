@@ -11,6 +11,7 @@ from hexbot.planning.budget import Deadline, PlanningFailure
 from hexbot.planning.checker import check_plan
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.generate import parallelogram
+from hexbot.planning.hexlattice import distance
 from hexbot.planning.journey import journey_flow
 from hexbot.planning.local import forward
 from hexbot.planning.robust import fillable, pack_consecutive, plan_robust
@@ -87,3 +88,59 @@ def test_the_planner_plans_a_blob_of_300_locally_within_its_cap(monkeypatch):
     monkeypatch.setattr(dig, "PARK_DEPTHS", (10,))
     with pytest.raises(PlanningFailure):
         forward(start, b, partial(journey_flow, digs=True), 10**6, None, NO_LIMIT, "local")
+
+
+def test_modules_hanging_on_a_dig_set_alone_leave_with_it():
+    block = parallelogram(4, 4)
+    tail = {(4, 3), (5, 3)}  # holds on to the block through the corner (3, 3) alone
+    occupied = set(block | tail)
+    assert dig._hanging(occupied, (3, 3)) == tail
+    assert dig._hanging(occupied, (1, 1)) == set()  # inside: nothing hangs on it
+    long_tail = {(4 + k, 3) for k in range(dig.HANGING)}
+    assert dig._hanging(set(block | long_tail), (3, 3)) == set()  # too big to move along
+
+
+def test_a_walled_in_end_at_the_bottom_of_a_slot_is_dug_out():
+    block = parallelogram(6, 6)
+    slot = {(3, 5), (3, 4), (3, 3)}  # one cell wide: the end there has two free sides
+    bottom = (3, 3)
+    goal = frozenset((block - slot) | {(6, 0)})
+    start = Configuration.from_cells((block - slot) | {bottom})
+    assert fillable(start.cells, {bottom}) == {bottom}
+    tracker = Tracker(start, 10**6)
+    assert dig.dig_ends(tracker, goal, None, NO_LIMIT)
+    occupied = tracker.occupied
+    assert bottom not in occupied and not fillable(frozenset(occupied), occupied - goal)
+    report = check_plan(start, frozenset(occupied), pack_consecutive(start, tracker.moves))
+    assert report.ok, report.problem
+
+
+def test_a_void_no_end_reaches_moves_towards_the_nearest_free_end():
+    # the thesis' void propagation: a goal module beside the void fills it,
+    # and the void it leaves is nearer the end
+    block = parallelogram(10, 2)
+    end, void = (-1, 1), (10, 0)
+    goal = frozenset(block | {void})
+    start = Configuration.from_cells(block | {end})
+    tracker = Tracker(start, 10**6)
+    hops = dig.propagate(set(tracker.occupied), goal, {end}, {void}, None, set())
+    assert hops
+    tracker.roll(hops)
+    (moved_void,) = goal - tracker.occupied
+    assert distance(moved_void, end) < distance(void, end)
+    assert not fillable(goal, {moved_void})
+    report = check_plan(start, frozenset(tracker.occupied),
+                        pack_consecutive(start, tracker.moves))
+    assert report.ok, report.problem
+
+
+def test_the_planner_plans_a_blob_of_1000_locally_within_five_times_the_bound():
+    # blob 1,000, seed 2: 12 holes and 20 walled-in ends at the start; the
+    # strip route's plan was 126 times the bound
+    a, b = make_pair("blob", 1000, 2)
+    start = Configuration.from_cells(a)
+    plan = plan_robust(start, b)
+    assert plan.reached and plan.method == "local", (plan.method, plan.reason)
+    assert plan.move_count <= 5 * move_lower_bound(a, b).value
+    report = check_plan(start, b, plan.steps)
+    assert report.ok, report.problem
