@@ -27,6 +27,9 @@ later from the ends, which have to travel anyway. Modules that hang on the
 set alone leave with it. A dig that failed is not tried again until a
 module near it has moved. For a void that no end reaches, a goal module
 nearer the end fills it (:func:`propagate`, the thesis' void propagation).
+Holes with big closures are dug before the flow fills anything
+(:func:`dig_deep`); one still deeper than a dig reaches fails the flow at
+once (:func:`check_depth`).
 
 A dig is kept only when fewer goal cells and ends are walled in afterwards
 (so two digs in a row cannot undo each other), and a flow makes at most
@@ -37,6 +40,7 @@ so each intermediate configuration is connected and every rotation legal.
 
 from __future__ import annotations
 
+from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.flow import _enterable
 from hexbot.planning.hexlattice import Cell, distance, neighbors
 from hexbot.planning.journey import CROSSING_STATES, _rolls, journey
@@ -46,6 +50,8 @@ from hexbot.planning.windows import _can_leave, disc
 #: Digs one flow may make; modules one dig may park.
 DIGS = 40
 DIG_LIMIT = 30
+#: Holes whose closure has more cells than this are dug first (:func:`dig_deep`).
+DEEP = 25
 #: How far around an end its shape is peeled.
 DIG_REACH = 10
 #: A dig that failed is not tried again until a module within this distance
@@ -85,6 +91,36 @@ def dig_holes(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
         if _tried(tracker, goal, fixed, hole, failed):
             return True
     return False
+
+
+def dig_deep(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
+             failed: set | None = None) -> bool:
+    """Dig into one hole whose closure has more than ``DEEP`` cells (deepest
+    first). A flow digs these before it fills anything: its fills would fill
+    the closure, which then has too many modules to dig (``DIG_LIMIT``), and
+    the modules dug out still have voids to go to."""
+    rounds, closure, _ = goal_peel(goal)
+    holes = [h for h in fillable(goal, set(goal - tracker.occupied))
+             if len(closure.get(h, ())) > DEEP]
+    for hole in sorted(holes, key=lambda h: (-len(closure[h]), h)):
+        if deadline.expired():
+            return False
+        if _tried(tracker, goal, fixed, hole, failed):
+            return True
+    return False
+
+
+def check_depth(occupied: set[Cell], goal: frozenset[Cell], method: str) -> None:
+    """Raise :class:`PlanningFailure` when a hole is left whose closure has more
+    cells than a dig may move: once the flow has filled them, no dig reaches
+    the hole, and the flow would spend its whole time cap to stall on it."""
+    _, closure, _ = goal_peel(goal)
+    holes = fillable(goal, set(goal - occupied))
+    deepest = max(holes, key=lambda h: (len(closure.get(h, goal)), h), default=None)
+    if deepest is not None and len(closure.get(deepest, goal)) - 1 > DIG_LIMIT:
+        raise PlanningFailure(
+            f"{method}: goal cell {deepest} is walled in {len(closure.get(deepest, goal)) - 1} "
+            f"cells deep, more than a dig moves ({DIG_LIMIT})")
 
 
 def dig_ends(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,

@@ -278,6 +278,10 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     asides = ASIDES
     digs_left = dig.DIGS if digs else 0
     propagations = dig.PROPAGATIONS
+    while digs_left and dig.dig_deep(tracker, goal, fixed, deadline, failed):
+        digs_left -= 1
+    if digs:
+        dig.check_depth(tracker.occupied, goal, method)
     while True:
         deadline.check(method)
         occupied = tracker.occupied

@@ -100,17 +100,27 @@ _OPEN12 = [
 ]
 
 
+_RINGS12: dict[Cell, tuple[Cell, ...]] = {}  # cell -> its twelve cells, built once
+
+
 def _moves_from(cell: Cell, occupied: set[Cell], mover: Cell):
     """Rotations open to the module travelling from ``mover`` when it stands at
     ``cell`` (``mover``'s own cell counts as empty)."""
     x, y = cell
-    mask = 0
-    bit = 1
-    for dx, dy in _AROUND12:
-        c = (x + dx, y + dy)
-        if c in occupied and c != mover:
-            mask |= bit
-        bit <<= 1
+    ring = _RINGS12.get(cell)
+    if ring is None:
+        if len(_RINGS12) > 200_000:  # bounded: a planner touches a few thousand
+            _RINGS12.clear()
+        ring = _RINGS12[cell] = tuple((x + dx, y + dy) for dx, dy in _AROUND12)
+    a, b, c, d, e, f, g, h, i, j, k, m = ring
+    mask = ((a in occupied) | (b in occupied) << 1 | (c in occupied) << 2
+            | (d in occupied) << 3 | (e in occupied) << 4 | (f in occupied) << 5
+            | (g in occupied) << 6 | (h in occupied) << 7 | (i in occupied) << 8
+            | (j in occupied) << 9 | (k in occupied) << 10 | (m in occupied) << 11)
+    if mask and mover != cell:
+        bit = _BIT12.get((mover[0] - x, mover[1] - y))
+        if bit:
+            mask &= ~bit
     return [(rule, (x + sx, y + sy), (x + gx, y + gy))
             for rule, (sx, sy), (gx, gy) in _OPEN12[mask]]
 

@@ -144,3 +144,34 @@ def test_the_planner_plans_a_blob_of_1000_locally_within_five_times_the_bound():
     assert plan.move_count <= 5 * move_lower_bound(a, b).value
     report = check_plan(start, b, plan.steps)
     assert report.ok, report.problem
+
+
+def test_a_deep_hole_is_dug_before_the_flow_fills_its_closure():
+    goal = parallelogram(8, 8)
+    rounds, closure, trios = dig.goal_peel(goal)
+    deep, shallow = (4, 4), (4, 3)
+    assert len(closure[deep]) > dig.DEEP >= len(closure[shallow])
+    start = Configuration.from_cells((goal - {deep}) | {(8, 0)})
+    tracker = Tracker(start, 10**6)
+    assert dig.dig_deep(tracker, goal, None, NO_LIMIT)
+    assert deep in tracker.occupied
+    report = check_plan(start, frozenset(tracker.occupied),
+                        pack_consecutive(start, tracker.moves))
+    assert report.ok, report.problem
+    # a shallow hole is left to the flow's digs when it is stuck
+    start = Configuration.from_cells((goal - {shallow}) | {(8, 0)})
+    tracker = Tracker(start, 10**6)
+    assert not dig.dig_deep(tracker, goal, None, NO_LIMIT) and tracker.moves == []
+
+
+def test_a_hole_deeper_than_a_dig_reaches_fails_at_once_with_the_reason():
+    # the centre of an 11 x 11 block: more goal cells are built after it than
+    # a dig may move, so the flow says so at the start instead of spending
+    # its time cap to stall on it at the end
+    goal = parallelogram(11, 11)
+    centre = (5, 5)
+    _, closure, _ = dig.goal_peel(goal)
+    assert len(closure[centre]) - 1 > dig.DIG_LIMIT
+    start = Configuration.from_cells((goal - {centre}) | {(11, 0)})
+    with pytest.raises(PlanningFailure, match=r"goal cell \(5, 5\) is walled in \d+ cells deep"):
+        forward(start, goal, partial(journey_flow, digs=True), 10**6, None, NO_LIMIT, "local")
