@@ -261,11 +261,14 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     void, the flow takes back the latest fill next to a stuck end and makes
     that void wait until the end has left (at most ``BACKTRACKS`` times).
     Then a hand-over (:func:`_hand_over`). With ``digs`` (the local method
-    above ``LOCAL_LIMIT``), a stuck flow first digs into a hole of the goal,
-    and after the hand-overs sweeps every free end to its nearest voids and
-    digs walled-in ends out (:mod:`hexbot.planning.dig`). Every fill or
-    take-back changes the state, take-backs and digs are bounded, and a
-    hand-over fills a void, so the loop ends. A finished flow's long
+    above ``LOCAL_LIMIT``), the flow first digs into the deep holes of the
+    goal and fails at once if one is deeper than a dig reaches; a stuck flow
+    first digs into a hole, and after the hand-overs sweeps every free end
+    to its nearest voids, moves voids no end reaches towards the ends and
+    digs walled-in ends out (:mod:`hexbot.planning.dig`); failed journeys,
+    hand-overs and digs are not asked again until the modules around them
+    move. Every fill or take-back changes the state, take-backs, digs and
+    propagations are bounded, and a hand-over fills a void, so the loop ends. A finished flow's long
     journeys become relays (:func:`relay`)."""
     from hexbot.planning import dig  # dig rolls modules by journeys from here
 
@@ -370,6 +373,7 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
 
 
 def _around(occupied: set[Cell], cell: Cell) -> frozenset[Cell]:
+    """The modules within ``SAME_AROUND`` of ``cell``: a failed question's context."""
     return frozenset(c for c in disc(cell, SAME_AROUND) if c in occupied)
 
 
