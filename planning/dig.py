@@ -76,7 +76,8 @@ PROPAGATIONS = 400
 PARK_STATES = 300
 #: Parts hanging on a dig's set smaller than this leave with it.
 HANGING = 5
-TO_VOIDS = True
+#: A module of a hole's set stops at a void it rolls to within this many
+#: rotations (instead of parking and coming back).
 VOID_DEPTH = 30
 
 _PEELS: dict = {}
@@ -278,7 +279,7 @@ def _dig_hole(tracker, goal: frozenset[Cell], fixed: Cell | None, hole: Cell,
     if fixed in removed or len(removed) > DIG_LIMIT:
         return False
     parked = _empty(tracker, goal, fixed, hole, removed, kept_free, depth, margin=False,
-                    to_voids=TO_VOIDS)
+                    to_voids=True)
     if parked is None:
         return False
     for cell in sorted(cells | {hole}, key=lambda c: (-rounds[c], c)):
@@ -377,7 +378,7 @@ def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
         for cell in ready[:3]:
             found = None
             if to_voids and len(left) > 1:
-                found = _to_void(occupied, goal, cell, kept_free, depth)
+                found = _to_void(occupied, goal, cell, kept_free)
             if found:
                 tracker.roll(found[0])
                 left.discard(cell)
@@ -442,8 +443,7 @@ def _park(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, fixed: Cell | 
     return None
 
 
-def _to_void(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, avoid: set[Cell],
-             depth_limit: int):
+def _to_void(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, avoid: set[Cell]):
     """(hops, void): the module at ``cell`` rolls to the nearest void of the goal
     off ``avoid`` whose fill walls in no other void, or None."""
     parent, depth = _rolls(occupied, cell)

@@ -131,7 +131,7 @@ _RUN_FREE = tuple(any(not mask >> i & 1 and not mask >> (i + 1) % 6 & 1
                   for mask in range(64))
 
 
-def _free_run(blocked, cell: Cell) -> bool:
+def _free_run(blocked: set[Cell] | frozenset[Cell], cell: Cell) -> bool:
     """Does ``cell`` keep three consecutive sides free of ``blocked``?"""
     a, b, c, d, e, f = neighbors(cell)
     return _RUN_FREE[(a in blocked) | (b in blocked) << 1 | (c in blocked) << 2

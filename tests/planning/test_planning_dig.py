@@ -20,6 +20,26 @@ from hexbot.planning.tracker import Tracker
 NO_LIMIT = Deadline(None)
 
 
+def assert_legal(start: Configuration, tracker: Tracker) -> None:
+    """The independent checker accepts the tracker's moves from ``start``."""
+    report = check_plan(start, frozenset(tracker.occupied),
+                        pack_consecutive(start, tracker.moves))
+    assert report.ok, report.problem
+
+
+def assert_planned_locally(family: str, n: int, seed: int, times_bound: int):
+    """``plan_robust`` plans the bench pair locally within ``times_bound`` times
+    the lower bound, and the checker accepts it; returns (start, goal)."""
+    a, b = make_pair(family, n, seed)
+    start = Configuration.from_cells(a)
+    plan = plan_robust(start, b)
+    assert plan.reached and plan.method == "local", (plan.method, plan.reason)
+    assert plan.move_count <= times_bound * move_lower_bound(a, b).value
+    report = check_plan(start, b, plan.steps)
+    assert report.ok, report.problem
+    return start, b
+
+
 def test_the_goal_peel_puts_the_cells_built_after_a_hole_in_its_closure():
     goal = parallelogram(5, 5)
     rounds, closure, trios = dig.goal_peel(goal)
@@ -44,9 +64,7 @@ def test_a_hole_in_a_block_is_dug_and_filled_and_the_shape_stays_connected():
     # the void went out to where the flow can fill it, and the moves are legal
     voids = set(goal - tracker.occupied)
     assert len(voids) == 1 and not fillable(goal, voids)
-    report = check_plan(start, frozenset(tracker.occupied),
-                        pack_consecutive(start, tracker.moves))
-    assert report.ok, report.problem
+    assert_legal(start, tracker)
 
 
 def test_a_dig_that_walls_in_no_fewer_cells_is_taken_back():
@@ -75,15 +93,9 @@ def test_digs_plan_a_blob_of_300_the_journeys_alone_leave_stuck():
 
 def test_the_planner_plans_a_blob_of_300_locally_within_its_cap(monkeypatch):
     # blob 300, seed 1: one dig's modules cannot all park within 10 rotations;
-    # tried again at 15 they can, and the pair is local (1,366 moves, against
-    # the strip's 31,436)
-    a, b = make_pair("blob", 300, 1)
-    start = Configuration.from_cells(a)
-    plan = plan_robust(start, b)
-    assert plan.reached and plan.method == "local", (plan.method, plan.reason)
-    assert plan.move_count <= 8 * move_lower_bound(a, b).value
-    report = check_plan(start, b, plan.steps)
-    assert report.ok, report.problem
+    # tried again at 15 they can, and the pair is local (1,366-1,519 moves,
+    # against the strip's 31,436)
+    start, b = assert_planned_locally("blob", 300, 1, 8)
     # with one depth the first journey flow stalls
     monkeypatch.setattr(dig, "PARK_DEPTHS", (10,))
     with pytest.raises(PlanningFailure):
@@ -111,8 +123,7 @@ def test_a_walled_in_end_at_the_bottom_of_a_slot_is_dug_out():
     assert dig.dig_ends(tracker, goal, None, NO_LIMIT)
     occupied = tracker.occupied
     assert bottom not in occupied and not fillable(frozenset(occupied), occupied - goal)
-    report = check_plan(start, frozenset(occupied), pack_consecutive(start, tracker.moves))
-    assert report.ok, report.problem
+    assert_legal(start, tracker)
 
 
 def test_a_void_no_end_reaches_moves_towards_the_nearest_free_end():
@@ -129,21 +140,13 @@ def test_a_void_no_end_reaches_moves_towards_the_nearest_free_end():
     (moved_void,) = goal - tracker.occupied
     assert distance(moved_void, end) < distance(void, end)
     assert not fillable(goal, {moved_void})
-    report = check_plan(start, frozenset(tracker.occupied),
-                        pack_consecutive(start, tracker.moves))
-    assert report.ok, report.problem
+    assert_legal(start, tracker)
 
 
 def test_the_planner_plans_a_blob_of_1000_locally_within_five_times_the_bound():
     # blob 1,000, seed 2: 12 holes and 20 walled-in ends at the start; the
     # strip route's plan was 126 times the bound
-    a, b = make_pair("blob", 1000, 2)
-    start = Configuration.from_cells(a)
-    plan = plan_robust(start, b)
-    assert plan.reached and plan.method == "local", (plan.method, plan.reason)
-    assert plan.move_count <= 5 * move_lower_bound(a, b).value
-    report = check_plan(start, b, plan.steps)
-    assert report.ok, report.problem
+    assert_planned_locally("blob", 1000, 2, 5)
 
 
 def test_a_deep_hole_is_dug_before_the_flow_fills_its_closure():
@@ -155,9 +158,7 @@ def test_a_deep_hole_is_dug_before_the_flow_fills_its_closure():
     tracker = Tracker(start, 10**6)
     assert dig.dig_deep(tracker, goal, None, NO_LIMIT)
     assert deep in tracker.occupied
-    report = check_plan(start, frozenset(tracker.occupied),
-                        pack_consecutive(start, tracker.moves))
-    assert report.ok, report.problem
+    assert_legal(start, tracker)
     # a shallow hole is left to the flow's digs when it is stuck
     start = Configuration.from_cells((goal - {shallow}) | {(8, 0)})
     tracker = Tracker(start, 10**6)
