@@ -100,7 +100,7 @@ def dig_deep(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     first). A flow digs these before it fills anything: its fills would fill
     the closure, which then has too many modules to dig (``DIG_LIMIT``), and
     the modules dug out still have voids to go to."""
-    rounds, closure, _ = goal_peel(goal)
+    _, closure, _ = goal_peel(goal)
     holes = [h for h in fillable(goal, set(goal - tracker.occupied))
              if len(closure.get(h, ())) > DEEP]
     for hole in sorted(holes, key=lambda h: (-len(closure[h]), h)):
@@ -116,12 +116,12 @@ def check_depth(occupied: set[Cell], goal: frozenset[Cell], method: str) -> None
     cells than a dig may move: once the flow has filled them, no dig reaches
     the hole, and the flow would spend its whole time cap to stall on it."""
     _, closure, _ = goal_peel(goal)
-    holes = fillable(goal, set(goal - occupied))
-    deepest = max(holes, key=lambda h: (len(closure.get(h, goal)), h), default=None)
-    if deepest is not None and len(closure.get(deepest, goal)) - 1 > DIG_LIMIT:
-        raise PlanningFailure(
-            f"{method}: goal cell {deepest} is walled in {len(closure.get(deepest, goal)) - 1} "
-            f"cells deep, more than a dig moves ({DIG_LIMIT})")
+    # a hole the peel never reached needs the whole goal moved
+    depth = {h: len(closure.get(h, goal)) - 1 for h in fillable(goal, set(goal - occupied))}
+    deepest = max(depth, key=lambda h: (depth[h], h), default=None)
+    if deepest is not None and depth[deepest] > DIG_LIMIT:
+        raise PlanningFailure(f"{method}: goal cell {deepest} is walled in {depth[deepest]} "
+                              f"cells deep, more than a dig moves ({DIG_LIMIT})")
 
 
 def dig_ends(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
