@@ -48,11 +48,26 @@ import numpy as np
 from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import Cell, distance, neighbors
-from hexbot.planning.robust import _moves_from, _single_arc, fillable, is_cut, unwind
+from hexbot.planning.robust import (
+    _AROUND12,
+    _OPEN12,
+    _RULES,
+    _moves_from,
+    _single_arc,
+    fillable,
+    is_cut,
+    unwind,
+)
 from hexbot.planning.schedule import cells_of, schedule_parallel, stays_connected
 from hexbot.planning.surface import border_steps
 from hexbot.planning.tracker import Hop, Tracker
-from hexbot.planning.windows import _can_leave, _unwind, assigned_pairs, disc, distance_matrix
+from hexbot.planning.windows import (
+    _LEAVABLE,
+    _can_leave,
+    assigned_pairs,
+    disc,
+    distance_matrix,
+)
 
 #: Disc radii of a crossing, tried in turn, and the states one search may visit:
 #: a cheap pass over many candidate journeys first (most crossings need fewer
@@ -140,59 +155,128 @@ def _rolls(occupied: set[Cell], start: Cell) -> tuple[dict[Cell, tuple | None], 
     return parent, depth
 
 
-def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dict[Cell, int],
+class _Disc:
+    """A crossing's window around (0, 0), indexed once per radius: a window
+    state is an int with one bit per window cell (the cells in sorted order,
+    so ascending bits visit them as ``sorted`` does), the two rings around it
+    follow as the bits above. Translating the window keeps the order, so one
+    index serves every crossing of that radius."""
+
+    def __init__(self, radius: int):
+        window = sorted(disc((0, 0), radius))
+        inside = set(window)
+        rim = {n for c in window for n in neighbors(c)}
+        rim |= {n for c in rim for n in neighbors(c)}
+        self.cells = cells = window + sorted(rim - inside)
+        index = {c: i for i, c in enumerate(cells)}
+        self.size = len(window)
+        self.center = index[(0, 0)]
+        self.ring6 = [tuple(index[n] for n in neighbors(c)) for c in window]
+        self.ring12 = [tuple(index[(x + dx, y + dy)] for dx, dy in _AROUND12) for x, y in window]
+        self.near = [sum(1 << index[n] for n in (c, *neighbors(c))) for c in window]
+        goals = {goal for _, _, goal, _ in _RULES}
+        self.goal_bit = [{g: 1 << index[(x + g[0], y + g[1])] for g in goals
+                          if (x + g[0], y + g[1]) in inside} for x, y in window]
+
+
+_DISCS = {radius: _Disc(radius) for radius in CROSSING_RADII}
+
+
+def _leavable_bits(whole: int, ring: tuple[int, ...]) -> bool:
+    a, b, c, d, e, f = ring
+    return _LEAVABLE[(whole >> a & 1) | (whole >> b & 1) << 1 | (whole >> c & 1) << 2
+                     | (whole >> d & 1) << 3 | (whole >> e & 1) << 4 | (whole >> f & 1) << 5]
+
+
+def crossing(occupied: set[Cell], traveller: Cell, radius: int, steps: dict[Cell, int],
              fixed: Cell | None, max_states: int = CROSSING_STATES,
              failed: set | None = None) -> tuple[list[Hop], Cell] | None:
-    """Rotations inside ``window`` after which the window is as before except
-    that ``traveller``'s cell is empty and a cell ``q`` nearer the target
-    (``steps[q] < steps[traveller]``) is occupied: (hops, q), or None.
+    """Rotations inside the window of ``radius`` around ``traveller`` after which
+    the window is as before except that ``traveller``'s cell is empty and a cell
+    ``q`` nearer the target (``steps[q] < steps[traveller]``) is occupied:
+    (hops, q), or None.
 
     A* over the window's occupied cells (a state is accepted when generated,
     so the hops are few, not always the fewest); the estimate is the number of
-    the window's other modules not home yet (each needs a rotation). ``failed``
-    remembers the searches that found nothing: a flow asks the same question
-    again and again while the cells around a stuck module stay as they are."""
+    the window's other modules not home yet (each needs a rotation). States
+    are bit masks over the window (:class:`_Disc`). ``failed`` remembers the
+    searches that found nothing: a flow asks the same question again and
+    again while the cells around a stuck module stay as they are."""
+    geometry = _DISCS[radius]
+    cells, size = geometry.cells, geometry.size
+    tx, ty = traveller
+    absolute = [(tx + x, ty + y) for x, y in cells]
+    bits = [c in occupied for c in absolute]
+    start = sum(1 << i for i in range(size) if bits[i])
     # Only the modules within two cells of the window matter to its rotations.
-    rim = {n for c in window for n in neighbors(c)}
-    rim |= {n for c in rim for n in neighbors(c)}
-    outside = {c for c in rim - window if c in occupied}
-    start = frozenset(c for c in window if c in occupied)
-    home = start - {traveller}
+    outside = sum(1 << i for i in range(size, len(cells)) if bits[i])
     bound = steps.get(traveller, _FAR)
     if failed is not None:
-        question = (traveller, start, frozenset(outside), max_states, fixed,
-                    frozenset(c for c in window if steps.get(c, _FAR) < bound))
+        question = (traveller, start, outside, max_states, fixed,
+                    sum(1 << i for i in range(size) if steps.get(absolute[i], _FAR) < bound))
         if question in failed:
             return None
-    parent: dict[frozenset[Cell], tuple | None] = {start: None}
-    cost = {start: 0}
+    home = start & ~(1 << geometry.center)
+    pinned = 0
+    if fixed is not None:
+        pinned = sum(1 << i for i in range(size) if absolute[i] == fixed)
+    ring6, ring12, near = geometry.ring6, geometry.ring12, geometry.near
+    goal_bit = geometry.goal_bit
     whole = outside | start
     # Modules of a state that can leave their cell: a rotation changes this only
     # next to the two cells it touches, so a child state rechecks those alone.
-    movable = {start: frozenset(c for c in start if c != fixed and _can_leave(whole, c))}
+    movable = {start: sum(1 << i for i in range(size)
+                          if start >> i & 1 and _leavable_bits(whole, ring6[i])) & ~pinned}
+    parent: dict[int, tuple | None] = {start: None}
+    cost = {start: 0}
     heap = [(1, 0, start)]
     tie = 0
     while heap and len(parent) < max_states:
         _, _, state = heapq.heappop(heap)
         whole = outside | state
-        if state not in movable:  # worked out when expanded: most states never are
-            before, (src, dst, _, _) = parent[state]
-            movable[state] = _recheck(movable[before], whole, state, (src, dst), fixed)
+        free = movable.get(state)
+        if free is None:  # worked out when expanded: most states never are
+            before = parent[state][0]
+            changed = before ^ state
+            src = (changed & -changed).bit_length() - 1
+            dst = changed.bit_length() - 1
+            around = near[src] | near[dst]
+            free = movable[before] & ~around
+            check = around & state & ~pinned
+            while check:
+                low = check & -check
+                check ^= low
+                a, b, c, d, e, f = ring6[low.bit_length() - 1]
+                if _LEAVABLE[(whole >> a & 1) | (whole >> b & 1) << 1 | (whole >> c & 1) << 2
+                             | (whole >> d & 1) << 3 | (whole >> e & 1) << 4
+                             | (whole >> f & 1) << 5]:
+                    free |= low
+            movable[state] = free
         after_cost = cost[state] + 1
-        for cell in sorted(movable[state]):
-            for rule, sub, dst in _moves_from(cell, whole, cell):
-                if dst not in window:
+        while free:
+            low = free & -free
+            free ^= low
+            i = low.bit_length() - 1
+            a, b, c, d, e, f, g, h, j, k, m, n = ring12[i]
+            mask = ((whole >> a & 1) | (whole >> b & 1) << 1 | (whole >> c & 1) << 2
+                    | (whole >> d & 1) << 3 | (whole >> e & 1) << 4 | (whole >> f & 1) << 5
+                    | (whole >> g & 1) << 6 | (whole >> h & 1) << 7 | (whole >> j & 1) << 8
+                    | (whole >> k & 1) << 9 | (whole >> m & 1) << 10 | (whole >> n & 1) << 11)
+            goals = goal_bit[i]
+            for rule, sub, goal in _OPEN12[mask]:
+                target = goals.get(goal)
+                if target is None:  # outside the window
                     continue
-                after = (state - {cell}) | {dst}
+                after = state ^ low ^ target
                 if after in parent:
                     continue
-                parent[after] = (state, (cell, dst, rule, sub))
+                parent[after] = (state, i, target, rule, sub)
                 cost[after] = after_cost
-                away = len(home - after)
+                away = (home & ~after).bit_count()
                 if away == 0:
-                    (arrived,) = after - home
+                    arrived = absolute[(after & ~home).bit_length() - 1]
                     if steps.get(arrived, _FAR) < bound:
-                        return _unwind(parent, after), arrived
+                        return _hops(parent, after, absolute), arrived
                 tie += 1
                 heapq.heappush(heap, (after_cost + away + 1, tie, after))
     if failed is not None:
@@ -200,12 +284,14 @@ def crossing(occupied: set[Cell], traveller: Cell, window: set[Cell], steps: dic
     return None
 
 
-def _recheck(movable: frozenset[Cell], whole: set[Cell], state: frozenset[Cell],
-             changed: tuple[Cell, Cell], fixed: Cell | None) -> frozenset[Cell]:
-    src, dst = changed
-    near = {src, dst, *neighbors(src), *neighbors(dst)}
-    return (movable - near) | {c for c in near
-                               if c in state and c != fixed and _can_leave(whole, c)}
+def _hops(parent: dict, state: int, absolute: list[Cell]) -> list[Hop]:
+    """The rotations from the search's start to ``state``, in order."""
+    hops = []
+    while parent[state] is not None:
+        state, i, target, rule, (sx, sy) = parent[state]
+        x, y = absolute[i]
+        hops.append(((x, y), absolute[target.bit_length() - 1], rule, (x + sx, y + sy)))
+    return hops[::-1]
 
 
 def _apply(occupied: set[Cell], hops: list[Hop]) -> None:
@@ -236,8 +322,7 @@ def journey(occupied: set[Cell] | frozenset[Cell], start: Cell, target: Cell,
             hops += path
             here = best
         for radius in CROSSING_RADII:
-            found = crossing(occupied, here, disc(here, radius), steps, fixed, max_states,
-                             failed)
+            found = crossing(occupied, here, radius, steps, fixed, max_states, failed)
             if found:
                 path, here = found
                 _apply(occupied, path)

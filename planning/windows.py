@@ -28,12 +28,18 @@ from hexbot.planning.robust import _moves_from
 Hop = tuple[Cell, Cell, object, Cell]
 
 
+_DISC_OFFSETS: dict[int, tuple[Cell, ...]] = {}  # radius -> offsets, worked out once
+
+
 def disc(center: Cell, radius: int) -> set[Cell]:
     """The cells within ``radius`` of ``center``."""
+    offsets = _DISC_OFFSETS.get(radius)
+    if offsets is None:
+        offsets = _DISC_OFFSETS[radius] = tuple(
+            (dx, dy) for dx in range(-radius, radius + 1) for dy in range(-radius, radius + 1)
+            if distance((dx, dy), (0, 0)) <= radius)
     x0, y0 = center
-    return {(x0 + dx, y0 + dy)
-            for dx in range(-radius, radius + 1) for dy in range(-radius, radius + 1)
-            if distance((x0 + dx, y0 + dy), center) <= radius}
+    return {(x0 + dx, y0 + dy) for dx, dy in offsets}
 
 
 def corridor(a: Cell, b: Cell, radius: int) -> set[Cell]:
