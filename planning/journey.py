@@ -58,7 +58,7 @@ from hexbot.planning.robust import (
     is_cut,
     unwind,
 )
-from hexbot.planning.schedule import cells_of, schedule_parallel, stays_connected
+from hexbot.planning.schedule import cells_of, schedule_in_pieces, stays_connected
 from hexbot.planning.surface import border_steps
 from hexbot.planning.tracker import Hop, Tracker
 from hexbot.planning.windows import (
@@ -495,10 +495,9 @@ def relay(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline) -> None:
         legs += parts
     legs = _reorder(initial, legs, fixed, deadline, tracker.max_moves)
     _reroll(tracker, legs)
-    # The list schedule can jam on a reordered plan (then it packs the serial
-    # order, a far longer makespan): keep the relays only when they schedule.
-    relayed = schedule_parallel(initial, tracker.moves)
-    if relayed is None or len(relayed) > len(schedule_parallel(initial, serial) or serial):
+    # Keep the relays only when they schedule shorter (a reordered plan can jam
+    # the list schedule, and its pieces can then be longer).
+    if len(schedule_in_pieces(initial, tracker.moves)) > len(schedule_in_pieces(initial, serial)):
         _reroll(tracker, rolls)
 
 
@@ -911,8 +910,14 @@ def _candidates(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voi
                 continue
             touched = {c for x in (void, mover) for n in (x, *neighbors(x)) if n in end_group
                        for c in end_group[n]} - {mover}
-            shape = _Moved(occupied, mover, void)
-            walls_end = bool(fillable(shape, touched) - walled_ends) or (
+            # the shape after the fill: moved in place and back (a copy per
+            # candidate, or a wrapper answering each look-up, costs more)
+            occupied.discard(mover)
+            occupied.add(void)
+            walled = fillable(occupied, touched)
+            occupied.discard(void)
+            occupied.add(mover)
+            walls_end = bool(walled - walled_ends) or (
                 policy.guard_walled
                 and any(n in walled_ends and n != mover for n in neighbors(void)))
             free = sum(1 for n in neighbors(mover) if n not in occupied)
@@ -938,15 +943,3 @@ def _groups(cells: set[Cell]) -> dict[Cell, frozenset[Cell]]:
         for c in members:
             group[c] = members
     return group
-
-
-class _Moved:
-    """``occupied`` with one module moved from ``src`` to ``dst``, without a copy."""
-
-    __slots__ = ("occupied", "src", "dst")
-
-    def __init__(self, occupied: set[Cell], src: Cell, dst: Cell) -> None:
-        self.occupied, self.src, self.dst = occupied, src, dst
-
-    def __contains__(self, cell: Cell) -> bool:
-        return cell == self.dst or (cell != self.src and cell in self.occupied)

@@ -175,22 +175,25 @@ def fillable(goal: frozenset[Cell], voids: set[Cell]) -> set[Cell]:
     remaining = set(voids)
     queue = deque(remaining)  # the peel's result does not depend on its order
     queued = set(remaining)
+    pop, push, mark, unmark = queue.popleft, queue.append, queued.add, queued.discard
     while queue:
-        v = queue.popleft()
-        queued.discard(v)
+        v = pop()
+        unmark(v)
         if v not in remaining:
             continue
-        ring = neighbors(v)
-        mask = 0
-        for i, n in enumerate(ring):
-            if n in goal and (n in remaining or n not in voids):
-                mask |= 1 << i
-        if _RUN_FREE[mask]:
+        ring = a, b, c, d, e, f = neighbors(v)
+        # a side blocks when it is a goal cell filled before v (a module, or a void still here)
+        if _RUN_FREE[(a in goal and (a in remaining or a not in voids))
+                     | (b in goal and (b in remaining or b not in voids)) << 1
+                     | (c in goal and (c in remaining or c not in voids)) << 2
+                     | (d in goal and (d in remaining or d not in voids)) << 3
+                     | (e in goal and (e in remaining or e not in voids)) << 4
+                     | (f in goal and (f in remaining or f not in voids)) << 5]:
             remaining.discard(v)
             for n in ring:
                 if n in remaining and n not in queued:
-                    queue.append(n)
-                    queued.add(n)
+                    push(n)
+                    mark(n)
     return remaining
 
 

@@ -19,8 +19,14 @@ not the plan. The old scheduler rescanned up to a few hundred pending moves
 every step (quadratic-ish on the five-million-move strip plans of 10,000
 modules).
 
-If the schedule gets stuck (every ready move is a cut vertex), the serial
-order is packed greedily instead (:func:`pack_consecutive`, always possible).
+The list schedule can get stuck: moves that ran early (out of serial order)
+may leave every ready move a cut vertex. :func:`schedule_in_pieces` then
+schedules the two halves of the plan one after the other, and so on down
+where they jam again (a single move never jams: it is legal where the serial
+plan makes it), so parallelism is lost only at those barriers. Until session
+14 a jam packed the whole serial order greedily instead
+(:func:`pack_consecutive`, kept for tests: it never looks ahead), seven times
+the makespan on a blob of 1,000 (docs/planning.md, *Parallel schedule*).
 """
 
 from __future__ import annotations
@@ -255,17 +261,32 @@ def pack_consecutive(initial: Configuration, serial: list[Move],
     return steps
 
 
+def schedule_in_pieces(initial: Configuration, serial: list[Move],
+                       deadline: Deadline = NO_DEADLINE) -> list[Step]:
+    """The list schedule of ``serial``; where it gets stuck, the list schedules
+    of its halves, one after the other (recursively: the depth is at most
+    log2 of the plan's length, and a single move is always scheduled)."""
+    steps = schedule_parallel(initial, serial, deadline)
+    if steps is not None:
+        return steps
+    half = len(serial) // 2
+    first = schedule_in_pieces(initial, serial[:half], deadline)
+    occupied = set(initial.cells)
+    for move in serial[:half]:
+        occupied.discard(move.src)
+        occupied.add(move.dst)
+    middle = Configuration.from_cells(frozenset(occupied))
+    return first + schedule_in_pieces(middle, serial[half:], deadline)
+
+
 def schedule(initial: Configuration, serial: list[Move],
              deadline: Deadline = NO_DEADLINE) -> tuple[list[Step], str]:
     """Time steps for ``serial`` within ``deadline``, and a warning ("" if none).
 
-    The list schedule, or the greedy packing when it gets stuck; when the time
-    budget runs out first, one move per step (legal, but no parallelism)."""
+    The list schedule, in pieces where it gets stuck; when the time budget
+    runs out first, one move per step (legal, but no parallelism)."""
     try:
-        steps = schedule_parallel(initial, serial, deadline)
-        if steps is None:
-            steps = pack_consecutive(initial, serial, deadline)
-        return steps, ""
+        return schedule_in_pieces(initial, serial, deadline), ""
     except BudgetExhausted:
         return [Step([m]) for m in serial], (
             f"parallel schedule: the time budget of {deadline.seconds:.3g} s ran out, "

@@ -20,8 +20,10 @@ from __future__ import annotations
 from collections import deque
 from collections.abc import Iterable
 
-from hexbot.planning.hexlattice import Cell, neighbors
+from hexbot.planning.hexlattice import SIDE_OFFSETS, SIDES, Cell, neighbors
 from hexbot.planning.robust import _moves_from
+
+_OFFSETS = tuple(SIDE_OFFSETS[s] for s in SIDES)
 
 
 def rolling_distances(occupied: set[Cell] | frozenset[Cell],
@@ -56,17 +58,25 @@ def border_steps(occupied: set[Cell] | frozenset[Cell], target: Cell,
     journey's measure of progress: rolling and crossing inlets both move along
     the border. With ``stop``, the walk ends with the level that reaches it
     (a journey from ``stop`` only goes nearer)."""
+    (x1, y1), (x2, y2), (x3, y3), (x4, y4), (x5, y5), (x6, y6) = _OFFSETS
     dist = {target: 0}
+    away: set[Cell] = set()  # empty cells touching no module (looked at once)
     level = [target]
     while level and (stop is None or stop not in dist):
         following = []
         for cell in level:
             here = dist[cell] + 1
             for n in neighbors(cell):
-                if n in dist or n in occupied or not any(m in occupied for m in neighbors(n)):
+                if n in dist or n in occupied or n in away:
                     continue
-                dist[n] = here
-                following.append(n)
+                x, y = n
+                if ((x + x1, y + y1) in occupied or (x + x2, y + y2) in occupied
+                        or (x + x3, y + y3) in occupied or (x + x4, y + y4) in occupied
+                        or (x + x5, y + y5) in occupied or (x + x6, y + y6) in occupied):
+                    dist[n] = here
+                    following.append(n)
+                else:
+                    away.add(n)
         level = following
     return dist
 
