@@ -191,3 +191,37 @@ def test_a_local_change_of_1000_modules_is_planned_locally():
     assert len(plan.steps) <= 10 * step_bound(a, b).value
     report = check_plan(start, b, plan.steps)
     assert report.ok, report.problem
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_crossings_are_legal_and_leave_their_window_as_it_was_but_one_module_nearer(seed):
+    from hexbot.planning.robust import _moves_from, is_cut
+    from hexbot.planning.surface import border, border_steps
+    from hexbot.planning.windows import disc
+
+    occupied = set(make_pair("blob", 100, seed)[0])
+    targets = sorted(border(occupied))[::9]
+    found = 0
+    for traveller in sorted(occupied)[::3]:
+        if is_cut(occupied, traveller):
+            continue
+        for target in targets:
+            steps = border_steps(occupied - {traveller}, target)
+            for radius in journeys.CROSSING_RADII:
+                result = journeys.crossing(occupied, traveller, radius, steps, None)
+                if result is None:
+                    continue
+                hops, arrived = result
+                after = set(occupied)
+                for src, dst, rule, sub in hops:
+                    assert src in after and dst not in after
+                    assert (rule, sub, dst) in _moves_from(src, after, src)
+                    after.discard(src)
+                    after.add(dst)
+                    assert is_connected(after)
+                    assert {src, dst} <= disc(traveller, radius)
+                assert after == (occupied - {traveller}) | {arrived}
+                assert steps[arrived] < steps.get(traveller, float("inf"))
+                found += 1
+    assert found >= 20
+
