@@ -374,8 +374,10 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
         deadline.check(method)
         occupied = tracker.occupied
         voids = set(goal - occupied)
-        if not voids:  # the relays get their own time: the flow has planned
-            relay(tracker, goal, fixed, deadline.capped(relay_seconds(len(occupied))))
+        if not voids:  # the relays get their own allowance: the flow has planned
+            relay(tracker, goal, fixed, _Allowance(
+                relay_journeys(len(occupied)),
+                deadline.capped(relay_seconds(len(occupied)))))
             return
         ends = occupied - goal
         ranked = _candidates(occupied, goal, ends, voids, fixed, policy)
@@ -462,13 +464,37 @@ def _around(occupied: set[Cell], cell: Cell) -> frozenset[Cell]:
     return frozenset(c for c in disc(cell, SAME_AROUND) if c in occupied)
 
 
+def relay_journeys(count: int) -> int:
+    """Journeys the relays and reversed runs of a finished flow may plan
+    (:func:`relay`). A count, not seconds, so that a pair gets the same plan
+    in every run and on every machine: with a CPU-time cap two runs of blob
+    1,000 seed 2 gave 5,088 and 5,112 moves. 1,000 at 1,000 modules, about
+    the 3.5 s the cap gave (999-1,673 journeys on the bench's blobs); the
+    scrambles of 300 and 1,000 but seed 2 need 76-276."""
+    return 250 + 3 * count // 4
+
+
 def relay_seconds(count: int) -> float:
-    """CPU time the relays and reversed runs of a finished flow may take
-    (:func:`relay`): 1.4-2.1 s on the 1,000-module bench scrambles."""
-    return 1.0 + count / 400
+    """CPU time after which the relays stop even if journeys are left: a net
+    for slow machines, about twice what ``relay_journeys`` takes here."""
+    return 2.0 + count / 150
 
 
-def relay(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline) -> None:
+class _Allowance:
+    """Journeys the relays may still plan, and the time net around them."""
+
+    def __init__(self, journeys: int, deadline) -> None:
+        self.left, self.deadline = journeys, deadline
+
+    def expired(self) -> bool:
+        return self.left <= 0 or self.deadline.expired()
+
+    def journey(self, *args, **kwargs) -> list[Hop] | None:
+        self.left -= 1
+        return journey(*args, **kwargs)
+
+
+def relay(tracker, goal: frozenset[Cell], fixed: Cell | None, allowance: _Allowance) -> None:
     """Split the long journeys of a finished flow into relays, for a shorter makespan.
 
     A journey takes one module from a cell ``E`` to a void ``V`` and leaves every
@@ -486,19 +512,41 @@ def relay(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline) -> None:
     serial = list(tracker.moves)
     tracker.undo_to(0)
     initial = Configuration.from_cells(tracker.occupied)
-    occupied = set(tracker.occupied)
-    legs: list[list[Hop]] = []
-    for hops in rolls:
-        parts = [hops] if deadline.expired() else _split(occupied, hops, goal, fixed, RELAY_DEPTH)
-        for part in parts:
-            _apply(occupied, part)
-        legs += parts
-    legs = _reorder(initial, legs, fixed, deadline, tracker.max_moves)
+    parts = [[hops] for hops in rolls]  # each roll's legs
+    split = [len(hops) <= RELAY_LONG for hops in rolls]  # tried already, or short
+    # The journeys on the critical path first (it changes as they split), then
+    # the others in order, while journeys are left to plan.
+    while not allowance.expired():
+        legs = [leg for legs in parts for leg in legs]
+        owner = [r for r, legs in enumerate(parts) for _ in legs]
+        _reroll(tracker, legs)
+        _, chain = _critical_path(tracker.moves, tracker.rolls)
+        todo = {owner[leg] for leg in chain} - {r for r, done in enumerate(split) if done}
+        if not todo:
+            break
+        _split_rolls(initial, rolls, parts, split, todo, goal, fixed, allowance)
+    _split_rolls(initial, rolls, parts, split, set(range(len(rolls))), goal, fixed, allowance)
+    legs = _reorder(initial, [leg for legs in parts for leg in legs], fixed, allowance,
+                    tracker.max_moves)
     _reroll(tracker, legs)
     # Keep the relays only when they schedule shorter (a reordered plan can jam
     # the list schedule, and its pieces can then be longer).
     if len(schedule_in_pieces(initial, tracker.moves)) > len(schedule_in_pieces(initial, serial)):
         _reroll(tracker, rolls)
+
+
+def _split_rolls(initial: Configuration, rolls: list[list[Hop]], parts: list[list[list[Hop]]],
+                 split: list[bool], which: set[int], goal: frozenset[Cell], fixed: Cell | None,
+                 allowance: _Allowance) -> None:
+    """Split the rolls in ``which`` not tried yet into relay legs (``parts``).
+    A roll's legs end where the roll does, so the cells before each roll are
+    the same whichever rolls are split."""
+    occupied = set(initial.cells)
+    for r, hops in enumerate(rolls):
+        if r in which and not split[r] and not allowance.expired():
+            split[r] = True
+            parts[r] = _split(occupied, hops, goal, fixed, RELAY_DEPTH, allowance)
+        _apply(occupied, hops)
 
 
 def _reroll(tracker, rolls: list[list[Hop]]) -> None:
@@ -507,7 +555,8 @@ def _reroll(tracker, rolls: list[list[Hop]]) -> None:
         tracker.roll(hops)
 
 
-def _reorder(initial: Configuration, rolls: list[list[Hop]], fixed: Cell | None, deadline,
+def _reorder(initial: Configuration, rolls: list[list[Hop]], fixed: Cell | None,
+             allowance: _Allowance,
              max_moves: int) -> list[list[Hop]]:
     """Reverse runs of ``REORDER_RUN`` journeys or fewer on the critical path
     when that shortens it. A journey rolls over the cells the one before it
@@ -520,14 +569,14 @@ def _reorder(initial: Configuration, rolls: list[list[Hop]], fixed: Cell | None,
     best, chain = _critical_path(tracker.moves, tracker.rolls)
     tried: set[tuple[int, int]] = set()
     improved = True
-    while improved and not deadline.expired():
+    while improved and not allowance.expired():
         improved = False
         for index in sorted(chain):
             for first, last in _runs_around(index, len(rolls)):
-                if (first, last) in tried or deadline.expired():
+                if (first, last) in tried or allowance.expired():
                     continue
                 tried.add((first, last))
-                reversed_run = _reversed(initial, rolls, first, last, fixed)
+                reversed_run = _reversed(initial, rolls, first, last, fixed, allowance)
                 if reversed_run is None:
                     continue
                 trial = rolls[:first] + reversed_run + rolls[last:]
@@ -550,7 +599,7 @@ def _runs_around(index: int, count: int):
 
 
 def _reversed(initial: Configuration, rolls: list[list[Hop]], first: int, last: int,
-              fixed: Cell | None) -> list[list[Hop]] | None:
+              fixed: Cell | None, allowance: _Allowance) -> list[list[Hop]] | None:
     """Rolls ``first:last`` planned again in reverse order (None if one is no journey)."""
     occupied = set(initial.cells)
     for hops in rolls[:first]:
@@ -564,7 +613,7 @@ def _reversed(initial: Configuration, rolls: list[list[Hop]], first: int, last: 
     for src, dst in reversed(moved):
         if is_cut(occupied, src):
             return None
-        hops = journey(occupied, src, dst, fixed, CHEAP_STATES)
+        hops = allowance.journey(occupied, src, dst, fixed, CHEAP_STATES)
         if not hops:
             return None
         _apply(occupied, hops)
@@ -612,7 +661,7 @@ def _critical_path(moves: list, starts: list[int]) -> tuple[int, set[int]]:
 
 
 def _split(occupied: set[Cell], hops: list[Hop], goal: frozenset[Cell], fixed: Cell | None,
-           depth: int) -> list[list[Hop]]:
+           depth: int, allowance: _Allowance) -> list[list[Hop]]:
     """``hops`` as relay legs (itself when it is short, not one journey, or no leg helps)."""
     moved = _moved_cells(hops)
     if len(hops) <= RELAY_LONG or not depth or moved is None:
@@ -623,20 +672,22 @@ def _split(occupied: set[Cell], hops: list[Hop], goal: frozenset[Cell], fixed: C
               if n in occupied and n in goal and n not in (traveller, fixed)}
     ranked = sorted(beside, key=lambda c: (abs(distance(c, traveller) - distance(c, void)), c))
     for helper in ranked[:RELAY_TRIES]:
+        if allowance.expired():
+            break
         if is_cut(occupied, helper):
             continue
-        first = journey(occupied, helper, void, fixed)
+        first = allowance.journey(occupied, helper, void, fixed)
         if not first or len(first) >= RELAY_GAIN * len(hops):
             continue
         after = set(occupied)
         _apply(after, first)
         if is_cut(after, traveller):
             continue
-        second = journey(after, traveller, helper, fixed)
+        second = allowance.journey(after, traveller, helper, fixed)
         if not second or len(second) >= RELAY_GAIN * len(hops):
             continue
-        return (_split(occupied, first, goal, fixed, depth - 1)
-                + _split(after, second, goal, fixed, depth - 1))
+        return (_split(occupied, first, goal, fixed, depth - 1, allowance)
+                + _split(after, second, goal, fixed, depth - 1, allowance))
     return [hops]
 
 
