@@ -54,6 +54,25 @@ DIG_SIZE = 1000
 DIG_SECONDS = 30.0
 
 
+#: A pair where fewer than this share of the modules keep their cell is a
+#: global change (a walk to a new place, a rebuild), not what the local method
+#: is for: it gets ``GLOBAL_SECONDS``. On goals one column apart from the start
+#: (``hexbot bench planning --cases``, "apart") its flows planned the pairs of
+#: 10 modules in 0.1-0.6 s each and spent their whole cap failing at 30 and
+#: 100 (16 and 30 s) before the middle ball planned in 0.07-0.8 s. The bench's
+#: pairs keep 30 % of their cells or more (blobs of 10).
+GLOBAL_SHARE = 0.25
+GLOBAL_SECONDS = 2.0
+
+
+def local_cap(initial: Configuration, goal: frozenset[Cell]) -> float:
+    """The local method's time cap for this pair: ``local_seconds``, or
+    ``GLOBAL_SECONDS`` for a global change."""
+    if len(initial.cells & goal) < GLOBAL_SHARE * len(initial):
+        return min(GLOBAL_SECONDS, local_seconds(len(initial)))
+    return local_seconds(len(initial))
+
+
 def local_seconds(count: int) -> float:
     """The local method's own time cap. Up to ``LOCAL_LIMIT`` modules its
     successes take seconds and its failures can search for minutes. Above

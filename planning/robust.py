@@ -512,7 +512,7 @@ def plan_robust(
     up.
     """
     from hexbot.planning.canonical import replay, via_strip
-    from hexbot.planning.local import JOURNEY_LIMIT, LOCAL_LIMIT, local_seconds, via_local
+    from hexbot.planning.local import JOURNEY_LIMIT, LOCAL_LIMIT, local_cap, via_local
     from hexbot.planning.middle import via_middle
     from hexbot.planning.tidy import shorten
 
@@ -534,7 +534,7 @@ def plan_robust(
         methods.append(("direct, backwards", lambda d: reversed_plan(
             initial, goal, max_moves, fixed, searches, deadline=d.capped(direct_seconds(n)))))
     local = ("local", lambda d: via_local(
-        initial, goal, max_moves, fixed, deadline=d.capped(local_seconds(n))))
+        initial, goal, max_moves, fixed, deadline=d.capped(local_cap(initial, goal))))
     # Small: the direct plans are the shortest when they exist. Large: the direct
     # methods planned none of the bench pairs, the journey flows most scrambles.
     if n <= JOURNEY_LIMIT:

@@ -101,3 +101,24 @@ def test_robust_mode_takes_the_local_method_where_direct_stalls():
     plan = plan_robust(Configuration.from_cells(a), b)
     assert plan.reached and plan.method == "local", (plan.method, plan.reason)
     assert plan.move_count <= 3 * move_lower_bound(a, b).value
+
+
+def test_a_goal_apart_from_the_start_is_a_global_change_with_a_short_local_cap():
+    # a walk to a place one column away: no module keeps its cell; the local
+    # flows spent their whole cap (16 s at 30 modules) failing before the
+    # middle ball planned in a fraction of a second
+    from hexbot.bench.planning import apart
+    from hexbot.planning.generate import random_blob
+    from hexbot.planning.local import GLOBAL_SECONDS, local_cap, local_seconds
+
+    a = frozenset(random_blob(30, 0, 0.8))
+    b = apart(a, frozenset(random_blob(30, 1, 0.8)))
+    start = Configuration.from_cells(a)
+    assert local_cap(start, b) == GLOBAL_SECONDS < local_seconds(30)
+    plan = plan_robust(start, b)
+    assert plan.reached and plan.method == "middle ball"
+    assert check_plan(start, b, plan.steps).ok
+    # the bench's pairs are local changes: they keep their cap
+    for family, n, seed in [("blob", 10, 2), ("blob", 30, 3), ("scramble", 100, 0)]:
+        initial, goal = make_pair(family, n, seed)
+        assert local_cap(Configuration.from_cells(initial), goal) == local_seconds(n)
