@@ -52,6 +52,7 @@ from hexbot.planning.robust import (
     _AROUND12,
     _OPEN12,
     _RULES,
+    Peel,
     _moves_from,
     _single_arc,
     fillable,
@@ -938,18 +939,16 @@ def _candidates(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voi
     """(rank, end, void): per void its assigned end and the nearest others; fills
     that wall in nothing first, then those walling in an end, then a void.
 
-    Peeling is local: cells of two groups that do not touch never block each
-    other, so each check peels only the groups next to what the fill changes."""
-    walled_voids = fillable(goal, voids)
-    walled_ends = fillable(frozenset(occupied), set(ends))
-    void_group, end_group = _groups(voids), _groups(ends)
+    Each check peels again only what the fill changes (:class:`Peel`)."""
+    void_peel, end_peel = Peel(goal, voids), Peel(frozenset(occupied), set(ends))
+    walled_voids, walled_ends = void_peel.left, end_peel.left
     ranked = []
     by_end, by_void = sorted(ends), sorted(voids)
     cost = distance_matrix(by_end, by_void)
     column = {v: j for j, v in enumerate(by_void)}
     free_rows = np.array([i for i, e in enumerate(by_end) if e not in walled_ends], dtype=np.int64)
     for _, end, void in assigned_pairs(ends, voids, cost):
-        walls_void = bool(fillable(goal, void_group[void] - {void}) - walled_voids)
+        walls_void = bool(void_peel.after(goal, voids - {void}, (void,)) - walled_voids)
         far = cost[:, column[void]]
         nearest = [by_end[i] for i in np.argsort(far, kind="stable")[:NEAREST_ENDS]]
         # and the nearest that can leave at all: the nearest are often walled in
@@ -959,13 +958,11 @@ def _candidates(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voi
         for mover in sorted({end, *nearest}):
             if mover == fixed:
                 continue
-            touched = {c for x in (void, mover) for n in (x, *neighbors(x)) if n in end_group
-                       for c in end_group[n]} - {mover}
             # the shape after the fill: moved in place and back (a copy per
             # candidate, or a wrapper answering each look-up, costs more)
             occupied.discard(mover)
             occupied.add(void)
-            walled = fillable(occupied, touched)
+            walled = end_peel.after(occupied, ends - {mover}, (void, mover))
             occupied.discard(void)
             occupied.add(mover)
             walls_end = bool(walled - walled_ends) or (

@@ -243,3 +243,29 @@ def test_crossings_are_legal_and_leave_their_window_as_it_was_but_one_module_nea
                 found += 1
     assert found >= 20
 
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_a_peel_asked_after_a_change_agrees_with_peeling_again(seed):
+    # the journey flow asks, per candidate fill, which voids and ends the fill
+    # walls in; Peel re-peels only what the changed cells had freed
+    import random
+
+    from hexbot.planning.robust import Peel
+
+    rng = random.Random(seed)
+    a, b = make_pair("blob", 300, seed)
+    occupied = set(a)
+    for cell in rng.sample(sorted(b - a), len(b - a) // 3):
+        occupied.add(cell)
+    voids, ends = set(b - occupied), occupied - b
+    peel = Peel(b, voids)
+    assert peel.left == fillable(b, voids)
+    for void in sorted(voids):
+        assert peel.after(b, voids - {void}, (void,)) == fillable(b, voids - {void})
+    shape = frozenset(occupied)
+    peel = Peel(shape, ends)
+    for mover in sorted(ends)[::4]:
+        for void in sorted(voids)[::5]:
+            after, rest = (shape - {mover}) | {void}, ends - {mover}
+            assert peel.after(after, rest, (void, mover)) == fillable(after, rest)
