@@ -505,8 +505,9 @@ def relay(tracker, goal: frozenset[Cell], fixed: Cell | None, allowance: _Allowa
     but the two legs run side by side in the schedule (they touch only at
     ``G``'s cell, which the first leg leaves at once), so the makespan goes
     from the whole route towards half of it, and the legs are often shorter
-    than the whole. Measured in docs/planning.md ("Relays"). Stops, keeping
-    what it split, when ``deadline`` passes: it only shortens a finished plan."""
+    than the whole. Measured in docs/planning.md ("Relays"). The journeys of
+    the critical path are split first; stops, keeping what it split, when
+    ``allowance`` is spent: it only shortens a finished plan."""
     rolls = tracker.rolled()
     if not any(len(hops) > RELAY_LONG for hops in rolls):
         return
@@ -557,8 +558,7 @@ def _reroll(tracker, rolls: list[list[Hop]]) -> None:
 
 
 def _reorder(initial: Configuration, rolls: list[list[Hop]], fixed: Cell | None,
-             allowance: _Allowance,
-             max_moves: int) -> list[list[Hop]]:
+             allowance: _Allowance, max_moves: int) -> list[list[Hop]]:
     """Reverse runs of ``REORDER_RUN`` journeys or fewer on the critical path
     when that shortens it. A journey rolls over the cells the one before it
     filled, so a run of fills in one place is a chain; in reverse order each
