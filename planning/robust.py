@@ -180,12 +180,16 @@ def fillable(goal: frozenset[Cell], voids: set[Cell]) -> set[Cell]:
     return _peel(goal, voids, set(voids))
 
 
-def _peel(goal, voids, remaining: set[Cell], freed: dict | None = None) -> set[Cell]:
+def _peel(goal, voids, remaining: set[Cell], freed: dict | None = None,
+          first: set[Cell] | None = None) -> set[Cell]:
     """The peel of :func:`fillable` from ``remaining`` (the voids not known to
-    peel; the others count as peeled). With ``freed``, each peeled void is
-    listed under the three cells of the run of sides that freed it."""
-    queue = deque(remaining)  # the peel's result does not depend on its order
-    queued = set(remaining)
+    peel; the others count as peeled), looking first at ``first`` (all of
+    ``remaining`` by default; a cell is looked at again when a neighbour
+    peels). With ``freed``, each peeled void is listed under the three cells
+    of the run of sides that freed it."""
+    first = remaining if first is None else first
+    queue = deque(first)  # the peel's result does not depend on its order
+    queued = set(first)
     pop, push, mark, unmark = queue.popleft, queue.append, queued.add, queued.discard
     while queue:
         v = pop()
@@ -236,7 +240,11 @@ class Peel:
                 if v not in again:
                     again.add(v)
                     stack.append(v)
-        return _peel(goal, voids, (again | self.left) & voids)
+        # a cell left stuck can peel now only next to a changed cell, or once
+        # a neighbour peels (which looks at it again)
+        stuck = self.left & voids
+        near = {n for c in changed for n in (c, *neighbors(c))} & stuck
+        return _peel(goal, voids, (again & voids) | stuck, first=(again & voids) | near)
 
 
 def _allowed(goal: frozenset[Cell], void: Cell, pending: set[Cell]) -> bool:
