@@ -44,7 +44,7 @@ from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.flow import _enterable
 from hexbot.planning.hexlattice import Cell, distance, neighbors
 from hexbot.planning.journey import CROSSING_STATES, _rolls, journey
-from hexbot.planning.robust import _free_run, fillable, is_cut, unwind
+from hexbot.planning.robust import Peel, _free_run, fillable, is_cut, unwind
 from hexbot.planning.windows import _can_leave, disc
 
 #: Digs one flow may make; modules one dig may park.
@@ -159,14 +159,14 @@ def sweep(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voids: se
     voids that can be entered now (the flow's ranked candidates pair voids with
     their nearest ends, which are often walled in), fills that wall nothing in
     first, then the shortest. The hops, or None."""
-    walled = fillable(goal, voids)
+    peel = Peel(goal, voids)
     open_voids = [v for v in sorted(voids) if _enterable(occupied, v)]
     tries = []
     for end in sorted(ends):
         if end == fixed or not _can_leave(occupied, end) or is_cut(occupied, end):
             continue
         for void in sorted(open_voids, key=lambda v: (distance(end, v), v))[:SWEEP_VOIDS]:
-            walls = bool(fillable(goal, voids - {void}) - walled)
+            walls = peel.walls_in(goal, voids, void)
             tries.append((walls, distance(end, void), end, void))
     for _, _, end, void in sorted(tries):
         hops = journey(occupied, end, void, fixed, CROSSING_STATES, failed)
@@ -448,12 +448,11 @@ def _to_void(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, avoid: set[
     off ``avoid`` whose fill walls in no other void, or None."""
     parent, depth = _rolls(occupied, cell)
     voids = set(goal - occupied)
-    walled = None
+    peel = None
     for p in sorted((p for p in parent if p in voids and p not in avoid
                      and depth[p] <= VOID_DEPTH), key=lambda p: (depth[p], p)):
-        if walled is None:
-            walled = fillable(goal, voids)
-        if not fillable(goal, voids - {p}) - walled:
+        peel = peel or Peel(goal, voids)
+        if not peel.walls_in(goal, voids, p):
             return unwind(parent, p), p
     return None
 

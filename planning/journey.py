@@ -897,10 +897,9 @@ def _hand_over(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], void
 
 
 def _safe_voids(goal: frozenset[Cell], voids: set[Cell]) -> set[Cell]:
-    """The voids whose fill walls in no other void (peeled per group of voids)."""
-    walled = fillable(goal, voids)
-    group = _groups(voids)
-    return {v for v in voids if not fillable(goal, group[v] - {v}) - walled}
+    """The voids whose fill walls in no other void."""
+    peel = Peel(goal, voids)
+    return {v for v in voids if not peel.walls_in(goal, voids, v)}
 
 
 def _take_place(occupied: set[Cell], end: Cell, side: Cell, voids: set[Cell],
@@ -941,14 +940,14 @@ def _candidates(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voi
 
     Each check peels again only what the fill changes (:class:`Peel`)."""
     void_peel, end_peel = Peel(goal, voids), Peel(frozenset(occupied), set(ends))
-    walled_voids, walled_ends = void_peel.left, end_peel.left
+    walled_ends = end_peel.left
     ranked = []
     by_end, by_void = sorted(ends), sorted(voids)
     cost = distance_matrix(by_end, by_void)
     column = {v: j for j, v in enumerate(by_void)}
     free_rows = np.array([i for i, e in enumerate(by_end) if e not in walled_ends], dtype=np.int64)
     for _, end, void in assigned_pairs(ends, voids, cost):
-        walls_void = bool(void_peel.after(goal, voids - {void}, (void,)) - walled_voids)
+        walls_void = void_peel.walls_in(goal, voids, void)
         far = cost[:, column[void]]
         nearest = [by_end[i] for i in np.argsort(far, kind="stable")[:NEAREST_ENDS]]
         # and the nearest that can leave at all: the nearest are often walled in
@@ -973,21 +972,3 @@ def _candidates(occupied: set[Cell], goal: frozenset[Cell], ends: set[Cell], voi
                             distance(mover, void) + policy.spread * free), mover, void))
     ranked.sort()
     return ranked
-
-
-def _groups(cells: set[Cell]) -> dict[Cell, frozenset[Cell]]:
-    """Each cell's group: the cells connected to it through neighbours in ``cells``."""
-    group: dict[Cell, frozenset[Cell]] = {}
-    for cell in sorted(cells):
-        if cell in group:
-            continue
-        seen, queue = {cell}, deque([cell])
-        while queue:
-            for n in neighbors(queue.popleft()):
-                if n in cells and n not in seen:
-                    seen.add(n)
-                    queue.append(n)
-        members = frozenset(seen)
-        for c in members:
-            group[c] = members
-    return group

@@ -125,15 +125,14 @@ def _moves_from(cell: Cell, occupied: set[Cell], mover: Cell):
             for rule, (sx, sy), (gx, gy) in _OPEN12[mask]]
 
 
-#: Per ring mask (bit i = side i + 1 blocked): three sides in a row free?
-_RUN_FREE = tuple(any(not mask >> i & 1 and not mask >> (i + 1) % 6 & 1
-                      and not mask >> (i + 2) % 6 & 1 for i in range(6))
-                  for mask in range(64))
-#: The same per mask: the first side of the first such run, or -1.
+#: Per ring mask (bit i = side i + 1 blocked): the first side of the first
+#: run of three free sides in a row, or -1.
 _FIRST_FREE_RUN = tuple(next((i for i in range(6) if not mask >> i & 1
                               and not mask >> (i + 1) % 6 & 1
                               and not mask >> (i + 2) % 6 & 1), -1)
                         for mask in range(64))
+#: The same per mask: is there such a run?
+_RUN_FREE = tuple(run >= 0 for run in _FIRST_FREE_RUN)
 
 
 def _free_run(blocked: set[Cell] | frozenset[Cell], cell: Cell) -> bool:
@@ -245,6 +244,11 @@ class Peel:
         stuck = self.left & voids
         near = {n for c in changed for n in (c, *neighbors(c))} & stuck
         return _peel(goal, voids, (again & voids) | stuck, first=(again & voids) | near)
+
+    def walls_in(self, goal, voids: set[Cell], void: Cell) -> bool:
+        """Does filling ``void`` (one of this peel's voids) leave another void
+        that could be entered before unenterable?"""
+        return bool(self.after(goal, voids - {void}, (void,)) - self.left)
 
 
 def _allowed(goal: frozenset[Cell], void: Cell, pending: set[Cell]) -> bool:
