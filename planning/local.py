@@ -49,7 +49,7 @@ LOCAL_LIMIT = 150
 JOURNEY_LIMIT = 2000
 #: Up to this many modules (above ``LOCAL_LIMIT``) the local method may take
 #: ``DIG_SECONDS`` of CPU time, for its digs (the bench's slowest blob of
-#: 1,000 takes 14.4 s).
+#: 1,000 takes 8.4 s, blob seed 6 beyond the bench 16.5 s).
 DIG_SIZE = 1000
 DIG_SECONDS = 30.0
 
@@ -79,7 +79,7 @@ def local_seconds(count: int) -> float:
     ``DIG_SIZE`` (1 s + n/400) the cap keeps a failure from spending the
     strip's time; the local method is not tried above ``JOURNEY_LIMIT``.
     Up to ``DIG_SIZE`` modules it is ``DIG_SECONDS``:
-    the digs plan the blobs of 300 in 4-11 s and those of 1,000 in 10-18 s,
+    the digs plan the blobs of 300 in 3-9 s and those of 1,000 in 6-17 s,
     where the strip's plans are 9-46 (300) and 126-176 (1,000) times longer
     in moves: a plan that takes hours less to carry out is worth the
     seconds (docs/planning.md, "Digs")."""
