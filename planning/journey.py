@@ -40,6 +40,7 @@ traveller the second, and the schedule runs both legs at once.
 from __future__ import annotations
 
 import heapq
+from bisect import bisect_right
 from collections import deque
 from dataclasses import dataclass
 
@@ -59,7 +60,7 @@ from hexbot.planning.robust import (
     is_cut,
     unwind,
 )
-from hexbot.planning.schedule import cells_of, schedule_in_pieces, stays_connected
+from hexbot.planning.schedule import critical_chain, schedule_in_pieces, stays_connected
 from hexbot.planning.surface import border_steps
 from hexbot.planning.tracker import Hop, Tracker
 from hexbot.planning.windows import (
@@ -623,42 +624,10 @@ def _reversed(initial: Configuration, rolls: list[list[Hop]], first: int, last: 
 
 
 def _critical_path(moves: list, starts: list[int]) -> tuple[int, set[int]]:
-    """Length of the longest chain of moves that share a cell, a substrate or a
-    module (serial order), and the rolls on it: the schedule's dependencies,
-    without its connectivity hold-ups."""
-    roll_of = [0] * len(moves)
-    for index, begin in enumerate(starts):
-        end = starts[index + 1] if index + 1 < len(starts) else len(moves)
-        roll_of[begin:end] = [index] * (end - begin)
-    level: list[int] = []
-    before: list[int | None] = []
-    last_at: dict[Cell, int] = {}
-    last_of: dict[int, int] = {}
-    for k, move in enumerate(moves):
-        depth, parent = 0, None
-        j = last_of.get(move.module)
-        if j is not None:
-            depth, parent = level[j] + 1, j
-        cells = (*cells_of(move), move.substrate)
-        for cell in cells:
-            j = last_at.get(cell)
-            if j is not None and level[j] + 1 > depth:
-                depth, parent = level[j] + 1, j
-        level.append(depth)
-        before.append(parent)
-        for cell in cells:
-            j = last_at.get(cell)
-            if j is None or level[j] <= depth:
-                last_at[cell] = k
-        last_of[move.module] = k
-    if not moves:
-        return 0, set()
-    k: int | None = max(range(len(moves)), key=level.__getitem__)
-    on_path = set()
-    while k is not None:
-        on_path.add(roll_of[k])
-        k = before[k]
-    return max(level) + 1, on_path
+    """Length of the schedule's longest chain of dependent moves
+    (:func:`~hexbot.planning.schedule.critical_chain`) and the rolls on it."""
+    length, chain = critical_chain(moves)
+    return length, {bisect_right(starts, k) - 1 for k in chain}
 
 
 def _split(occupied: set[Cell], hops: list[Hop], goal: frozenset[Cell], fixed: Cell | None,

@@ -18,7 +18,10 @@ from hexbot.planning.checker import check_plan, pieces, still_one_piece
 from hexbot.planning.configuration import Configuration, articulation_points, is_connected
 from hexbot.planning.generate import random_blob
 from hexbot.planning.hexlattice import neighbors
+from hexbot.planning.moves import Move
 from hexbot.planning.schedule import (
+    bottom_levels,
+    critical_chain,
     pack_consecutive,
     schedule,
     schedule_parallel,
@@ -99,6 +102,42 @@ def test_a_jammed_list_schedule_runs_in_pieces_far_shorter_than_serial_packing(m
     assert report.ok, report.problem
     # 338 steps against 704 when a jam packed the serial order (session 13)
     assert 2 * len(steps) < len(pack_consecutive(start, serial))
+
+
+def test_two_rolls_sweeping_one_empty_cell_keep_no_order_but_never_share_a_step():
+    # Module a rolls before module b in the serial plan and both sweep the
+    # empty cell (-2, 1): neither changes what the other needs, so b, whose
+    # chain is longer, goes first and a rolls beside b's second move. When
+    # swept cells counted as changed, a held b back: three steps.
+    start = Configuration.from_cells(frozenset(
+        [(-1, 0), (-1, 1), (0, -1), (0, 0), (0, 1), (1, -2), (1, -1), (1, 0)]))
+    ids = {cell: module.id for cell, module in start.items()}
+
+    def move(src, dst, joint, direction, substrate, who=None):
+        return Move(ids[who or src], src, dst, joint, direction, substrate, ids[substrate])
+
+    a = move((-1, 0), (-1, -1), 5, "CCW", (0, -1))
+    b = move((-1, 1), (-1, 2), 3, "CW", (0, 1))
+    b_again = move((-1, 2), (0, 2), 4, "CW", (0, 1), who=(-1, 1))
+    assert set(a.swept()) & set(b.swept())  # the cell both need empty
+    serial = [a, b, b_again]
+    steps = schedule_parallel(start, serial)
+    assert [step.moves for step in steps] == [[b], [a, b_again]]
+    goal = frozenset(start.cells - {(-1, 0), (-1, 1)} | {(-1, -1), (0, 2)})
+    assert check_plan(start, goal, steps).ok
+    assert list(bottom_levels(serial)) == [1, 2, 1]
+    assert critical_chain(serial) == (2, [2, 1])
+
+
+@pytest.mark.parametrize("seed", range(3))
+def test_no_schedule_beats_the_longest_chain_and_both_passes_agree_on_it(seed):
+    start, goal, serial = strip_pair(100, seed)
+    length, chain = critical_chain(serial)
+    assert length == max(bottom_levels(serial)) == len(chain)
+    assert chain == sorted(chain, reverse=True)  # a chain runs forward in the plan
+    steps = schedule_parallel(start, serial)
+    assert len(steps) >= length
+    assert check_plan(start, goal, steps).ok
 
 
 @pytest.mark.parametrize("seed", range(20))
