@@ -40,6 +40,8 @@ so each intermediate configuration is connected and every rotation legal.
 
 from __future__ import annotations
 
+import heapq
+
 from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.flow import _enterable
 from hexbot.planning.hexlattice import Cell, distance, neighbors
@@ -81,6 +83,7 @@ HANGING = 5
 VOID_DEPTH = 30
 
 _PEELS: dict = {}
+_STATE_PEELS: dict = {}
 
 
 def dig_holes(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
@@ -240,6 +243,67 @@ def goal_peel(goal: frozenset[Cell]):
     return rounds, closure, trios
 
 
+def state_peel(goal: frozenset[Cell], occupied: frozenset[Cell]):
+    """The goal peeled from the outside in as :func:`goal_peel` does, but each
+    goal cell keeps the trio whose build empties the fewest modules standing
+    now (a Dijkstra over that count: cells go in order of it, not in rounds):
+    per goal cell its place in that order (higher: built earlier), its closure
+    and its trio. A hole's dig parks the modules on its closure and trio
+    cells; on blob 1,000 seed 4 the deepest hole needs 23 of them instead of
+    the goal peel's 37, and others 5 instead of 16 (docs/planning.md, "Digs").
+    Cached for the last goal and modules."""
+    cached = _STATE_PEELS.get((goal, occupied))
+    if cached is not None:
+        return cached
+    emptied: dict[Cell, frozenset[Cell]] = {}  # cell -> modules its build parks
+    closure: dict[Cell, frozenset[Cell]] = {}
+    trios: dict[Cell, tuple[Cell, ...]] = {}
+    order: dict[Cell, int] = {}
+    none: frozenset[Cell] = frozenset()
+
+    def cheapest(cell: Cell):
+        best = None
+        for trio in _trios(cell):
+            parts = []
+            for n in trio:
+                if n not in goal:
+                    parts.append(frozenset((n,)) if n in occupied else none)
+                elif n in emptied:
+                    parts.append(emptied[n])
+                else:
+                    break
+            else:
+                cells = parts[0].union(parts[1], parts[2])
+                if best is None or len(cells) < len(best[0]):
+                    best = (cells, trio)
+        return best
+
+    heap: list[tuple[int, Cell]] = []
+    for cell in goal:
+        found = cheapest(cell)
+        if found is not None:
+            heapq.heappush(heap, (len(found[0]), cell))
+    while heap:
+        size, cell = heapq.heappop(heap)
+        if cell in emptied:
+            continue
+        cells, trio = cheapest(cell)
+        if len(cells) != size:  # cheaper since it was queued: queued again
+            heapq.heappush(heap, (len(cells), cell))
+            continue
+        emptied[cell] = cells | {cell} if cell in occupied else cells
+        closure[cell] = frozenset({cell}).union(*(closure[n] for n in trio if n in goal))
+        trios[cell], order[cell] = trio, len(order)
+        for n in neighbors(cell):
+            if n in goal and n not in emptied:
+                found = cheapest(n)
+                if found is not None:
+                    heapq.heappush(heap, (len(found[0]), n))
+    _STATE_PEELS.clear()
+    _STATE_PEELS[goal, occupied] = (order, closure, trios)
+    return order, closure, trios
+
+
 def _trios(cell: Cell) -> list[tuple[Cell, ...]]:
     """The six runs of three sides in a row."""
     ring = neighbors(cell)
@@ -255,11 +319,16 @@ def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> b
 
     before = walled()
     start = len(tracker.moves)
-    for depth in PARK_DEPTHS:
-        if target in tracker.occupied:
+    if target in tracker.occupied:
+        tries = [(depth, None) for depth in PARK_DEPTHS]
+    else:  # a hole: the goal's peel, then the peel around the modules standing now
+        peels = [goal_peel(goal), state_peel(goal, frozenset(tracker.occupied))]
+        tries = [(depth, peel) for peel in peels for depth in PARK_DEPTHS]
+    for depth, peel in tries:
+        if peel is None:
             done = _dig_end(tracker, goal, fixed, target, depth)
         else:
-            done = _dig_hole(tracker, goal, fixed, target, depth)
+            done = _dig_hole(tracker, goal, fixed, target, depth, peel)
         if done and walled() < before:
             return True
         tracker.undo_to(start)
@@ -267,11 +336,11 @@ def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> b
 
 
 def _dig_hole(tracker, goal: frozenset[Cell], fixed: Cell | None, hole: Cell,
-              depth: int) -> bool:
-    rounds, closure, trios = goal_peel(goal)
+              depth: int, peel) -> bool:
+    occupied = tracker.occupied
+    rounds, closure, trios = peel
     if hole not in closure:
         return False
-    occupied = tracker.occupied
     cells = set(closure[hole] - {hole})
     # the free sides the build needs: the ends sitting there leave too
     kept_free = cells | {hole} | {n for c in closure[hole] for n in trios[c]}
