@@ -149,6 +149,37 @@ def test_the_planner_plans_a_blob_of_1000_locally_within_five_times_the_bound():
     assert_planned_locally("blob", 1000, 2, 5)
 
 
+def test_a_hole_beside_emptied_cells_is_dug_from_their_side(monkeypatch):
+    # The goal's peel enters the centre of a 9 x 9 block from a side where 28
+    # modules stand, more than a dig may park here; with the three left
+    # columns empty, the peel around the modules standing now enters it past
+    # 13 of them, and the dig parks those.
+    monkeypatch.setattr(dig, "DIG_LIMIT", 20)
+    goal = parallelogram(9, 9)
+    hole = (4, 4)
+    standing = frozenset(c for c in goal if c != hole and c[0] >= 3)
+    assert fillable(goal, set(goal - standing)) == {hole}
+    by_goal = dig._dug(dig.goal_peel(goal), hole) & standing
+    by_state = dig._dug(dig.state_peel(goal, standing), hole) & standing
+    assert (len(by_goal), len(by_state)) == (28, 13)
+    start = Configuration.from_cells(standing)
+    tracker = Tracker(start, 10**6)
+    assert dig.dig_holes(tracker, goal, None, NO_LIMIT)
+    assert hole in tracker.occupied
+    assert len({m.src for m in tracker.moves} & standing) <= len(by_state)
+    assert_legal(start, tracker)
+
+
+@pytest.mark.parametrize("seed", [0, 4])
+def test_blobs_of_1000_with_holes_deeper_than_the_goal_peel_digs_plan_locally(seed):
+    # seed 4: a goal cell the goal's peel walls in 89 cells deep (37 modules
+    # to park; the dig stalled with 18 of them packed in): the peel around the
+    # modules standing now parks 23. Seed 0: after its digs the flow stalled
+    # with one void 35 cells from the last end until the last resort's
+    # thorough crossings. Both were strip plans of 172,000-180,000 moves.
+    assert_planned_locally("blob", 1000, seed, 5)
+
+
 def test_a_deep_hole_is_dug_before_the_flow_fills_its_closure():
     goal = parallelogram(8, 8)
     rounds, closure, trios = dig.goal_peel(goal)
@@ -166,13 +197,13 @@ def test_a_deep_hole_is_dug_before_the_flow_fills_its_closure():
 
 
 def test_a_hole_deeper_than_a_dig_reaches_fails_at_once_with_the_reason():
-    # the centre of an 11 x 11 block: more goal cells are built after it than
+    # the centre of a 13 x 13 block: more goal cells are built after it than
     # a dig may move, so the flow says so at the start instead of spending
     # its time cap to stall on it at the end
-    goal = parallelogram(11, 11)
-    centre = (5, 5)
+    goal = parallelogram(13, 13)
+    centre = (6, 6)
     _, closure, _ = dig.goal_peel(goal)
     assert len(closure[centre]) - 1 > dig.DIG_LIMIT
-    start = Configuration.from_cells((goal - {centre}) | {(11, 0)})
-    with pytest.raises(PlanningFailure, match=r"goal cell \(5, 5\) is walled in \d+ cells deep"):
+    start = Configuration.from_cells((goal - {centre}) | {(13, 0)})
+    with pytest.raises(PlanningFailure, match=r"goal cell \(6, 6\) is walled in \d+ cells deep"):
         forward(start, goal, partial(journey_flow, digs=True), 10**6, None, NO_LIMIT, "local")
