@@ -13,8 +13,8 @@ of the bench's blobs of 1,000 were 12-18 % longer). A move whose
 dependencies all ran in earlier steps sees its cells exactly as the serial
 plan does, so it is legal in the next step if the modules that stay put stay
 connected and no move of the step needs one of its cells: each step takes
-the ready moves, longest chain to the end first (:func:`bottom_levels`, up
-to ``PRIORITY_MOVES``; then serial order), and keeps one only if its cells
+the ready moves, longest chain to the end first (:func:`bottom_levels`; up
+to ``FINE_MOVES``, see there), and keeps one only if its cells
 are free in the step and its module is not a cut vertex of what stays (a
 local test, usually one look at its neighbours). A moving module is never a
 substrate. No schedule is shorter than :func:`critical_chain`.
@@ -55,12 +55,16 @@ WINDOW = 20_000
 #: them all (keeps the lists short on a substrate many rolls lean on).
 READERS_KEPT = 32
 
-#: Up to this many moves a step takes the ready moves with the longest chain
-#: to the end first (:func:`bottom_levels`), beyond it in serial order: the
-#: priority shortens the bench's blobs of 1,000 by 2-3 % and a strip plan of
-#: 3,000 modules by 7 %, at about 5 us a move (half the schedule's time; the
-#: strip plans of 10,000 modules have 5-12 million moves).
-PRIORITY_MOVES = 1_000_000
+#: Up to this many moves the schedule is the fine one: reads keep no order and
+#: a step takes the ready moves with the longest chain to the end first
+#: (:func:`bottom_levels`). Beyond it, the coarse one of sessions 9-14: swept
+#: cells count as changed and the ready moves go in serial order. The fine
+#: schedule shortens the bench's blobs of 1,000 by 3-12 % and a strip plan
+#: of 3,000 modules by 14 %, but takes about 18 us a move instead of 10; the
+#: strip plans of 10,000 modules have 5-12 million moves, and there the
+#: coarse schedule is what fits the time budget (the scramble of 10,000
+#: took 280 s of its 300 on session 15's machine).
+FINE_MOVES = 1_000_000
 
 #: Steps between two looks at the deadline.
 DEADLINE_EVERY = 256
@@ -235,7 +239,8 @@ def schedule_parallel(initial: Configuration, serial: list[Move],
     # heap of the moves whose dependencies all ran, longest chain to the end
     # first (then serial order): -level * total + move
     ready: list[int] = []
-    levels = bottom_levels(serial) if total <= PRIORITY_MOVES else array("l", bytes(8 * total))
+    fine = total <= FINE_MOVES  # see FINE_MOVES
+    levels = bottom_levels(serial) if fine else None
     admitted = 0
 
     last_change_get, readers_pop, readers_get = last_change.get, readers.pop, readers.get
@@ -254,26 +259,37 @@ def schedule_parallel(initial: Configuration, serial: list[Move],
             j = last_of_get(move.module)
             if j is not None and not done[j]:
                 deps.append(j)
-            for c in (move.substrate, (x + ax, y + ay), (x + bx, y + by), (x + cx, y + cy)):
-                j = last_change_get(c)
+            a, b, c = (x + ax, y + ay), (x + bx, y + by), (x + cx, y + cy)
+            if fine:
+                reads = (move.substrate, a, b, c)
+                changes = ((x, y), (x + gx, y + gy))
+            else:
+                reads = (move.substrate,)
+                changes = ((x, y), (x + gx, y + gy), a, b, c)
+            for cell in reads:
+                j = last_change_get(cell)
                 if j is not None and not done[j]:
                     deps.append(j)
-                seen = readers_get(c)
+                seen = readers_get(cell)
                 if seen is None:
-                    readers[c] = [k]
+                    readers[cell] = [k]
                 elif len(seen) < READERS_KEPT:
                     seen.append(k)
                 else:  # a crowded cell: this move counts as changing it
-                    deps.extend([j for j in seen if not done[j]])
-                    readers[c] = [k]
-            for c in ((x, y), (x + gx, y + gy)):
-                j = last_change_get(c)
+                    for j in seen:
+                        if not done[j]:
+                            deps.append(j)
+                    readers[cell] = [k]
+            for cell in changes:
+                j = last_change_get(cell)
                 if j is not None and not done[j]:
                     deps.append(j)
-                seen = readers_pop(c, None)
+                seen = readers_pop(cell, None)
                 if seen:
-                    deps.extend([j for j in seen if not done[j]])
-                last_change[c] = k
+                    for j in seen:
+                        if not done[j]:
+                            deps.append(j)
+                last_change[cell] = k
             last_of[move.module] = k
             if deps:
                 for j in deps:
@@ -284,7 +300,7 @@ def schedule_parallel(initial: Configuration, serial: list[Move],
                         later.append(k)
                 waiting[k] = len(deps)
             else:
-                heapq.heappush(ready, k - levels[k] * total)
+                heapq.heappush(ready, k - levels[k] * total if fine else k)
         if len(steps) % DEADLINE_EVERY == 0:
             deadline.check("parallel schedule")
         chosen: list[int] = []
@@ -293,12 +309,18 @@ def schedule_parallel(initial: Configuration, serial: list[Move],
         while ready:
             key = heapq.heappop(ready)
             k = key % total
-            move = serial[k]
-            x, y = src = move.src
-            gx, gy, ax, ay, bx, by, cx, cy = _FLAT[move.joint, move.direction]
-            cells = (src, (x + gx, y + gy), (x + ax, y + ay), (x + bx, y + by),
-                     (x + cx, y + cy))
-            if busy.isdisjoint(cells) and stays_connected(occupied, src):
+            src = serial[k].src
+            cells = ()
+            if fine:  # reads keep no order: a cell may not serve two moves of a step
+                move = serial[k]
+                x, y = src
+                gx, gy, ax, ay, bx, by, cx, cy = _FLAT[move.joint, move.direction]
+                cells = (src, (x + gx, y + gy), (x + ax, y + ay), (x + bx, y + by),
+                         (x + cx, y + cy))
+                if not busy.isdisjoint(cells):
+                    held.append(key)
+                    continue
+            if stays_connected(occupied, src):
                 occupied.discard(src)  # the rest of the step sees what stays put
                 busy.update(cells)
                 chosen.append(k)
@@ -325,7 +347,7 @@ def schedule_parallel(initial: Configuration, serial: list[Move],
                     waiting[j] = left
                 else:
                     del waiting[j]
-                    heapq.heappush(ready, j - levels[j] * total)
+                    heapq.heappush(ready, j - levels[j] * total if fine else j)
         steps.append(Step(step_moves))
     return steps
 

@@ -5,6 +5,7 @@ import random
 
 import pytest
 
+from hexbot.planning import schedule as scheduling
 from hexbot.planning.budget import Deadline
 from hexbot.planning.canonical import (
     _hop,
@@ -104,7 +105,7 @@ def test_a_jammed_list_schedule_runs_in_pieces_far_shorter_than_serial_packing(m
     assert 2 * len(steps) < len(pack_consecutive(start, serial))
 
 
-def test_two_rolls_sweeping_one_empty_cell_keep_no_order_but_never_share_a_step():
+def test_two_rolls_sweeping_one_empty_cell_keep_no_order_but_never_share_a_step(monkeypatch):
     # Module a rolls before module b in the serial plan and both sweep the
     # empty cell (-2, 1): neither changes what the other needs, so b, whose
     # chain is longer, goes first and a rolls beside b's second move. When
@@ -127,6 +128,11 @@ def test_two_rolls_sweeping_one_empty_cell_keep_no_order_but_never_share_a_step(
     assert check_plan(start, goal, steps).ok
     assert list(bottom_levels(serial)) == [1, 2, 1]
     assert critical_chain(serial) == (2, [2, 1])
+    # a plan too long for the fine schedule gets the coarse one: in order
+    monkeypatch.setattr(scheduling, "FINE_MOVES", 2)
+    steps = schedule_parallel(start, serial)
+    assert [step.moves for step in steps] == [[a], [b], [b_again]]
+    assert check_plan(start, goal, steps).ok
 
 
 @pytest.mark.parametrize("seed", range(3))
