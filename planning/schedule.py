@@ -51,10 +51,6 @@ from hexbot.planning.plan import Step
 #: Unscheduled moves the dependency graph holds at a time (candidates of a step).
 WINDOW = 20_000
 
-#: Moves that read a cell with no order among them; the next one waits for
-#: them all (keeps the lists short on a substrate many rolls lean on).
-READERS_KEPT = 32
-
 #: Up to this many moves the schedule is the fine one: reads keep no order and
 #: a step takes the ready moves with the longest chain to the end first
 #: (:func:`bottom_levels`). Beyond it, the coarse one of sessions 9-14: swept
@@ -149,9 +145,8 @@ def stays_connected(occupied: set[Cell], cell: Cell) -> bool:
 def bottom_levels(serial: list[Move]) -> array:
     """For each move, the longest chain of dependent moves from it to the end of
     the plan (1 for a move nothing waits for): the graph of
-    :func:`schedule_parallel`, walked backwards cell by cell in one pass (the
-    readers of a crowded cell are not bounded here: a level may come out lower
-    than the schedule's graph has it, which only weakens the priority)."""
+    :func:`schedule_parallel` (the fine one), walked backwards cell by cell in
+    one pass."""
     levels = array("l", bytes(8 * len(serial)))
     next_of: dict[int, int] = {}  # module -> level of its next move
     next_change: dict[Cell, int] = {}  # cell -> level of the next move changing it
@@ -180,36 +175,39 @@ def bottom_levels(serial: list[Move]) -> array:
 
 
 def critical_chain(serial: list[Move]) -> tuple[int, list[int]]:
-    """The longest chain of dependent moves of :func:`schedule_parallel`'s graph
-    (what no schedule of ``serial`` gets below, cut vertices aside): its
+    """The longest chain of dependent moves of :func:`schedule_parallel`'s fine
+    graph (what no schedule of ``serial`` gets below, cut vertices aside): its
     length and its moves, last first."""
     if not serial:
         return 0, []
-    level = array("l", bytes(8 * len(serial)))
-    parent = array("l", bytes(8 * len(serial)))
+    level = [0] * len(serial)
+    parent = [-1] * len(serial)
     last_of: dict[int, int] = {}  # module -> its last move
     last_change: dict[Cell, int] = {}  # cell -> the last move that changed it
     top_reader: dict[Cell, int] = {}  # cell -> the deepest move reading it since
+    last_of_get, last_change_get, top_reader_get = last_of.get, last_change.get, top_reader.get
     for k, move in enumerate(serial):
         x, y = src = move.src
         gx, gy, ax, ay, bx, by, cx, cy = _FLAT[move.joint, move.direction]
         reads = (move.substrate, (x + ax, y + ay), (x + bx, y + by), (x + cx, y + cy))
-        changes = (src, (x + gx, y + gy))
-        before = [last_of.get(move.module, -1)]
-        before += [last_change.get(c, -1) for c in reads]
-        before += [last_change.get(c, -1) for c in changes]
-        before += [top_reader.get(c, -1) for c in changes]
-        deepest = max(before, key=lambda j: level[j] if j >= 0 else 0)
-        level[k] = 1 + (level[deepest] if deepest >= 0 else 0)
+        dst = (x + gx, y + gy)
+        deepest, depth = -1, 0
+        for j in (last_of_get(move.module), last_change_get(reads[0]),
+                  last_change_get(reads[1]), last_change_get(reads[2]),
+                  last_change_get(reads[3]), last_change_get(src), last_change_get(dst),
+                  top_reader_get(src), top_reader_get(dst)):
+            if j is not None and level[j] > depth:
+                deepest, depth = j, level[j]
+        level[k] = depth = depth + 1
         parent[k] = deepest
         last_of[move.module] = k
         for c in reads:
-            j = top_reader.get(c)
-            if j is None or level[j] < level[k]:
+            j = top_reader_get(c)
+            if j is None or level[j] < depth:
                 top_reader[c] = k
-        for c in changes:
-            last_change[c] = k
-            top_reader.pop(c, None)
+        last_change[src] = last_change[dst] = k
+        top_reader.pop(src, None)
+        top_reader.pop(dst, None)
     k = max(range(len(serial)), key=level.__getitem__)
     length, chain = level[k], []
     while k >= 0:
@@ -234,7 +232,9 @@ def schedule_parallel(initial: Configuration, serial: list[Move],
     after: list[list[int] | None] = [None] * total  # move -> moves that depend on it
     done = bytearray(total)  # 1 once scheduled in an earlier step
     last_change: dict[Cell, int] = {}  # cell -> last admitted move that changed it
-    readers: dict[Cell, list[int]] = {}  # cell -> moves reading it since (some ran)
+    # cell -> moves reading it since it last changed (some may have run: each
+    # is listed once and looked at once, when the cell changes)
+    readers: dict[Cell, list[int]] = {}
     last_of: dict[int, int] = {}  # module -> its last admitted move
     # heap of the moves whose dependencies all ran, longest chain to the end
     # first (then serial order): -level * total + move
@@ -273,13 +273,8 @@ def schedule_parallel(initial: Configuration, serial: list[Move],
                 seen = readers_get(cell)
                 if seen is None:
                     readers[cell] = [k]
-                elif len(seen) < READERS_KEPT:
+                else:
                     seen.append(k)
-                else:  # a crowded cell: this move counts as changing it
-                    for j in seen:
-                        if not done[j]:
-                            deps.append(j)
-                    readers[cell] = [k]
             for cell in changes:
                 j = last_change_get(cell)
                 if j is not None and not done[j]:
