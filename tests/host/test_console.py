@@ -256,8 +256,10 @@ async def test_console_on_simulator_flower7(sim_args):
         await pilot.press("0")
         await pilot.click("#fn-send")
         assert await until(pilot, lambda: ir_text(app).count("ACK 69 Select") == 7, timeout=30)
-        assert await until(pilot, lambda: len(modules_rows(app)) == 7)
-        assert all(row[5] == "69 Select" for row in modules_rows(app))
+        # the modules view updates after the terminal line (under load, a
+        # moment later): wait for it, as a user would
+        assert await until(pilot, lambda: len(modules_rows(app)) == 7 and all(
+            row[5] == "69 Select" for row in modules_rows(app)))
         app.localize(1)
         assert await until(pilot, lambda: not app.busy and app.last_result, timeout=120)
         assert "Localize: done" in app.last_result, app.last_result
