@@ -15,7 +15,9 @@ again:
   set; the modules on it, and the ends on the free sides its build needs,
   park where they can roll; a parked module fills the hole, and the others
   refill the set in build order (the outermost cells may stay voids, which
-  the flow fills later from outside);
+  the flow fills later from outside). When that dig fails, the peel around
+  the modules standing now (:func:`state_peel`) is tried, where it parks
+  fewer of them;
 * **an end**: the current shape is peeled around it (:func:`_peeled`); the
   cells the cheapest trio of its sides needs park, the end takes the
   deepest emptied goal cell it can roll to (or leaves to a park), and the

@@ -360,7 +360,8 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     goal and fails at once if one is deeper than a dig reaches; a stuck flow
     first digs into a hole, and after the hand-overs sweeps every free end
     to its nearest voids, moves voids no end reaches towards the ends and
-    digs walled-in ends out (:mod:`hexbot.planning.dig`); failed journeys,
+    digs walled-in ends out (:mod:`hexbot.planning.dig`), and last tries its
+    best journeys with ``LAST_STATES`` per crossing; failed journeys,
     hand-overs and digs are not asked again until the modules around them
     move. Every fill or take-back changes the state, take-backs, digs and
     propagations are bounded, and a hand-over fills a void, so the loop ends. A finished flow's long
