@@ -142,6 +142,16 @@ def stays_connected(occupied: set[Cell], cell: Cell) -> bool:
                         return True
 
 
+def _reads_and_changes(move: Move) -> tuple[tuple[Cell, Cell, Cell, Cell], Cell, Cell]:
+    """The cells a move reads (its substrate, then its three swept cells) and
+    the two it changes (start, goal), as the fine graph sees them (the list
+    schedule's hot loop spells this out itself)."""
+    x, y = move.src
+    gx, gy, ax, ay, bx, by, cx, cy = _FLAT[move.joint, move.direction]
+    return ((move.substrate, (x + ax, y + ay), (x + bx, y + by), (x + cx, y + cy)),
+            move.src, (x + gx, y + gy))
+
+
 def bottom_levels(serial: list[Move]) -> array:
     """For each move, the longest chain of dependent moves from it to the end of
     the plan (1 for a move nothing waits for): the graph of
@@ -154,10 +164,8 @@ def bottom_levels(serial: list[Move]) -> array:
     next_of_get, next_change_get, readers_get = next_of.get, next_change.get, readers.get
     for k in range(len(serial) - 1, -1, -1):
         move = serial[k]
-        x, y = src = move.src
-        gx, gy, ax, ay, bx, by, cx, cy = _FLAT[move.joint, move.direction]
-        sub, a, b, c, dst = (move.substrate, (x + ax, y + ay), (x + bx, y + by),
-                             (x + cx, y + cy), (x + gx, y + gy))
+        reads, src, dst = _reads_and_changes(move)
+        sub, a, b, c = reads
         level = 1 + max(next_of_get(move.module, 0),
                         next_change_get(sub, 0), next_change_get(a, 0),
                         next_change_get(b, 0), next_change_get(c, 0),
@@ -165,7 +173,7 @@ def bottom_levels(serial: list[Move]) -> array:
                         next_change_get(dst, 0), readers_get(dst, 0))
         levels[k] = level
         next_of[move.module] = level
-        for cell in (sub, a, b, c):
+        for cell in reads:
             if readers_get(cell, 0) < level:
                 readers[cell] = level
         next_change[src] = next_change[dst] = level
@@ -187,10 +195,7 @@ def critical_chain(serial: list[Move]) -> tuple[int, list[int]]:
     top_reader: dict[Cell, int] = {}  # cell -> the deepest move reading it since
     last_of_get, last_change_get, top_reader_get = last_of.get, last_change.get, top_reader.get
     for k, move in enumerate(serial):
-        x, y = src = move.src
-        gx, gy, ax, ay, bx, by, cx, cy = _FLAT[move.joint, move.direction]
-        reads = (move.substrate, (x + ax, y + ay), (x + bx, y + by), (x + cx, y + cy))
-        dst = (x + gx, y + gy)
+        reads, src, dst = _reads_and_changes(move)
         deepest, depth = -1, 0
         for j in (last_of_get(move.module), last_change_get(reads[0]),
                   last_change_get(reads[1]), last_change_get(reads[2]),
