@@ -36,8 +36,8 @@ deps:
 		$(SUDO) env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq $$missing; \
 	else echo "Debian packages: all present"; fi
 
-# Reinstall when the packaging or the C sources of the simulator change.
-PY_BUILD_INPUTS := pyproject.toml setup.py $(wildcard hil_sim/core/*.c hil_sim/core/*.h)
+# Reinstall when the packaging or the C sources (simulator core, crossing search) change.
+PY_BUILD_INPUTS := pyproject.toml setup.py $(wildcard hil_sim/core/*.c hil_sim/core/*.h planning/*.c)
 
 venv: $(STAMPS)/venv
 

@@ -80,6 +80,16 @@ def simavr_extension() -> Extension:
     )
 
 
+def crossing_extension() -> Extension:
+    """hexbot.planning._crossing: the A* of a journey's crossing (planning/journey.py)."""
+    return Extension(
+        "hexbot.planning._crossing",
+        sources=["planning/_crossing.c"],
+        extra_compile_args=["-std=gnu11", "-O2", "-Wall",
+                            "-Werror=implicit-function-declaration"],
+    )
+
+
 packages, package_dir = find_packages_mapped()
 
 setup(
@@ -87,5 +97,5 @@ setup(
     package_dir=package_dir,
     include_package_data=True,
     package_data={"": ["*.toml", "*.tcss", "*.txt", "*.rules", "*.map", "*.json"]},
-    ext_modules=[simavr_extension()],
+    ext_modules=[simavr_extension(), crossing_extension()],
 )

@@ -39,13 +39,13 @@ traveller the second, and the schedule runs both legs at once.
 
 from __future__ import annotations
 
-import heapq
 from bisect import bisect_right
 from collections import deque
 from dataclasses import dataclass
 
 import numpy as np
 
+from hexbot.planning import _crossing
 from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import Cell, distance, neighbors
@@ -166,11 +166,11 @@ def _rolls(occupied: set[Cell], start: Cell) -> tuple[dict[Cell, tuple | None], 
 
 
 class _Disc:
-    """A crossing's window around (0, 0), indexed once per radius: a window
-    state is an int with one bit per window cell (the cells in sorted order,
-    so ascending bits visit them as ``sorted`` does), the two rings around it
-    follow as the bits above. Translating the window keeps the order, so one
-    index serves every crossing of that radius."""
+    """A crossing's window around (0, 0), indexed once per radius and handed to
+    the C search: a window state is an int with one bit per window cell (the
+    cells in sorted order, so ascending bits visit them as ``sorted`` does),
+    the two rings around it follow as the bits above. Translating the window
+    keeps the order, so one index serves every crossing of that radius."""
 
     def __init__(self, radius: int):
         window = sorted(disc((0, 0), radius))
@@ -179,23 +179,25 @@ class _Disc:
         rim |= {n for c in rim for n in neighbors(c)}
         self.cells = cells = window + sorted(rim - inside)
         index = {c: i for i, c in enumerate(cells)}
-        self.size = len(window)
-        self.center = index[(0, 0)]
-        self.ring6 = [tuple(index[n] for n in neighbors(c)) for c in window]
-        self.ring12 = [tuple(index[(x + dx, y + dy)] for dx, dy in _AROUND12) for x, y in window]
-        self.near = [sum(1 << index[n] for n in (c, *neighbors(c))) for c in window]
-        goals = {goal for _, _, goal, _ in _RULES}
-        self.goal_bit = [{g: 1 << index[(x + g[0], y + g[1])] for g in goals
-                          if (x + g[0], y + g[1]) in inside} for x, y in window]
+        self.size = size = len(window)
+        center = index[(0, 0)]
+        ring6 = [index[n] for c in window for n in neighbors(c)]
+        ring12 = [index[(x + dx, y + dy)] for x, y in window for dx, dy in _AROUND12]
+        # Window bits only: the rim's modules never move.
+        near = [sum(1 << index[n] for n in (c, *neighbors(c)) if index[n] < size)
+                for c in window]
+        goal_index = [index[(x + gx, y + gy)] if (x + gx, y + gy) in inside else -1
+                      for x, y in window for gx, gy in _GOALS]
+        self.key = _crossing.add_disc(size, len(cells), center, ring6, ring12, near,
+                                      goal_index, len(_GOALS))
 
 
+#: The goal offsets of the rotations, coded by position for the C search.
+_GOALS = sorted({goal for _, _, goal, _ in _RULES})
+_crossing.set_rules(_LEAVABLE, [[_GOALS.index(goal) for _, _, goal in options]
+                                for options in _OPEN12])
+_WORD = (1 << 64) - 1
 _DISCS = {radius: _Disc(radius) for radius in CROSSING_RADII}
-
-
-def _leavable_bits(whole: int, ring: tuple[int, ...]) -> bool:
-    a, b, c, d, e, f = ring
-    return _LEAVABLE[(whole >> a & 1) | (whole >> b & 1) << 1 | (whole >> c & 1) << 2
-                     | (whole >> d & 1) << 3 | (whole >> e & 1) << 4 | (whole >> f & 1) << 5]
 
 
 def crossing(occupied: set[Cell], traveller: Cell, radius: int, steps: dict[Cell, int],
@@ -209,9 +211,11 @@ def crossing(occupied: set[Cell], traveller: Cell, radius: int, steps: dict[Cell
     A* over the window's occupied cells (a state is accepted when generated,
     so the hops are few, not always the fewest); the estimate is the number of
     the window's other modules not home yet (each needs a rotation). States
-    are bit masks over the window (:class:`_Disc`). ``failed`` remembers the
-    searches that found nothing: a flow asks the same question again and
-    again while the cells around a stuck module stay as they are."""
+    are bit masks over the window (:class:`_Disc`); the search itself runs in
+    C (``planning/_crossing.c``: most of a large plan's time was spent here).
+    ``failed`` remembers the searches that found nothing: a flow asks the same
+    question again and again while the cells around a stuck module stay as
+    they are."""
     geometry = _DISCS[radius]
     cells, size = geometry.cells, geometry.size
     tx, ty = traveller
@@ -221,87 +225,27 @@ def crossing(occupied: set[Cell], traveller: Cell, radius: int, steps: dict[Cell
     # Only the modules within two cells of the window matter to its rotations.
     outside = sum(1 << i for i in range(size, len(cells)) if bits[i])
     bound = steps.get(traveller, _FAR)
+    nearer = sum(1 << i for i in range(size) if steps.get(absolute[i], _FAR) < bound)
     if failed is not None:
-        question = (traveller, start, outside, max_states, fixed,
-                    sum(1 << i for i in range(size) if steps.get(absolute[i], _FAR) < bound))
+        question = (traveller, start, outside, max_states, fixed, nearer)
         if question in failed:
             return None
-    home = start & ~(1 << geometry.center)
     pinned = 0
     if fixed is not None:
         pinned = sum(1 << i for i in range(size) if absolute[i] == fixed)
-    ring6, ring12, near = geometry.ring6, geometry.ring12, geometry.near
-    goal_bit = geometry.goal_bit
-    whole = outside | start
-    # Modules of a state that can leave their cell: a rotation changes this only
-    # next to the two cells it touches, so a child state rechecks those alone.
-    movable = {start: sum(1 << i for i in range(size)
-                          if start >> i & 1 and _leavable_bits(whole, ring6[i])) & ~pinned}
-    parent: dict[int, tuple | None] = {start: None}
-    cost = {start: 0}
-    heap = [(1, 0, start)]
-    tie = 0
-    while heap and len(parent) < max_states:
-        _, _, state = heapq.heappop(heap)
-        whole = outside | state
-        free = movable.get(state)
-        if free is None:  # worked out when expanded: most states never are
-            before = parent[state][0]
-            changed = before ^ state
-            src = (changed & -changed).bit_length() - 1
-            dst = changed.bit_length() - 1
-            around = near[src] | near[dst]
-            free = movable[before] & ~around
-            check = around & state & ~pinned
-            while check:
-                low = check & -check
-                check ^= low
-                a, b, c, d, e, f = ring6[low.bit_length() - 1]
-                if _LEAVABLE[(whole >> a & 1) | (whole >> b & 1) << 1 | (whole >> c & 1) << 2
-                             | (whole >> d & 1) << 3 | (whole >> e & 1) << 4
-                             | (whole >> f & 1) << 5]:
-                    free |= low
-            movable[state] = free
-        after_cost = cost[state] + 1
-        while free:
-            low = free & -free
-            free ^= low
-            i = low.bit_length() - 1
-            a, b, c, d, e, f, g, h, j, k, m, n = ring12[i]
-            mask = ((whole >> a & 1) | (whole >> b & 1) << 1 | (whole >> c & 1) << 2
-                    | (whole >> d & 1) << 3 | (whole >> e & 1) << 4 | (whole >> f & 1) << 5
-                    | (whole >> g & 1) << 6 | (whole >> h & 1) << 7 | (whole >> j & 1) << 8
-                    | (whole >> k & 1) << 9 | (whole >> m & 1) << 10 | (whole >> n & 1) << 11)
-            goals = goal_bit[i]
-            for rule, sub, goal in _OPEN12[mask]:
-                target = goals.get(goal)
-                if target is None:  # outside the window
-                    continue
-                after = state ^ low ^ target
-                if after in parent:
-                    continue
-                parent[after] = (state, i, target, rule, sub)
-                cost[after] = after_cost
-                away = (home & ~after).bit_count()
-                if away == 0:
-                    arrived = absolute[(after & ~home).bit_length() - 1]
-                    if steps.get(arrived, _FAR) < bound:
-                        return _hops(parent, after, absolute), arrived
-                tie += 1
-                heapq.heappush(heap, (after_cost + away + 1, tie, after))
-    if failed is not None:
-        failed.add(question)
-    return None
-
-
-def _hops(parent: dict, state: int, absolute: list[Cell]) -> list[Hop]:
-    """The rotations from the search's start to ``state``, in order."""
+    found = _crossing.search(geometry.key, start, outside & _WORD, outside >> 64, pinned,
+                             nearer, max_states)
+    if found is None:
+        if failed is not None:
+            failed.add(question)
+        return None
+    moves, arrived = found
     hops = []
-    while parent[state] is not None:
-        state, i, target, rule, (sx, sy) = parent[state]
-        x, y = absolute[i]
-        hops.append(((x, y), absolute[target.bit_length() - 1], rule, (x + sx, y + sy)))
-    return hops[::-1]
+    for mover, target, mask, option in moves:
+        rule, (sx, sy), _ = _OPEN12[mask][option]
+        x, y = absolute[mover]
+        hops.append(((x, y), absolute[target], rule, (x + sx, y + sy)))
+    return hops, absolute[arrived]
 
 
 def _apply(occupied: set[Cell], hops: list[Hop]) -> None:
