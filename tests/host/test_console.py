@@ -17,6 +17,10 @@ from hexbot.host.link import LinkState, PortSettings
 from hexbot.protocol import frames
 from hexbot.protocol.simulation import Placement
 
+# The simulator runs at a set speed against the console's reply time-outs and
+# the waits below: `make test` runs these alone, after the parallel part.
+pytestmark = pytest.mark.wallclock
+
 
 async def until(pilot, pred, timeout=20.0, step=0.05):
     loops = int(timeout / step)
