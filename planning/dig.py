@@ -253,7 +253,9 @@ def state_peel(goal: frozenset[Cell], occupied: frozenset[Cell]):
     and its trio. A hole's dig parks the modules on its closure and trio
     cells; on blob 1,000 seed 4 the deepest hole needs 23 of them instead of
     the goal peel's 37, and others 5 instead of 16 (docs/planning.md, "Digs").
-    Cached for the last goal and modules."""
+    The cells whose build parks more than ``DIG_LIMIT`` modules are left out
+    (the sets grow with the depth: on a scramble of 10,000 a full peel took
+    6 s). Cached for the last goal and modules."""
     cached = _STATE_PEELS.get((goal, occupied))
     if cached is not None:
         return cached
@@ -287,6 +289,8 @@ def state_peel(goal: frozenset[Cell], occupied: frozenset[Cell]):
             heapq.heappush(heap, (len(found[0]), cell))
     while heap:
         size, cell = heapq.heappop(heap)
+        if size > DIG_LIMIT:  # no dig parks that many: the cells left are of no use
+            break
         if cell in emptied:
             continue
         cells, trio = cheapest(cell)
