@@ -60,6 +60,7 @@ from hexbot.planning.schedule import (  # noqa: F401 - re-exported (exact.py, te
     pack_consecutive,
     schedule,
     schedule_parallel,
+    stays_connected,
 )
 
 # Precomputed Table 4-3 offsets: (rule, substrate, goal, swept) relative to (0, 0).
@@ -81,10 +82,10 @@ def _single_arc(occupied: set[Cell], cell: Cell) -> bool:
 
 
 def is_cut(occupied: set[Cell], cell: Cell) -> bool:
-    """Would removing ``cell`` disconnect ``occupied``? (local test, BFS if unsure)"""
-    if _single_arc(occupied, cell):
-        return False
-    return not is_connected(occupied - {cell})
+    """Would removing ``cell`` disconnect ``occupied`` (one piece)? The searches
+    of :func:`~hexbot.planning.schedule.stays_connected` meet nearby when it
+    does not; a search of the whole set took 46 ms a call at 10,000 modules."""
+    return not stays_connected(occupied, cell)
 
 
 # The twelve cells a rotation can need (Fig. 4-30's A..L: substrate, goal and
