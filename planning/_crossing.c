@@ -15,7 +15,7 @@
  * Expansion order is Python's: heap key (f, creation order), movers by
  * ascending bit, a mover's rotations in _OPEN12 order; a state is accepted
  * when generated. Equal inputs give equal hops in both implementations
- * (tests/planning/test_planning_crossing_c.py compares them).
+ * (tests/planning/test_planning_crossing.py compares them).
  */
 #define PY_SSIZE_T_CLEAN
 #include <Python.h>
