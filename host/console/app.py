@@ -389,7 +389,10 @@ class HexBotConsole(App[None]):
             return
         with self.host.lock:
             model = copy.deepcopy(self.host.model)
-        view.refresh_from(self.host.simulator, model)
+        try:
+            view.refresh_from(self.host.simulator, model)
+        except NoMatches:  # its table is gone already: the app is being torn down
+            return
 
     def _update_status(self) -> None:
         parts = []

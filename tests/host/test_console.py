@@ -562,3 +562,23 @@ async def test_boards_tab_says_unavailable_on_a_real_port(responder):
         view = app.query_one(BoardsView)
         assert await until(pilot, lambda: view.note == UNAVAILABLE)
         assert view.rows() == []
+
+
+@sync
+async def test_a_boards_refresh_while_the_view_is_torn_down_is_skipped(responder):
+    # The poll is a timer: it can fire after the view's table has gone while the
+    # app closes (seen once in CI: NoMatches from inside the timer stopped the app).
+    from textual.widgets import DataTable
+
+    from hexbot.host.console.boards_view import BoardsView
+
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        assert await until(pilot, lambda: app.port_states.get(IR, (None,))[0]
+                           is LinkState.CONNECTED)
+        await pilot.press("6")
+        view = app.query_one(BoardsView)
+        await view.query_one(DataTable).remove()
+        app.refresh_boards()  # must not raise
+        await pilot.pause()
+        assert app.query_one(BoardsView) is view
