@@ -550,16 +550,24 @@ async def test_boards_tab_shows_joints_magnets_and_leds_live(pair_args):
                            and module1()[7] == "······", timeout=30), module1()
 
 
+async def _boards_tab(app, pilot):
+    """The Boards tab once the IR port is connected (on the pty test double)."""
+    from hexbot.host.console.boards_view import BoardsView
+
+    assert await until(pilot, lambda: app.port_states.get(IR, (None,))[0]
+                       is LinkState.CONNECTED)
+    await pilot.press("6")
+    return app.query_one(BoardsView)
+
+
 @sync
 async def test_boards_tab_says_unavailable_on_a_real_port(responder):
     from hexbot.host.console.boards_view import UNAVAILABLE, BoardsView
 
     app = _app(responder)
     async with app.run_test(size=(100, 30)) as pilot:
-        assert await until(pilot, lambda: app.port_states.get(IR, (None,))[0]
-                           is LinkState.CONNECTED)
-        await pilot.press("6")
-        view = app.query_one(BoardsView)
+        view = await _boards_tab(app, pilot)
+        assert isinstance(view, BoardsView)
         assert await until(pilot, lambda: view.note == UNAVAILABLE)
         assert view.rows() == []
 
@@ -574,10 +582,7 @@ async def test_a_boards_refresh_while_the_view_is_torn_down_is_skipped(responder
 
     app = _app(responder)
     async with app.run_test(size=(100, 30)) as pilot:
-        assert await until(pilot, lambda: app.port_states.get(IR, (None,))[0]
-                           is LinkState.CONNECTED)
-        await pilot.press("6")
-        view = app.query_one(BoardsView)
+        view = await _boards_tab(app, pilot)
         await view.query_one(DataTable).remove()
         app.refresh_boards()  # must not raise
         await pilot.pause()
