@@ -80,11 +80,13 @@ def simavr_extension() -> Extension:
     )
 
 
-def crossing_extension() -> Extension:
-    """hexbot.planning._crossing: the A* of a journey's crossing (planning/journey.py)."""
+def planning_extension(name: str) -> Extension:
+    """hexbot.planning.<name> from planning/<name>.c: the planners' hot searches
+    (_crossing: a journey's crossing, planning/journey.py; _strip: the strip
+    route's mover pick and paths, planning/canonical.py)."""
     return Extension(
-        "hexbot.planning._crossing",
-        sources=["planning/_crossing.c"],
+        f"hexbot.planning.{name}",
+        sources=[f"planning/{name}.c"],
         extra_compile_args=["-std=gnu11", "-O2", "-Wall",
                             "-Werror=implicit-function-declaration"],
     )
@@ -97,5 +99,6 @@ setup(
     package_dir=package_dir,
     include_package_data=True,
     package_data={"": ["*.toml", "*.tcss", "*.txt", "*.rules", "*.map", "*.json"]},
-    ext_modules=[simavr_extension(), crossing_extension()],
+    ext_modules=[simavr_extension(), planning_extension("_crossing"),
+                 planning_extension("_strip")],
 )

@@ -34,6 +34,7 @@ import bisect
 import heapq
 from collections import deque
 
+from hexbot.planning import _strip
 from hexbot.planning.budget import MAX_MOVES, NO_DEADLINE, BudgetExhausted, Deadline
 from hexbot.planning.configuration import (
     Configuration,
@@ -53,9 +54,7 @@ from hexbot.planning.hexlattice import (
 from hexbot.planning.moves import Move
 from hexbot.planning.robust import (
     PlanningFailure,
-    _single_arc,
     serial_moves,
-    unwind,
 )
 from hexbot.planning.schedule import stays_connected
 
@@ -95,158 +94,97 @@ _AROUND = [SIDE_OFFSETS[s] for s in SIDES]
 
 # Table 4-3 by the occupancy around a mobile module. Every rotation only looks at
 # the 12 cells within two steps of it (6 neighbours, 6 second-ring cells between
-# them): with those as the bits of a mask, _OPEN[mask] lists the rotations open to
-# it, in the order of ROTATIONS (the order robust._moves_from tries them, so the
-# searches below find the same paths as the generic one): (rule, substrate dx,
-# dy, goal dx, dy). One mask of 12 look-ups per cell, instead of up to 60.
+# them): the C searches (``planning/_strip.c``) read those as the bits of a mask
+# and try the rotations in the order of ROTATIONS (the order robust._moves_from
+# tries them, so they find the same paths as the generic search).
 _RING = sorted({o for r in ROTATIONS for o in (r.substrate, r.goal, *r.swept)})
-_RING_BITS = [(dx, dy, 1 << i) for i, (dx, dy) in enumerate(_RING)]
-
-
-_NEEDS = [((r, *r.substrate, *r.goal), 1 << _RING.index(r.substrate),
-           sum(1 << _RING.index(c) for c in (r.goal, *r.swept))) for r in ROTATIONS]
-_OPEN = [tuple(row for row, sub, free in _NEEDS if mask & sub and not mask & free)
-         for mask in range(1 << len(_RING))]
-
-
-#: ring offset -> its bit
-_BIT_AT = {(dx, dy): bit for dx, dy, bit in _RING_BITS}
-
-
-def _mask(occupied: set[Cell], x: int, y: int, masks: dict[Cell, int] | None = None) -> int:
-    """The ring mask of the cell (x, y); ``masks`` caches them for ``occupied``."""
-    if masks is not None:
-        mask = masks.get((x, y))
-        if mask is not None:
-            return mask
-    mask = 0
-    for dx, dy, bit in _RING_BITS:
-        if (x + dx, y + dy) in occupied:
-            mask |= bit
-    if masks is not None:
-        masks[x, y] = mask
-    return mask
-
-
-def _forget(masks: dict[Cell, int], cell: Cell) -> None:
-    """``cell`` was filled or emptied: drop the masks that include it (the ring is
-    symmetric: the cells whose ring holds ``cell`` are ``cell``'s own ring)."""
-    x, y = cell
-    for dx, dy, _ in _RING_BITS:
-        masks.pop((x + dx, y + dy), None)
-
-
-def _path_to(occupied: set[Cell], start: Cell, target: Cell,
-             masks: dict[Cell, int] | None = None) -> list | None:
-    """Shortest Table 4-3 path of the module at ``start`` to ``target``, others fixed.
-
-    The hot loop of the strip route. ``masks`` caches the ring masks of
-    ``occupied`` across searches (the movers of a gathering all travel the same
-    surface); the mover counts as absent (neither an obstacle nor a substrate,
-    as in ``robust._moves_from``): its bit is cleared in the masks around it."""
-    if masks is None:
-        masks = {}
-    masks_get = masks.get
-    x0, y0 = start
-    parent: dict[Cell, tuple | None] = {start: None}
-    queue = deque([start])
-    while queue:
-        cell = queue.popleft()
-        x, y = cell
-        mask = masks_get(cell)
-        if mask is None:
-            mask = 0
-            for dx, dy, bit in _RING_BITS:
-                if (x + dx, y + dy) in occupied:
-                    mask |= bit
-            masks[cell] = mask
-        dx, dy = x0 - x, y0 - y
-        if -2 <= dx <= 2 and -2 <= dy <= 2 and (dx, dy) in _BIT_AT:
-            mask &= ~_BIT_AT[dx, dy]
-        for rule, sx, sy, gx, gy in _OPEN[mask]:
-            goal = (x + gx, y + gy)
-            if goal in parent:
-                continue
-            parent[goal] = (cell, rule, (x + sx, y + sy))
-            if goal == target:
-                return unwind(parent, goal)
-            queue.append(goal)
-    return None
-
-
-def _reaching(occupied: set[Cell], target: Cell,
-              masks: dict[Cell, int] | None = None) -> set[Cell]:
-    """Empty cells from which a module can roll to ``target`` with every module fixed
-    (one search outward from the target: rotations are reversible over the same cells)."""
-    seen = {target}
-    queue = deque([target])
-    while queue:
-        x, y = queue.popleft()
-        for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y, masks)]:
-            goal = (x + gx, y + gy)
-            if goal not in seen:
-                seen.add(goal)
-                queue.append(goal)
-    return seen
-
-
-def _first_steps(occupied: set[Cell], cell: Cell,
-                 masks: dict[Cell, int] | None = None) -> list[Cell]:
-    """Cells the module at ``cell`` can roll to in one rotation, others fixed."""
-    x, y = cell
-    return [(x + gx, y + gy) for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y, masks)]]
-
+_strip.set_rules(_RING, [(1 << _RING.index(r.substrate),
+                          sum(1 << _RING.index(c) for c in (r.goal, *r.swept)),
+                          *r.substrate, *r.goal) for r in ROTATIONS], _AROUND)
 
 #: Farthest modules (never cut vertices) tried with a path search each, before the
-#: search outward from the target (see :func:`_pick_mover`).
+#: search outward from the target (see :meth:`StripGrid.pick`).
 FARTHEST = 4
 
 
-def _pick_mover(occupied: set[Cell], order: list[Cell], target: Cell,
-                farthest: int = 0,
-                masks: dict[Cell, int] | None = None) -> tuple[int, list] | None:
-    """The first module of ``order`` that may leave and roll to ``target``, with its path.
+class StripGrid:
+    """The occupied cells of a strip route as a grid the C searches read
+    (``planning/_strip.c``: most of a 10,000-module strip's time was spent in
+    these searches in Python). The caller keeps it in step with its own set
+    (:meth:`put`); it spans ``cells`` (the configuration and the strip cells
+    it will fill) with a margin the searches never leave."""
 
-    The first ``farthest`` modules of ``order`` are at the largest distance from
-    the anchor, so none is a cut vertex: up to ``FARTHEST`` of them get a path
-    search each, with no cut test. Otherwise one search outward from the target
-    finds the cells a module can roll to it from, and the modules are scanned in
-    order for one with a first rotation into them that cannot disconnect anything
-    (farthest, or neighbours in one arc); only when none qualifies, one cut-vertex
-    pass decides for the others. The outward search counts the mover as an
-    obstacle (and as a possible substrate), so each candidate's path is still
-    searched; when no candidate has one, each module is searched on its own (rare).
-    """
-    tries = min(farthest, FARTHEST)
-    for k in range(tries):
-        path = _path_to(occupied, order[k], target, masks)
-        if path:
-            return k, path
-    reach = _reaching(occupied, target, masks)
-    likely, unsure = [], []
-    for k, cell in enumerate(order):  # farthest first: the first good one usually comes soon
-        if not any(g in reach for g in _first_steps(occupied, cell, masks)):
-            continue
-        likely.append(k)
-        if k < farthest or _single_arc(occupied, cell):
-            path = _path_to(occupied, cell, target, masks)
-            if path:
-                return k, path
-        else:
-            unsure.append(k)
-    cuts = articulation_points(occupied)
-    for k in unsure:
-        if order[k] not in cuts:
-            path = _path_to(occupied, order[k], target, masks)
-            if path:
-                return k, path
-    tried = set(likely)
-    for k, cell in enumerate(order):
-        if k not in tried and cell not in cuts:
-            path = _path_to(occupied, cell, target, masks)
-            if path:
-                return k, path
-    return None
+    MARGIN = 5
+
+    def __init__(self, occupied, span=()):
+        xs = [x for x, _ in occupied] + [x for x, _ in span]
+        ys = [y for _, y in occupied] + [y for _, y in span]
+        self.xmin, self.ymin = min(xs) - self.MARGIN, min(ys) - self.MARGIN
+        self._grid = _strip.grid(self.xmin, self.ymin, max(xs) - self.xmin + self.MARGIN + 1,
+                                 max(ys) - self.ymin + self.MARGIN + 1)
+        for cell in occupied:
+            _strip.put(self._grid, cell, True)
+
+    def put(self, cell: Cell, occupied: bool) -> None:
+        _strip.put(self._grid, cell, occupied)
+
+    def path(self, start: Cell, target: Cell) -> list | None:
+        """Shortest Table 4-3 path (hops as :func:`robust.unwind` gives them) of the
+        module at ``start`` to ``target``, others fixed; the mover counts as absent
+        (neither an obstacle nor a substrate, as in ``robust._moves_from``)."""
+        return _rules(_strip.path(self._grid, start, target))
+
+    def nearest(self, cells: list[Cell], target: Cell) -> list[tuple[int, int]]:
+        """(rotations, k) for each module ``cells[k]`` whose first rotation lands
+        where a module rolls to ``target`` from, every module fixed: the fewest
+        rotations from such a landing cell to ``target``."""
+        return _strip.nearest(self._grid, cells, target)
+
+    def pick(self, occupied: set[Cell], order: list[Cell], target: Cell,
+             farthest: int = 0) -> tuple[int, list] | None:
+        """The first module of ``order`` that may leave and roll to ``target``, with
+        its path.
+
+        The first ``farthest`` modules of ``order`` are at the largest distance
+        from the anchor, so none is a cut vertex: up to ``FARTHEST`` of them get a
+        path search each, with no cut test. Otherwise one search outward from the
+        target finds the cells a module can roll to it from, and the modules are
+        scanned in order for one with a first rotation into them that cannot
+        disconnect anything (farthest, or neighbours in one arc); only when none
+        qualifies, one cut-vertex pass decides for the others. The outward search
+        counts the mover as an obstacle (and as a possible substrate), so each
+        candidate's path is still searched; when no candidate has one, each module
+        is searched on its own (rare). All but the cut-vertex pass run in C."""
+        picked = _strip.pick(self._grid, order, target, farthest, min(farthest, FARTHEST))
+        if picked[0] is not None:
+            return picked[0], _rules(picked[1])
+        _, likely, unsure = picked
+        cuts = articulation_points(occupied)
+        for k in unsure:
+            if order[k] not in cuts:
+                path = self.path(order[k], target)
+                if path:
+                    return k, path
+        tried = set(likely)
+        for k, cell in enumerate(order):
+            if k not in tried and cell not in cuts:
+                path = self.path(cell, target)
+                if path:
+                    return k, path
+        return None
+
+
+def _rules(hops: list | None) -> list | None:
+    """The C searches' hops with their rotation index turned into the rotation."""
+    if hops is None:
+        return None
+    return [(src, dst, ROTATIONS[rule], sub) for src, dst, rule, sub in hops]
+
+
+def path_to(occupied: set[Cell] | frozenset[Cell], start: Cell, target: Cell) -> list | None:
+    """Shortest Table 4-3 path of the module at ``start`` to ``target``, others
+    fixed (:meth:`StripGrid.path` on a grid made for this one search)."""
+    return StripGrid(occupied, (target,)).path(start, target)
 
 
 def _hops_from(occupied: set[Cell], roots: list[Cell]) -> dict[Cell, int]:
@@ -349,9 +287,10 @@ def to_strip(config: Configuration, width: int,
     moves: list[Move] = []
     place = _framer(turn)
     joints = {j: wrap(j + turn) for j in range(1, 7)}
-    masks: dict[Cell, int] = {}  # ring masks of the cells searched, for ``occupied``
+    targets = strip_cells(anchor, len(config) - len(roots) + 1, width)
+    grid = StripGrid(occupied, targets)
     order: list[Cell] = []
-    for target in strip_cells(anchor, len(config) - len(roots) + 1, width):
+    for target in targets:
         deadline.check("canonical strip")
         if target in occupied:  # cannot happen: every cell right of the anchor is empty
             raise PlanningFailure(f"strip cell {target} is occupied")
@@ -360,7 +299,7 @@ def to_strip(config: Configuration, width: int,
             order = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
         top = hops[order[0]]
         farthest = next((k for k, c in enumerate(order) if hops[c] != top), len(order))
-        picked = _pick_mover(occupied, order, target, farthest, masks)
+        picked = grid.pick(occupied, order, target, farthest)
         if picked is None:
             raise PlanningFailure(
                 f"no module can reach strip cell {target} (width {width}) after "
@@ -369,7 +308,7 @@ def to_strip(config: Configuration, width: int,
         taken = order.pop(k)
         module = ids.pop(taken)
         occupied.discard(taken)
-        _forget(masks, taken)
+        grid.put(taken, False)
         # farthest first; taking a farthest module changes no other distance; a nearer
         # one may lengthen the hops of the cells behind it, which then move forward
         grown = _hops_without(occupied, hops, taken) if hops[taken] != top else []
@@ -385,7 +324,7 @@ def to_strip(config: Configuration, width: int,
             moves.append(Move(module, place(src), place(dst), joints[rule.joint],
                               rule.direction, place(sub), ids[sub]))
         occupied.add(target)
-        _forget(masks, target)
+        grid.put(target, True)
         ids[target] = module
         built.add(target)
     return moves
@@ -409,24 +348,6 @@ def _hop_anchors(start: Cell, end: Cell, hop: int = HOP) -> list[Cell]:
     count = -(-distance(start, end) // hop)
     return [(start[0] + round((end[0] - start[0]) * k / count),
              start[1] + round((end[1] - start[1]) * k / count)) for k in range(1, count + 1)]
-
-
-def _distances_to(occupied: set[Cell], target: Cell,
-                  masks: dict[Cell, int] | None = None) -> dict[Cell, int]:
-    """Rotations from each empty cell to ``target`` with every module fixed
-    (:func:`_reaching` with the distances)."""
-    dist = {target: 0}
-    queue = deque([target])
-    while queue:
-        cell = queue.popleft()
-        x, y = cell
-        d = dist[cell] + 1
-        for _, _, _, gx, gy in _OPEN[_mask(occupied, x, y, masks)]:
-            goal = (x + gx, y + gy)
-            if goal not in dist:
-                dist[goal] = d
-                queue.append(goal)
-    return dist
 
 
 def _free_three(blocked: set[Cell], cell: Cell) -> bool:
@@ -486,20 +407,14 @@ def _hop(config: Configuration, start: Cell, end: Cell, width: int,
     order = _fill_order([c for c in new_order if c not in occupied], occupied)
     if order is None:
         return None
-    masks: dict[Cell, int] = {}
+    grid = StripGrid(occupied, order)
     moves: list[Move] = []
     for target in order:
         deadline.check("canonical strip")
-        dist = _distances_to(occupied, target, masks)
-        ranked = []
-        for k, cell in enumerate(leavers):
-            near = [dist[g] for g in _first_steps(occupied, cell, masks) if g in dist]
-            if near:
-                ranked.append((min(near), k, cell))
-        ranked.sort()
+        ranked = sorted((d, k, leavers[k]) for d, k in grid.nearest(leavers, target))
         for _, _k, cell in ranked:
             if stays_connected(occupied, cell):
-                path = _path_to(occupied, cell, target, masks)
+                path = grid.path(cell, target)
                 if path:
                     break
         else:
@@ -507,11 +422,11 @@ def _hop(config: Configuration, start: Cell, end: Cell, width: int,
         leavers.remove(cell)
         module = ids.pop(cell)
         occupied.discard(cell)
-        _forget(masks, cell)
+        grid.put(cell, False)
         for src, dst, rule, sub in path:
             moves.append(Move(module, src, dst, rule.joint, rule.direction, sub, ids[sub]))
         occupied.add(target)
-        _forget(masks, target)
+        grid.put(target, True)
         ids[target] = module
     return moves
 

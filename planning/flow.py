@@ -31,7 +31,7 @@ import heapq
 from collections import Counter, deque
 
 from hexbot.planning.budget import PlanningFailure
-from hexbot.planning.canonical import _path_to
+from hexbot.planning.canonical import path_to
 from hexbot.planning.configuration import contact_hops
 from hexbot.planning.hexlattice import Cell, distance, neighbors
 from hexbot.planning.robust import _free_run, _moves_from, fillable, is_cut, unwind
@@ -192,7 +192,7 @@ class KernelFlow:
                 end = self.is_end(m)
                 if (not end and len(chain) >= CHAIN_HOPS) or is_cut(occupied, m):
                     continue
-                path = _path_to(occupied, m, void)
+                path = path_to(occupied, m, void)
                 if not path:
                     continue
                 if end:
