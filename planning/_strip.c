@@ -43,6 +43,8 @@ typedef struct {
     uint32_t *seen, *reach;      /* visit stamps of the path and the outward search */
     uint32_t stamp, reach_stamp;
     int32_t *parent, *queue, *dist; /* dist: rotations to the outward search's target */
+    int32_t *disc, *low;         /* the cut-vertex pass */
+    uint8_t *side, *cut;
     int8_t *rule;                /* rotation that reached a cell (path search) */
     int ring_d[RING], side_d[SIDES], sub_d[MAX_RULES], goal_d[MAX_RULES];
 } Grid;
@@ -52,7 +54,8 @@ static const char *CAPSULE = "hexbot.planning._strip.grid";
 static void release(Grid *g)
 {
     free(g->occ), free(g->seen), free(g->reach), free(g->parent), free(g->queue);
-    free(g->rule), free(g->dist), free(g);
+    free(g->rule), free(g->dist), free(g->disc), free(g->low), free(g->side), free(g->cut);
+    free(g);
 }
 
 static void grid_free(PyObject *capsule)
@@ -192,7 +195,12 @@ static PyObject *grid_new(PyObject *self, PyObject *args)
     g->queue = malloc(cells * sizeof *g->queue);
     g->rule = malloc(cells);
     g->dist = malloc(cells * sizeof *g->dist);
-    if (!g->occ || !g->seen || !g->reach || !g->parent || !g->queue || !g->rule || !g->dist) {
+    g->disc = malloc(cells * sizeof *g->disc);
+    g->low = malloc(cells * sizeof *g->low);
+    g->side = malloc(cells);
+    g->cut = malloc(cells);
+    if (!g->occ || !g->seen || !g->reach || !g->parent || !g->queue || !g->rule || !g->dist
+        || !g->disc || !g->low || !g->side || !g->cut) {
         release(g);
         return PyErr_NoMemory();
     }
@@ -365,21 +373,59 @@ static PyObject *found(const Grid *g, Py_ssize_t k, int32_t target)
     return out;
 }
 
-static int append_index(PyObject *list, Py_ssize_t k)
+/* Cut vertices of the occupied cells (one depth-first pass, Hopcroft-Tarjan low
+ * points, iterative) into g->cut; the occupied cells are one piece. */
+static void find_cuts(Grid *g)
 {
-    PyObject *item = PyLong_FromSsize_t(k);
-    int failed = !item || PyList_Append(list, item) < 0;
-    Py_XDECREF(item);
-    return failed ? -1 : 0;
+    size_t cells = (size_t)g->w * g->h;
+    memset(g->cut, 0, cells);
+    memset(g->disc, 0, cells * sizeof *g->disc);
+    int32_t root = -1;
+    for (size_t i = 0; i < cells && root < 0; i++)
+        if (g->occ[i])
+            root = (int32_t)i;
+    if (root < 0)
+        return;
+    int32_t clock = 1, top = 0, root_children = 0;
+    g->disc[root] = g->low[root] = clock++;
+    g->parent[root] = -1;
+    g->queue[top] = root, g->side[top] = 0, top++;
+    while (top) {
+        int32_t v = g->queue[top - 1];
+        if (g->side[top - 1] < SIDES) {
+            int32_t w = v + g->side_d[g->side[top - 1]++];
+            if (!g->occ[w])
+                continue;
+            if (!g->disc[w]) {
+                g->parent[w] = v;
+                g->disc[w] = g->low[w] = clock++;
+                g->queue[top] = w, g->side[top] = 0, top++;
+                root_children += v == root;
+            } else if (w != g->parent[v] && g->disc[w] < g->low[v]) {
+                g->low[v] = g->disc[w];
+            }
+            continue;
+        }
+        top--;
+        int32_t p = g->parent[v];
+        if (p < 0)
+            continue;
+        if (g->low[v] < g->low[p])
+            g->low[p] = g->low[v];
+        if (p != root && g->low[v] >= g->disc[p])
+            g->cut[p] = 1;
+    }
+    g->cut[root] = root_children > 1;
 }
 
-/* pick(grid, order, target, farthest, tries) -> (k, hops) or (None, likely, unsure)
+/* pick(grid, order, target, farthest, tries) -> (k, hops) or None
  *
- * canonical._pick_mover up to its cut-vertex pass: the first `tries` modules of
- * `order` get a path search each; then one search outward from `target`, and
- * the modules are scanned in order for a first rotation into what it reached:
- * those before `farthest`, or with their neighbours in one arc, get a path
- * search; the others are returned as unsure, for the caller's cut test. */
+ * canonical.StripGrid.pick: the first `tries` modules of `order` get a path
+ * search each; then one search outward from `target`, and the modules are
+ * scanned in order for a first rotation into what it reached: those before
+ * `farthest`, or with their neighbours in one arc, get a path search. Only
+ * when none has a path, one cut-vertex pass, and the others that scan found
+ * and are no cut vertex get one; last, every other module that is not. */
 static PyObject *pick(PyObject *self, PyObject *args)
 {
     PyObject *capsule, *order, *target_cell;
@@ -397,39 +443,60 @@ static PyObject *pick(PyObject *self, PyObject *args)
     if (target < 0)
         return NULL;
     Py_ssize_t count = PyList_GET_SIZE(order);
-    for (Py_ssize_t k = 0; k < tries && k < count; k++) {
-        int32_t cell = cell_index(g, PyList_GET_ITEM(order, k));
-        if (cell < 0)
-            return NULL;
-        if (search_path(g, cell, target))
-            return found(g, k, target);
+    int32_t *at = malloc((count + 1) * sizeof *at);  /* order's cells; -1: scanned */
+    uint8_t *unsure = calloc(count + 1, 1);
+    PyObject *out = NULL;
+    if (!at || !unsure) {
+        PyErr_NoMemory();
+        goto done;
     }
+    for (Py_ssize_t k = 0; k < count; k++)
+        if ((at[k] = cell_index(g, PyList_GET_ITEM(order, k))) < 0)
+            goto done;
+    for (Py_ssize_t k = 0; k < tries && k < count; k++)
+        if (search_path(g, at[k], target)) {
+            out = found(g, k, target);
+            goto done;
+        }
     search_reach(g, target);
-    PyObject *likely = PyList_New(0), *unsure = PyList_New(0);
-    if (!likely || !unsure)
-        goto fail;
+    int any_unsure = 0;
     for (Py_ssize_t k = 0; k < count; k++) {
-        int32_t cell = cell_index(g, PyList_GET_ITEM(order, k));
-        if (cell < 0)
-            goto fail;
+        int32_t cell = at[k];
         if (!enters_reach(g, cell))
             continue;
-        if (append_index(likely, k) < 0)
-            goto fail;
+        at[k] = -1;  /* looked at: the last pass skips it */
         if (k < farthest || single_arc(g, cell)) {
             if (search_path(g, cell, target)) {
-                Py_DECREF(likely), Py_DECREF(unsure);
-                return found(g, k, target);
+                out = found(g, k, target);
+                goto done;
             }
-        } else if (append_index(unsure, k) < 0) {
-            goto fail;
+        } else {
+            unsure[k] = 1, any_unsure = 1;
+            at[k] = -2 - cell;  /* keep the cell */
         }
     }
-    PyObject *out = Py_BuildValue("(ONN)", Py_None, likely, unsure);
+    find_cuts(g);
+    if (any_unsure)
+        for (Py_ssize_t k = 0; k < count; k++) {
+            if (!unsure[k])
+                continue;
+            int32_t cell = -2 - at[k];
+            if (!g->cut[cell] && search_path(g, cell, target)) {
+                out = found(g, k, target);
+                goto done;
+            }
+        }
+    for (Py_ssize_t k = 0; k < count; k++) {
+        int32_t cell = at[k];
+        if (cell >= 0 && !g->cut[cell] && search_path(g, cell, target)) {
+            out = found(g, k, target);
+            goto done;
+        }
+    }
+    out = Py_NewRef(Py_None);
+done:
+    free(at), free(unsure);
     return out;
-fail:
-    Py_XDECREF(likely), Py_XDECREF(unsure);
-    return NULL;
 }
 
 /* nearest(grid, cells, target) -> [(rotations, k)]: for each module of `cells`
@@ -485,7 +552,7 @@ static PyMethodDef methods[] = {
     {"path", path, METH_VARARGS,
      "path(grid, start, target) -> [(src, dst, rotation index, substrate)] or None"},
     {"pick", pick, METH_VARARGS,
-     "pick(grid, order, target, farthest, tries) -> (k, hops) or (None, likely, unsure)"},
+     "pick(grid, order, target, farthest, tries) -> (k, hops) or None"},
     {NULL, NULL, 0, NULL},
 };
 

@@ -39,7 +39,6 @@ from hexbot.planning.budget import MAX_MOVES, NO_DEADLINE, BudgetExhausted, Dead
 from hexbot.planning.configuration import (
     Configuration,
     Module,
-    articulation_points,
 )
 from hexbot.planning.hexlattice import (
     ROTATIONS,
@@ -140,8 +139,7 @@ class StripGrid:
         rotations from such a landing cell to ``target``."""
         return _strip.nearest(self._grid, cells, target)
 
-    def pick(self, occupied: set[Cell], order: list[Cell], target: Cell,
-             farthest: int = 0) -> tuple[int, list] | None:
+    def pick(self, order: list[Cell], target: Cell, farthest: int = 0) -> tuple[int, list] | None:
         """The first module of ``order`` that may leave and roll to ``target``, with
         its path.
 
@@ -154,24 +152,9 @@ class StripGrid:
         qualifies, one cut-vertex pass decides for the others. The outward search
         counts the mover as an obstacle (and as a possible substrate), so each
         candidate's path is still searched; when no candidate has one, each module
-        is searched on its own (rare). All but the cut-vertex pass run in C."""
+        is searched on its own (rare). All of it runs in C."""
         picked = _strip.pick(self._grid, order, target, farthest, min(farthest, FARTHEST))
-        if picked[0] is not None:
-            return picked[0], _rules(picked[1])
-        _, likely, unsure = picked
-        cuts = articulation_points(occupied)
-        for k in unsure:
-            if order[k] not in cuts:
-                path = self.path(order[k], target)
-                if path:
-                    return k, path
-        tried = set(likely)
-        for k, cell in enumerate(order):
-            if k not in tried and cell not in cuts:
-                path = self.path(cell, target)
-                if path:
-                    return k, path
-        return None
+        return None if picked is None else (picked[0], _rules(picked[1]))
 
 
 def _rules(hops: list | None) -> list | None:
@@ -299,7 +282,7 @@ def to_strip(config: Configuration, width: int,
             order = sorted((c for c in occupied if c not in built), key=lambda c: (-hops[c], c))
         top = hops[order[0]]
         farthest = next((k for k, c in enumerate(order) if hops[c] != top), len(order))
-        picked = grid.pick(occupied, order, target, farthest)
+        picked = grid.pick(order, target, farthest)
         if picked is None:
             raise PlanningFailure(
                 f"no module can reach strip cell {target} (width {width}) after "

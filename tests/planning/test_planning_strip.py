@@ -10,7 +10,7 @@ import pytest
 from hexbot.bench.planning import make_pair
 from hexbot.planning import _strip
 from hexbot.planning.canonical import StripGrid, anchor_of, path_to, strip_cells
-from hexbot.planning.configuration import contact_hops
+from hexbot.planning.configuration import articulation_points, contact_hops
 from hexbot.planning.hexlattice import neighbors
 from tests.planning import strip_reference as reference
 
@@ -31,22 +31,26 @@ def _scene(family: str, seed: int):
 
 @pytest.mark.parametrize("family", ["blob", "scramble"])
 @pytest.mark.parametrize("seed", range(3))
-def test_the_c_searches_find_what_the_python_searches_found(family, seed):
+def test_the_c_searches_find_what_the_python_searches_found(family, seed, monkeypatch):
+    cut_passes = []
+    monkeypatch.setattr(reference, "articulation_points",
+                        lambda cells: cut_passes.append(1) or articulation_points(cells))
     occupied, targets, empty, order, farthest = _scene(family, seed)
     rng = random.Random(seed)
     grid = StripGrid(occupied, targets + empty)
     picked = missed = 0
     for target in targets[:4] + rng.sample(empty, 12):
         for far in (0, farthest):
-            ours = grid.pick(occupied, order, target, far)
+            ours = grid.pick(order, target, far)
             assert ours == reference.pick_mover(occupied, order, target, far), (target, far)
             picked += ours is not None
             missed += ours is None
         assert grid.nearest(order, target) == reference.nearest(occupied, order, target)
         for start in rng.sample(order, 6):
             assert grid.path(start, target) == reference.path_to(occupied, start, target)
-    # Both outcomes were exercised, else the comparison proves little.
-    assert picked >= 10 and missed >= 1
+    # Both outcomes and the cut-vertex pass were exercised, else the comparison
+    # proves little.
+    assert picked >= 10 and missed >= 1 and cut_passes
 
 
 def test_the_grid_follows_its_owner():
@@ -79,7 +83,7 @@ def test_the_c_searches_refuse_cells_off_the_grid():
     with pytest.raises(ValueError, match="outside the grid"):
         grid.put(far, True)
     with pytest.raises(ValueError, match="outside the grid"):
-        grid.pick(occupied, order, far, 0)
+        grid.pick(order, far, 0)
     with pytest.raises(TypeError, match="list of cells"):
         _strip.pick(grid._grid, tuple(order), targets[0], 0, 0)
     with pytest.raises(ValueError, match="size out of range"):
