@@ -50,7 +50,7 @@ from hexbot.planning.hexlattice import (
     rotate_cell,
     wrap,
 )
-from hexbot.planning.moves import Move
+from hexbot.planning.moves import Move, new_move
 from hexbot.planning.robust import (
     PlanningFailure,
     serial_moves,
@@ -304,8 +304,8 @@ def to_strip(config: Configuration, width: int,
             for c in grown:
                 bisect.insort(order, c, key=lambda c: (-hops[c], c))
         for src, dst, rule, sub in path:
-            moves.append(Move(module, place(src), place(dst), joints[rule.joint],
-                              rule.direction, place(sub), ids[sub]))
+            moves.append(new_move(module, place(src), place(dst), joints[rule.joint],
+                                  rule.direction, place(sub), ids[sub]))
         occupied.add(target)
         grid.put(target, True)
         ids[target] = module
@@ -407,7 +407,7 @@ def _hop(config: Configuration, start: Cell, end: Cell, width: int,
         occupied.discard(cell)
         grid.put(cell, False)
         for src, dst, rule, sub in path:
-            moves.append(Move(module, src, dst, rule.joint, rule.direction, sub, ids[sub]))
+            moves.append(new_move(module, src, dst, rule.joint, rule.direction, sub, ids[sub]))
         occupied.add(target)
         grid.put(target, True)
         ids[target] = module
@@ -494,8 +494,8 @@ def undone(backward: list[Move], real: dict[int, int]) -> list[Move]:
                                 m.src[0] - x, m.src[1] - y))
         if rule is None:
             raise ValueError(f"no rotation undoes {m}")
-        out.append(Move(real[m.module], m.dst, m.src, rule.joint, rule.direction, m.substrate,
-                        real[m.substrate_module]))
+        out.append(new_move(real[m.module], m.dst, m.src, rule.joint, rule.direction,
+                            m.substrate, real[m.substrate_module]))
     return out
 
 
@@ -534,8 +534,8 @@ def _rotate_moves(moves: list[Move], steps: int) -> list[Move]:
     turn = _framer(steps)
     joints = {j: wrap(j + steps) for j in range(1, 7)}
     for i, m in enumerate(moves):
-        moves[i] = Move(m.module, turn(m.src), turn(m.dst), joints[m.joint], m.direction,
-                        turn(m.substrate), m.substrate_module)
+        moves[i] = new_move(m.module, turn(m.src), turn(m.dst), joints[m.joint],
+                            m.direction, turn(m.substrate), m.substrate_module)
     return moves
 
 

@@ -54,7 +54,7 @@ from hexbot.planning.budget import (
 )
 from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.hexlattice import LETTER_CELLS, ROTATIONS, Cell, distance, neighbors
-from hexbot.planning.moves import Move
+from hexbot.planning.moves import Move, new_move
 from hexbot.planning.plan import Plan, Step, distance_lower_bound
 from hexbot.planning.schedule import (  # noqa: F401 - re-exported (exact.py, tests)
     pack_consecutive,
@@ -424,7 +424,8 @@ def serial_moves(
         module = state.ids.pop(start)
         state.occupied.discard(start)
         for src, dst, rule, sub in path:
-            moves.append(Move(module, src, dst, rule.joint, rule.direction, sub, state.ids[sub]))
+            moves.append(new_move(module, src, dst, rule.joint, rule.direction, sub,
+                                  state.ids[sub]))
         state.occupied.add(path[-1][1])
         state.ids[path[-1][1]] = module
 
@@ -636,8 +637,8 @@ def reverse_move(move: Move) -> Move:
     for rule, (sx, sy), (gx, gy), _ in _RULES:
         x, y = move.dst
         if (x + sx, y + sy) == move.substrate and (x + gx, y + gy) == move.src:
-            return Move(move.module, move.dst, move.src, rule.joint, rule.direction,
-                        move.substrate, move.substrate_module)
+            return new_move(move.module, move.dst, move.src, rule.joint, rule.direction,
+                            move.substrate, move.substrate_module)
     raise ValueError(f"no rotation undoes {move}")
 
 

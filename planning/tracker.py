@@ -11,7 +11,7 @@ from __future__ import annotations
 from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import ROTATIONS, Cell
-from hexbot.planning.moves import Move
+from hexbot.planning.moves import Move, new_move
 
 #: One rotation: (from, to, Table 4-3 row, substrate cell).
 Hop = tuple[Cell, Cell, object, Cell]
@@ -35,8 +35,8 @@ class Tracker:
         self.rolls.append(len(self.moves))
         for src, dst, rule, sub in hops:
             module = self.ids.pop(src)
-            self.moves.append(Move(module, src, dst, rule.joint, rule.direction, sub,
-                                   self.ids[sub]))
+            self.moves.append(new_move(module, src, dst, rule.joint, rule.direction, sub,
+                                       self.ids[sub]))
             self.ids[dst] = module
             self.occupied.discard(src)
             self.occupied.add(dst)
