@@ -83,7 +83,8 @@ def simavr_extension() -> Extension:
 def planning_extension(name: str) -> Extension:
     """hexbot.planning.<name> from planning/<name>.c: the planners' hot searches
     (_crossing: a journey's crossing, planning/journey.py; _strip: the strip
-    route's mover pick and paths, planning/canonical.py)."""
+    route's mover pick and paths, planning/canonical.py; _schedule: the list
+    schedule, planning/schedule.py)."""
     return Extension(
         f"hexbot.planning.{name}",
         sources=[f"planning/{name}.c"],
@@ -100,5 +101,5 @@ setup(
     include_package_data=True,
     package_data={"": ["*.toml", "*.tcss", "*.txt", "*.rules", "*.map", "*.json"]},
     ext_modules=[simavr_extension(), planning_extension("_crossing"),
-                 planning_extension("_strip")],
+                 planning_extension("_strip"), planning_extension("_schedule")],
 )
