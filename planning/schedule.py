@@ -21,10 +21,14 @@ substrate. No schedule is shorter than :func:`critical_chain`.
 
 The graph is built incrementally over a window of the ``WINDOW`` earliest
 unscheduled moves, so that each move is looked at a constant number of times
-(plus once per step it waits as a cut vertex) and memory follows the window,
-not the plan. The old scheduler rescanned up to a few hundred pending moves
-every step (quadratic-ish on the five-million-move strip plans of 10,000
-modules).
+(plus once per step it waits as a cut vertex) and its edges follow the
+window, not the plan. The old scheduler rescanned up to a few hundred pending
+moves every step (quadratic-ish on the five-million-move strip plans of 10,000
+modules). Since session 17 the list schedule runs in C
+(``planning/_schedule.c``, the same steps as the Python one it replaced, which
+tests/planning/schedule_reference.py keeps): about 2 us a move instead of 10-18,
+and 26 bytes a move of its own (cells as grid indices, module, rotation,
+counts), a quarter of what the ``Move`` itself takes.
 
 The list schedule can get stuck: moves that ran early (out of serial order)
 may leave every ready move a cut vertex. :func:`schedule_in_pieces` then
@@ -55,12 +59,12 @@ WINDOW = 20_000
 #: a step takes the ready moves with the longest chain to the end first
 #: (:func:`bottom_levels`). Beyond it, the coarse one of sessions 9-14: swept
 #: cells count as changed and the ready moves go in serial order. The fine
-#: schedule shortens the bench's blobs of 1,000 by 3-12 % and a strip plan
-#: of 3,000 modules by 14 %, but takes about 18 us a move instead of 10; the
-#: strip plans of 10,000 modules have 5-12 million moves, and there the
-#: coarse schedule is what fits the time budget (the scramble of 10,000
-#: took 280 s of its 300 on session 15's machine).
-FINE_MOVES = 1_000_000
+#: schedule shortens the bench's blobs of 1,000 by 3-12 %, a strip plan of
+#: 3,000 modules by 14 % and the blob of 10,000 by 4 % (81,724 -> 78,341
+#: steps). In Python it took 18 us a move against 10, so until session 17 the
+#: strip plans of 10,000 modules (5-12 million moves) got the coarse one; in C
+#: both take about 2 us, and every plan of the bench gets the fine one.
+FINE_MOVES = 20_000_000
 
 #: Steps between two looks at the deadline.
 DEADLINE_EVERY = 256
