@@ -88,3 +88,27 @@ def test_the_c_searches_refuse_cells_off_the_grid():
         _strip.pick(grid._grid, tuple(order), targets[0], 0, 0)
     with pytest.raises(ValueError, match="size out of range"):
         _strip.grid(0, 0, 3, 3)
+
+
+def test_a_move_made_in_c_is_the_move_the_dataclass_makes():
+    from dataclasses import FrozenInstanceError, dataclass
+
+    from hexbot.planning.hexlattice import ROTATIONS
+    from hexbot.planning.moves import Move, new_move
+
+    rule = ROTATIONS[3]
+    args = (7, (1, 2), (2, 2), rule.joint, rule.direction, (1, 3), 9)
+    made = new_move(*args)
+    assert type(made) is Move and made == Move(*args) and hash(made) == hash(Move(*args))
+    with pytest.raises(FrozenInstanceError):
+        made.module = 8
+    with pytest.raises(TypeError, match="7 arguments"):
+        new_move(*args[:6])
+
+    @dataclass
+    class NoSlots:
+        a: int = 0
+
+    with pytest.raises(TypeError, match="slots"):
+        _strip.set_move_type(NoSlots, ["a"] * 7)
+    new_move(*args)  # the refused type changed nothing
