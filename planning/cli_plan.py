@@ -14,7 +14,8 @@ from __future__ import annotations
 import argparse
 import json
 import sys
-from typing import Any
+from collections.abc import Iterable, Iterator
+from typing import Any, TextIO
 
 from hexbot.errors import ScenarioError
 from hexbot.host.endpoints import add_port_arguments
@@ -24,6 +25,7 @@ from hexbot.planning.commands import MoveCommands, command_json, plan_to_command
 from hexbot.planning.config_io import load_configuration
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import Cell
+from hexbot.planning.moves import Move
 from hexbot.planning.plan import Plan
 from hexbot.planning.robust import step_lower_bound
 from hexbot.protocol.wire import MAX_SELECT_ID
@@ -120,66 +122,77 @@ def make_plan(args: argparse.Namespace, initial: Configuration | None = None) ->
 def plan_json(plan: Plan, style: str = "combined") -> dict[str, Any]:
     """The ``--json`` object (``commands`` null when the ids cannot be addressed)."""
     omitted = unaddressable(plan)
-    commands = _move_commands(plan, style, omitted)
+    return {**_json_head(plan, omitted), "steps": list(_steps_json(plan, style, omitted))}
+
+
+def write_plan_json(plan: Plan, style: str, out: TextIO,
+                    extra: dict[str, Any] | None = None) -> None:
+    """The text of ``json.dumps({**plan_json(plan, style), **extra})`` and a
+    newline, written a step at a time: a strip plan of 10,000 modules has five
+    million moves, and their dicts all at once needed gigabytes."""
+    omitted = unaddressable(plan)
+    out.write(json.dumps(_json_head(plan, omitted))[:-1] + ', "steps": [')
+    for k, step in enumerate(_steps_json(plan, style, omitted)):
+        out.write((", " if k else "") + json.dumps(step))
+    out.write("]" + (", " + json.dumps(extra)[1:-1] if extra else "") + "}\n")
+
+
+def _json_head(plan: Plan, omitted: str) -> dict[str, Any]:
     extra = {"commands_omitted": omitted} if omitted else {}
-    return {
-        **extra,
-        "mode": plan.mode,
-        "method": plan.method,
-        "reached": plan.reached,
-        "steps": [
-            {
-                "moves": [
-                    {
-                        "module": mc.move.module,
-                        "from": list(mc.move.src),
-                        "to": list(mc.move.dst),
-                        "joint": mc.move.joint,
-                        "direction": mc.move.direction,
-                        "substrate": list(mc.move.substrate),
-                        "commands": (None if omitted
-                                     else [command_json(c) for c in mc.commands]),
-                    }
-                    for mc in step
-                ]
-            }
-            for step in commands
-        ],
-    }
+    return {**extra, "mode": plan.mode, "method": plan.method, "reached": plan.reached}
 
 
-def _move_commands(plan: Plan, style: str, omitted: str) -> list[list[MoveCommands]]:
+def _steps_json(plan: Plan, style: str, omitted: str) -> Iterator[dict[str, Any]]:
+    """The ``steps`` of the ``--json`` object, one at a time."""
+    if omitted:  # no commands: the steps as they are (any size)
+        for step in plan.steps:
+            yield {"moves": [_move_json(move, None) for move in step.moves]}
+        return
+    for step in plan_to_commands(plan, style):  # type: ignore[arg-type]
+        yield {"moves": [_move_json(mc.move, [command_json(c) for c in mc.commands])
+                         for mc in step]}
+
+
+def _move_json(move: Move, commands: list | None) -> dict[str, Any]:
+    return {"module": move.module, "from": list(move.src), "to": list(move.dst),
+            "joint": move.joint, "direction": move.direction,
+            "substrate": list(move.substrate), "commands": commands}
+
+
+def _move_commands(plan: Plan, style: str, omitted: str) -> Iterable[list[MoveCommands]]:
     """Per step, per move: its commands (none when the ids cannot be addressed)."""
     if omitted:
-        return [[MoveCommands(m, ()) for m in step.moves] for step in plan.steps]
+        return ([MoveCommands(m, ()) for m in step.moves] for step in plan.steps)
     return plan_to_commands(plan, style)  # type: ignore[arg-type]
 
 
 def plan_text(plan: Plan, style: str = "combined") -> str:
-    lines = [
+    return "\n".join(_text_lines(plan, style))
+
+
+def _text_lines(plan: Plan, style: str) -> Iterator[str]:
+    """The lines of the text report, one at a time (a plan may have millions of moves)."""
+    yield (
         f"mode {plan.mode}{f' ({plan.method})' if plan.method else ''}: "
         f"goal {'reached' if plan.reached else 'NOT reached'}, "
         f"{plan.time_steps} time step(s), {plan.move_count} move(s)"
         + (f" (lower bounds: {plan.lower_bound} moves, "
            f"{step_lower_bound(plan.initial.cells, plan.goal)} time steps)"
            if plan.lower_bound is not None else "")
-    ]
+    )
     omitted = unaddressable(plan)
     if omitted:
-        lines.append(f"note: {omitted}")
+        yield f"note: {omitted}"
     for t, step in enumerate(_move_commands(plan, style, omitted), start=1):
-        lines.append(f"step {t}:")
+        yield f"step {t}:"
         for mc in step:
             m = mc.move
-            lines.append(
-                f"  module {m.module}: {m.src} -> {m.dst}  joint {m.joint} {m.direction}, "
-                f"substrate {m.substrate} (module {m.substrate_module})"
-            )
+            yield (f"  module {m.module}: {m.src} -> {m.dst}  joint {m.joint} {m.direction}, "
+                   f"substrate {m.substrate} (module {m.substrate_module})")
             if mc.commands:
-                lines.append("      " + " ".join(str(c) for c in mc.commands))
+                yield "      " + " ".join(str(c) for c in mc.commands)
     for warning in plan.warnings:
-        lines.append(f"warning: {warning}")
-    return "\n".join(lines)
+        yield f"warning: {warning}"
 
 
 def run(args: argparse.Namespace) -> int:
@@ -187,9 +200,10 @@ def run(args: argparse.Namespace) -> int:
         return run_execute(args)
     plan = make_plan(args)
     if args.json:
-        print(json.dumps(plan_json(plan, args.style)))
+        write_plan_json(plan, args.style, sys.stdout)
     else:
-        print(plan_text(plan, args.style))
+        for line in _text_lines(plan, args.style):
+            print(line)
     if args.plot:
         from hexbot.planning.plot import plot_plan
 
@@ -243,7 +257,7 @@ def run_execute(args: argparse.Namespace) -> int:
         report = execute(plan, sess, reference, verify=Verify(args.verify), poses=poses,
                          log=None if args.json else print)
     if args.json:
-        print(json.dumps({**plan_json(plan, args.style), "execution": report.as_json()}))
+        write_plan_json(plan, args.style, sys.stdout, {"execution": report.as_json()})
     else:
         done = sum(m.ok for m in report.moves)
         print(f"executed {done}/{plan.move_count} moves in {report.seconds:.1f} s; "

@@ -118,6 +118,29 @@ def test_json_plans_any_size_and_ids_without_commands_past_the_link(capsys, tmp_
     assert max(m["module"] for m in moves) <= 100
 
 
+def test_json_is_written_a_step_at_a_time_as_the_object_would_be(examples_dir):
+    """--json streams its steps (millions of moves at 10,000 modules); the text
+    is json.dumps of the whole object, with commands and without."""
+    import io
+
+    from hexbot.planning.cli_plan import plan_json, write_plan_json
+    from hexbot.planning.config_io import load_configuration
+    from hexbot.planning.generate import blob_pair, scramble
+    from hexbot.planning.robust import plan_robust
+
+    small = plan_robust(load_configuration(examples_dir / P01[0]),
+                        load_configuration(examples_dir / P01[1]).cells)
+    initial, _ = blob_pair(100, 0)
+    large = plan_robust(parse_toml("cells = " + str([list(c) for c in sorted(initial)])),
+                        frozenset(scramble(initial, 30, 0)))
+    for plan in (small, large):
+        for extra in (None, {"execution": {"ok": True}}):
+            out = io.StringIO()
+            write_plan_json(plan, "combined", out, extra)
+            assert out.getvalue() == json.dumps({**plan_json(plan), **(extra or {})}) + "\n"
+    assert "commands_omitted" in plan_json(large) and "commands_omitted" not in plan_json(small)
+
+
 def test_execute_refuses_more_modules_than_the_link_addresses(capsys, tmp_path):
     from hexbot.planning.generate import random_blob
 
