@@ -35,13 +35,13 @@ static uint8_t one_arc[64];
 static int rule_count;
 static long rule_joint[MAX_RULES];
 static PyObject *rule_direction[MAX_RULES];
-static int rule_off[MAX_RULES][8];  /* goal, swept a, b, c: (dx, dy) each */
+static int rule_off[MAX_RULES][10];  /* goal, swept a, b, c, substrate: (dx, dy) each */
 static int rules_set;
 static PyObject *s_module, *s_src, *s_joint, *s_direction, *s_substrate, *s_check, *s_what;
 
 /* set_rules(sides, one_arc, rotations): sides = 6 (dx, dy) in side order;
  * one_arc = 64 booleans; rotations = (joint, direction, (goal, a, b, c offsets
- * flattened: 8 ints)). */
+ * flattened: 8 ints), (substrate dx, dy)). */
 static PyObject *set_rules(PyObject *self, PyObject *args)
 {
     PyObject *sides, *arcs, *rotations;
@@ -72,9 +72,9 @@ static PyObject *set_rules(PyObject *self, PyObject *args)
     for (int i = 0; i < nr; i++) {
         PyObject *direction;
         int *o = rule_off[i];
-        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(r, i), "lO(iiiiiiii)", &rule_joint[i],
+        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(r, i), "lO(iiiiiiii)(ii)", &rule_joint[i],
                               &direction, &o[0], &o[1], &o[2], &o[3], &o[4], &o[5], &o[6],
-                              &o[7]))
+                              &o[7], &o[8], &o[9]))
             goto fail;
         Py_XSETREF(rule_direction[i], Py_NewRef(direction));
     }
@@ -247,9 +247,9 @@ typedef struct {
     Py_ssize_t total;
     int fine;
     long xmin, ymin, w, h;
-    int side_d[SIDES], goal_d[MAX_RULES], swept_d[MAX_RULES][3];
+    int side_d[SIDES], goal_d[MAX_RULES], swept_d[MAX_RULES][3], sub_d[MAX_RULES];
     /* per move */
-    int32_t *src, *sub, *mod, *waiting, *after, *level;
+    int32_t *src, *mod, *waiting, *after, *level;  /* substrate: src + sub_d[rule] */
     uint8_t *rule, *done;
     /* per cell */
     uint8_t *occ;
@@ -266,7 +266,7 @@ typedef struct {
 
 static void schedule_free(Schedule *s)
 {
-    free(s->src), free(s->sub), free(s->mod), free(s->waiting), free(s->after);
+    free(s->src), free(s->mod), free(s->waiting), free(s->after);
     free(s->level), free(s->rule), free(s->done), free(s->occ), free(s->last_change);
     free(s->readers), free(s->owner), free(s->busy), free(s->owned), free(s->last_of);
     free(s->pool.at), free(s->ready.at), free(s->held.at), free(s->deps.at), free(s->chosen.at);
@@ -426,7 +426,7 @@ static void bottom_levels(Schedule *s, int32_t *next_of)
     memset(readers, 0, cells * sizeof *readers);
     for (Py_ssize_t k = s->total - 1; k >= 0; k--) {
         int32_t src = s->src[k], dst = src + s->goal_d[s->rule[k]];
-        int32_t reads[4] = {s->sub[k], src + s->swept_d[s->rule[k]][0],
+        int32_t reads[4] = {src + s->sub_d[s->rule[k]], src + s->swept_d[s->rule[k]][0],
                             src + s->swept_d[s->rule[k]][1], src + s->swept_d[s->rule[k]][2]};
         int32_t level = next_of[s->mod[k]];
         for (int i = 0; i < 4; i++)
@@ -484,16 +484,16 @@ static PyObject *schedule(PyObject *self, PyObject *args)
         PyErr_SetString(PyExc_ValueError, "schedule: no initial cells");
         return NULL;
     }
-    /* First pass: each move's fields, its cells as (x, y) held for now in the
-     * per-move arrays (src x, y in src and sub, substrate x, y in waiting and
-     * after), and the extent of every cell the plan uses. */
+    /* First pass: each move's fields, its start as (x, y) held for now in the
+     * per-move arrays src and after, and the extent of every cell the plan
+     * uses. */
     size_t nmove = (size_t)s.total + 1;
-    s.src = malloc(nmove * sizeof *s.src), s.sub = malloc(nmove * sizeof *s.sub);
+    s.src = malloc(nmove * sizeof *s.src);
     s.mod = malloc(nmove * sizeof *s.mod), s.waiting = malloc(nmove * sizeof *s.waiting);
     s.after = malloc(nmove * sizeof *s.after), s.rule = malloc(nmove);
     s.done = calloc(nmove, 1), s.level = fine ? malloc(nmove * sizeof *s.level) : NULL;
     s.pool.free = -1;
-    if (!s.src || !s.sub || !s.mod || !s.waiting || !s.after || !s.rule || !s.done
+    if (!s.src || !s.mod || !s.waiting || !s.after || !s.rule || !s.done
         || (fine && !s.level)) {
         PyErr_NoMemory();
         goto early;
@@ -515,8 +515,12 @@ static PyObject *schedule(PyObject *self, PyObject *args)
         }
         extend(box, f.sx, f.sy);
         extend(box, f.bx, f.by);
-        s.src[k] = (int32_t)f.sx, s.sub[k] = (int32_t)f.sy;
-        s.waiting[k] = (int32_t)f.bx, s.after[k] = (int32_t)f.by;
+        if (f.bx != f.sx + rule_off[f.rule][8] || f.by != f.sy + rule_off[f.rule][9]) {
+            PyErr_Format(PyExc_ValueError, "schedule: move %zd pivots on (%ld, %ld), not on"
+                         " its rotation's substrate", k, f.bx, f.by);
+            goto early;
+        }
+        s.src[k] = (int32_t)f.sx, s.after[k] = (int32_t)f.sy;
         s.rule[k] = (uint8_t)f.rule;
         if ((s.mod[k] = id_index(&ids, f.module)) < 0) {
             PyErr_NoMemory();
@@ -534,12 +538,13 @@ static PyObject *schedule(PyObject *self, PyObject *args)
         s.side_d[i] = (int)(side_dy[i] * s.w + side_dx[i]);
     for (int r = 0; r < rule_count; r++) {
         s.goal_d[r] = (int)(rule_off[r][1] * s.w + rule_off[r][0]);
+        s.sub_d[r] = (int)(rule_off[r][9] * s.w + rule_off[r][8]);
         for (int j = 0; j < 3; j++)
             s.swept_d[r][j] = (int)(rule_off[r][3 + 2 * j] * s.w + rule_off[r][2 + 2 * j]);
     }
     for (Py_ssize_t k = 0; k < s.total; k++) {
-        int32_t src = at(&s, s.src[k], s.sub[k]), sub = at(&s, s.waiting[k], s.after[k]);
-        s.src[k] = src, s.sub[k] = sub, s.waiting[k] = 0, s.after[k] = -1;
+        s.src[k] = at(&s, s.src[k], s.after[k]);
+        s.waiting[k] = 0, s.after[k] = -1;
     }
     free(ids.keys), free(ids.values), free(ids.used);
     ids = (IdMap){0};
@@ -574,7 +579,7 @@ static PyObject *schedule(PyObject *self, PyObject *args)
             int32_t src = s.src[k], r = s.rule[k], dst = src + s.goal_d[r];
             int32_t a = src + s.swept_d[r][0], b = src + s.swept_d[r][1];
             int32_t c = src + s.swept_d[r][2];
-            int32_t reads[4] = {s.sub[k], a, b, c}, changes[5] = {src, dst, a, b, c};
+            int32_t reads[4] = {src + s.sub_d[r], a, b, c}, changes[5] = {src, dst, a, b, c};
             int nreads = fine ? 4 : 1, nchanges = fine ? 2 : 5;
             s.deps.size = 0;
             int32_t j = s.last_of[s.mod[k]];

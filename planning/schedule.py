@@ -27,8 +27,8 @@ moves every step (quadratic-ish on the five-million-move strip plans of 10,000
 modules). Since session 17 the list schedule runs in C
 (``planning/_schedule.c``, the same steps as the Python one it replaced, which
 tests/planning/schedule_reference.py keeps): about 2 us a move instead of 10-18,
-and 26 bytes a move of its own (cells as grid indices, module, rotation,
-counts), a quarter of what the ``Move`` itself takes.
+and 22 bytes a move of its own (its start as a grid index, module,
+rotation, counts), a quarter of what the ``Move`` itself takes.
 
 The list schedule can get stuck: moves that ran early (out of serial order)
 may leave every ready move a cut vertex. :func:`schedule_in_pieces` then
@@ -225,8 +225,8 @@ def critical_chain(serial: list[Move]) -> tuple[int, list[int]]:
     return length, chain
 
 
-_schedule.set_rules(_AROUND, _ONE_ARC, [(r.joint, r.direction, _FLAT[r.joint, r.direction])
-                                         for r in ROTATIONS])
+_schedule.set_rules(_AROUND, _ONE_ARC, [(r.joint, r.direction, _FLAT[r.joint, r.direction],
+                                          r.substrate) for r in ROTATIONS])
 
 
 def schedule_parallel(initial: Configuration, serial: list[Move],

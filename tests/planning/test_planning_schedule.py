@@ -70,3 +70,13 @@ def test_the_c_schedule_refuses_a_move_no_rotation_makes():
                      bad.substrate_module)
     with pytest.raises(ValueError, match="no rotation about joint 9"):
         schedule_parallel(start, serial)
+
+
+def test_the_c_schedule_refuses_a_move_off_its_rotations_substrate():
+    start, serial = _strip_plan("blob", 30, 1)
+    bad = serial[0]
+    x, y = bad.substrate
+    serial[0] = Move(bad.module, bad.src, bad.dst, bad.joint, bad.direction, (x + 5, y),
+                     bad.substrate_module)
+    with pytest.raises(ValueError, match="not on its rotation's substrate"):
+        schedule_parallel(start, serial)
