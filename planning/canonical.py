@@ -110,12 +110,14 @@ class StripGrid:
     """The occupied cells of a strip route as a grid the C searches read
     (``planning/_strip.c``: most of a 10,000-module strip's time was spent in
     these searches in Python). The caller keeps it in step with its own set
-    (:meth:`put`); it spans ``cells`` (the configuration and the strip cells
-    it will fill) with a margin the searches never leave."""
+    (:meth:`put`); it spans ``occupied`` and ``span`` (the cells it will
+    fill: the strip, a search's target) with ``MARGIN`` cells around them.
+    The C side refuses a cell closer than 3 to the edge: a searched cell
+    touches a module, and a rotation looks 2 cells further."""
 
     MARGIN = 5
 
-    def __init__(self, occupied, span=()):
+    def __init__(self, occupied: set[Cell] | frozenset[Cell], span=()) -> None:
         xs = [x for x, _ in occupied] + [x for x, _ in span]
         ys = [y for _, y in occupied] + [y for _, y in span]
         self.xmin, self.ymin = min(xs) - self.MARGIN, min(ys) - self.MARGIN
