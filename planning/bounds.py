@@ -10,8 +10,13 @@
   is at least the smallest possible largest distance of an assignment of
   *all* initial cells onto *all* goal cells (the bottleneck assignment: here
   the shared cells need not stay, a chain of shifts can beat the cells to
-  leave). Found by bisection on the distance with a maximum bipartite matching
-  (:func:`scipy.sparse.csgraph.maximum_bipartite_matching`).
+  leave). Found by bisection on the distance: at each level, a perfect
+  matching of the pairs no farther apart exists when the cheapest assignment
+  with cost 1 for a pair farther apart costs nothing
+  (:func:`scipy.optimize.linear_sum_assignment`). scipy's
+  ``maximum_bipartite_matching`` did the same in most cases in milliseconds,
+  but took 44 s on one level of a blob of 1,000 (seed 0, distance 2, where
+  989 of 1,000 match); the assignment takes 0.04 s for the whole bisection.
 
 Both are exact up to ``ASSIGNMENT_LIMIT`` cells to leave and
 ``BOTTLENECK_LIMIT`` modules (dense distance matrices); above that they fall
@@ -24,8 +29,6 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import linear_sum_assignment
-from scipy.sparse import csr_matrix
-from scipy.sparse.csgraph import maximum_bipartite_matching
 
 from hexbot.planning.hexlattice import Cell
 
@@ -83,9 +86,9 @@ def step_bound(current: frozenset[Cell], goal: frozenset[Cell]) -> Bound:
     lo, hi = 0, len(levels) - 1  # a perfect matching exists at levels[hi]
     while lo < hi:
         mid = (lo + hi) // 2
-        graph = csr_matrix(dist <= levels[mid])
-        matched = maximum_bipartite_matching(graph, perm_type="column")
-        if (matched >= 0).all():
+        far = dist > levels[mid]
+        rows, cols = linear_sum_assignment(far)
+        if not far[rows, cols].any():
             hi = mid
         else:
             lo = mid + 1
