@@ -418,6 +418,22 @@ static void find_cuts(Grid *g)
     g->cut[root] = root_children > 1;
 }
 
+/* The grid, a list of cells checked to be a list, and the target's index
+ * (NULL with an exception when one of them is wrong). */
+static Grid *grid_list_target(PyObject *capsule, PyObject *list, PyObject *target_cell,
+                              const char *what, int32_t *target)
+{
+    Grid *g = grid_of(capsule);
+    if (!g)
+        return NULL;
+    if (!PyList_Check(list)) {
+        PyErr_Format(PyExc_TypeError, "%s must be a list of cells", what);
+        return NULL;
+    }
+    *target = cell_index(g, target_cell);
+    return *target < 0 ? NULL : g;
+}
+
 /* pick(grid, order, target, farthest, tries) -> (k, hops) or None
  *
  * canonical.StripGrid.pick: the first `tries` modules of `order` get a path
@@ -432,15 +448,9 @@ static PyObject *pick(PyObject *self, PyObject *args)
     Py_ssize_t farthest, tries;
     if (!PyArg_ParseTuple(args, "OOOnn", &capsule, &order, &target_cell, &farthest, &tries))
         return NULL;
-    Grid *g = grid_of(capsule);
+    int32_t target;
+    Grid *g = grid_list_target(capsule, order, target_cell, "pick: order", &target);
     if (!g)
-        return NULL;
-    if (!PyList_Check(order)) {
-        PyErr_SetString(PyExc_TypeError, "pick: order must be a list of cells");
-        return NULL;
-    }
-    int32_t target = cell_index(g, target_cell);
-    if (target < 0)
         return NULL;
     Py_ssize_t count = PyList_GET_SIZE(order);
     int32_t *at = malloc((count + 1) * sizeof *at);  /* order's cells; -1: scanned */
@@ -507,15 +517,9 @@ static PyObject *nearest(PyObject *self, PyObject *args)
     PyObject *capsule, *cells, *target_cell;
     if (!PyArg_ParseTuple(args, "OOO", &capsule, &cells, &target_cell))
         return NULL;
-    Grid *g = grid_of(capsule);
+    int32_t target;
+    Grid *g = grid_list_target(capsule, cells, target_cell, "nearest: cells", &target);
     if (!g)
-        return NULL;
-    if (!PyList_Check(cells)) {
-        PyErr_SetString(PyExc_TypeError, "nearest: cells must be a list");
-        return NULL;
-    }
-    int32_t target = cell_index(g, target_cell);
-    if (target < 0)
         return NULL;
     search_reach(g, target);
     PyObject *out = PyList_New(0);

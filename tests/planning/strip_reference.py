@@ -13,6 +13,7 @@ from collections import deque
 
 from hexbot.planning.configuration import articulation_points
 from hexbot.planning.robust import _moves_from, _single_arc, unwind
+from hexbot.planning.surface import rolling_distances
 
 FARTHEST = 4
 
@@ -35,15 +36,7 @@ def path_to(occupied, start, target):
 
 def distances_to(occupied, target):
     """Rotations from each cell a module rolls to ``target`` from, every module fixed."""
-    dist = {target: 0}
-    queue = deque([target])
-    while queue:
-        cell = queue.popleft()
-        for _, _, goal in _moves_from(cell, occupied, cell):
-            if goal not in dist:
-                dist[goal] = dist[cell] + 1
-                queue.append(goal)
-    return dist
+    return rolling_distances(occupied, [target])
 
 
 def first_steps(occupied, cell):
