@@ -84,7 +84,8 @@ def planning_extension(name: str) -> Extension:
     """hexbot.planning.<name> from planning/<name>.c: the planners' hot searches
     (_crossing: a journey's crossing, planning/journey.py; _strip: the strip
     route's mover pick and paths, planning/canonical.py; _schedule: the list
-    schedule, planning/schedule.py)."""
+    schedule, planning/schedule.py; _tidy: the detour-cutting pass,
+    planning/tidy.py)."""
     return Extension(
         f"hexbot.planning.{name}",
         sources=[f"planning/{name}.c"],
@@ -101,5 +102,6 @@ setup(
     include_package_data=True,
     package_data={"": ["*.toml", "*.tcss", "*.txt", "*.rules", "*.map", "*.json"]},
     ext_modules=[simavr_extension(), planning_extension("_crossing"),
-                 planning_extension("_strip"), planning_extension("_schedule")],
+                 planning_extension("_strip"), planning_extension("_schedule"),
+                 planning_extension("_tidy")],
 )

@@ -18,24 +18,30 @@ scrambles from 26.8 and 17.7 to 16.0 and 11.3 times the bottleneck bound:
 the detours were often on the plan's critical path. The strip's plans are
 not tidied: their journeys are shortest rolls already (1-3 % came off, at
 12 s for 5,000 moves of one).
+
+Each pass runs in C (``planning/_tidy.c``) over a grid of module numbers:
+in Python a pass over a blob of 1,000 (5,000-6,000 moves) took about 2 s,
+so until session 18 plans of more than 3,000 moves were left as they were,
+the blobs of 1,000 among them. tests/planning/tidy_reference.py keeps the
+Python pass; the two make the same plans, move for move.
 """
 
 from __future__ import annotations
 
-from collections import deque
+from array import array
 
+from hexbot.planning import _tidy
 from hexbot.planning.budget import NO_DEADLINE, Deadline
 from hexbot.planning.configuration import Configuration
-from hexbot.planning.hexlattice import Cell, distance
-from hexbot.planning.moves import Move
-from hexbot.planning.robust import _moves_from, unwind
-from hexbot.planning.schedule import cells_of, stays_connected
+from hexbot.planning.hexlattice import ROTATIONS, Cell, distance
+from hexbot.planning.moves import Move, new_move
+from hexbot.planning.robust import _AROUND12
+from hexbot.planning.schedule import _AROUND, _ONE_ARC
 
-#: Above this many moves a plan is left as it is: each move looked at costs a
-#: copy of the configuration and replays up to ``WINDOW`` moves (5,000 moves of
-#: a strip plan of 100 modules took 12 s; the local plans of 1,000 modules have
-#: 350-500 moves and take 0.15 s).
-TIDY_MOVES = 3_000
+#: Above this many moves a plan is left as it is. The local plans of 2,000
+#: modules (``JOURNEY_LIMIT``) stay below it; a pass costs at most
+#: ``WINDOW`` replayed moves per move.
+TIDY_MOVES = 200_000
 
 #: Moves scanned after a module's move for a later one to shortcut to.
 WINDOW = 1_000
@@ -45,6 +51,15 @@ PASSES = 4
 
 #: Moves between two looks at the deadline.
 DEADLINE_EVERY = 64
+
+#: Cells between the plan's cells and the grid's edge: a roll stays next to
+#: the modules, and a rotation looks two cells around its start.
+MARGIN = 5
+
+_INDEX = {(r.joint, r.direction): i for i, r in enumerate(ROTATIONS)}
+_BIT = {cell: 1 << i for i, cell in enumerate(_AROUND12)}
+_tidy.set_rules(_AROUND12, [(_BIT[r.substrate], sum(_BIT[c] for c in (r.goal, *r.swept)),
+                             *r.substrate, *r.goal) for r in ROTATIONS], _AROUND, _ONE_ARC)
 
 
 def shorten(initial: Configuration, moves: list[Move],
@@ -58,99 +73,55 @@ def shorten(initial: Configuration, moves: list[Move],
     plan = list(moves)
     for _ in range(PASSES):
         before = len(plan)
-        plan = _one_pass(initial, plan, deadline)
+        plan = one_pass(initial, plan, deadline)
         if len(plan) == before:
             break
     return plan
 
 
-def _one_pass(initial: Configuration, plan: list[Move], deadline: Deadline) -> list[Move]:
-    where: dict[Cell, int] = {c: m.id for c, m in initial.items()}
-    last = _last_moves(plan)
-    i = 0
-    while i < len(plan):
-        if i % DEADLINE_EVERY == 0 and deadline.expired():
-            break
-        found = _best_shortcut(where, plan, i, last[plan[i].module])
-        if found is None:
-            _apply(where, plan[i])
-            i += 1
-            continue
-        end, roll = found
-        module = plan[i].module
-        plan[i:end + 1] = [m for m in plan[i:end] if m.module != module] + roll
-        last = _last_moves(plan)
-    return plan
-
-
-def _last_moves(plan: list[Move]) -> dict[int, int]:
-    """Each module's last move (index): no shortcut of it reaches further."""
-    return {m.module: k for k, m in enumerate(plan)}
-
-
-def _best_shortcut(where: dict[Cell, int], plan: list[Move], start: int, last: int
-                   ) -> tuple[int, list[Move]] | None:
-    """(index of the module's last move replaced, the roll replacing its moves
-    from ``start`` on) saving the most rotations, or None."""
-    module = plan[start].module
-    home = plan[start].src
-    after = dict(where)
-    made = 0
-    best: tuple[int, int, list[Move]] | None = None  # (saving, end, roll)
-    for k in range(start, min(last + 1, start + WINDOW)):
-        move = plan[k]
-        if move.module == module:
-            made += 1
-            saving = best[0] if best else 0
-            # a rotation moves a module to a neighbouring cell: no roll is shorter
-            # than the distance, so most moves of a journey need no search
-            if distance(home, move.dst) < made - saving:
-                roll = _roll(after, home, move.dst, made - saving - 1)
-                if roll is not None:
-                    best = (made - len(roll), k, roll)
-            continue
-        if not _legal(after, move):
-            break
-        _apply(after, move)
-    return (best[1], best[2]) if best else None
-
-
-def _roll(where: dict[Cell, int], src: Cell, dst: Cell, limit: int) -> list[Move] | None:
-    """The fewest rotations (at most ``limit``) taking the module at ``src`` to
-    ``dst`` with the others fixed, or None (also when it would split the rest)."""
-    if src == dst:
+def one_pass(initial: Configuration, plan: list[Move],
+             deadline: Deadline = NO_DEADLINE) -> list[Move]:
+    """One walk over ``plan`` taking at each move the shortcut that saves the
+    most rotations (``planning/_tidy.c``)."""
+    if not plan:
         return []
-    if limit < 1 or not stays_connected(where.keys(), src):
-        return None
-    parent: dict[Cell, tuple | None] = {src: None}
-    depth = {src: 0}
-    queue = deque([src])
-    while queue:
-        cell = queue.popleft()
-        if depth[cell] == limit:
-            continue
-        for rule, sub, goal in _moves_from(cell, where, src):
-            if goal in parent:
-                continue
-            parent[goal] = (cell, rule, sub)
-            depth[goal] = depth[cell] + 1
-            if goal == dst:
-                module = where[src]
-                return [Move(module, a, b, r.joint, r.direction, s, where[s])
-                        for a, b, r, s in unwind(parent, dst)]
-            queue.append(goal)
-    return None
+    cells = set(initial.cells)
+    cells.update(m.src for m in plan)
+    cells.update(m.dst for m in plan)
+    xmin = min(x for x, _ in cells) - MARGIN
+    ymin = min(y for _, y in cells) - MARGIN
+    width = max(x for x, _ in cells) - xmin + 1 + MARGIN
+    height = max(y for _, y in cells) - ymin + 1 + MARGIN
+    ids = [m.id for _, m in initial.items()]
+    number = {module: k + 1 for k, module in enumerate(ids)}
+    where = array("i", bytes(4 * width * height))
+    for (x, y), m in initial.items():
+        where[x - xmin + (y - ymin) * width] = number[m.id]
+    encoded = array("i")
+    for move in plan:
+        rot = _INDEX.get((move.joint, move.direction))
+        if rot is None:
+            raise ValueError(f"no rotation about joint {move.joint} {move.direction}")
+        (x, y), (sx, sy) = move.src, ROTATIONS[rot].substrate
+        if move.substrate != (x + sx, y + sy):
+            raise ValueError(f"{move}: its substrate is not its rotation's")
+        encoded.extend((number[move.module], x - xmin + (y - ymin) * width, rot,
+                        number[move.substrate_module]))
+    distances = array("i", (distance((0, 0), (dx, dy))
+                            for dy in range(1 - height, height)
+                            for dx in range(1 - width, width)))
+    tidied = _tidy.one_pass(width, height, where, encoded, len(ids), distances, WINDOW,
+                            deadline)
+    return [plan[item] if isinstance(item, int) else _move(item, ids, xmin, ymin, width)
+            for item in tidied]
 
 
-def _legal(where: dict[Cell, int], move: Move) -> bool:
-    if where.get(move.src) != move.module:
-        return False
-    if where.get(move.substrate) != move.substrate_module:
-        return False
-    if any(c in where for c in cells_of(move)[1:]):
-        return False
-    return stays_connected(where.keys(), move.src)
-
-
-def _apply(where: dict[Cell, int], move: Move) -> None:
-    where[move.dst] = where.pop(move.src)
+def _move(item: tuple[int, int, int, int], ids: list[int], xmin: int, ymin: int,
+          width: int) -> Move:
+    """A move of a roll the C pass made: (module + 1, start, rotation, substrate + 1)."""
+    module, start, rot, sub = item
+    rule = ROTATIONS[rot]
+    x, y = xmin + start % width, ymin + start // width
+    (gx, gy), (sx, sy) = rule.goal, rule.substrate
+    return new_move(ids[module - 1], (x, y), (x + gx, y + gy), rule.joint, rule.direction,
+                    (x + sx, y + sy), ids[sub - 1])
