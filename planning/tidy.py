@@ -105,6 +105,8 @@ def one_pass(initial: Configuration, plan: list[Move],
         (x, y), (sx, sy) = move.src, ROTATIONS[rot].substrate
         if move.substrate != (x + sx, y + sy):
             raise ValueError(f"{move}: its substrate is not its rotation's")
+        if move.module not in number or move.substrate_module not in number:
+            raise ValueError(f"{move}: a module the initial configuration does not have")
         encoded.extend((number[move.module], x - xmin + (y - ymin) * width, rot,
                         number[move.substrate_module]))
     distances = array("i", (distance((0, 0), (dx, dy))

@@ -163,6 +163,10 @@ def test_the_c_pass_refuses_a_move_that_no_rotation_makes():
                      bad.substrate_module)
     with pytest.raises(ValueError, match="substrate is not its rotation's"):
         shorten(start, [elsewhere, *serial[1:]])
+    stranger = Move(10**6, bad.src, bad.dst, bad.joint, bad.direction, bad.substrate,
+                    bad.substrate_module)
+    with pytest.raises(ValueError, match="a module the initial configuration does not have"):
+        shorten(start, [stranger, *serial[1:]])
 
 
 def test_plans_of_more_than_3000_moves_are_tidied(monkeypatch):
