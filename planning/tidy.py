@@ -33,7 +33,7 @@ from array import array
 from hexbot.planning import _tidy
 from hexbot.planning.budget import NO_DEADLINE, Deadline
 from hexbot.planning.configuration import Configuration
-from hexbot.planning.hexlattice import ROTATIONS, Cell, distance
+from hexbot.planning.hexlattice import ROTATIONS, distance
 from hexbot.planning.moves import Move, new_move
 from hexbot.planning.robust import _AROUND12
 from hexbot.planning.schedule import _AROUND, _ONE_ARC

@@ -6,6 +6,7 @@ import pytest
 from test_planning_journey import INLET
 
 from hexbot.bench.planning import make_pair
+from hexbot.planning import tidy as tidy_module
 from hexbot.planning.budget import Deadline
 from hexbot.planning.canonical import replay
 from hexbot.planning.checker import check_plan
@@ -15,7 +16,6 @@ from hexbot.planning.journey import journey, journey_flow
 from hexbot.planning.local import forward
 from hexbot.planning.moves import Move
 from hexbot.planning.robust import _moves_from, is_cut, pack_consecutive, plan_robust, reverse_move
-from hexbot.planning import tidy as tidy_module
 from hexbot.planning.tidy import shorten
 from hexbot.planning.tracker import Tracker
 from tests.planning.tidy_reference import reference_pass, reference_shorten
