@@ -202,7 +202,7 @@ static int stays_connected(Pass *p, int32_t cell)
 /* The fewest rotations (at most `limit`) taking the module at `home` to
  * `target` with the others fixed, into p->roll: its length, or -1 (also when
  * the module's leaving would split the rest). Breadth first, the rotations in
- * ROTATIONS order, as tidy._roll. */
+ * ROTATIONS order, as the reference's _roll. */
 static int32_t roll(Pass *p, int32_t home, int32_t target, int32_t limit)
 {
     p->roll_len = 0;
@@ -272,14 +272,16 @@ static void link_own(Pass *p)
     }
 }
 
-/* tidy._best_shortcut: the end of the module's moves replaced by the best
+/* The reference's _best_shortcut: the end of the module's moves replaced by the best
  * roll (into p->best), or -1. */
 static Py_ssize_t best_shortcut(Pass *p, Py_ssize_t start, Py_ssize_t window)
 {
     const Entry *first = &p->plan[start];
     int32_t module = first->module, home = first->src;
-    /* tidy._furthest: no shortcut ends after the last move where the module
-     * has made more rotations than its distance from home */
+    /* No shortcut ends after the last move where the module has made more
+     * rotations than its distance from home (no roll is shorter than the
+     * distance): the replay stops there. The reference replays on to the
+     * module's last move, finding nothing more. */
     Py_ssize_t furthest = -1;
     int32_t made = 0;
     for (Py_ssize_t k = start; k >= 0 && k < start + window; k = p->next_own[k]) {
