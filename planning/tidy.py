@@ -30,6 +30,8 @@ from __future__ import annotations
 
 from array import array
 
+import numpy as np
+
 from hexbot.planning import _tidy
 from hexbot.planning.budget import NO_DEADLINE, Deadline
 from hexbot.planning.configuration import Configuration
@@ -109,9 +111,10 @@ def one_pass(initial: Configuration, plan: list[Move],
             raise ValueError(f"{move}: a module the initial configuration does not have")
         encoded.extend((number[move.module], x - xmin + (y - ymin) * width, rot,
                         number[move.substrate_module]))
-    distances = array("i", (distance((0, 0), (dx, dy))
-                            for dy in range(1 - height, height)
-                            for dx in range(1 - width, width)))
+    # the lattice distance of every offset of the grid, (dx, dy) at
+    # [dy + height - 1, dx + width - 1]: protocol.lattice.distance over arrays
+    offsets = np.meshgrid(np.arange(1 - width, width), np.arange(1 - height, height))
+    distances = np.ascontiguousarray(distance((0, 0), offsets), dtype=np.intc)
     tidied = _tidy.one_pass(width, height, where, encoded, len(ids), distances, WINDOW,
                             deadline)
     return [plan[item] if isinstance(item, int) else _move(item, ids, xmin, ymin, width)
