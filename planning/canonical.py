@@ -42,8 +42,6 @@ from hexbot.planning.configuration import (
 )
 from hexbot.planning.hexlattice import (
     ROTATIONS,
-    SIDE_OFFSETS,
-    SIDES,
     Cell,
     distance,
     neighbors,
@@ -52,10 +50,12 @@ from hexbot.planning.hexlattice import (
 )
 from hexbot.planning.moves import Move, new_move
 from hexbot.planning.robust import (
+    _AROUND12,
+    ROTATION_MASKS,
     PlanningFailure,
     serial_moves,
 )
-from hexbot.planning.schedule import stays_connected
+from hexbot.planning.schedule import _AROUND, stays_connected
 
 #: Largest shift (cells) of one strip -> strip hop of the direct planner.
 HOP = 1
@@ -89,17 +89,12 @@ def strip_shape(anchor: Cell, count: int, width: int) -> frozenset[Cell]:
     return frozenset([anchor, *strip_cells(anchor, count, width)])
 
 
-_AROUND = [SIDE_OFFSETS[s] for s in SIDES]
-
 # Table 4-3 by the occupancy around a mobile module. Every rotation only looks at
 # the 12 cells within two steps of it (6 neighbours, 6 second-ring cells between
 # them): the C searches (``planning/_strip.c``) read those as the bits of a mask
 # and try the rotations in the order of ROTATIONS (the order robust._moves_from
 # tries them, so they find the same paths as the generic search).
-_RING = sorted({o for r in ROTATIONS for o in (r.substrate, r.goal, *r.swept)})
-_strip.set_rules(_RING, [(1 << _RING.index(r.substrate),
-                          sum(1 << _RING.index(c) for c in (r.goal, *r.swept)),
-                          *r.substrate, *r.goal) for r in ROTATIONS], _AROUND)
+_strip.set_rules(_AROUND12, ROTATION_MASKS, _AROUND)
 
 #: Farthest modules (never cut vertices) tried with a path search each, before the
 #: search outward from the target (see :meth:`StripGrid.pick`).

@@ -99,6 +99,11 @@ _OPEN12 = [
           and not any(mask & _BIT12[c] for c in swept))
     for mask in range(1 << 12)
 ]
+#: The rotations as the C searches take them (``_strip.c``, ``_tidy.c``), in
+#: ROTATIONS order over the ring ``_AROUND12``: (substrate bit, goal and swept
+#: bits, substrate dx, dy, goal dx, dy).
+ROTATION_MASKS = [(_BIT12[r.substrate], sum(_BIT12[c] for c in (r.goal, *r.swept)),
+                   *r.substrate, *r.goal) for r in ROTATIONS]
 
 
 _RINGS12: dict[Cell, tuple[Cell, ...]] = {}  # cell -> its twelve cells, built once

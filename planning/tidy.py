@@ -37,7 +37,7 @@ from hexbot.planning.budget import NO_DEADLINE, Deadline
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import ROTATIONS, distance
 from hexbot.planning.moves import Move, new_move
-from hexbot.planning.robust import _AROUND12
+from hexbot.planning.robust import _AROUND12, ROTATION_MASKS
 from hexbot.planning.schedule import _AROUND, _ONE_ARC
 
 #: Above this many moves a plan is left as it is. The local plans of 2,000
@@ -59,9 +59,7 @@ DEADLINE_EVERY = 64
 MARGIN = 5
 
 _INDEX = {(r.joint, r.direction): i for i, r in enumerate(ROTATIONS)}
-_BIT = {cell: 1 << i for i, cell in enumerate(_AROUND12)}
-_tidy.set_rules(_AROUND12, [(_BIT[r.substrate], sum(_BIT[c] for c in (r.goal, *r.swept)),
-                             *r.substrate, *r.goal) for r in ROTATIONS], _AROUND, _ONE_ARC)
+_tidy.set_rules(_AROUND12, ROTATION_MASKS, _AROUND, _ONE_ARC)
 
 
 def shorten(initial: Configuration, moves: list[Move],
