@@ -85,7 +85,8 @@ def planning_extension(name: str) -> Extension:
     (_crossing: a journey's crossing, planning/journey.py; _strip: the strip
     route's mover pick and paths, planning/canonical.py; _schedule: the list
     schedule, planning/schedule.py; _tidy: the detour-cutting pass,
-    planning/tidy.py)."""
+    planning/tidy.py; _regroup: runs of moves re-planned together,
+    planning/regroup.py)."""
     return Extension(
         f"hexbot.planning.{name}",
         sources=[f"planning/{name}.c"],
@@ -103,5 +104,5 @@ setup(
     package_data={"": ["*.toml", "*.tcss", "*.txt", "*.rules", "*.map", "*.json"]},
     ext_modules=[simavr_extension(), planning_extension("_crossing"),
                  planning_extension("_strip"), planning_extension("_schedule"),
-                 planning_extension("_tidy")],
+                 planning_extension("_tidy"), planning_extension("_regroup")],
 )

@@ -99,7 +99,7 @@ _OPEN12 = [
           and not any(mask & _BIT12[c] for c in swept))
     for mask in range(1 << 12)
 ]
-#: The rotations as the C searches take them (``_strip.c``, ``_tidy.c``), in
+#: The rotations as the C searches take them (``_strip.c``, ``_tidy.c``, ``_regroup.c``), in
 #: ROTATIONS order over the ring ``_AROUND12``: (substrate bit, goal and swept
 #: bits, substrate dx, dy, goal dx, dy).
 ROTATION_MASKS = [(_BIT12[r.substrate], sum(_BIT12[c] for c in (r.goal, *r.swept)),
@@ -575,6 +575,7 @@ def plan_robust(
     from hexbot.planning.canonical import replay, via_strip
     from hexbot.planning.local import JOURNEY_LIMIT, LOCAL_LIMIT, local_cap, via_local
     from hexbot.planning.middle import via_middle
+    from hexbot.planning.regroup import regroup
     from hexbot.planning.tidy import shorten
 
     goal = frozenset(goal)
@@ -622,12 +623,21 @@ def plan_robust(
     if serial is None:
         plan.reason = "no plan found: " + "; ".join(failures)
         return plan
+    tidied = None
     if plan.method != "canonical strip":  # its journeys are shortest rolls already
-        serial = shorten(initial, serial, deadline)
+        tidied = shorten(initial, serial, deadline)
+        serial = regroup(initial, tidied, fixed, deadline)
     if not parallel:
         plan.steps = [Step([m]) for m in serial]
     else:
         plan.steps, late = schedule(initial, serial, deadline)
+        if tidied is not None and len(tidied) != len(serial):
+            # regrouped, a plan has fewer moves but can take more steps (one
+            # module makes the moves of two, one after the other): the
+            # shorter schedule wins, fewer moves on a tie
+            steps, slow = schedule(initial, tidied, deadline)
+            if len(steps) < len(plan.steps):
+                plan.steps, late = steps, slow
         if late:
             plan.warnings.append(late)
     final = replay(initial, [m for step in plan.steps for m in step.moves])

@@ -41,7 +41,10 @@ def test_thesis_examples_parallel_and_serial(fixture, request):
     for plan in (parallel, serial):
         assert plan.reached, plan.reason
         assert_legal(plan)
-    assert serial.move_count == parallel.move_count
+    # the shorter schedule of the tidied and the regrouped plan is kept: one
+    # move a step, that is the one with fewer moves
+    assert serial.move_count <= parallel.move_count
+    assert serial.time_steps == serial.move_count
     assert parallel.time_steps <= serial.time_steps
     assert parallel.time_steps >= step_lower_bound(initial.cells, goal)
 

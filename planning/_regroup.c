@@ -1,0 +1,671 @@
+/*
+ * hexbot.planning._regroup: one pass of regroup (a few modules' moves in a
+ * small area re-planned together), in C.
+ *
+ * The pass slides over the serial plan. At each stop it takes the longest
+ * run of consecutive moves whose cells (start, goal, swept, substrate) stay
+ * within `reach` of each other, at most `most` moves, and searches (A*)
+ * the fewest rotations that take the same area from the configuration
+ * before the run to the one after it, every module outside the area fixed.
+ * Modules are interchangeable there: a search may send another module than
+ * the plan did, which is where it finds what tidy's single-module rolls do
+ * not (a module steps aside and another fills its cell: one roll instead).
+ * When it finds fewer rotations than the run made, they replace the run;
+ * both end in the same configuration, so nothing later changes.
+ *
+ * A search only moves a module whose occupied neighbours form one arc and
+ * that has three free sides in a row (so it can leave and the rest stays
+ * one piece, whatever lies outside the area); the module bolted to the
+ * base never moves.
+ *
+ * No geometry lives here: regroup.py hands over, once, the 12 cells around
+ * a mobile module, the Table 4-3 rotations (substrate bit, goal and swept
+ * bits, substrate and goal offsets), the six sides and the table of rings
+ * a module can leave; with each pass the lattice distance of every offset
+ * of its grid.
+ */
+#define PY_SSIZE_T_CLEAN
+#include <Python.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define RING 12
+#define SIDES 6
+#define MAX_RULES 16
+#define AREA 128          /* cells of a search's area at most: two words a state */
+#define MAX_DIFF 32       /* cells a state differs from the target in, for the bound */
+#define DEADLINE_EVERY 32 /* stops between two looks at the deadline */
+
+static int ring_dx[RING], ring_dy[RING];
+static int side_dx[SIDES], side_dy[SIDES];
+static uint8_t leavable[64];
+static int rule_count;
+static uint16_t rule_sub[MAX_RULES], rule_free[MAX_RULES];
+static int rule_sx[MAX_RULES], rule_sy[MAX_RULES], rule_gx[MAX_RULES], rule_gy[MAX_RULES];
+static int rules_set;
+
+typedef struct {
+    uint64_t bits[2];
+} State;
+
+/* A state the search reached: how, in how many rotations. */
+typedef struct {
+    State state;
+    int32_t parent;
+    int16_t g;
+    int8_t from, rot; /* the rotation that led here: area cell, rule */
+} Node;
+
+typedef struct {
+    int32_t f, g, node;
+} Open;
+
+typedef struct {
+    int w, h;
+    size_t cells;
+    uint8_t *grid;              /* 0 empty, 1 a module, 2 the bolted module */
+    const int32_t *dist;        /* lattice distance by offset (see distance()) */
+    int16_t *area_of;           /* grid cell -> its index in the area, or -1 */
+    int ring_d[RING], side_d[SIDES], sub_d[MAX_RULES], goal_d[MAX_RULES];
+    int32_t *plan;              /* two ints a move: start cell, rotation */
+    Py_ssize_t n;
+    /* the search */
+    int32_t area[AREA];
+    int area_len;
+    Node *nodes;
+    int32_t node_count, max_states;
+    int32_t *table;             /* open addressing over nodes, -1 = free */
+    uint32_t table_mask;
+    Open *heap;
+    int32_t heap_len, heap_cap;
+    int32_t found[64];          /* the rotations found: cell, rule, reversed */
+    int found_len;
+} Pass;
+
+static void pass_free(Pass *p)
+{
+    free(p->grid), free(p->area_of), free(p->plan);
+    free(p->nodes), free(p->table), free(p->heap);
+}
+
+static int read_pairs(PyObject *seq, int count, int *xs, int *ys, const char *what)
+{
+    PyObject *f = PySequence_Fast(seq, what);
+    if (!f)
+        return -1;
+    if (PySequence_Fast_GET_SIZE(f) != count) {
+        PyErr_Format(PyExc_ValueError, "set_rules: %s needs %d (dx, dy) pairs", what, count);
+        Py_DECREF(f);
+        return -1;
+    }
+    for (int i = 0; i < count; i++)
+        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(f, i), "ii", &xs[i], &ys[i])) {
+            Py_DECREF(f);
+            return -1;
+        }
+    Py_DECREF(f);
+    return 0;
+}
+
+/* set_rules(ring, rotations, sides, leavable): ring = 12 (dx, dy); rotations =
+ * (substrate bit, goal and swept bits, substrate dx, dy, goal dx, dy) in
+ * ROTATIONS order; sides = 6 (dx, dy) in side order; leavable = 64 booleans
+ * (bit i of a mask: side i occupied): can a module with that ring leave? */
+static PyObject *set_rules(PyObject *self, PyObject *args)
+{
+    PyObject *ring, *rotations, *sides, *leave;
+    if (!PyArg_ParseTuple(args, "OOOO", &ring, &rotations, &sides, &leave))
+        return NULL;
+    if (read_pairs(ring, RING, ring_dx, ring_dy, "ring") < 0
+        || read_pairs(sides, SIDES, side_dx, side_dy, "sides") < 0)
+        return NULL;
+    PyObject *t = PySequence_Fast(rotations, "rotations");
+    if (!t)
+        return NULL;
+    PyObject *a = PySequence_Fast(leave, "leavable");
+    if (!a) {
+        Py_DECREF(t);
+        return NULL;
+    }
+    Py_ssize_t nr = PySequence_Fast_GET_SIZE(t);
+    if (nr < 1 || nr > MAX_RULES || PySequence_Fast_GET_SIZE(a) != 64) {
+        PyErr_SetString(PyExc_ValueError, "set_rules: 1-16 rotations, 64 rings");
+        goto fail;
+    }
+    for (int i = 0; i < nr; i++) {
+        unsigned sub, free_bits;
+        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(t, i), "IIiiii", &sub, &free_bits,
+                              &rule_sx[i], &rule_sy[i], &rule_gx[i], &rule_gy[i]))
+            goto fail;
+        rule_sub[i] = (uint16_t)sub, rule_free[i] = (uint16_t)free_bits;
+    }
+    for (int i = 0; i < 64; i++) {
+        int truth = PyObject_IsTrue(PySequence_Fast_GET_ITEM(a, i));
+        if (truth < 0)
+            goto fail;
+        leavable[i] = (uint8_t)truth;
+    }
+    rule_count = (int)nr;
+    rules_set = 1;
+    Py_DECREF(t), Py_DECREF(a);
+    Py_RETURN_NONE;
+fail:
+    Py_DECREF(t), Py_DECREF(a);
+    return NULL;
+}
+
+static inline int32_t distance(const Pass *p, int32_t a, int32_t b)
+{
+    int dx = a % p->w - b % p->w, dy = a / p->w - b / p->w;
+    return p->dist[(dx + p->w - 1) + (size_t)(dy + p->h - 1) * (2 * p->w - 1)];
+}
+
+static inline unsigned ring_mask(const Pass *p, int32_t i)
+{
+    unsigned mask = 0;
+    for (int b = 0; b < RING; b++)
+        if (p->grid[i + p->ring_d[b]])
+            mask |= 1u << b;
+    return mask;
+}
+
+static inline int is_open(unsigned mask, int r)
+{
+    return (mask & rule_sub[r]) && !(mask & rule_free[r]);
+}
+
+static inline int can_leave(const Pass *p, int32_t cell)
+{
+    unsigned mask = 0;
+    for (int i = 0; i < SIDES; i++)
+        if (p->grid[cell + p->side_d[i]])
+            mask |= 1u << i;
+    return leavable[mask];
+}
+
+/* The cells a move needs: start, substrate, goal and swept ones. */
+static int move_cells(const Pass *p, int32_t src, int rot, int32_t *out)
+{
+    int k = 0;
+    out[k++] = src;
+    out[k++] = src + p->sub_d[rot];
+    for (int b = 0; b < RING; b++)
+        if (rule_free[rot] >> b & 1)
+            out[k++] = src + p->ring_d[b];
+    return k;
+}
+
+static inline void apply(Pass *p, int32_t src, int rot)
+{
+    p->grid[src + p->goal_d[rot]] = p->grid[src];
+    p->grid[src] = 0;
+}
+
+static inline int has(const State *s, int i)
+{
+    return s->bits[i >> 6] >> (i & 63) & 1;
+}
+
+static inline void flip(State *s, int i)
+{
+    s->bits[i >> 6] ^= 1ull << (i & 63);
+}
+
+static inline int same(const State *a, const State *b)
+{
+    return a->bits[0] == b->bits[0] && a->bits[1] == b->bits[1];
+}
+
+static inline uint32_t hash(const State *s)
+{
+    uint64_t x = s->bits[0] * 0x9E3779B97F4A7C15ull ^ (s->bits[1] + 0x632BE59BD9B4E019ull)
+        * 0xC2B2AE3D27D4EB4Full;
+    return (uint32_t)(x ^ x >> 29);
+}
+
+/* The cheapest assignment of the area cells a state holds and the target
+ * does not onto those the target holds and the state does not (Hungarian
+ * method): no plan of the area does it in fewer rotations, and one rotation
+ * changes it by at most one, so A* with it finds the fewest. */
+static int32_t bound(const Pass *p, const State *s, const State *target)
+{
+    int off[MAX_DIFF + 1], empty[MAX_DIFF + 1], k = 0, e = 0;
+    for (int i = 0; i < p->area_len; i++) {
+        int a = has(s, i), b = has(target, i);
+        if (a && !b) {
+            if (k == MAX_DIFF)
+                return 0; /* too many to assign: no bound, still correct */
+            off[k++] = p->area[i];
+        } else if (b && !a && e < MAX_DIFF) {
+            empty[e++] = p->area[i];
+        }
+    }
+    if (k == 0 || k != e)
+        return 0;
+    /* e-maxx Hungarian, 1-based, over the k x k distances */
+    int32_t u[MAX_DIFF + 1] = {0}, v[MAX_DIFF + 1] = {0}, way[MAX_DIFF + 1];
+    int match[MAX_DIFF + 1] = {0};
+    for (int i = 1; i <= k; i++) {
+        int32_t minv[MAX_DIFF + 1];
+        uint8_t used[MAX_DIFF + 1] = {0};
+        for (int j = 0; j <= k; j++)
+            minv[j] = INT32_MAX;
+        match[0] = i;
+        int j0 = 0;
+        do {
+            used[j0] = 1;
+            int i0 = match[j0], j1 = 0;
+            int32_t delta = INT32_MAX;
+            for (int j = 1; j <= k; j++) {
+                if (used[j])
+                    continue;
+                int32_t cur = distance(p, off[i0 - 1], empty[j - 1]) - u[i0] - v[j];
+                if (cur < minv[j])
+                    minv[j] = cur, way[j] = j0;
+                if (minv[j] < delta)
+                    delta = minv[j], j1 = j;
+            }
+            for (int j = 0; j <= k; j++) {
+                if (used[j])
+                    u[match[j]] += delta, v[j] -= delta;
+                else
+                    minv[j] -= delta;
+            }
+            j0 = j1;
+        } while (match[j0] != 0);
+        do {
+            int j1 = way[j0];
+            match[j0] = match[j1];
+            j0 = j1;
+        } while (j0);
+    }
+    return -v[0];
+}
+
+static void heap_push(Pass *p, Open item)
+{
+    int32_t i = p->heap_len++;
+    while (i > 0) {
+        int32_t up = (i - 1) / 2;
+        Open *q = &p->heap[up];
+        if (q->f < item.f || (q->f == item.f && q->g >= item.g))
+            break;
+        p->heap[i] = *q;
+        i = up;
+    }
+    p->heap[i] = item;
+}
+
+static Open heap_pop(Pass *p)
+{
+    Open top = p->heap[0], last = p->heap[--p->heap_len];
+    int32_t i = 0;
+    for (;;) {
+        int32_t c = 2 * i + 1;
+        if (c >= p->heap_len)
+            break;
+        if (c + 1 < p->heap_len && (p->heap[c + 1].f < p->heap[c].f
+                                    || (p->heap[c + 1].f == p->heap[c].f
+                                        && p->heap[c + 1].g > p->heap[c].g)))
+            c++;
+        if (last.f < p->heap[c].f || (last.f == p->heap[c].f && last.g >= p->heap[c].g))
+            break;
+        p->heap[i] = p->heap[c];
+        i = c;
+    }
+    p->heap[i] = last;
+    return top;
+}
+
+/* The node of `s`, added (with g = INT16_MAX) if new; -1 when full. */
+static int32_t lookup(Pass *p, const State *s)
+{
+    uint32_t slot = hash(s) & p->table_mask;
+    for (;;) {
+        int32_t k = p->table[slot];
+        if (k < 0)
+            break;
+        if (same(&p->nodes[k].state, s))
+            return k;
+        slot = (slot + 1) & p->table_mask;
+    }
+    if (p->node_count == p->max_states)
+        return -1;
+    int32_t k = p->node_count++;
+    p->nodes[k] = (Node){*s, -1, INT16_MAX, -1, -1};
+    p->table[slot] = k;
+    return k;
+}
+
+/* Write a state's cells into the grid (the bolted module keeps its mark). */
+static void write_state(Pass *p, const State *s)
+{
+    for (int i = 0; i < p->area_len; i++) {
+        uint8_t *c = &p->grid[p->area[i]];
+        if (*c != 2)
+            *c = (uint8_t)has(s, i);
+    }
+}
+
+/* The fewest rotations (fewer than `limit`) from `start` to `target` inside
+ * the area, into p->found; their number, or -1. The grid is left as it was. */
+static int search(Pass *p, const State *start, const State *target, int limit)
+{
+    memset(p->table, 0xff, (size_t)(p->table_mask + 1) * sizeof *p->table);
+    p->node_count = 0, p->heap_len = 0;
+    int32_t first = lookup(p, start);
+    p->nodes[first].g = 0;
+    heap_push(p, (Open){bound(p, start, target), 0, first});
+    int32_t goal = -1;
+    while (p->heap_len) {
+        Open top = heap_pop(p);
+        Node *node = &p->nodes[top.node];
+        if (top.g != node->g)
+            continue; /* reached again since, by fewer rotations */
+        if (same(&node->state, target)) {
+            goal = top.node;
+            break;
+        }
+        if (top.f >= limit)
+            break; /* everything left needs `limit` rotations or more */
+        State here = node->state;
+        write_state(p, &here);
+        int full = 0;
+        for (int i = 0; i < p->area_len && !full; i++) {
+            int32_t cell = p->area[i];
+            if (p->grid[cell] != 1 || !can_leave(p, cell))
+                continue;
+            unsigned mask = ring_mask(p, cell);
+            for (int r = 0; r < rule_count; r++) {
+                if (!is_open(mask, r))
+                    continue;
+                int to = p->area_of[cell + p->goal_d[r]];
+                if (to < 0)
+                    continue; /* the area's edge */
+                State next = here;
+                flip(&next, i), flip(&next, to);
+                int32_t k = lookup(p, &next);
+                if (k < 0) {
+                    full = 1;
+                    break;
+                }
+                Node *n = &p->nodes[k];
+                if (n->g <= top.g + 1)
+                    continue;
+                n->g = (int16_t)(top.g + 1), n->parent = top.node;
+                n->from = (int8_t)i, n->rot = (int8_t)r;
+                int32_t f = top.g + 1 + bound(p, &next, target);
+                if (f >= limit)
+                    continue;
+                if (p->heap_len == p->heap_cap) {
+                    full = 1;
+                    break;
+                }
+                heap_push(p, (Open){f, top.g + 1, k});
+            }
+        }
+        if (full)
+            break;
+    }
+    if (goal < 0)
+        return -1;
+    int length = p->nodes[goal].g;
+    for (int32_t k = goal, at = length - 1; at >= 0; k = p->nodes[k].parent, at--) {
+        p->found[2 * at] = p->area[p->nodes[k].from];
+        p->found[2 * at + 1] = p->nodes[k].rot;
+    }
+    return p->found_len = length;
+}
+
+static void forget_area(Pass *p);
+
+/* The run of moves from `start` whose cells stay within `reach` of each
+ * other, at most `most`: its last move. Its cells go to p->area (the area
+ * is the run's cells and their neighbours, `pad` times). */
+static Py_ssize_t take_run(Pass *p, Py_ssize_t start, int reach, int most, int pad)
+{
+    int32_t touched[AREA], cells[2 + RING];
+    int count = 0;
+    Py_ssize_t last = start - 1;
+    for (Py_ssize_t k = start; k < p->n && k - start < most; k++) {
+        int m = move_cells(p, p->plan[2 * k], p->plan[2 * k + 1], cells), fresh = 0;
+        int32_t add[2 + RING];
+        int ok = 1;
+        for (int i = 0; i < m && ok; i++) {
+            int seen = 0;
+            for (int j = 0; j < count && !seen; j++)
+                seen = touched[j] == cells[i];
+            for (int j = 0; j < fresh && !seen; j++)
+                seen = add[j] == cells[i];
+            if (seen)
+                continue;
+            for (int j = 0; j < count && ok; j++)
+                ok = distance(p, touched[j], cells[i]) <= reach;
+            for (int j = 0; j < fresh && ok; j++)
+                ok = distance(p, add[j], cells[i]) <= reach;
+            add[fresh++] = cells[i];
+        }
+        if (!ok || count + fresh > AREA)
+            break;
+        memcpy(touched + count, add, (size_t)fresh * sizeof *add);
+        count += fresh;
+        last = k;
+    }
+    /* the area: the touched cells grown by `pad` rings of neighbours */
+    p->area_len = 0;
+    for (int i = 0; i < count; i++) {
+        p->area_of[touched[i]] = (int16_t)p->area_len;
+        p->area[p->area_len++] = touched[i];
+    }
+    for (int grow = 0, from = 0; grow < pad; grow++) {
+        int to = p->area_len;
+        for (int i = from; i < to; i++)
+            for (int s = 0; s < SIDES; s++) {
+                int32_t c = p->area[i] + p->side_d[s];
+                if (p->area_of[c] >= 0)
+                    continue;
+                if (p->area_len == AREA) { /* too big: no search */
+                    forget_area(p);
+                    return last;
+                }
+                p->area_of[c] = (int16_t)p->area_len;
+                p->area[p->area_len++] = c;
+            }
+        from = to;
+    }
+    return last;
+}
+
+static void forget_area(Pass *p)
+{
+    for (int i = 0; i < p->area_len; i++)
+        p->area_of[p->area[i]] = -1;
+    p->area_len = 0;
+}
+
+static int read_ints(PyObject *obj, Py_buffer *view, Py_ssize_t count, const char *what)
+{
+    if (PyObject_GetBuffer(obj, view, PyBUF_C_CONTIGUOUS | PyBUF_FORMAT) < 0)
+        return -1;
+    if (view->itemsize != 4 || !view->format || strcmp(view->format, "i") != 0
+        || (count >= 0 && view->len != count * 4)) {
+        PyErr_Format(PyExc_ValueError, "one_pass: %s must be C ints (%zd)", what, count);
+        PyBuffer_Release(view);
+        return -1;
+    }
+    return 0;
+}
+
+static State area_state(const Pass *p)
+{
+    State s = {{0, 0}};
+    for (int i = 0; i < p->area_len; i++)
+        if (p->grid[p->area[i]])
+            flip(&s, i);
+    return s;
+}
+
+/* Try the run from `start`: the plan shrinks when a search finds fewer
+ * rotations. Returns the rotations saved. */
+static Py_ssize_t regroup_run(Pass *p, Py_ssize_t start, int reach, int most, int pad)
+{
+    Py_ssize_t last = take_run(p, start, reach, most, pad), saved = 0;
+    Py_ssize_t length = last - start + 1;
+    if (length >= 3 && p->area_len > 0) {
+        State before = area_state(p);
+        for (Py_ssize_t k = start; k <= last; k++)
+            apply(p, p->plan[2 * k], p->plan[2 * k + 1]);
+        State after = area_state(p);
+        write_state(p, &before);
+        int found = search(p, &before, &after, (int)length);
+        write_state(p, &before);
+        if (found >= 0) {
+            memcpy(p->plan + 2 * start, p->found, (size_t)found * 2 * sizeof *p->plan);
+            memmove(p->plan + 2 * (start + found), p->plan + 2 * (last + 1),
+                    (size_t)(p->n - last - 1) * 2 * sizeof *p->plan);
+            p->n -= length - found;
+            saved = length - found;
+        }
+    }
+    forget_area(p);
+    return saved;
+}
+
+/* one_pass(width, height, grid, plan, distances, reach, most, pad, stride,
+ *          max_states, deadline) -> list of (start, rotation)
+ *
+ * grid: width * height bytes, 0 empty, 1 a module, 2 the module bolted to
+ * the base, cell (x, y) at x + y * width; plan: 2 ints a move (start cell,
+ * rotation); distances: (2 width - 1) * (2 height - 1) ints, the lattice
+ * distance of the offset (dx, dy) at (dx + width - 1) + (dy + height - 1) *
+ * (2 width - 1); reach, most, pad, stride, max_states: regroup.py's REACH,
+ * MOST, PAD, STRIDE, STATES; deadline: its expired() is asked every 32
+ * stops, and the pass ends there when it says so. Starts of the plan must
+ * lie 4 + pad cells inside the grid. */
+static PyObject *one_pass(PyObject *self, PyObject *args)
+{
+    int w, h, reach, most, pad, stride, max_states;
+    PyObject *grid_obj, *plan_obj, *dist_obj, *deadline;
+    if (!PyArg_ParseTuple(args, "iiOOOiiiiiO", &w, &h, &grid_obj, &plan_obj, &dist_obj,
+                          &reach, &most, &pad, &stride, &max_states, &deadline))
+        return NULL;
+    if (!rules_set) {
+        PyErr_SetString(PyExc_RuntimeError, "one_pass: set_rules first");
+        return NULL;
+    }
+    if (w < 9 || h < 9 || (size_t)w * h > 1u << 28 || reach < 1 || most < 1 || most > 30
+        || pad < 0 || pad > 3 || stride < 1 || max_states < 1 || max_states > 1 << 24) {
+        PyErr_SetString(PyExc_ValueError, "one_pass: a grid of at least 9 x 9, reach >= 1, "
+                        "1-30 moves a run, pad 0-3, stride >= 1, 1 to 2**24 states");
+        return NULL;
+    }
+    Py_buffer grid_view, plan_view, dist_view;
+    if (PyObject_GetBuffer(grid_obj, &grid_view, PyBUF_C_CONTIGUOUS) < 0)
+        return NULL;
+    if (grid_view.len != (Py_ssize_t)w * h) {
+        PyErr_SetString(PyExc_ValueError, "one_pass: grid must be width * height bytes");
+        PyBuffer_Release(&grid_view);
+        return NULL;
+    }
+    if (read_ints(plan_obj, &plan_view, -1, "plan") < 0) {
+        PyBuffer_Release(&grid_view);
+        return NULL;
+    }
+    if (read_ints(dist_obj, &dist_view, (Py_ssize_t)(2 * w - 1) * (2 * h - 1),
+                  "distances") < 0) {
+        PyBuffer_Release(&grid_view), PyBuffer_Release(&plan_view);
+        return NULL;
+    }
+    Py_ssize_t n = plan_view.len / 8;
+    Pass p = {.w = w, .h = h, .cells = (size_t)w * h, .dist = dist_view.buf, .n = n,
+              .max_states = max_states};
+    PyObject *result = NULL;
+    uint32_t table_size = 1;
+    while (table_size < 2u * (uint32_t)max_states)
+        table_size <<= 1;
+    p.table_mask = table_size - 1;
+    p.grid = malloc(p.cells);
+    p.area_of = malloc(p.cells * sizeof *p.area_of);
+    p.plan = malloc((size_t)(2 * n + 2) * sizeof *p.plan);
+    p.nodes = malloc((size_t)max_states * sizeof *p.nodes);
+    p.table = malloc((size_t)table_size * sizeof *p.table);
+    /* a push per improvement of a node: four a node, and a search that
+     * would push more stops as when it runs out of states */
+    p.heap_cap = 4 * max_states;
+    p.heap = malloc((size_t)p.heap_cap * sizeof *p.heap);
+    if (!p.grid || !p.area_of || !p.plan || !p.nodes || !p.table || !p.heap) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    memcpy(p.grid, grid_view.buf, p.cells);
+    memset(p.area_of, 0xff, p.cells * sizeof *p.area_of);
+    memcpy(p.plan, plan_view.buf, (size_t)(2 * n) * sizeof *p.plan);
+    for (int i = 0; i < RING; i++)
+        p.ring_d[i] = ring_dx[i] + ring_dy[i] * w;
+    for (int i = 0; i < SIDES; i++)
+        p.side_d[i] = side_dx[i] + side_dy[i] * w;
+    for (int r = 0; r < rule_count; r++)
+        p.sub_d[r] = rule_sx[r] + rule_sy[r] * w, p.goal_d[r] = rule_gx[r] + rule_gy[r] * w;
+    int margin = 4 + pad;
+    for (Py_ssize_t k = 0; k < n; k++) {
+        int32_t src = p.plan[2 * k], rot = p.plan[2 * k + 1];
+        int32_t x = src % w, y = src / w;
+        if (rot < 0 || rot >= rule_count || src < 0 || (size_t)src >= p.cells
+            || x < margin || x >= w - margin || y < margin || y >= h - margin) {
+            PyErr_Format(PyExc_ValueError, "one_pass: move %zd is off the grid or "
+                         "names no rotation", k);
+            goto done;
+        }
+    }
+    Py_ssize_t stops = 0;
+    for (Py_ssize_t i = 0; i < p.n; stops++) {
+        if (stops % DEADLINE_EVERY == 0) {
+            PyObject *expired = PyObject_CallMethod(deadline, "expired", NULL);
+            int stop = expired ? PyObject_IsTrue(expired) : -1;
+            Py_XDECREF(expired);
+            if (stop < 0)
+                goto done;
+            if (stop)
+                break;
+        }
+        regroup_run(&p, i, reach, most, pad);
+        for (Py_ssize_t k = i; k < i + stride && k < p.n; k++)
+            apply(&p, p.plan[2 * k], p.plan[2 * k + 1]);
+        i += stride;
+    }
+    result = PyList_New(p.n);
+    if (!result)
+        goto done;
+    for (Py_ssize_t k = 0; k < p.n; k++) {
+        PyObject *item = Py_BuildValue("(ii)", p.plan[2 * k], p.plan[2 * k + 1]);
+        if (!item) {
+            Py_CLEAR(result);
+            goto done;
+        }
+        PyList_SET_ITEM(result, k, item);
+    }
+done:
+    pass_free(&p);
+    PyBuffer_Release(&grid_view), PyBuffer_Release(&plan_view), PyBuffer_Release(&dist_view);
+    return result;
+}
+
+static PyMethodDef methods[] = {
+    {"set_rules", set_rules, METH_VARARGS, "set_rules(ring, rotations, sides, leavable)"},
+    {"one_pass", one_pass, METH_VARARGS,
+     "one_pass(width, height, grid, plan, distances, reach, most, pad, stride, max_states, "
+     "deadline) -> plan"},
+    {NULL, NULL, 0, NULL},
+};
+
+static struct PyModuleDef module = {
+    PyModuleDef_HEAD_INIT, "hexbot.planning._regroup",
+    "One pass of regroup (moves in a small area re-planned together) over a grid.", -1,
+    methods,
+};
+
+PyMODINIT_FUNC PyInit__regroup(void)
+{
+    return PyModule_Create(&module);
+}
