@@ -36,6 +36,7 @@
 #define AREA 128          /* cells of a search's area at most: two words a state */
 #define MAX_DIFF 32       /* cells a state differs from the target in, for the bound */
 #define DEADLINE_EVERY 32 /* stops between two looks at the deadline */
+#define MAX_RUN 100       /* moves in a run at most */
 
 static int ring_dx[RING], ring_dy[RING];
 static int side_dx[SIDES], side_dy[SIDES];
@@ -79,7 +80,7 @@ typedef struct {
     uint32_t table_mask;
     Open *heap;
     int32_t heap_len, heap_cap;
-    int32_t found[64];          /* the rotations found: cell, rule, reversed */
+    int32_t found[2 * MAX_RUN]; /* the rotations found: (cell, rule) pairs */
     int found_len;
 } Pass;
 
@@ -554,10 +555,10 @@ static PyObject *one_pass(PyObject *self, PyObject *args)
         PyErr_SetString(PyExc_RuntimeError, "one_pass: set_rules first");
         return NULL;
     }
-    if (w < 9 || h < 9 || (size_t)w * h > 1u << 28 || reach < 1 || most < 1 || most > 30
+    if (w < 9 || h < 9 || (size_t)w * h > 1u << 28 || reach < 1 || most < 1 || most > MAX_RUN
         || pad < 0 || pad > 3 || stride < 1 || max_states < 1 || max_states > 1 << 24) {
         PyErr_SetString(PyExc_ValueError, "one_pass: a grid of at least 9 x 9, reach >= 1, "
-                        "1-30 moves a run, pad 0-3, stride >= 1, 1 to 2**24 states");
+                        "1-100 moves a run, pad 0-3, stride >= 1, 1 to 2**24 states");
         return NULL;
     }
     Py_buffer grid_view, plan_view, dist_view;
