@@ -35,7 +35,7 @@
 #define MAX_RULES 16
 #define AREA 128          /* cells of a search's area at most: two words a state */
 #define MAX_DIFF 32       /* cells a state differs from the target in, for the bound */
-#define DEADLINE_EVERY 32 /* stops between two looks at the deadline */
+#define DEADLINE_EVERY 8  /* stops between two looks at the deadline */
 #define MAX_RUN 100       /* moves in a run at most */
 
 static int ring_dx[RING], ring_dy[RING];
@@ -541,7 +541,7 @@ static Py_ssize_t regroup_run(Pass *p, Py_ssize_t start, int reach, int most, in
  * rotation); distances: (2 width - 1) * (2 height - 1) ints, the lattice
  * distance of the offset (dx, dy) at (dx + width - 1) + (dy + height - 1) *
  * (2 width - 1); reach, most, pad, stride, max_states: regroup.py's REACH,
- * MOST, PAD, STRIDE, STATES; deadline: its expired() is asked every 32
+ * MOST, PAD, STRIDE, STATES; deadline: its expired() is asked every 8
  * stops, and the pass ends there when it says so. Starts of the plan must
  * lie 4 + pad cells inside the grid. */
 static PyObject *one_pass(PyObject *self, PyObject *args)
