@@ -90,6 +90,7 @@ def planning_extension(name: str) -> Extension:
     return Extension(
         f"hexbot.planning.{name}",
         sources=[f"planning/{name}.c"],
+        depends=["planning/_rules.h"],
         extra_compile_args=["-std=gnu11", "-O2", "-Wall",
                             "-Werror=implicit-function-declaration"],
     )

@@ -24,27 +24,16 @@
  * a module can leave; with each pass the lattice distance of every offset
  * of its grid.
  */
-#define PY_SSIZE_T_CLEAN
-#include <Python.h>
-#include <stdint.h>
+#include "_rules.h"
 #include <stdlib.h>
 #include <string.h>
 
-#define RING 12
-#define SIDES 6
-#define MAX_RULES 16
 #define AREA 128          /* cells of a search's area at most: two words a state */
 #define MAX_DIFF 32       /* cells a state differs from the target in, for the bound */
 #define DEADLINE_EVERY 8  /* stops between two looks at the deadline */
 #define MAX_RUN 100       /* moves in a run at most */
 
-static int ring_dx[RING], ring_dy[RING];
-static int side_dx[SIDES], side_dy[SIDES];
-static uint8_t leavable[64];
-static int rule_count;
-static uint16_t rule_sub[MAX_RULES], rule_free[MAX_RULES];
-static int rule_sx[MAX_RULES], rule_sy[MAX_RULES], rule_gx[MAX_RULES], rule_gy[MAX_RULES];
-static int rules_set;
+#define leavable ring_table /* set_rules' table: can a module with that ring leave? */
 
 typedef struct {
     uint64_t bits[2];
@@ -90,76 +79,17 @@ static void pass_free(Pass *p)
     free(p->nodes), free(p->table), free(p->heap);
 }
 
-static int read_pairs(PyObject *seq, int count, int *xs, int *ys, const char *what)
-{
-    PyObject *f = PySequence_Fast(seq, what);
-    if (!f)
-        return -1;
-    if (PySequence_Fast_GET_SIZE(f) != count) {
-        PyErr_Format(PyExc_ValueError, "set_rules: %s needs %d (dx, dy) pairs", what, count);
-        Py_DECREF(f);
-        return -1;
-    }
-    for (int i = 0; i < count; i++)
-        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(f, i), "ii", &xs[i], &ys[i])) {
-            Py_DECREF(f);
-            return -1;
-        }
-    Py_DECREF(f);
-    return 0;
-}
-
-/* set_rules(ring, rotations, sides, leavable): ring = 12 (dx, dy); rotations =
- * (substrate bit, goal and swept bits, substrate dx, dy, goal dx, dy) in
- * ROTATIONS order; sides = 6 (dx, dy) in side order; leavable = 64 booleans
- * (bit i of a mask: side i occupied): can a module with that ring leave? */
+/* set_rules(ring, rotations, sides, leavable): see _rules.h; leavable = 64
+ * booleans (bit i of a mask: side i occupied): can a module with that ring
+ * leave? */
 static PyObject *set_rules(PyObject *self, PyObject *args)
 {
-    PyObject *ring, *rotations, *sides, *leave;
-    if (!PyArg_ParseTuple(args, "OOOO", &ring, &rotations, &sides, &leave))
-        return NULL;
-    if (read_pairs(ring, RING, ring_dx, ring_dy, "ring") < 0
-        || read_pairs(sides, SIDES, side_dx, side_dy, "sides") < 0)
-        return NULL;
-    PyObject *t = PySequence_Fast(rotations, "rotations");
-    if (!t)
-        return NULL;
-    PyObject *a = PySequence_Fast(leave, "leavable");
-    if (!a) {
-        Py_DECREF(t);
-        return NULL;
-    }
-    Py_ssize_t nr = PySequence_Fast_GET_SIZE(t);
-    if (nr < 1 || nr > MAX_RULES || PySequence_Fast_GET_SIZE(a) != 64) {
-        PyErr_SetString(PyExc_ValueError, "set_rules: 1-16 rotations, 64 rings");
-        goto fail;
-    }
-    for (int i = 0; i < nr; i++) {
-        unsigned sub, free_bits;
-        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(t, i), "IIiiii", &sub, &free_bits,
-                              &rule_sx[i], &rule_sy[i], &rule_gx[i], &rule_gy[i]))
-            goto fail;
-        rule_sub[i] = (uint16_t)sub, rule_free[i] = (uint16_t)free_bits;
-    }
-    for (int i = 0; i < 64; i++) {
-        int truth = PyObject_IsTrue(PySequence_Fast_GET_ITEM(a, i));
-        if (truth < 0)
-            goto fail;
-        leavable[i] = (uint8_t)truth;
-    }
-    rule_count = (int)nr;
-    rules_set = 1;
-    Py_DECREF(t), Py_DECREF(a);
-    Py_RETURN_NONE;
-fail:
-    Py_DECREF(t), Py_DECREF(a);
-    return NULL;
+    return read_rules(args, "leavable");
 }
 
 static inline int32_t distance(const Pass *p, int32_t a, int32_t b)
 {
-    int dx = a % p->w - b % p->w, dy = a / p->w - b / p->w;
-    return p->dist[(dx + p->w - 1) + (size_t)(dy + p->h - 1) * (2 * p->w - 1)];
+    return grid_distance(p->dist, p->w, p->h, a, b);
 }
 
 static inline unsigned ring_mask(const Pass *p, int32_t i)
@@ -169,11 +99,6 @@ static inline unsigned ring_mask(const Pass *p, int32_t i)
         if (p->grid[i + p->ring_d[b]])
             mask |= 1u << b;
     return mask;
-}
-
-static inline int is_open(unsigned mask, int r)
-{
-    return (mask & rule_sub[r]) && !(mask & rule_free[r]);
 }
 
 static inline int can_leave(const Pass *p, int32_t cell)

@@ -36,10 +36,11 @@ import numpy as np
 from hexbot.planning import _regroup
 from hexbot.planning.budget import NO_DEADLINE, Deadline
 from hexbot.planning.configuration import Configuration
-from hexbot.planning.hexlattice import ROTATIONS, Cell, distance
+from hexbot.planning.hexlattice import ROTATIONS, Cell
 from hexbot.planning.moves import Move, new_move
 from hexbot.planning.robust import _AROUND12, ROTATION_MASKS, reverse_move
 from hexbot.planning.schedule import _AROUND
+from hexbot.planning.tidy import grid_frame, offset_distances
 from hexbot.planning.windows import _LEAVABLE
 
 #: Largest lattice distance between two cells of a run.
@@ -109,13 +110,7 @@ def one_pass(initial: Configuration, plan: list[Move], fixed: Cell | None = None
     """One walk over ``plan`` re-planning its runs (``planning/_regroup.c``)."""
     if not plan:
         return []
-    cells = set(initial.cells)
-    cells.update(m.src for m in plan)
-    cells.update(m.dst for m in plan)
-    xmin = min(x for x, _ in cells) - MARGIN
-    ymin = min(y for _, y in cells) - MARGIN
-    width = max(x for x, _ in cells) - xmin + 1 + MARGIN
-    height = max(y for _, y in cells) - ymin + 1 + MARGIN
+    xmin, ymin, width, height = grid_frame(initial, plan, MARGIN)
     grid = bytearray(width * height)
     for x, y in initial.cells:
         grid[x - xmin + (y - ymin) * width] = 2 if (x, y) == fixed else 1
@@ -128,12 +123,8 @@ def one_pass(initial: Configuration, plan: list[Move], fixed: Cell | None = None
         if move.substrate != (x + sx, y + sy):
             raise ValueError(f"{move}: its substrate is not its rotation's")
         encoded[2 * k], encoded[2 * k + 1] = x - xmin + (y - ymin) * width, rot
-    # the lattice distance of every offset of the grid, (dx, dy) at
-    # [dy + height - 1, dx + width - 1]: protocol.lattice.distance over arrays
-    offsets = np.meshgrid(np.arange(1 - width, width), np.arange(1 - height, height))
-    distances = np.ascontiguousarray(distance((0, 0), offsets), dtype=np.intc)
-    hops = _regroup.one_pass(width, height, grid, encoded, distances, REACH, MOST, PAD,
-                             STRIDE, STATES, deadline)
+    hops = _regroup.one_pass(width, height, grid, encoded, offset_distances(width, height),
+                             REACH, MOST, PAD, STRIDE, STATES, deadline)
     return _replay(initial, hops, xmin, ymin, width)
 
 

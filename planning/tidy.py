@@ -85,13 +85,7 @@ def one_pass(initial: Configuration, plan: list[Move],
     most rotations (``planning/_tidy.c``)."""
     if not plan:
         return []
-    cells = set(initial.cells)
-    cells.update(m.src for m in plan)
-    cells.update(m.dst for m in plan)
-    xmin = min(x for x, _ in cells) - MARGIN
-    ymin = min(y for _, y in cells) - MARGIN
-    width = max(x for x, _ in cells) - xmin + 1 + MARGIN
-    height = max(y for _, y in cells) - ymin + 1 + MARGIN
+    xmin, ymin, width, height = grid_frame(initial, plan, MARGIN)
     ids = [m.id for _, m in initial.items()]
     number = {module: k + 1 for k, module in enumerate(ids)}
     where = array("i", bytes(4 * width * height))
@@ -109,14 +103,31 @@ def one_pass(initial: Configuration, plan: list[Move],
             raise ValueError(f"{move}: a module the initial configuration does not have")
         encoded.extend((number[move.module], x - xmin + (y - ymin) * width, rot,
                         number[move.substrate_module]))
-    # the lattice distance of every offset of the grid, (dx, dy) at
-    # [dy + height - 1, dx + width - 1]: protocol.lattice.distance over arrays
-    offsets = np.meshgrid(np.arange(1 - width, width), np.arange(1 - height, height))
-    distances = np.ascontiguousarray(distance((0, 0), offsets), dtype=np.intc)
-    tidied = _tidy.one_pass(width, height, where, encoded, len(ids), distances, WINDOW,
-                            deadline)
+    tidied = _tidy.one_pass(width, height, where, encoded, len(ids),
+                            offset_distances(width, height), WINDOW, deadline)
     return [plan[item] if isinstance(item, int) else _move(item, ids, xmin, ymin, width)
             for item in tidied]
+
+
+def grid_frame(initial: Configuration, plan: list[Move],
+               margin: int) -> tuple[int, int, int, int]:
+    """(xmin, ymin, width, height) of a grid holding every cell of ``initial``
+    and ``plan`` ``margin`` cells inside its edges (the C passes' grids)."""
+    cells = set(initial.cells)
+    cells.update(m.src for m in plan)
+    cells.update(m.dst for m in plan)
+    xmin = min(x for x, _ in cells) - margin
+    ymin = min(y for _, y in cells) - margin
+    width = max(x for x, _ in cells) - xmin + 1 + margin
+    height = max(y for _, y in cells) - ymin + 1 + margin
+    return xmin, ymin, width, height
+
+
+def offset_distances(width: int, height: int) -> np.ndarray:
+    """The lattice distance of every offset of a grid, (dx, dy) at [dy + height
+    - 1, dx + width - 1] (C ints): protocol.lattice.distance over arrays."""
+    offsets = np.meshgrid(np.arange(1 - width, width), np.arange(1 - height, height))
+    return np.ascontiguousarray(distance((0, 0), offsets), dtype=np.intc)
 
 
 def _move(item: tuple[int, int, int, int], ids: list[int], xmin: int, ymin: int,
