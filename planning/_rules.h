@@ -1,5 +1,6 @@
 /*
- * The tables the grid passes (_tidy.c, _regroup.c) take from Python once,
+ * The tables the grid searches (_strip.c, _tidy.c, _regroup.c) take from
+ * Python once,
  * and the few look-ups both make with them. No geometry lives here: the
  * Python side hands over the 12 cells around a mobile module, the Table
  * 4-3 rotations (substrate bit, goal and swept bits, substrate and goal
@@ -44,14 +45,15 @@ static int read_pairs(PyObject *seq, int count, int *xs, int *ys, const char *wh
     return 0;
 }
 
-/* set_rules(ring, rotations, sides, table): ring = 12 (dx, dy); rotations =
- * (substrate bit, goal and swept bits, substrate dx, dy, goal dx, dy) in
+/* set_rules(ring, rotations, sides[, table]): ring = 12 (dx, dy); rotations
+ * = (substrate bit, goal and swept bits, substrate dx, dy, goal dx, dy) in
  * ROTATIONS order; sides = 6 (dx, dy) in side order; table = 64 booleans
- * over the rings of six, named `table_name` in errors. */
+ * over the rings of six, named `table_name` in errors (NULL: no table). */
 static PyObject *read_rules(PyObject *args, const char *table_name)
 {
-    PyObject *ring, *rotations, *sides, *table;
-    if (!PyArg_ParseTuple(args, "OOOO", &ring, &rotations, &sides, &table))
+    PyObject *ring, *rotations, *sides, *table = NULL;
+    if (table_name ? !PyArg_ParseTuple(args, "OOOO", &ring, &rotations, &sides, &table)
+                   : !PyArg_ParseTuple(args, "OOO", &ring, &rotations, &sides))
         return NULL;
     if (read_pairs(ring, RING, ring_dx, ring_dy, "ring") < 0
         || read_pairs(sides, SIDES, side_dx, side_dy, "sides") < 0)
@@ -59,15 +61,15 @@ static PyObject *read_rules(PyObject *args, const char *table_name)
     PyObject *t = PySequence_Fast(rotations, "rotations");
     if (!t)
         return NULL;
-    PyObject *a = PySequence_Fast(table, table_name);
+    PyObject *a = table ? PySequence_Fast(table, table_name) : PyTuple_New(0);
     if (!a) {
         Py_DECREF(t);
         return NULL;
     }
     Py_ssize_t nr = PySequence_Fast_GET_SIZE(t);
-    if (nr < 1 || nr > MAX_RULES || PySequence_Fast_GET_SIZE(a) != 64) {
-        PyErr_Format(PyExc_ValueError, "set_rules: 1-16 rotations, 64 entries of %s",
-                     table_name);
+    if (nr < 1 || nr > MAX_RULES || (table && PySequence_Fast_GET_SIZE(a) != 64)) {
+        PyErr_Format(PyExc_ValueError, "set_rules: 1-16 rotations%s%s", table ? ", 64 of " : "",
+                     table ? table_name : "");
         goto fail;
     }
     for (int i = 0; i < nr; i++) {
@@ -77,7 +79,7 @@ static PyObject *read_rules(PyObject *args, const char *table_name)
             goto fail;
         rule_sub[i] = (uint16_t)sub, rule_free[i] = (uint16_t)free_bits;
     }
-    for (int i = 0; i < 64; i++) {
+    for (int i = 0; table && i < 64; i++) {
         int truth = PyObject_IsTrue(PySequence_Fast_GET_ITEM(a, i));
         if (truth < 0)
             goto fail;

@@ -16,26 +16,15 @@
  * side order. A grid is a capsule owned by Python; the caller keeps it in
  * step with its set of occupied cells (two updates per module gathered).
  */
-#define PY_SSIZE_T_CLEAN
-#include <Python.h>
-#include <stdint.h>
+#include "_rules.h"
 #include <stdlib.h>
 #include <string.h>
 
-#define RING 12
-#define SIDES 6
-#define MAX_RULES 16
 /* Occupied cells and searched targets stay this far inside the grid's edge:
  * a searched cell touches a module, and the 12-cell ring reaches 2 cells
  * further, so no look-up leaves the grid. */
 #define MARGIN 3
 
-static int ring_dx[RING], ring_dy[RING];
-static int side_dx[SIDES], side_dy[SIDES];
-static int rule_count;
-static uint16_t rule_sub[MAX_RULES], rule_free[MAX_RULES];
-static int rule_sx[MAX_RULES], rule_sy[MAX_RULES], rule_gx[MAX_RULES], rule_gy[MAX_RULES];
-static int rules_set;
 
 typedef struct {
     int xmin, ymin, w, h;
@@ -113,11 +102,6 @@ static inline unsigned ring_mask(const Grid *g, int32_t i)
     return mask;
 }
 
-static inline int is_open(unsigned mask, int r)
-{
-    return (mask & rule_sub[r]) && !(mask & rule_free[r]);
-}
-
 static inline void next_stamp(uint32_t *stamp, uint32_t *marks, size_t cells)
 {
     if (++*stamp == 0) {  /* wrapped: forget every mark once */
@@ -126,47 +110,10 @@ static inline void next_stamp(uint32_t *stamp, uint32_t *marks, size_t cells)
     }
 }
 
-/* set_rules(ring, rotations, sides): ring = 12 (dx, dy); rotations = (substrate
- * bit, free bits, substrate dx, dy, goal dx, dy) in ROTATIONS order; sides = 6
- * (dx, dy) in side order. */
+/* set_rules(ring, rotations, sides): see _rules.h (no table). */
 static PyObject *set_rules(PyObject *self, PyObject *args)
 {
-    PyObject *ring, *rotations, *sides;
-    if (!PyArg_ParseTuple(args, "OOO", &ring, &rotations, &sides))
-        return NULL;
-    PyObject *r = PySequence_Fast(ring, "ring"), *t = NULL, *s = NULL;
-    if (!r)
-        return NULL;
-    t = PySequence_Fast(rotations, "rotations");
-    s = t ? PySequence_Fast(sides, "sides") : NULL;
-    if (!s)
-        goto fail;
-    Py_ssize_t nr = PySequence_Fast_GET_SIZE(t);
-    if (PySequence_Fast_GET_SIZE(r) != RING || PySequence_Fast_GET_SIZE(s) != SIDES
-        || nr < 1 || nr > MAX_RULES) {
-        PyErr_SetString(PyExc_ValueError, "set_rules: 12 ring cells, 1-16 rotations, 6 sides");
-        goto fail;
-    }
-    for (int i = 0; i < RING; i++)
-        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(r, i), "ii", &ring_dx[i], &ring_dy[i]))
-            goto fail;
-    for (int i = 0; i < SIDES; i++)
-        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(s, i), "ii", &side_dx[i], &side_dy[i]))
-            goto fail;
-    for (int i = 0; i < nr; i++) {
-        unsigned sub, free_bits;
-        if (!PyArg_ParseTuple(PySequence_Fast_GET_ITEM(t, i), "IIiiii", &sub, &free_bits,
-                              &rule_sx[i], &rule_sy[i], &rule_gx[i], &rule_gy[i]))
-            goto fail;
-        rule_sub[i] = (uint16_t)sub, rule_free[i] = (uint16_t)free_bits;
-    }
-    rule_count = (int)nr;
-    rules_set = 1;
-    Py_DECREF(r), Py_DECREF(t), Py_DECREF(s);
-    Py_RETURN_NONE;
-fail:
-    Py_XDECREF(r), Py_XDECREF(t), Py_XDECREF(s);
-    return NULL;
+    return read_rules(args, NULL);
 }
 
 /* grid(xmin, ymin, width, height) -> an empty grid */

@@ -40,7 +40,7 @@ from hexbot.planning.hexlattice import ROTATIONS, Cell
 from hexbot.planning.moves import Move, new_move
 from hexbot.planning.robust import _AROUND12, ROTATION_MASKS, reverse_move
 from hexbot.planning.schedule import _AROUND
-from hexbot.planning.tidy import grid_frame, offset_distances
+from hexbot.planning.tidy import grid_frame, offset_distances, rotation_index
 from hexbot.planning.windows import _LEAVABLE
 
 #: Largest lattice distance between two cells of a run.
@@ -63,7 +63,6 @@ REGROUP_MOVES = 200_000
 #: cells around its start, and an area grows ``PAD`` beyond them.
 MARGIN = 5 + PAD
 
-_INDEX = {(r.joint, r.direction): i for i, r in enumerate(ROTATIONS)}
 _regroup.set_rules(_AROUND12, ROTATION_MASKS, _AROUND, _LEAVABLE)
 
 
@@ -116,12 +115,8 @@ def one_pass(initial: Configuration, plan: list[Move], fixed: Cell | None = None
         grid[x - xmin + (y - ymin) * width] = 2 if (x, y) == fixed else 1
     encoded = np.empty(2 * len(plan), dtype=np.intc)
     for k, move in enumerate(plan):
-        rot = _INDEX.get((move.joint, move.direction))
-        if rot is None:
-            raise ValueError(f"no rotation about joint {move.joint} {move.direction}")
-        (x, y), (sx, sy) = move.src, ROTATIONS[rot].substrate
-        if move.substrate != (x + sx, y + sy):
-            raise ValueError(f"{move}: its substrate is not its rotation's")
+        rot = rotation_index(move)
+        x, y = move.src
         encoded[2 * k], encoded[2 * k + 1] = x - xmin + (y - ymin) * width, rot
     hops = _regroup.one_pass(width, height, grid, encoded, offset_distances(width, height),
                              REACH, MOST, PAD, STRIDE, STATES, deadline)

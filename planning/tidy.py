@@ -93,12 +93,8 @@ def one_pass(initial: Configuration, plan: list[Move],
         where[x - xmin + (y - ymin) * width] = number[m.id]
     encoded = array("i")
     for move in plan:
-        rot = _INDEX.get((move.joint, move.direction))
-        if rot is None:
-            raise ValueError(f"no rotation about joint {move.joint} {move.direction}")
-        (x, y), (sx, sy) = move.src, ROTATIONS[rot].substrate
-        if move.substrate != (x + sx, y + sy):
-            raise ValueError(f"{move}: its substrate is not its rotation's")
+        rot = rotation_index(move)
+        x, y = move.src
         if move.module not in number or move.substrate_module not in number:
             raise ValueError(f"{move}: a module the initial configuration does not have")
         encoded.extend((number[move.module], x - xmin + (y - ymin) * width, rot,
@@ -107,6 +103,18 @@ def one_pass(initial: Configuration, plan: list[Move],
                             offset_distances(width, height), WINDOW, deadline)
     return [plan[item] if isinstance(item, int) else _move(item, ids, xmin, ymin, width)
             for item in tidied]
+
+
+def rotation_index(move: Move) -> int:
+    """``move``'s index in ROTATIONS, the C passes' number for it (ValueError
+    for a joint no rotation has or a substrate that is not the rotation's)."""
+    rot = _INDEX.get((move.joint, move.direction))
+    if rot is None:
+        raise ValueError(f"no rotation about joint {move.joint} {move.direction}")
+    (x, y), (sx, sy) = move.src, ROTATIONS[rot].substrate
+    if move.substrate != (x + sx, y + sy):
+        raise ValueError(f"{move}: its substrate is not its rotation's")
+    return rot
 
 
 def grid_frame(initial: Configuration, plan: list[Move],
