@@ -70,7 +70,6 @@ typedef struct {
     Open *heap;
     int32_t heap_len, heap_cap;
     int32_t found[2 * MAX_RUN]; /* the rotations found: (cell, rule) pairs */
-    int found_len;
 } Pass;
 
 static void pass_free(Pass *p)
@@ -341,7 +340,7 @@ static int search(Pass *p, const State *start, const State *target, int limit)
         p->found[2 * at] = p->area[p->nodes[k].from];
         p->found[2 * at + 1] = p->nodes[k].rot;
     }
-    return p->found_len = length;
+    return length;
 }
 
 static void forget_area(Pass *p);
