@@ -35,12 +35,13 @@ import numpy as np
 
 from hexbot.planning import _regroup
 from hexbot.planning.budget import NO_DEADLINE, Deadline
+from hexbot.planning.canonical import replay
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import ROTATIONS, Cell
 from hexbot.planning.moves import Move, new_move
 from hexbot.planning.robust import _AROUND12, ROTATION_MASKS, reverse_move
 from hexbot.planning.schedule import _AROUND
-from hexbot.planning.tidy import grid_frame, offset_distances, rotation_index
+from hexbot.planning.tidy import grid_frame, offset_distances, rotation_index, shorten
 from hexbot.planning.windows import _LEAVABLE
 
 #: Largest lattice distance between two cells of a run.
@@ -72,8 +73,6 @@ def regroup(initial: Configuration, moves: list[Move], fixed: Cell | None = None
     followed by tidy's (see the module docstring). Returns ``moves`` itself
     above ``REGROUP_MOVES`` moves; stops early, with what it has so far, when
     the deadline comes."""
-    from hexbot.planning.tidy import shorten
-
     if len(moves) > REGROUP_MOVES:
         return moves
     plan = list(moves)
@@ -93,8 +92,6 @@ def backwards_pass(initial: Configuration, plan: list[Move], fixed: Cell | None 
     again: the runs start at other moves, and find other shortcuts (5-10 %
     fewer moves and steps on the blobs of 300 and 1,000 after a forward
     pass, docs/planning.md)."""
-    from hexbot.planning.canonical import replay
-
     if not plan:
         return []
     end = replay(initial, plan)

@@ -90,6 +90,8 @@ def test_plan_robust_tidies_its_plans(monkeypatch):
     report = check_plan(start, b, plan.steps)
     assert report.ok, report.problem
     monkeypatch.setattr("hexbot.planning.tidy.shorten", lambda i, moves, d=None: moves)
+    # regroup tidies between its passes: untidied means without it too
+    monkeypatch.setattr("hexbot.planning.regroup.regroup", lambda i, moves, f=None, d=None: moves)
     untidy = plan_robust(start, b)
     assert plan.method == untidy.method == "local"
     assert plan.move_count < untidy.move_count
@@ -179,6 +181,8 @@ def test_plans_of_more_than_3000_moves_are_tidied(monkeypatch):
     report = check_plan(start, b, plan.steps)
     assert report.ok, report.problem
     monkeypatch.setattr("hexbot.planning.tidy.shorten", lambda i, moves, d=None: moves)
+    # regroup tidies between its passes: untidied means without it too
+    monkeypatch.setattr("hexbot.planning.regroup.regroup", lambda i, moves, f=None, d=None: moves)
     untidy = plan_robust(start, b)
     assert untidy.move_count > 3_000
     assert plan.move_count < 0.9 * untidy.move_count
