@@ -11,7 +11,8 @@ memory = that process's maximum resident set, interpreter and libraries
 included) with the robust mode's time budget, then replayed by the
 independent checker (:mod:`hexbot.planning.checker`); a pair counts as planned
 only if the checker accepts it. Bounds: :mod:`hexbot.planning.bounds`
-(moves: assignment; time steps: bottleneck). Families: ``blob`` = two
+(moves: assignment; time steps: the pivot bound, and the plain bottleneck
+beside it, the issue's first yardstick). Families: ``blob`` = two
 independent random blobs grown from (0, 0); ``scramble`` = a blob and the
 cells after 3n random legal moves of it (:mod:`hexbot.planning.generate`).
 Each pair runs in a fresh process (``spawn``, one task per child) so that its
@@ -306,7 +307,7 @@ def make_pair(family: str, n: int, seed: int):
 
 def plan_pair(family: str, n: int, seed: int, fixed: bool, budget: float) -> dict:
     """Plan one pair, check it independently, measure it (runs in a child process)."""
-    from hexbot.planning.bounds import move_lower_bound, step_bound
+    from hexbot.planning.bounds import bottleneck_bound, move_lower_bound, step_bound
     from hexbot.planning.checker import check_plan
     from hexbot.planning.configuration import Configuration
     from hexbot.planning.robust import plan_robust
@@ -318,7 +319,8 @@ def plan_pair(family: str, n: int, seed: int, fixed: bool, budget: float) -> dic
     plan = plan_robust(start, goal, fixed=anchor, budget=budget)
     seconds = time.perf_counter() - t0
     report = check_plan(start, goal, plan.steps, fixed=anchor) if plan.reached else None
-    moves, steps = move_lower_bound(initial, goal), step_bound(initial, goal)
+    moves, steps = move_lower_bound(initial, goal), step_bound(initial, goal, anchor)
+    plain = bottleneck_bound(initial, goal)
     return {
         "family": family, "modules": n, "seed": seed, "fixed": fixed,
         "planned": bool(report and report.ok),
@@ -327,6 +329,7 @@ def plan_pair(family: str, n: int, seed: int, fixed: bool, budget: float) -> dic
         "warnings": plan.warnings,  # e.g. the schedule ran out of time: one move per step
         "moves": plan.move_count, "move_bound": moves.value, "move_bound_kind": moves.kind,
         "steps": plan.time_steps, "step_bound": steps.value, "step_bound_kind": steps.kind,
+        "bottleneck": plain.value, "bottleneck_kind": plain.kind,
         "seconds": round(seconds, 3),
         "peak_mib": round(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024, 1),
     }
@@ -342,8 +345,9 @@ def summary(rows: list[dict]) -> str:
     for r in rows:
         groups.setdefault((r["family"], r["modules"], r["fixed"]), []).append(r)
     lines = ["| family | n | fixed | planned | moves / LB (min, median, max) "
-             "| makespan / bottleneck (min, median, max) | slowest (s) | peak MiB | methods |",
-             "|---|---:|---|---|---|---|---:|---:|---|"]
+             "| makespan / pivot bound (min, median, max) | median / plain bottleneck "
+             "| slowest (s) | peak MiB | methods |",
+             "|---|---:|---|---|---|---|---:|---:|---:|---|"]
     for (family, n, fixed), rs in sorted(groups.items()):
         ok = [r for r in rs if r["planned"]]
         def spread(key_a, key_b, ok=ok):
@@ -351,6 +355,10 @@ def summary(rows: list[dict]) -> str:
                 return "-"
             vals = sorted(_ratio(r[key_a], r[key_b]) for r in ok)
             return f"{vals[0]:.1f}, {statistics.median(vals):.1f}, {vals[-1]:.1f}"
+
+        def median(key_a, key_b, ok=ok):
+            vals = [_ratio(r[key_a], r[key_b]) for r in ok if key_b in r]
+            return f"{statistics.median(vals):.1f}" if vals else "-"
         kinds = {r["move_bound_kind"] for r in rs} | {r["step_bound_kind"] for r in rs}
         weak = " (nearest bound)" if "nearest" in kinds else ""
         methods: dict[str, int] = {}
@@ -359,6 +367,7 @@ def summary(rows: list[dict]) -> str:
         lines.append(
             f"| {family} | {n:,} | {'yes' if fixed else 'no'} | {len(ok)}/{len(rs)} | "
             f"{spread('moves', 'move_bound')}{weak} | {spread('steps', 'step_bound')} | "
+            f"{median('steps', 'bottleneck')} | "
             f"{max(r['seconds'] for r in rs):.2f} | {max(r['peak_mib'] for r in rs):.0f} | "
             + ", ".join(f"{k} {v}" for k, v in sorted(methods.items())) + " |")
     return "\n".join(lines)

@@ -5,7 +5,7 @@ import itertools
 import pytest
 
 from hexbot.planning.bank import small_cases
-from hexbot.planning.bounds import hex_distances, move_lower_bound, step_bound
+from hexbot.planning.bounds import bottleneck_bound, hex_distances, move_lower_bound
 from hexbot.planning.checker import check_plan
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.exact import EXACT_LIMIT, plan_exact
@@ -64,7 +64,7 @@ def test_bounds_match_brute_force_on_small_sets(seed):
     a, b = random_blob(6, 2 * seed, 0.3), random_blob(6, 2 * seed + 1, 0.3)
     total, worst = brute_force(a, b, hex_distances)
     assert move_lower_bound(a, b).value == total
-    assert step_bound(a, b).value == worst
+    assert bottleneck_bound(a, b).value == worst
 
 
 @pytest.mark.parametrize("seed", range(3))
@@ -77,7 +77,7 @@ def test_the_bottleneck_bound_is_the_level_where_a_perfect_matching_appears(seed
     from hexbot.bench.planning import make_pair
 
     a, b = make_pair("blob", 300, seed)
-    level = step_bound(a, b).value
+    level = bottleneck_bound(a, b).value
     d = hex_distances(sorted(a), sorted(b))
 
     def perfect(limit):
@@ -91,4 +91,4 @@ def test_bottleneck_counts_shifts_of_shared_cells():
     # the only cell to leave is three cells from the only cell to fill
     a = frozenset({(0, 0), (1, 0), (2, 0)})
     b = frozenset({(1, 0), (2, 0), (3, 0)})
-    assert move_lower_bound(a, b).value == 3 and step_bound(a, b).value == 1
+    assert move_lower_bound(a, b).value == 3 and bottleneck_bound(a, b).value == 1

@@ -6,7 +6,7 @@ import pytest
 
 from hexbot.bench.planning import make_pair
 from hexbot.planning import journey as journeys
-from hexbot.planning.bounds import move_lower_bound, step_bound
+from hexbot.planning.bounds import bottleneck_bound, move_lower_bound
 from hexbot.planning.budget import Deadline, PlanningFailure
 from hexbot.planning.canonical import replay
 from hexbot.planning.checker import check_plan
@@ -208,7 +208,7 @@ def test_a_local_change_of_1000_modules_is_planned_locally():
     bound = move_lower_bound(a, b).value
     assert plan.move_count <= 3 * bound
     # relays and reversed runs (session 11): 34 time steps -> 28, bottleneck 3
-    assert len(plan.steps) <= 10 * step_bound(a, b).value
+    assert len(plan.steps) <= 10 * bottleneck_bound(a, b).value
     report = check_plan(start, b, plan.steps)
     assert report.ok, report.problem
 
