@@ -53,11 +53,12 @@ import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
+from hexbot.planning.bounds import step_bound
 from hexbot.planning.budget import DEFAULT_BUDGET
 from hexbot.planning.config_io import load_configuration
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.generate import parallelogram, random_blob
-from hexbot.planning.robust import plan_robust, step_lower_bound
+from hexbot.planning.robust import plan_robust
 from hexbot.planning.thesis.planner import plan_faithful
 
 EXAMPLES = Path(__file__).resolve().parents[1] / "planning" / "examples"
@@ -88,7 +89,7 @@ def row(family: str, n: int, plan, seconds: float, initial, goal) -> dict:
         "moves": plan.move_count,
         "time_steps": plan.time_steps,
         "move_lower_bound": plan.lower_bound,
-        "step_lower_bound": step_lower_bound(initial, goal),
+        "step_lower_bound": step_bound(frozenset(initial), frozenset(goal)).value,
         "method": plan.method,
         "reason": plan.reason,
     }

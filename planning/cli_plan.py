@@ -20,6 +20,7 @@ from typing import Any, TextIO
 from hexbot.errors import ScenarioError
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.workflows import Verify
+from hexbot.planning.bounds import step_bound
 from hexbot.planning.budget import DEFAULT_BUDGET
 from hexbot.planning.commands import MoveCommands, command_json, plan_to_commands
 from hexbot.planning.config_io import load_configuration
@@ -27,7 +28,6 @@ from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import Cell
 from hexbot.planning.moves import Move
 from hexbot.planning.plan import Plan
-from hexbot.planning.robust import step_lower_bound
 from hexbot.protocol.wire import MAX_SELECT_ID
 
 MODES = ("faithful-serial", "faithful-parallel", "robust", "exact")
@@ -177,7 +177,7 @@ def _text_lines(plan: Plan, style: str) -> Iterator[str]:
         f"goal {'reached' if plan.reached else 'NOT reached'}, "
         f"{plan.time_steps} time step(s), {plan.move_count} move(s)"
         + (f" (lower bounds: {plan.lower_bound} moves, "
-           f"{step_lower_bound(plan.initial.cells, plan.goal)} time steps)"
+           f"{step_bound(plan.initial.cells, plan.goal).value} time steps)"
            if plan.lower_bound is not None else "")
     )
     omitted = unaddressable(plan)

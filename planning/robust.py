@@ -679,12 +679,3 @@ def reversed_plan(
         replace(reverse_move(m), module=real[m.module], substrate_module=real[m.substrate_module])
         for m in reversed(backward)
     ]
-
-
-def step_lower_bound(current: frozenset[Cell], goal: frozenset[Cell]) -> int:
-    """Fewest time steps: some void is this far from every electron."""
-    electrons = list(current - goal)
-    voids = list(goal - current)
-    if not electrons or not voids:
-        return 0
-    return max(min(distance(e, v) for e in electrons) for v in voids)

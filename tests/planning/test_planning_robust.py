@@ -6,12 +6,13 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from hexbot.planning.bounds import step_bound
 from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.checker import check_plan
 from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.generate import parallelogram, random_blob
 from hexbot.planning.plan import Step, check_step
-from hexbot.planning.robust import is_immobile, plan_robust, step_lower_bound
+from hexbot.planning.robust import is_immobile, plan_robust
 
 
 def assert_legal(plan):
@@ -46,7 +47,7 @@ def test_thesis_examples_parallel_and_serial(fixture, request):
     assert serial.move_count <= parallel.move_count
     assert serial.time_steps == serial.move_count
     assert parallel.time_steps <= serial.time_steps
-    assert parallel.time_steps >= step_lower_bound(initial.cells, goal)
+    assert parallel.time_steps >= step_bound(initial.cells, goal).value
 
 
 def test_reverse_s02_needs_goal_modules_filled_in_order(s02):
