@@ -70,6 +70,10 @@ typedef struct {
     Open *heap;
     int32_t heap_len, heap_cap;
     int32_t found[2 * MAX_RUN]; /* the rotations found: (cell, rule) pairs */
+    /* search_area only: the component (of the modules outside the area) of each
+     * grid cell, -1 for none; NULL: a module must have its neighbours in one arc */
+    const int32_t *labels;
+    int32_t label_count;
 } Pass;
 
 static void pass_free(Pass *p)
@@ -107,6 +111,68 @@ static inline int can_leave(const Pass *p, int32_t cell)
         if (p->grid[cell + p->side_d[i]])
             mask |= 1u << i;
     return leavable[mask];
+}
+
+static int32_t find_root(int32_t *parent, int32_t i)
+{
+    while (parent[i] != i)
+        i = parent[i] = parent[parent[i]];
+    return i;
+}
+
+/* Can the module at `cell` leave without cutting the configuration? The ring
+ * test first; with labels, a module whose neighbours form several arcs may
+ * leave when they stay joined: through the area's other modules and the
+ * outside components (a union-find over both, the area's state on the grid). */
+static int can_move(const Pass *p, int32_t cell)
+{
+    if (can_leave(p, cell))
+        return 1;
+    if (!p->labels)
+        return 0;
+    int32_t parent[AREA + 4 * AREA];
+    int32_t nodes = p->area_len + p->label_count;
+    if (nodes > AREA + 4 * AREA)
+        return 0;
+    for (int32_t i = 0; i < nodes; i++)
+        parent[i] = i;
+    for (int i = 0; i < p->area_len; i++) {
+        int32_t c = p->area[i];
+        if (c == cell || !p->grid[c])
+            continue;
+        for (int s = 0; s < SIDES; s++) {
+            int32_t n = c + p->side_d[s], other = -1;
+            if (n == cell || !p->grid[n])
+                continue;
+            if (p->area_of[n] >= 0)
+                other = p->area_of[n];
+            else if (p->labels[n] >= 0)
+                other = p->area_len + p->labels[n];
+            if (other >= 0) {
+                int32_t a = find_root(parent, i), b = find_root(parent, other);
+                if (a != b)
+                    parent[a] = b;
+            }
+        }
+    }
+    int32_t root = -1;
+    for (int s = 0; s < SIDES; s++) {
+        int32_t n = cell + p->side_d[s], node = -1;
+        if (!p->grid[n])
+            continue;
+        if (p->area_of[n] >= 0)
+            node = p->area_of[n];
+        else if (p->labels[n] >= 0)
+            node = p->area_len + p->labels[n];
+        else
+            return 0; /* a module the labels do not know: be safe */
+        int32_t r = find_root(parent, node);
+        if (root < 0)
+            root = r;
+        else if (r != root)
+            return 0;
+    }
+    return 1;
 }
 
 /* The cells a move needs: start, substrate, goal and swept ones. */
@@ -299,7 +365,7 @@ static int search(Pass *p, const State *start, const State *target, int limit)
         int full = 0;
         for (int i = 0; i < p->area_len && !full; i++) {
             int32_t cell = p->area[i];
-            if (p->grid[cell] != 1 || !can_leave(p, cell))
+            if (p->grid[cell] != 1 || !can_move(p, cell))
                 continue;
             unsigned mask = ring_mask(p, cell);
             for (int r = 0; r < rule_count; r++) {
@@ -576,11 +642,150 @@ done:
     return result;
 }
 
+/* search_area(width, height, grid, distances, area, target, labels, label_count,
+ *             max_states, limit) -> list of (start, rotation), or None
+ *
+ * One search on its own (planning/finish.py): the fewest rotations, fewer
+ * than `limit` (at most 100), that take the cells `area` (grid cells, at
+ * most 128, each 4 cells inside the grid) from the grid's occupancy to the
+ * one where exactly the cells `target` are occupied, every module outside
+ * the area fixed, modules interchangeable. None when there is none within
+ * `max_states` states. grid and distances as for one_pass; labels: width *
+ * height ints, the component of the modules outside the area that each grid
+ * cell's module belongs to (-1: none), label_count of them, so that a module
+ * whose neighbours form several arcs may move when they stay joined. */
+static PyObject *search_area(PyObject *self, PyObject *args)
+{
+    int w, h, max_states, limit, label_count;
+    PyObject *grid_obj, *dist_obj, *area_obj, *target_obj, *labels_obj;
+    if (!PyArg_ParseTuple(args, "iiOOOOOiii", &w, &h, &grid_obj, &dist_obj, &area_obj,
+                          &target_obj, &labels_obj, &label_count, &max_states, &limit))
+        return NULL;
+    if (!rules_set) {
+        PyErr_SetString(PyExc_RuntimeError, "search_area: set_rules first");
+        return NULL;
+    }
+    if (w < 9 || h < 9 || (size_t)w * h > 1u << 28 || max_states < 1 || max_states > 1 << 24
+        || limit < 1 || limit > MAX_RUN) {
+        PyErr_SetString(PyExc_ValueError, "search_area: a grid of at least 9 x 9, "
+                        "1 to 2**24 states, a limit of 1-100 rotations");
+        return NULL;
+    }
+    Py_buffer grid_view, dist_view, area_view, target_view;
+    if (PyObject_GetBuffer(grid_obj, &grid_view, PyBUF_C_CONTIGUOUS) < 0)
+        return NULL;
+    if (grid_view.len != (Py_ssize_t)w * h) {
+        PyErr_SetString(PyExc_ValueError, "search_area: grid must be width * height bytes");
+        PyBuffer_Release(&grid_view);
+        return NULL;
+    }
+    if (read_ints(dist_obj, &dist_view, (Py_ssize_t)(2 * w - 1) * (2 * h - 1),
+                  "distances") < 0) {
+        PyBuffer_Release(&grid_view);
+        return NULL;
+    }
+    if (read_ints(area_obj, &area_view, -1, "area") < 0) {
+        PyBuffer_Release(&grid_view), PyBuffer_Release(&dist_view);
+        return NULL;
+    }
+    if (read_ints(target_obj, &target_view, -1, "target") < 0) {
+        PyBuffer_Release(&grid_view), PyBuffer_Release(&dist_view);
+        PyBuffer_Release(&area_view);
+        return NULL;
+    }
+    Py_buffer labels_view;
+    if (read_ints(labels_obj, &labels_view, (Py_ssize_t)w * h, "labels") < 0) {
+        PyBuffer_Release(&grid_view), PyBuffer_Release(&dist_view);
+        PyBuffer_Release(&area_view), PyBuffer_Release(&target_view);
+        return NULL;
+    }
+    Pass p = {.w = w, .h = h, .cells = (size_t)w * h, .dist = dist_view.buf,
+              .max_states = max_states, .labels = labels_view.buf,
+              .label_count = label_count < 0 ? 0 : label_count};
+    PyObject *result = NULL;
+    uint32_t table_size = 1;
+    while (table_size < 2u * (uint32_t)max_states)
+        table_size <<= 1;
+    p.table_mask = table_size - 1;
+    p.grid = malloc(p.cells);
+    p.area_of = malloc(p.cells * sizeof *p.area_of);
+    p.nodes = malloc((size_t)max_states * sizeof *p.nodes);
+    p.table = malloc((size_t)table_size * sizeof *p.table);
+    p.heap_cap = 4 * max_states;
+    p.heap = malloc((size_t)p.heap_cap * sizeof *p.heap);
+    if (!p.grid || !p.area_of || !p.nodes || !p.table || !p.heap) {
+        PyErr_NoMemory();
+        goto done;
+    }
+    memcpy(p.grid, grid_view.buf, p.cells);
+    memset(p.area_of, 0xff, p.cells * sizeof *p.area_of);
+    for (int i = 0; i < RING; i++)
+        p.ring_d[i] = ring_dx[i] + ring_dy[i] * w;
+    for (int i = 0; i < SIDES; i++)
+        p.side_d[i] = side_dx[i] + side_dy[i] * w;
+    for (int r = 0; r < rule_count; r++)
+        p.sub_d[r] = rule_sx[r] + rule_sy[r] * w, p.goal_d[r] = rule_gx[r] + rule_gy[r] * w;
+    const int32_t *area = area_view.buf, *target = target_view.buf;
+    Py_ssize_t area_n = area_view.len / 4, target_n = target_view.len / 4;
+    if (area_n < 1 || area_n > AREA) {
+        PyErr_SetString(PyExc_ValueError, "search_area: 1 to 128 area cells");
+        goto done;
+    }
+    for (Py_ssize_t i = 0; i < area_n; i++) {
+        int32_t c = area[i], x = c % w, y = c / w;
+        if (c < 0 || (size_t)c >= p.cells || x < 4 || x >= w - 4 || y < 4 || y >= h - 4
+            || p.area_of[c] >= 0) {
+            PyErr_Format(PyExc_ValueError, "search_area: area cell %zd is off the grid's "
+                         "inside or twice", i);
+            goto done;
+        }
+        p.area_of[c] = (int16_t)i;
+        p.area[p.area_len++] = c;
+    }
+    State goal = {{0, 0}};
+    for (Py_ssize_t i = 0; i < target_n; i++) {
+        int32_t c = target[i];
+        if (c < 0 || (size_t)c >= p.cells || p.area_of[c] < 0) {
+            PyErr_Format(PyExc_ValueError, "search_area: target cell %zd is not in the area", i);
+            goto done;
+        }
+        if (!has(&goal, p.area_of[c]))
+            flip(&goal, p.area_of[c]);
+    }
+    State start = area_state(&p);
+    int found = search(&p, &start, &goal, limit);
+    if (found < 0) {
+        result = Py_NewRef(Py_None);
+        goto done;
+    }
+    result = PyList_New(found);
+    if (!result)
+        goto done;
+    for (int k = 0; k < found; k++) {
+        PyObject *item = Py_BuildValue("(ii)", p.found[2 * k], p.found[2 * k + 1]);
+        if (!item) {
+            Py_CLEAR(result);
+            goto done;
+        }
+        PyList_SET_ITEM(result, k, item);
+    }
+done:
+    pass_free(&p);
+    PyBuffer_Release(&grid_view), PyBuffer_Release(&dist_view);
+    PyBuffer_Release(&area_view), PyBuffer_Release(&target_view);
+    PyBuffer_Release(&labels_view);
+    return result;
+}
+
 static PyMethodDef methods[] = {
     {"set_rules", set_rules, METH_VARARGS, "set_rules(ring, rotations, sides, leavable)"},
     {"one_pass", one_pass, METH_VARARGS,
      "one_pass(width, height, grid, plan, distances, reach, most, pad, stride, max_states, "
      "deadline) -> plan"},
+    {"search_area", search_area, METH_VARARGS,
+     "search_area(width, height, grid, distances, area, target, labels, label_count, "
+     "max_states, limit) "
+     "-> plan or None"},
     {NULL, NULL, 0, NULL},
 };
 

@@ -113,6 +113,9 @@ RELAY_LONG = 8
 RELAY_TRIES = 6
 RELAY_GAIN = 0.8
 RELAY_DEPTH = 3
+#: With digs, times a stuck flow hands its ends and voids to
+#: :func:`hexbot.planning.finish.finish` (legs along the surface) before it fails.
+FINISHES = 3
 #: Longest run of journeys on the critical path reversed (:func:`_reorder`).
 REORDER_RUN = 4
 #: With digs, a failed journey is tried again only when a module within this
@@ -311,6 +314,7 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     propagations are bounded, and a hand-over fills a void, so the loop ends. A finished flow's long
     journeys become relays (:func:`relay`)."""
     from hexbot.planning import dig  # dig rolls modules by journeys from here
+    from hexbot.planning.finish import finish  # it imports regroup, which imports robust
 
 
     _step_aside(tracker, goal, fixed)
@@ -322,6 +326,7 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     digs_left = dig.DIGS if digs else 0
     propagations = dig.PROPAGATIONS
     last_tries = LAST_TRIES
+    finishes = FINISHES if digs else 0
     while digs_left and dig.dig_deep(tracker, goal, fixed, deadline, failed):
         digs_left -= 1
     if digs:
@@ -414,6 +419,13 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
                                           for m, v in candidates[:LAST_PAIRS])), None)
                 if hops:
                     tracker.roll(hops)
+                    continue
+            if finishes:  # ends carried to far voids in legs (planning/finish.py)
+                finishes -= 1
+                hops = finish(occupied, goal, fixed, deadline)
+                if hops:
+                    tracker.roll(hops)
+                    fills.clear()  # a take-back must not undo them
                     continue
             raise PlanningFailure(
                 f"{method}: journeys stuck with {len(voids)} goal cells to fill "

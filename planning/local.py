@@ -43,15 +43,21 @@ from hexbot.planning.windows import window_flow
 #: journey flows (the kernel and window flows planned none of the 300-module
 #: bench pairs tried, each failure costing 16-53 s, and none at 1,000).
 LOCAL_LIMIT = 150
-#: Above this many modules the local method is not tried at all: at 10,000 the
-#: journey flow stalled on the bench scramble with 44 goal cells left after
-#: 299 s, time the strip route needs there.
-JOURNEY_LIMIT = 2000
+#: Above this many modules the local method is not tried at all. Until session
+#: 20 this was 2,000: at 10,000 the journey flow stalled on the bench scramble
+#: (44 goal cells left after 299 s in session 8; 11 after 32 s in session 20);
+#: since the finish (:mod:`hexbot.planning.finish`) carries the last ends in
+#: legs, it plans that scramble locally.
+JOURNEY_LIMIT = 10_000
 #: Up to this many modules (above ``LOCAL_LIMIT``) the local method may take
 #: ``DIG_SECONDS`` of CPU time, for its digs (the bench's slowest blob of
 #: 1,000 takes 8.4 s, blob seed 6 beyond the bench 16.5 s).
 DIG_SIZE = 1000
 DIG_SECONDS = 30.0
+#: Above ``DIG_SIZE`` the cap is 1 s + n / ``LARGE_RATE`` (68 s at 10,000: the
+#: scramble's flow takes about 32 s and its finish 12 s there; a blob of
+#: 10,000 that stalls leaves the strip more than 200 s of the 300 s budget).
+LARGE_RATE = 150
 
 
 #: A pair where fewer than this share of the modules keep their cell is a
@@ -76,7 +82,7 @@ def local_cap(initial: Configuration, goal: frozenset[Cell]) -> float:
 def local_seconds(count: int) -> float:
     """The local method's own time cap. Up to ``LOCAL_LIMIT`` modules its
     successes take seconds and its failures can search for minutes. Above
-    ``DIG_SIZE`` (1 s + n/400) the cap keeps a failure from spending the
+    ``DIG_SIZE`` (1 s + n / ``LARGE_RATE``) the cap keeps a failure from spending the
     strip's time; the local method is not tried above ``JOURNEY_LIMIT``.
     Up to ``DIG_SIZE`` modules it is ``DIG_SECONDS``:
     the digs plan the blobs of 300 in 3-9 s and those of 1,000 in 6-17 s,
@@ -87,7 +93,7 @@ def local_seconds(count: int) -> float:
         return 10.0 + count / 5
     if count <= DIG_SIZE:
         return DIG_SECONDS
-    return 1.0 + count / 400
+    return 1.0 + count / LARGE_RATE
 
 
 Flow = Callable[[Tracker, frozenset[Cell], Cell | None, Deadline, str], None]
