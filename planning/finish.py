@@ -40,7 +40,7 @@ LEG = 8
 PADS = (1, 2)
 #: Area states one leg's search stores at most.
 STATES = 30_000
-#: Rotations one leg may take at most.
+#: A leg takes fewer rotations than this.
 LEG_ROTATIONS = 60
 #: Pairs at most this far apart are first tried on the hex line between them.
 ACROSS = 12
@@ -121,8 +121,11 @@ def outside_components(occupied: set[Cell], area: set[Cell]) -> dict[Cell, int]:
 def move_in_area(occupied: set[Cell], area: set[Cell], target: set[Cell],
                  fixed: Cell | None, states: int = STATES,
                  limit: int = LEG_ROTATIONS) -> list[Hop] | None:
-    """The fewest rotations inside ``area`` after which exactly ``target`` of
-    its cells are occupied (modules interchangeable, the rest fixed), or None."""
+    """The fewest rotations, fewer than ``limit``, inside ``area`` after which
+    exactly ``target`` of its cells are occupied (modules interchangeable, the
+    rest fixed), or None. A module whose neighbours form several arcs may move
+    when the rest stays one piece: :func:`outside_components` tells the search
+    which modules outside the area are joined."""
     if len(area) > 128:
         return None
     xs = [x for x, _ in area]

@@ -30,6 +30,7 @@ from __future__ import annotations
 from collections.abc import Callable
 from functools import partial
 
+from hexbot.planning import dig
 from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline, PlanningFailure
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.flow import kernel_flow
@@ -141,6 +142,14 @@ def via_local(initial: Configuration, goal: frozenset[Cell], max_moves: int,
     """The shortest plan of the flows run forward; only when none succeeds,
     they run backward. :class:`PlanningFailure` with the reason of every try
     when none succeeds; when the time runs out after a success, that plan."""
+    try:
+        return _shortest(initial, goal, max_moves, fixed, deadline, method)
+    finally:
+        dig.forget()
+
+
+def _shortest(initial: Configuration, goal: frozenset[Cell], max_moves: int,
+              fixed: Cell | None, deadline: Deadline, method: str) -> list[Move]:
     failures = []
     best: list[Move] | None = None
     for direction in (forward, backward):
