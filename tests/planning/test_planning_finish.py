@@ -1,15 +1,21 @@
 """The finish of a stalled flow: ends carried to far voids in legs, legal moves only."""
 
 from collections import deque
+from functools import partial
 
+import pytest
 from test_planning_tidy import checked
 
+from hexbot.bench.planning import make_pair
+from hexbot.planning import dig
 from hexbot.planning import finish as finish_module
-from hexbot.planning.budget import Deadline
+from hexbot.planning import journey as journey_module
+from hexbot.planning.budget import NO_DEADLINE, Deadline, PlanningFailure
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.finish import finish, move_in_area, outside_components, surface_path
 from hexbot.planning.generate import random_blob
-from hexbot.planning.journey import CROSSING_STATES, journey
+from hexbot.planning.journey import CROSSING_STATES, journey, journey_flow
+from hexbot.planning.local import forward
 from hexbot.planning.robust import _moves_from
 from hexbot.planning.tracker import Tracker
 from hexbot.planning.windows import disc
@@ -117,3 +123,26 @@ def test_long_legs_and_short_ones(monkeypatch):
     monkeypatch.setattr(finish_module, "ACROSS", 4)
     tracker = _finished(cells, goal)
     assert tracker.occupied == goal
+
+
+def test_a_stalled_flow_is_finished_and_its_plan_is_legal(monkeypatch):
+    # blob 300 seed 1 with one park depth: the journey flow stalls without the
+    # finish (test_planning_dig), and plans with it
+    a, b = make_pair("blob", 300, 1)
+    start, goal = Configuration.from_cells(a), frozenset(b)
+    monkeypatch.setattr(dig, "PARK_DEPTHS", (10,))
+    flow = partial(journey_flow, digs=True)
+    calls = []
+    original = finish_module.finish
+
+    def counted(*args):
+        calls.append(1)
+        return original(*args)
+
+    monkeypatch.setattr(finish_module, "finish", counted)  # the flow imports it when it runs
+    plan = forward(start, goal, flow, 10**6, None, NO_DEADLINE, "local")
+    assert calls, "the flow planned without the finish: this test no longer tests it"
+    checked(start, goal, plan)
+    monkeypatch.setattr(journey_module, "FINISHES", 0)
+    with pytest.raises(PlanningFailure):
+        forward(start, goal, flow, 10**6, None, NO_DEADLINE, "local")
