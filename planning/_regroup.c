@@ -523,6 +523,55 @@ static Py_ssize_t regroup_run(Pass *p, Py_ssize_t start, int reach, int most, in
     return saved;
 }
 
+/* (start, rotation) pairs as a list of tuples. */
+static PyObject *pair_list(const int32_t *pairs, Py_ssize_t n)
+{
+    PyObject *result = PyList_New(n);
+    if (!result)
+        return NULL;
+    for (Py_ssize_t k = 0; k < n; k++) {
+        PyObject *item = Py_BuildValue("(ii)", pairs[2 * k], pairs[2 * k + 1]);
+        if (!item) {
+            Py_DECREF(result);
+            return NULL;
+        }
+        PyList_SET_ITEM(result, k, item);
+    }
+    return result;
+}
+
+/* The search's tables for `max_states` states, the grid copied from `grid`,
+ * no area yet, the rules' offsets for this grid's width. -1 (MemoryError
+ * set) when out of memory; pass_free frees what was taken either way. */
+static int pass_setup(Pass *p, const void *grid)
+{
+    uint32_t table_size = 1;
+    while (table_size < 2u * (uint32_t)p->max_states)
+        table_size <<= 1;
+    p->table_mask = table_size - 1;
+    p->grid = malloc(p->cells);
+    p->area_of = malloc(p->cells * sizeof *p->area_of);
+    p->nodes = malloc((size_t)p->max_states * sizeof *p->nodes);
+    p->table = malloc((size_t)table_size * sizeof *p->table);
+    /* a push per improvement of a node: four a node, and a search that
+     * would push more stops as when it runs out of states */
+    p->heap_cap = 4 * p->max_states;
+    p->heap = malloc((size_t)p->heap_cap * sizeof *p->heap);
+    if (!p->grid || !p->area_of || !p->nodes || !p->table || !p->heap) {
+        PyErr_NoMemory();
+        return -1;
+    }
+    memcpy(p->grid, grid, p->cells);
+    memset(p->area_of, 0xff, p->cells * sizeof *p->area_of);
+    for (int i = 0; i < RING; i++)
+        p->ring_d[i] = ring_dx[i] + ring_dy[i] * p->w;
+    for (int i = 0; i < SIDES; i++)
+        p->side_d[i] = side_dx[i] + side_dy[i] * p->w;
+    for (int r = 0; r < rule_count; r++)
+        p->sub_d[r] = rule_sx[r] + rule_sy[r] * p->w, p->goal_d[r] = rule_gx[r] + rule_gy[r] * p->w;
+    return 0;
+}
+
 /* one_pass(width, height, grid, plan, distances, reach, most, pad, stride,
  *          max_states, deadline) -> list of (start, rotation)
  *
@@ -572,32 +621,14 @@ static PyObject *one_pass(PyObject *self, PyObject *args)
     Pass p = {.w = w, .h = h, .cells = (size_t)w * h, .dist = dist_view.buf, .n = n,
               .max_states = max_states};
     PyObject *result = NULL;
-    uint32_t table_size = 1;
-    while (table_size < 2u * (uint32_t)max_states)
-        table_size <<= 1;
-    p.table_mask = table_size - 1;
-    p.grid = malloc(p.cells);
-    p.area_of = malloc(p.cells * sizeof *p.area_of);
     p.plan = malloc((size_t)(2 * n + 2) * sizeof *p.plan);
-    p.nodes = malloc((size_t)max_states * sizeof *p.nodes);
-    p.table = malloc((size_t)table_size * sizeof *p.table);
-    /* a push per improvement of a node: four a node, and a search that
-     * would push more stops as when it runs out of states */
-    p.heap_cap = 4 * max_states;
-    p.heap = malloc((size_t)p.heap_cap * sizeof *p.heap);
-    if (!p.grid || !p.area_of || !p.plan || !p.nodes || !p.table || !p.heap) {
+    if (!p.plan) {
         PyErr_NoMemory();
         goto done;
     }
-    memcpy(p.grid, grid_view.buf, p.cells);
-    memset(p.area_of, 0xff, p.cells * sizeof *p.area_of);
+    if (pass_setup(&p, grid_view.buf) < 0)
+        goto done;
     memcpy(p.plan, plan_view.buf, (size_t)(2 * n) * sizeof *p.plan);
-    for (int i = 0; i < RING; i++)
-        p.ring_d[i] = ring_dx[i] + ring_dy[i] * w;
-    for (int i = 0; i < SIDES; i++)
-        p.side_d[i] = side_dx[i] + side_dy[i] * w;
-    for (int r = 0; r < rule_count; r++)
-        p.sub_d[r] = rule_sx[r] + rule_sy[r] * w, p.goal_d[r] = rule_gx[r] + rule_gy[r] * w;
     int margin = 4 + pad;
     for (Py_ssize_t k = 0; k < n; k++) {
         int32_t src = p.plan[2 * k], rot = p.plan[2 * k + 1];
@@ -625,17 +656,7 @@ static PyObject *one_pass(PyObject *self, PyObject *args)
             apply(&p, p.plan[2 * k], p.plan[2 * k + 1]);
         i += stride;
     }
-    result = PyList_New(p.n);
-    if (!result)
-        goto done;
-    for (Py_ssize_t k = 0; k < p.n; k++) {
-        PyObject *item = Py_BuildValue("(ii)", p.plan[2 * k], p.plan[2 * k + 1]);
-        if (!item) {
-            Py_CLEAR(result);
-            goto done;
-        }
-        PyList_SET_ITEM(result, k, item);
-    }
+    result = pair_list(p.plan, p.n);
 done:
     pass_free(&p);
     PyBuffer_Release(&grid_view), PyBuffer_Release(&plan_view), PyBuffer_Release(&dist_view);
@@ -703,28 +724,8 @@ static PyObject *search_area(PyObject *self, PyObject *args)
               .max_states = max_states, .labels = labels_view.buf,
               .label_count = label_count < 0 ? 0 : label_count};
     PyObject *result = NULL;
-    uint32_t table_size = 1;
-    while (table_size < 2u * (uint32_t)max_states)
-        table_size <<= 1;
-    p.table_mask = table_size - 1;
-    p.grid = malloc(p.cells);
-    p.area_of = malloc(p.cells * sizeof *p.area_of);
-    p.nodes = malloc((size_t)max_states * sizeof *p.nodes);
-    p.table = malloc((size_t)table_size * sizeof *p.table);
-    p.heap_cap = 4 * max_states;
-    p.heap = malloc((size_t)p.heap_cap * sizeof *p.heap);
-    if (!p.grid || !p.area_of || !p.nodes || !p.table || !p.heap) {
-        PyErr_NoMemory();
+    if (pass_setup(&p, grid_view.buf) < 0)
         goto done;
-    }
-    memcpy(p.grid, grid_view.buf, p.cells);
-    memset(p.area_of, 0xff, p.cells * sizeof *p.area_of);
-    for (int i = 0; i < RING; i++)
-        p.ring_d[i] = ring_dx[i] + ring_dy[i] * w;
-    for (int i = 0; i < SIDES; i++)
-        p.side_d[i] = side_dx[i] + side_dy[i] * w;
-    for (int r = 0; r < rule_count; r++)
-        p.sub_d[r] = rule_sx[r] + rule_sy[r] * w, p.goal_d[r] = rule_gx[r] + rule_gy[r] * w;
     const int32_t *area = area_view.buf, *target = target_view.buf;
     Py_ssize_t area_n = area_view.len / 4, target_n = target_view.len / 4;
     if (area_n < 1 || area_n > AREA) {
@@ -758,17 +759,7 @@ static PyObject *search_area(PyObject *self, PyObject *args)
         result = Py_NewRef(Py_None);
         goto done;
     }
-    result = PyList_New(found);
-    if (!result)
-        goto done;
-    for (int k = 0; k < found; k++) {
-        PyObject *item = Py_BuildValue("(ii)", p.found[2 * k], p.found[2 * k + 1]);
-        if (!item) {
-            Py_CLEAR(result);
-            goto done;
-        }
-        PyList_SET_ITEM(result, k, item);
-    }
+    result = pair_list(p.found, found);
 done:
     pass_free(&p);
     PyBuffer_Release(&grid_view), PyBuffer_Release(&dist_view);
