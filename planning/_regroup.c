@@ -130,6 +130,16 @@ static int can_move(const Pass *p, int32_t cell)
         return 1;
     if (!p->labels)
         return 0;
+    unsigned sides = 0;
+    for (int i = 0; i < SIDES; i++)
+        if (p->grid[cell + p->side_d[i]])
+            sides |= 1u << i;
+    unsigned twice = sides | sides << SIDES; /* three free sides in a row, round the ring */
+    int run = 0;
+    for (int i = 0; i < SIDES + 2 && run < 3; i++)
+        run = twice >> i & 1 ? 0 : run + 1;
+    if (run < 3)
+        return 0; /* no rotation at all: spare the union-find */
     int32_t parent[AREA + 4 * AREA];
     int32_t nodes = p->area_len + p->label_count;
     if (nodes > AREA + 4 * AREA)

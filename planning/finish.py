@@ -91,31 +91,40 @@ def _grown(cells: list[Cell], rings: int) -> set[Cell]:
 
 def outside_components(occupied: set[Cell], area: set[Cell]) -> dict[Cell, int]:
     """For the modules outside ``area`` that touch it: which piece of the
-    modules outside the area each belongs to (0, 1, ...). A search from each
-    one not yet labelled stops once it has found all the others (most of the
-    time a few hundred cells; the whole piece when it is cut off)."""
-    touching = {n for c in area for n in neighbors(c) if n in occupied and n not in area}
-    label: dict[Cell, int] = {}
-    left = set(touching)
-    count = 0
-    for first in sorted(touching):
-        if first in label:
-            continue
-        seen = {first}
-        queue = deque([first])
-        left.discard(first)
-        label[first] = count
-        while queue and left:
-            cell = queue.popleft()
+    modules outside the area each belongs to (0, 1, ...). One search from
+    each, taking turns, searches that meet joined: a piece cut off is closed
+    after about its own size in turns, and the search stops when one group of
+    searches is left running (the rest of the configuration, never walked
+    in full)."""
+    touching = sorted({n for c in area for n in neighbors(c) if n in occupied and n not in area})
+    group = list(range(len(touching)))
+
+    def root(i: int) -> int:
+        while group[i] != i:
+            group[i] = group[group[i]]
+            i = group[i]
+        return i
+
+    owner = {cell: i for i, cell in enumerate(touching)}
+    queues = [deque([cell]) for cell in touching]
+    running = [i for i in range(len(touching)) if queues[i]]
+    while len({root(i) for i in running}) > 1:
+        for i in running:
+            cell = queues[i].popleft()
             for n in neighbors(cell):
-                if n in occupied and n not in area and n not in seen:
-                    seen.add(n)
-                    queue.append(n)
-                    if n in left:
-                        left.discard(n)
-                        label[n] = count
-        count += 1
-    return label
+                if n not in occupied or n in area:
+                    continue
+                j = owner.get(n)
+                if j is None:
+                    owner[n] = i
+                    queues[i].append(n)
+                else:
+                    a, b = root(i), root(j)
+                    if a != b:
+                        group[a] = b
+        running = [i for i in running if queues[i]]
+    labels: dict[int, int] = {}
+    return {cell: labels.setdefault(root(i), len(labels)) for i, cell in enumerate(touching)}
 
 
 def move_in_area(occupied: set[Cell], area: set[Cell], target: set[Cell],
