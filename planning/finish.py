@@ -12,9 +12,10 @@ one standing on the leg's last cell, every module outside the area fixed
 and modules interchangeable (``planning/_regroup.c``, ``search_area``): a
 wall module may step aside and come back, or pass the end on, where the
 end cannot roll itself. The last leg fills the void. A module moves only
-when it can leave (three free sides in a row, its occupied neighbours in
-one arc), and never the bolted one, so every rotation is legal whatever lies
-outside the area.
+with three free sides in a row, and when its occupied neighbours form one
+arc or stay joined without it (through the area's modules and the pieces
+of the outside they touch, :func:`outside_components`); never the bolted
+one. So every rotation keeps the configuration in one piece.
 
 Measured on the bench scramble of 10,000 modules (docs/planning.md,
 *Finishing a stalled flow*).
@@ -219,18 +220,6 @@ def _apply(occupied: set[Cell], hops: list[Hop]) -> None:
     for src, dst, _rule, _sub in hops:
         occupied.discard(src)
         occupied.add(dst)
-
-
-#: Ends tried per void, nearest first (the assigned one is often walled in).
-NEAREST = 4
-
-
-def _pairs(ends: set[Cell], voids: set[Cell]) -> list[tuple[int, Cell, Cell]]:
-    """(distance, end, void): each void's ``NEAREST`` ends, nearest pairs first."""
-    pairs = []
-    for void in sorted(voids):
-        pairs += sorted((distance(end, void), end, void) for end in ends)[:NEAREST]
-    return sorted(pairs)
 
 
 def finish(occupied: set[Cell], goal: frozenset[Cell], fixed: Cell | None,
