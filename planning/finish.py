@@ -31,6 +31,7 @@ from hexbot.planning import _regroup
 from hexbot.planning.budget import Deadline
 from hexbot.planning.hexlattice import ROTATIONS, Cell, distance, neighbors
 from hexbot.planning.regroup import MARGIN
+from hexbot.planning.schedule import meeting_searches
 from hexbot.planning.tidy import offset_distances
 from hexbot.planning.windows import Hop, assigned_pairs, corridor
 
@@ -92,40 +93,14 @@ def _grown(cells: list[Cell], rings: int) -> set[Cell]:
 
 def outside_components(occupied: set[Cell], area: set[Cell]) -> dict[Cell, int]:
     """For the modules outside ``area`` that touch it: which piece of the
-    modules outside the area each belongs to (0, 1, ...). One search from
-    each, taking turns, searches that meet joined: a piece cut off is closed
-    after about its own size in turns, and the search stops when one group of
-    searches is left running (the rest of the configuration, never walked
-    in full)."""
+    modules outside the area each belongs to (0, 1, ...), by
+    :func:`~hexbot.planning.schedule.meeting_searches` (never the whole
+    configuration walked when it stays one piece)."""
     touching = sorted({n for c in area for n in neighbors(c) if n in occupied and n not in area})
-    group = list(range(len(touching)))
-
-    def root(i: int) -> int:
-        while group[i] != i:
-            group[i] = group[group[i]]
-            i = group[i]
-        return i
-
-    owner = {cell: i for i, cell in enumerate(touching)}
-    queues = [deque([cell]) for cell in touching]
-    running = [i for i in range(len(touching)) if queues[i]]
-    while len({root(i) for i in running}) > 1:
-        for i in running:
-            cell = queues[i].popleft()
-            for n in neighbors(cell):
-                if n not in occupied or n in area:
-                    continue
-                j = owner.get(n)
-                if j is None:
-                    owner[n] = i
-                    queues[i].append(n)
-                else:
-                    a, b = root(i), root(j)
-                    if a != b:
-                        group[a] = b
-        running = [i for i in running if queues[i]]
+    pieces = meeting_searches(occupied, touching, area) or []
     labels: dict[int, int] = {}
-    return {cell: labels.setdefault(root(i), len(labels)) for i, cell in enumerate(touching)}
+    return {cell: labels.setdefault(piece, len(labels))
+            for cell, piece in zip(touching, pieces, strict=True)}
 
 
 def move_in_area(occupied: set[Cell], area: set[Cell], target: set[Cell],

@@ -44,6 +44,7 @@ from __future__ import annotations
 
 from array import array
 from collections import deque
+from collections.abc import Iterable
 
 from hexbot.planning import _schedule
 from hexbot.planning.budget import NO_DEADLINE, BudgetExhausted, Deadline
@@ -97,8 +98,8 @@ def stays_connected(occupied: set[Cell], cell: Cell) -> bool:
 
     Every piece left would touch ``cell``, so its occupied neighbours must stay
     connected to each other: none or one, or one contiguous arc of them, is
-    enough; otherwise a breadth-first search from each, taking turns, merging
-    where they meet (local when nothing splits, the smaller side when it does).
+    enough; otherwise :func:`meeting_searches` from each (local when nothing
+    splits, the smaller side when it does).
     """
     x, y = cell
     mask = 0
@@ -108,8 +109,21 @@ def stays_connected(occupied: set[Cell], cell: Cell) -> bool:
     if _ONE_ARC[mask]:
         return True
     seeds = [(x + dx, y + dy) for dx, dy, bit in _BITS if mask & bit]
+    return meeting_searches(occupied, seeds, (cell,), first_cut=True) is not None
+
+
+def meeting_searches(occupied: set[Cell], seeds: list[Cell], skip: Iterable[Cell] = (),
+                     first_cut: bool = False) -> list[int] | None:
+    """Which piece of ``occupied`` without ``skip`` each of ``seeds`` (distinct)
+    lies in: one breadth-first search from each, taking turns, merging where
+    they meet. A search that runs dry has closed its piece, so the cost is about
+    the smaller pieces' size, and the searches stop when one is left running
+    (the rest of the configuration is never walked in full). Per seed a label
+    (equal labels: one piece); with ``first_cut``, None as soon as a piece
+    closes while others still run."""
     owner = {c: i for i, c in enumerate(seeds)}
-    owner[cell] = -1  # removed: never entered
+    for c in skip:
+        owner[c] = -1  # never entered
     label = list(range(len(seeds)))
 
     def root(i: int) -> int:
@@ -119,13 +133,18 @@ def stays_connected(occupied: set[Cell], cell: Cell) -> bool:
         return i
 
     frontiers = {i: deque([c]) for i, c in enumerate(seeds)}
-    while True:
+    while len(frontiers) > 1:
         for i in list(frontiers):
             queue = frontiers.get(i)
             if queue is None:  # merged into another search this round
                 continue
             if not queue:  # ran dry before meeting the others: a piece is cut off
-                return False
+                if first_cut:
+                    return None
+                del frontiers[i]
+                if len(frontiers) == 1:
+                    break
+                continue
             cx, cy = queue.popleft()
             for dx, dy in _AROUND:
                 n = (cx + dx, cy + dy)
@@ -143,7 +162,10 @@ def stays_connected(occupied: set[Cell], cell: Cell) -> bool:
                     label[other] = i
                     queue.extend(frontiers.pop(other))
                     if len(frontiers) == 1:
-                        return True
+                        break
+            if len(frontiers) == 1:
+                break
+    return [root(i) for i in range(len(seeds))]
 
 
 def _reads_and_changes(move: Move) -> tuple[tuple[Cell, Cell, Cell, Cell], Cell, Cell]:
