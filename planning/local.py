@@ -56,7 +56,7 @@ JOURNEY_LIMIT = 10_000
 DIG_SIZE = 1000
 DIG_SECONDS = 30.0
 #: Above ``DIG_SIZE`` the cap is 1 s + n / ``LARGE_RATE`` (68 s at 10,000: the
-#: scramble's flow takes about 32 s and its finish 12 s there; a blob of
+#: scramble's flow takes about 32 s and its finish 2.5 s there; a blob of
 #: 10,000 that stalls leaves the strip more than 200 s of the 300 s budget).
 LARGE_RATE = 150
 
