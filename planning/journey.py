@@ -116,6 +116,9 @@ RELAY_DEPTH = 3
 #: With digs, times a stuck flow hands its ends and voids to
 #: :func:`hexbot.planning.finish.finish` (legs along the surface) before it fails.
 FINISHES = 3
+#: After a sweep filled a void (the ranked journeys, the room-making and the
+#: hand-overs all failed before it), the next round tries the sweep first.
+SWEEP_FIRST = True
 #: Longest run of journeys on the critical path reversed (:func:`_reorder`).
 REORDER_RUN = 4
 #: With digs, a failed journey is tried again only when a module within this
@@ -327,6 +330,7 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     propagations = dig.PROPAGATIONS
     last_tries = LAST_TRIES
     finishes = FINISHES if digs else 0
+    sweeping = False  # the last fill was a sweep's: try the sweep first again
     while digs_left and dig.dig_deep(tracker, goal, fixed, deadline, failed):
         digs_left -= 1
     if digs:
@@ -341,6 +345,12 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
                 deadline.capped(relay_seconds(len(occupied)))))
             return
         ends = occupied - goal
+        if sweeping:
+            hops = dig.sweep(occupied, goal, ends, voids, fixed, failed)
+            if hops:
+                tracker.roll(hops)
+                continue
+            sweeping = False
         ranked = _candidates(occupied, goal, ends, voids, fixed, policy)
         cut = _CutTest(occupied)
         candidates = []
@@ -401,6 +411,7 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
             hops = dig.sweep(occupied, goal, ends, voids, fixed, failed) if digs else None
             if hops:
                 tracker.roll(hops)
+                sweeping = SWEEP_FIRST
                 continue
             if digs and propagations:
                 hops = dig.propagate(occupied, goal, ends, voids, fixed, failed)

@@ -146,6 +146,19 @@ def test_a_void_no_end_reaches_moves_towards_the_nearest_free_end():
     assert_legal(start, tracker)
 
 
+def test_a_void_farther_than_propagate_far_from_every_free_end_is_not_propagated(monkeypatch):
+    # the same shape, 50 cells long: moving the void one filler at a time over
+    # that distance is a transport (the sweep's journeys and the finish do it)
+    block = parallelogram(50, 2)
+    end, void = (-1, 1), (50, 0)
+    assert distance(end, void) > dig.PROPAGATE_FAR
+    goal = frozenset(block | {void})
+    occupied = block | {end}
+    assert dig.propagate(set(occupied), goal, {end}, {void}, None, set()) is None
+    monkeypatch.setattr(dig, "PROPAGATE_FAR", 100)
+    assert dig.propagate(set(occupied), goal, {end}, {void}, None, set())
+
+
 def test_the_planner_plans_a_blob_of_1000_locally_within_five_times_the_bound():
     # blob 1,000, seed 2: 12 holes and 20 walled-in ends at the start; the
     # strip route's plan was 126 times the bound
