@@ -498,6 +498,19 @@ static int read_ints(PyObject *obj, Py_buffer *view, Py_ssize_t count, const cha
     return 0;
 }
 
+/* The occupancy grid: width * height bytes (0 empty, 1 module, 2 bolted). */
+static int read_grid(PyObject *obj, Py_buffer *view, int w, int h, const char *who)
+{
+    if (PyObject_GetBuffer(obj, view, PyBUF_C_CONTIGUOUS) < 0)
+        return -1;
+    if (view->len != (Py_ssize_t)w * h) {
+        PyErr_Format(PyExc_ValueError, "%s: grid must be width * height bytes", who);
+        PyBuffer_Release(view);
+        return -1;
+    }
+    return 0;
+}
+
 static State area_state(const Pass *p)
 {
     State s = {{0, 0}};
@@ -611,13 +624,8 @@ static PyObject *one_pass(PyObject *self, PyObject *args)
         return NULL;
     }
     Py_buffer grid_view, plan_view, dist_view;
-    if (PyObject_GetBuffer(grid_obj, &grid_view, PyBUF_C_CONTIGUOUS) < 0)
+    if (read_grid(grid_obj, &grid_view, w, h, "one_pass") < 0)
         return NULL;
-    if (grid_view.len != (Py_ssize_t)w * h) {
-        PyErr_SetString(PyExc_ValueError, "one_pass: grid must be width * height bytes");
-        PyBuffer_Release(&grid_view);
-        return NULL;
-    }
     if (read_ints(plan_obj, &plan_view, -1, "plan") < 0) {
         PyBuffer_Release(&grid_view);
         return NULL;
@@ -703,13 +711,8 @@ static PyObject *search_area(PyObject *self, PyObject *args)
         return NULL;
     }
     Py_buffer grid_view, dist_view, area_view, target_view;
-    if (PyObject_GetBuffer(grid_obj, &grid_view, PyBUF_C_CONTIGUOUS) < 0)
+    if (read_grid(grid_obj, &grid_view, w, h, "search_area") < 0)
         return NULL;
-    if (grid_view.len != (Py_ssize_t)w * h) {
-        PyErr_SetString(PyExc_ValueError, "search_area: grid must be width * height bytes");
-        PyBuffer_Release(&grid_view);
-        return NULL;
-    }
     if (read_ints(dist_obj, &dist_view, (Py_ssize_t)(2 * w - 1) * (2 * h - 1),
                   "distances") < 0) {
         PyBuffer_Release(&grid_view);

@@ -3,11 +3,12 @@
 from collections import deque
 from functools import partial
 
+import numpy as np
 import pytest
 from test_planning_tidy import checked
 
 from hexbot.bench.planning import make_pair
-from hexbot.planning import dig
+from hexbot.planning import _regroup, dig
 from hexbot.planning import finish as finish_module
 from hexbot.planning import journey as journey_module
 from hexbot.planning.budget import NO_DEADLINE, Deadline, PlanningFailure
@@ -146,3 +147,12 @@ def test_a_stalled_flow_is_finished_and_its_plan_is_legal(monkeypatch):
     monkeypatch.setattr(journey_module, "FINISHES", 0)
     with pytest.raises(PlanningFailure):
         forward(start, goal, flow, 10**6, None, NO_DEADLINE, "local")
+
+
+def test_a_grid_of_the_wrong_size_is_refused_with_the_reason():
+    ints = np.zeros(17 * 17, dtype=np.intc)
+    with pytest.raises(ValueError, match="search_area: grid must be width \\* height bytes"):
+        _regroup.search_area(9, 9, bytearray(10), ints, ints[:1], ints[:1],
+                             np.full(81, -1, dtype=np.intc), 0, 10, 5)
+    with pytest.raises(ValueError, match="one_pass: grid must be width \\* height bytes"):
+        _regroup.one_pass(9, 9, bytearray(10), ints[:2], ints, 8, 30, 1, 5, 100, None)
