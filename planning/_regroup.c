@@ -74,6 +74,11 @@ typedef struct {
      * grid cell, -1 for none; NULL: a module must have its neighbours in one arc */
     const int32_t *labels;
     int32_t label_count;
+    /* improve_area only: the area's goal cells; the search stops at the first
+     * state it reaches that is worse off than `before` by less (badness()) */
+    int improve;
+    State goal_cells;
+    int before;
 } Pass;
 
 static void pass_free(Pass *p)
@@ -284,6 +289,43 @@ static int32_t bound(const Pass *p, const State *s, const State *target)
     return -v[0];
 }
 
+/* improve_area's measure of a state: its modules off the goal plus its goal
+ * cells left empty (what windows.py calls badness). */
+static int badness(const Pass *p, const State *s)
+{
+    int count = 0;
+    for (int w = 0; w < 2; w++)
+        count += __builtin_popcountll(s->bits[w] & ~p->goal_cells.bits[w])
+            + __builtin_popcountll(p->goal_cells.bits[w] & ~s->bits[w]);
+    return count;
+}
+
+/* improve_area's estimate: one rotation moves one module one cell, so a
+ * module off the goal needs the distance to the nearest empty goal cell,
+ * less one (the rotation that lowers the badness may end next to it). */
+static int32_t estimate(const Pass *p, const State *s)
+{
+    int32_t best = INT32_MAX;
+    for (int i = 0; i < p->area_len; i++) {
+        if (!has(s, i) || has(&p->goal_cells, i))
+            continue;
+        for (int j = 0; j < p->area_len; j++)
+            if (has(&p->goal_cells, j) && !has(s, j)) {
+                int32_t d = distance(p, p->area[i], p->area[j]);
+                if (d < best)
+                    best = d;
+            }
+    }
+    return best == INT32_MAX || best < 1 ? 0 : best - 1;
+}
+
+/* The heuristic of the search's mode, a lower bound on the rotations still
+ * needed. */
+static inline int32_t heuristic(const Pass *p, const State *s, const State *target)
+{
+    return p->improve ? estimate(p, s) : bound(p, s, target);
+}
+
 static void heap_push(Pass *p, Open item)
 {
     int32_t i = p->heap_len++;
@@ -350,21 +392,25 @@ static void write_state(Pass *p, const State *s)
 }
 
 /* The fewest rotations (fewer than `limit`) from `start` to `target` inside
- * the area, into p->found; their number, or -1. The grid is left as it was. */
+ * the area, into p->found; their number, or -1. The grid is left as it was.
+ * In improve mode (target unused) it stops at the first state it reaches
+ * whose badness is below p->before: tested when a state is reached, not
+ * when it is taken from the heap, so that is at most one rotation more
+ * than the fewest (the popped state's f is at most the fewest's). */
 static int search(Pass *p, const State *start, const State *target, int limit)
 {
     memset(p->table, 0xff, (size_t)(p->table_mask + 1) * sizeof *p->table);
     p->node_count = 0, p->heap_len = 0;
     int32_t first = lookup(p, start);
     p->nodes[first].g = 0;
-    heap_push(p, (Open){bound(p, start, target), 0, first});
+    heap_push(p, (Open){heuristic(p, start, target), 0, first});
     int32_t goal = -1;
     while (p->heap_len) {
         Open top = heap_pop(p);
         Node *node = &p->nodes[top.node];
         if (top.g != node->g)
             continue; /* reached again since, by fewer rotations */
-        if (same(&node->state, target)) {
+        if (!p->improve && same(&node->state, target)) {
             goal = top.node;
             break;
         }
@@ -373,7 +419,7 @@ static int search(Pass *p, const State *start, const State *target, int limit)
         State here = node->state;
         write_state(p, &here);
         int full = 0;
-        for (int i = 0; i < p->area_len && !full; i++) {
+        for (int i = 0; i < p->area_len && !full && goal < 0; i++) {
             int32_t cell = p->area[i];
             if (p->grid[cell] != 1 || !can_move(p, cell))
                 continue;
@@ -396,7 +442,11 @@ static int search(Pass *p, const State *start, const State *target, int limit)
                     continue;
                 n->g = (int16_t)(top.g + 1), n->parent = top.node;
                 n->from = (int8_t)i, n->rot = (int8_t)r;
-                int32_t f = top.g + 1 + bound(p, &next, target);
+                if (p->improve && badness(p, &next) < p->before) {
+                    goal = k; /* tested when reached, not when taken */
+                    break;
+                }
+                int32_t f = top.g + 1 + heuristic(p, &next, target);
                 if (f >= limit)
                     continue;
                 if (p->heap_len == p->heap_cap) {
@@ -406,7 +456,7 @@ static int search(Pass *p, const State *start, const State *target, int limit)
                 heap_push(p, (Open){f, top.g + 1, k});
             }
         }
-        if (full)
+        if (full || goal >= 0)
             break;
     }
     if (goal < 0)
@@ -692,65 +742,71 @@ done:
  * `max_states` states. grid and distances as for one_pass; labels: width *
  * height ints, the component of the modules outside the area that each grid
  * cell's module belongs to (-1: none), label_count of them, so that a module
- * whose neighbours form several arcs may move when they stay joined. */
-static PyObject *search_area(PyObject *self, PyObject *args)
+ * whose neighbours form several arcs may move when they stay joined; None:
+ * only a module whose neighbours form one arc moves.
+ *
+ * improve_area(...) takes the same arguments, `target` being the area's
+ * goal cells, and finds rotations (fewer than `limit`; the fewest, or one
+ * more: see search()) after which fewer area cells are wrong: a module off
+ * the goal, or a goal cell empty (planning/windows.py's window fixes). */
+static PyObject *area_search(PyObject *args, int improve)
 {
+    const char *who = improve ? "improve_area" : "search_area";
     int w, h, max_states, limit, label_count;
     PyObject *grid_obj, *dist_obj, *area_obj, *target_obj, *labels_obj;
     if (!PyArg_ParseTuple(args, "iiOOOOOiii", &w, &h, &grid_obj, &dist_obj, &area_obj,
                           &target_obj, &labels_obj, &label_count, &max_states, &limit))
         return NULL;
     if (!rules_set) {
-        PyErr_SetString(PyExc_RuntimeError, "search_area: set_rules first");
+        PyErr_Format(PyExc_RuntimeError, "%s: set_rules first", who);
         return NULL;
     }
     if (w < 9 || h < 9 || (size_t)w * h > 1u << 28 || max_states < 1 || max_states > 1 << 24
         || limit < 1 || limit > MAX_RUN) {
-        PyErr_SetString(PyExc_ValueError, "search_area: a grid of at least 9 x 9, "
-                        "1 to 2**24 states, a limit of 1-100 rotations");
+        PyErr_Format(PyExc_ValueError, "%s: a grid of at least 9 x 9, "
+                     "1 to 2**24 states, a limit of 1-100 rotations", who);
         return NULL;
     }
-    Py_buffer grid_view, dist_view, area_view, target_view;
-    if (read_grid(grid_obj, &grid_view, w, h, "search_area") < 0)
-        return NULL;
-    if (read_ints(dist_obj, &dist_view, (Py_ssize_t)(2 * w - 1) * (2 * h - 1),
-                  "distances") < 0) {
-        PyBuffer_Release(&grid_view);
-        return NULL;
-    }
-    if (read_ints(area_obj, &area_view, -1, "area") < 0) {
-        PyBuffer_Release(&grid_view), PyBuffer_Release(&dist_view);
-        return NULL;
-    }
-    if (read_ints(target_obj, &target_view, -1, "target") < 0) {
-        PyBuffer_Release(&grid_view), PyBuffer_Release(&dist_view);
-        PyBuffer_Release(&area_view);
-        return NULL;
-    }
-    Py_buffer labels_view;
-    if (read_ints(labels_obj, &labels_view, (Py_ssize_t)w * h, "labels") < 0) {
-        PyBuffer_Release(&grid_view), PyBuffer_Release(&dist_view);
-        PyBuffer_Release(&area_view), PyBuffer_Release(&target_view);
-        return NULL;
-    }
-    Pass p = {.w = w, .h = h, .cells = (size_t)w * h, .dist = dist_view.buf,
-              .max_states = max_states, .labels = labels_view.buf,
-              .label_count = label_count < 0 ? 0 : label_count};
+    Py_buffer grid_view, dist_view, area_view, target_view, labels_view = {0};
+    int have_grid = 0, have_dist = 0, have_area = 0, have_target = 0, have_labels = 0;
     PyObject *result = NULL;
+    Pass p = {.w = w, .h = h, .cells = (size_t)w * h, .max_states = max_states,
+              .improve = improve};
+    if (read_grid(grid_obj, &grid_view, w, h, who) < 0)
+        goto done;
+    have_grid = 1;
+    if (read_ints(dist_obj, &dist_view, (Py_ssize_t)(2 * w - 1) * (2 * h - 1),
+                  "distances") < 0)
+        goto done;
+    have_dist = 1;
+    if (read_ints(area_obj, &area_view, -1, "area") < 0)
+        goto done;
+    have_area = 1;
+    if (read_ints(target_obj, &target_view, -1, "target") < 0)
+        goto done;
+    have_target = 1;
+    if (labels_obj != Py_None) {
+        if (read_ints(labels_obj, &labels_view, (Py_ssize_t)w * h, "labels") < 0)
+            goto done;
+        have_labels = 1;
+        p.labels = labels_view.buf;
+        p.label_count = label_count < 0 ? 0 : label_count;
+    }
+    p.dist = dist_view.buf;
     if (pass_setup(&p, grid_view.buf) < 0)
         goto done;
     const int32_t *area = area_view.buf, *target = target_view.buf;
     Py_ssize_t area_n = area_view.len / 4, target_n = target_view.len / 4;
     if (area_n < 1 || area_n > AREA) {
-        PyErr_SetString(PyExc_ValueError, "search_area: 1 to 128 area cells");
+        PyErr_Format(PyExc_ValueError, "%s: 1 to 128 area cells", who);
         goto done;
     }
     for (Py_ssize_t i = 0; i < area_n; i++) {
         int32_t c = area[i], x = c % w, y = c / w;
         if (c < 0 || (size_t)c >= p.cells || x < 4 || x >= w - 4 || y < 4 || y >= h - 4
             || p.area_of[c] >= 0) {
-            PyErr_Format(PyExc_ValueError, "search_area: area cell %zd is off the grid's "
-                         "inside or twice", i);
+            PyErr_Format(PyExc_ValueError, "%s: area cell %zd is off the grid's "
+                         "inside or twice", who, i);
             goto done;
         }
         p.area_of[c] = (int16_t)i;
@@ -760,13 +816,17 @@ static PyObject *search_area(PyObject *self, PyObject *args)
     for (Py_ssize_t i = 0; i < target_n; i++) {
         int32_t c = target[i];
         if (c < 0 || (size_t)c >= p.cells || p.area_of[c] < 0) {
-            PyErr_Format(PyExc_ValueError, "search_area: target cell %zd is not in the area", i);
+            PyErr_Format(PyExc_ValueError, "%s: target cell %zd is not in the area", who, i);
             goto done;
         }
         if (!has(&goal, p.area_of[c]))
             flip(&goal, p.area_of[c]);
     }
     State start = area_state(&p);
+    if (improve) {
+        p.goal_cells = goal;
+        p.before = badness(&p, &start);
+    }
     int found = search(&p, &start, &goal, limit);
     if (found < 0) {
         result = Py_NewRef(Py_None);
@@ -775,10 +835,27 @@ static PyObject *search_area(PyObject *self, PyObject *args)
     result = pair_list(p.found, found);
 done:
     pass_free(&p);
-    PyBuffer_Release(&grid_view), PyBuffer_Release(&dist_view);
-    PyBuffer_Release(&area_view), PyBuffer_Release(&target_view);
-    PyBuffer_Release(&labels_view);
+    if (have_grid)
+        PyBuffer_Release(&grid_view);
+    if (have_dist)
+        PyBuffer_Release(&dist_view);
+    if (have_area)
+        PyBuffer_Release(&area_view);
+    if (have_target)
+        PyBuffer_Release(&target_view);
+    if (have_labels)
+        PyBuffer_Release(&labels_view);
     return result;
+}
+
+static PyObject *search_area(PyObject *self, PyObject *args)
+{
+    return area_search(args, 0);
+}
+
+static PyObject *improve_area(PyObject *self, PyObject *args)
+{
+    return area_search(args, 1);
 }
 
 static PyMethodDef methods[] = {
@@ -790,6 +867,9 @@ static PyMethodDef methods[] = {
      "search_area(width, height, grid, distances, area, target, labels, label_count, "
      "max_states, limit) "
      "-> plan or None"},
+    {"improve_area", improve_area, METH_VARARGS,
+     "improve_area(width, height, grid, distances, area, goal_cells, labels, label_count, "
+     "max_states, limit) -> plan or None"},
     {NULL, NULL, 0, NULL},
 };
 

@@ -9,7 +9,7 @@ a time. A leg is an A* search over an area (the leg's cells and the end's,
 grown by ``PADS`` rings, at most 128 cells) for the fewest rotations that
 leave the area as it is but for one module taken off the end's cell and
 one standing on the leg's last cell, every module outside the area fixed
-and modules interchangeable (``planning/_regroup.c``, ``search_area``): a
+and modules interchangeable (:func:`hexbot.planning.area_search.move_in_area`): a
 wall module may step aside and come back, or pass the end on, where the
 end cannot roll itself. The last leg fills the void. A module moves only
 with three free sides in a row, and when its occupied neighbours form one
@@ -25,14 +25,11 @@ from __future__ import annotations
 
 from collections import deque
 
-import numpy as np
-
-from hexbot.planning import _regroup
+from hexbot.planning import area_search
+from hexbot.planning.area_search import AREA
 from hexbot.planning.budget import Deadline
-from hexbot.planning.hexlattice import ROTATIONS, Cell, distance, neighbors
-from hexbot.planning.regroup import MARGIN
+from hexbot.planning.hexlattice import Cell, distance, neighbors
 from hexbot.planning.schedule import meeting_searches
-from hexbot.planning.tidy import offset_distances
 from hexbot.planning.windows import Hop, assigned_pairs, corridor
 
 #: Cells of the surface path one leg covers at most (shorter legs are tried
@@ -111,38 +108,10 @@ def move_in_area(occupied: set[Cell], area: set[Cell], target: set[Cell],
     rest fixed), or None. A module whose neighbours form several arcs may move
     when the rest stays one piece: :func:`outside_components` tells the search
     which modules outside the area are joined."""
-    if len(area) > 128:
+    if len(area) > AREA:
         return None
-    xs = [x for x, _ in area]
-    ys = [y for _, y in area]
-    xmin, ymin = min(xs) - MARGIN, min(ys) - MARGIN
-    width, height = max(xs) - xmin + MARGIN + 1, max(ys) - ymin + MARGIN + 1
-    grid = bytearray(width * height)
-    for y in range(height):
-        for x in range(width):
-            cell = (x + xmin, y + ymin)
-            if cell in occupied:
-                grid[x + y * width] = 2 if cell == fixed else 1
-    index = {cell: cell[0] - xmin + (cell[1] - ymin) * width for cell in area}
-    order = sorted(area)
-    labels = np.full(width * height, -1, dtype=np.intc)
-    components = outside_components(occupied, area)
-    for cell, label in components.items():
-        labels[cell[0] - xmin + (cell[1] - ymin) * width] = label
-    hops = _regroup.search_area(
-        width, height, grid, offset_distances(width, height),
-        np.array([index[c] for c in order], dtype=np.intc),
-        np.array([index[c] for c in order if c in target], dtype=np.intc),
-        labels, max(components.values(), default=-1) + 1, states, limit)
-    if hops is None:
-        return None
-    out: list[Hop] = []
-    for start, rot in hops:
-        rule = ROTATIONS[rot]
-        x, y = xmin + start % width, ymin + start // width
-        (gx, gy), (sx, sy) = rule.goal, rule.substrate
-        out.append(((x, y), (x + gx, y + gy), rule, (x + sx, y + sy)))
-    return out
+    return area_search.move_in_area(occupied, area, target, fixed, states, limit,
+                                    outside_components(occupied, area))
 
 
 def _across(occupied: set[Cell], goal: frozenset[Cell], end: Cell, void: Cell,

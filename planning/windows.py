@@ -11,18 +11,18 @@ propagation) and open the inlets that cut the surface into segments
 (:mod:`hexbot.planning.surface`), which a plain journey cannot.
 
 The window is a corridor: the cells within ``radius`` of the hex line from
-the end to the void. Its state space is bounded by ``max_states``.
+the end to the void. Its state space is bounded by ``max_states``, its size
+by 128 cells (the search runs in C, ``planning/_regroup.c``; on the bench's
+pairs of 30 and 100 modules the largest window searched had 121 cells, the
+largest that held a fix 72).
 """
 
 from __future__ import annotations
-
-import heapq
 
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
 from hexbot.planning.hexlattice import Cell, distance, neighbors
-from hexbot.planning.robust import _moves_from
 
 #: One rotation: (from, to, Table 4-3 row, substrate cell).
 Hop = tuple[Cell, Cell, object, Cell]
@@ -54,47 +54,12 @@ def corridor(a: Cell, b: Cell, radius: int) -> set[Cell]:
 
 def fix_in_window(occupied: set[Cell], goal: frozenset[Cell], window: set[Cell],
                   fixed: Cell | None = None, max_states: int = 3000) -> list[Hop] | None:
-    """The fewest rotations inside ``window`` that lower its badness, or None
-    (none within ``max_states`` window states)."""
-    outside = occupied - window
-    start = frozenset(occupied & window)
-    holes = [c for c in window if c in goal]
+    """The fewest rotations (or one more) inside ``window`` that lower its badness, or None
+    (none within ``max_states`` window states, or a window of more than 128
+    cells). An A* in C (:func:`hexbot.planning.area_search.improve_in_area`)."""
+    from hexbot.planning.area_search import improve_in_area  # it imports this module
 
-    def badness(state: frozenset[Cell]) -> int:
-        return sum(1 for c in state if c not in goal) + sum(1 for c in holes if c not in state)
-
-    def estimate(state: frozenset[Cell]) -> int:
-        off = [c for c in state if c not in goal]
-        empty = [c for c in holes if c not in state]
-        if not off or not empty:
-            return 0
-        return min(distance(a, b) for a in off for b in empty) - 1
-
-    before = badness(start)
-    parent: dict[frozenset[Cell], tuple[frozenset[Cell], Hop] | None] = {start: None}
-    cost = {start: 0}
-    heap = [(estimate(start), 0, start)]
-    tie = 0
-    while heap and len(parent) < max_states:
-        _, _, state = heapq.heappop(heap)
-        whole = outside | state
-        for cell in sorted(state):
-            if cell == fixed or not _can_leave(whole, cell):
-                continue
-            options = [m for m in _moves_from(cell, whole, cell) if m[2] in window]
-            if not options:
-                continue
-            for rule, sub, dst in options:
-                after = (state - {cell}) | {dst}
-                if after in parent:
-                    continue
-                parent[after] = (state, (cell, dst, rule, sub))
-                cost[after] = cost[state] + 1
-                if badness(after) < before:
-                    return _unwind(parent, after)
-                tie += 1
-                heapq.heappush(heap, (cost[after] + estimate(after), tie, after))
-    return None
+    return improve_in_area(occupied, goal, window, fixed, max_states)
 
 
 def _leavable(mask: int) -> bool:
@@ -115,14 +80,6 @@ def _can_leave(occupied: set[Cell] | frozenset[Cell], cell: Cell) -> bool:
     a, b, c, d, e, f = neighbors(cell)
     return _LEAVABLE[(a in occupied) | (b in occupied) << 1 | (c in occupied) << 2
                      | (d in occupied) << 3 | (e in occupied) << 4 | (f in occupied) << 5]
-
-
-def _unwind(parent: dict, state: frozenset[Cell]) -> list[Hop]:
-    hops = []
-    while parent[state] is not None:
-        state, hop = parent[state]
-        hops.append(hop)
-    return hops[::-1]
 
 
 def distance_matrix(rows: list[Cell], cols: list[Cell]) -> np.ndarray:

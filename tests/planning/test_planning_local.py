@@ -122,3 +122,102 @@ def test_a_goal_apart_from_the_start_is_a_global_change_with_a_short_local_cap()
     for family, n, seed in [("blob", 10, 2), ("blob", 30, 3), ("scramble", 100, 0)]:
         initial, goal = make_pair(family, n, seed)
         assert local_cap(Configuration.from_cells(initial), goal) == local_seconds(n)
+
+
+def _fewest_fix(occupied, goal, window, fixed=None, limit=20_000):
+    """Reference for the C window search: breadth-first over the window's
+    states (plain Python, the old search's move rule), the fewest rotations
+    that lower the badness; None when the whole space has none; "limit" when
+    it holds more than ``limit`` states."""
+    from collections import deque
+
+    from hexbot.planning.robust import _moves_from
+    from hexbot.planning.windows import _can_leave
+
+    outside = occupied - window
+    holes = {c for c in window if c in goal}
+
+    def badness(state):
+        return len(state - goal) + len(holes - state)
+
+    start = frozenset(occupied & window)
+    before = badness(start)
+    depth = {start: 0}
+    queue = deque([start])
+    while queue:
+        state = queue.popleft()
+        whole = outside | state
+        for cell in state:
+            if cell == fixed or not _can_leave(whole, cell):
+                continue
+            for _, _, dst in _moves_from(cell, whole, cell):
+                after = (state - {cell}) | {dst}
+                if dst not in window or after in depth:
+                    continue
+                if badness(after) < before:
+                    return depth[state] + 1
+                depth[after] = depth[state] + 1
+                if len(depth) > limit:
+                    return "limit"
+                queue.append(after)
+    return None
+
+
+def _windows_of(family, n, seed, radius):
+    from hexbot.planning.windows import assigned_pairs
+
+    a, b = make_pair(family, n, seed)
+    occupied, goal = set(a), frozenset(b)
+    for _, end, void in assigned_pairs(occupied - goal, set(goal - occupied))[:4]:
+        yield occupied, goal, corridor(end, void, radius)
+
+
+def test_a_window_fix_takes_the_fewest_rotations_that_lower_the_badness_or_one_more():
+    """The C search (A*, the goal tested when a state is reached) against a
+    breadth-first search over the same window states (corridors of the
+    nearest assigned pairs of bench pairs of 30 and 100 modules): the fewest
+    rotations or one more, each one legal in turn (the window the only cells
+    that change), and the badness lower at the end; no fix exactly when the
+    breadth-first search exhausts the window's states."""
+    from hexbot.planning.robust import _moves_from
+    from hexbot.planning.windows import _can_leave
+
+    compared = longer = longest = 0
+    for family, n in (("blob", 30), ("blob", 100), ("scramble", 100)):
+        for seed in range(4):
+            for radius in (1, 2, 3):
+                for occupied, goal, window in _windows_of(family, n, seed, radius):
+                    fewest = _fewest_fix(occupied, goal, window)
+                    if fewest == "limit":
+                        continue
+                    hops = fix_in_window(occupied, goal, window, max_states=200_000)
+                    compared += 1
+                    if fewest is None:
+                        assert hops is None
+                        continue
+                    assert hops is not None and fewest <= len(hops) <= fewest + 1
+                    longer += len(hops) > fewest
+                    longest = max(longest, fewest)
+                    state = set(occupied)
+                    for src, dst, _, _ in hops:
+                        assert dst in window and _can_leave(state, src)
+                        assert dst in {d for _, _, d in _moves_from(src, state, src)}
+                        state.remove(src)
+                        state.add(dst)
+
+                    def wrong(cells, window=window, goal=goal):
+                        return sum(1 for c in window if (c in cells) != (c in goal))
+
+                    assert wrong(state) < wrong(occupied)
+    assert compared >= 100 and longest >= 7 and longer <= compared // 10
+
+
+def test_a_window_of_more_than_128_cells_is_not_searched():
+    from hexbot.planning.windows import disc
+
+    bar = {(x, 0) for x in range(30)}
+    goal = frozenset(bar - {(29, 0)} | {(28, 1)})
+    assert len(disc((29, 0), 6)) == 127 and len(disc((29, 0), 7)) == 169
+    hops = fix_in_window(set(bar), goal, disc((29, 0), 6))
+    assert [(src, dst) for src, dst, _, _ in hops] == [((29, 0), (28, 1))]
+    assert fix_in_window(set(bar), goal, disc((29, 0), 7)) is None
