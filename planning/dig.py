@@ -21,7 +21,9 @@ again:
 * **an end**: the current shape is peeled around it (:func:`_peeled`); the
   cells the cheapest trio of its sides needs park, the end takes the
   deepest emptied goal cell it can roll to (or leaves to a park), and the
-  set is refilled in the reverse order.
+  set is refilled in the reverse order. When that leaves as many cells
+  walled in (the module left out, parked first, walled in where it waits),
+  the end leaves to a park itself and every parked module refills.
 
 A module of a hole's set that rolls to a void of the goal (one whose fill
 walls in nothing) stays there instead of parking: the flow refills the set
@@ -43,6 +45,7 @@ so each intermediate configuration is connected and every rotation legal.
 from __future__ import annotations
 
 import heapq
+from functools import partial
 
 from hexbot.planning.budget import PlanningFailure
 from hexbot.planning.flow import _enterable
@@ -341,7 +344,11 @@ def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> b
     before = walled()
     start = len(tracker.moves)
     if target in tracker.occupied:
-        tries = [(depth, None) for depth in PARK_DEPTHS]
+        # the end takes an emptied goal cell (a parked module stays out), else
+        # it leaves to a park itself: the module that stays out was parked
+        # first, deepest, and the refill can wall it in (blob 2,000 seed 0)
+        tries = [partial(_dig_end, depth=depth, shift=shift)
+                 for shift in (True, False) for depth in PARK_DEPTHS]
     else:  # a hole: the goal's peel, then the peel around the modules standing now
         # (only when it parks fewer modules: on blob 300 seed 0 digs by it as
         # a fallback made the plan 30 % longer; tried first, it cost two of
@@ -353,12 +360,10 @@ def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> b
         if target in around[1] and (target not in peels[0][1]
                                     or fewer < len(_dug(peels[0], target) & occupied)):
             peels.append(around)
-        tries = [(depth, peel) for peel in peels for depth in PARK_DEPTHS]
-    for depth, peel in tries:
-        if peel is None:
-            done = _dig_end(tracker, goal, fixed, target, depth)
-        else:
-            done = _dig_hole(tracker, goal, fixed, target, depth, peel)
+        tries = [partial(_dig_hole, depth=depth, peel=peel)
+                 for peel in peels for depth in PARK_DEPTHS]
+    for dig_once in tries:
+        done = dig_once(tracker, goal, fixed, target)
         if done and walled() < before:
             return True
         tracker.undo_to(start)
@@ -400,7 +405,7 @@ def _dig_hole(tracker, goal: frozenset[Cell], fixed: Cell | None, hole: Cell,
 
 
 def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
-             depth: int) -> bool:
+             depth: int, shift: bool = True) -> bool:
     occupied = tracker.occupied
     gone, close = _peeled(frozenset(occupied), end, fixed)
     sets = [frozenset().union(*(close(n) for n in trio if n in occupied))
@@ -417,13 +422,13 @@ def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
             parent = _rolls(occupied, end)[0]
             # the end takes the deepest emptied goal cell it rolls to (a parked
             # module stays out in its place), else it leaves to a park
-            shift = next((c for c in refill if c in parent), None)
-            found = ((unwind(parent, shift), shift) if shift is not None
+            into = next((c for c in refill if c in parent), None) if shift else None
+            found = ((unwind(parent, into), into) if into is not None
                      else _park(occupied, goal, end, fixed, set(removed), depth))
             if found:
                 tracker.roll(found[0])
                 for cell in refill:  # the outermost cells may stay voids
-                    if cell != shift and not _fill_from(tracker, parked, cell, fixed):
+                    if cell != into and not _fill_from(tracker, parked, cell, fixed):
                         break
                 return True
         tracker.undo_to(start)

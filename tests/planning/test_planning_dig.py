@@ -196,6 +196,16 @@ def test_blobs_of_1000_with_holes_deeper_than_the_goal_peel_digs_plan_locally(se
     assert_planned_locally("blob", 1000, seed, 5)
 
 
+def test_a_dug_end_leaves_to_a_park_when_the_module_left_out_would_be_walled_in():
+    # blob 2,000 seed 0: every journey flow stalled with one end left, in a
+    # notch with two free sides, and one void 70 cells away. Digging it out
+    # (17 modules parked) and letting it take an emptied goal cell left the
+    # first module parked out, walled in on the slope where it waited, so the
+    # dig was not kept and the pair went to the strip (503,117 moves). The end
+    # that leaves to a park itself walls in nothing: a local plan.
+    assert_planned_locally("blob", 2000, 0, 3)
+
+
 def test_a_deep_hole_is_dug_before_the_flow_fills_its_closure():
     goal = parallelogram(8, 8)
     rounds, closure, trios = dig.goal_peel(goal)
