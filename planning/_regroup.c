@@ -881,5 +881,8 @@ static struct PyModuleDef module = {
 
 PyMODINIT_FUNC PyInit__regroup(void)
 {
-    return PyModule_Create(&module);
+    PyObject *m = PyModule_Create(&module);
+    if (m && PyModule_AddIntConstant(m, "AREA", AREA) < 0) /* cells of an area at most */
+        Py_CLEAR(m);
+    return m;
 }

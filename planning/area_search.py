@@ -25,8 +25,8 @@ from hexbot.planning.regroup import MARGIN
 from hexbot.planning.tidy import offset_distances
 from hexbot.planning.windows import Hop
 
-#: Cells of an area at most (a state is two 64-bit words).
-AREA = 128
+#: Cells of an area at most (a state is two 64-bit words; the C side's limit).
+AREA = _regroup.AREA
 
 
 class Grid:
