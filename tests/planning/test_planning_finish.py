@@ -156,3 +156,8 @@ def test_a_grid_of_the_wrong_size_is_refused_with_the_reason():
                              np.full(81, -1, dtype=np.intc), 0, 10, 5)
     with pytest.raises(ValueError, match="one_pass: grid must be width \\* height bytes"):
         _regroup.one_pass(9, 9, bytearray(10), ints[:2], ints, 8, 30, 1, 5, 100, None)
+    with pytest.raises(ValueError, match="improve_area: grid must be width \\* height bytes"):
+        _regroup.improve_area(9, 9, bytearray(10), ints, ints[:1], ints[:1], None, 0, 10, 5)
+    # the right grid, an area cell on its edge: refused too, by name
+    with pytest.raises(ValueError, match="improve_area: area cell 0 is off the grid's inside"):
+        _regroup.improve_area(9, 9, bytearray(81), ints, ints[:1], ints[:1], None, 0, 10, 5)
