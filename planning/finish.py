@@ -26,7 +26,6 @@ from __future__ import annotations
 from collections import deque
 
 from hexbot.planning import area_search
-from hexbot.planning.area_search import AREA
 from hexbot.planning.budget import Deadline
 from hexbot.planning.hexlattice import Cell, distance, neighbors
 from hexbot.planning.schedule import meeting_searches
@@ -108,7 +107,7 @@ def move_in_area(occupied: set[Cell], area: set[Cell], target: set[Cell],
     rest fixed), or None. A module whose neighbours form several arcs may move
     when the rest stays one piece: :func:`outside_components` tells the search
     which modules outside the area are joined."""
-    if len(area) > AREA:
+    if len(area) > area_search.AREA:  # before the outside's pieces are looked for
         return None
     return area_search.move_in_area(occupied, area, target, fixed, states, limit,
                                     outside_components(occupied, area))
