@@ -23,7 +23,16 @@ again:
   deepest emptied goal cell it can roll to (or leaves to a park), and the
   set is refilled in the reverse order. When that leaves as many cells
   walled in (the module left out, parked first, walled in where it waits),
-  the end leaves to a park itself and every parked module refills.
+  the end leaves to a park itself and every parked module refills;
+* **a cavity**: an end packed with other walled-in ends (a cavity of the goal
+  full of modules, :func:`_walled_cluster`): the peel around it with the end
+  itself peelable gives the closure of every end of the cavity; the cells
+  of all of them park (the ends stay out) and the goal cells refill. It is
+  kept instead of the dig of the end alone when it adds fewer steps of
+  dependent moves (:func:`~hexbot.planning.schedule.critical_chain`) per cell
+  it frees: one cavity dug at once spares parking and refilling its wall
+  once per end, but a big cavity can cost more than the few ends near its
+  rim.
 
 A module of a hole's set that rolls to a void of the goal (one whose fill
 walls in nothing) stays there instead of parking: the flow refills the set
@@ -52,6 +61,7 @@ from hexbot.planning.flow import _enterable
 from hexbot.planning.hexlattice import Cell, distance, neighbors
 from hexbot.planning.journey import CROSSING_STATES, _rolls, journey
 from hexbot.planning.robust import Peel, _free_run, fillable, is_cut, unwind
+from hexbot.planning.schedule import critical_chain
 from hexbot.planning.windows import _can_leave, disc
 
 #: Digs one flow may make; modules one dig may park.
@@ -343,31 +353,50 @@ def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> b
 
     before = walled()
     start = len(tracker.moves)
+
+    def first(tries) -> float | None:
+        """The first of ``tries`` that walls in fewer cells, its moves kept: the
+        longest chain of dependent moves it adds per cell it frees (None: no try)."""
+        for dig_once in tries:
+            done = dig_once(tracker, goal, fixed, target)
+            freed = before - walled() if done else 0
+            if freed > 0:
+                return critical_chain(tracker.moves[start:])[0] / freed
+            tracker.undo_to(start)
+        return None
+
     if target in tracker.occupied:
         # the end takes an emptied goal cell (a parked module stays out), else
         # it leaves to a park itself: the module that stays out was parked
         # first, deepest, and the refill can wall it in (blob 2,000 seed 0)
-        tries = [partial(_dig_end, depth=depth, shift=shift)
-                 for shift in (True, False) for depth in PARK_DEPTHS]
-    else:  # a hole: the goal's peel, then the peel around the modules standing now
-        # (only when it parks fewer modules: on blob 300 seed 0 digs by it as
-        # a fallback made the plan 30 % longer; tried first, it cost two of
-        # the eight blobs of 1,000 their local plans)
-        occupied = frozenset(tracker.occupied)
-        peels = [goal_peel(goal)]
-        around = state_peel(goal, occupied)
-        fewer = len(_dug(around, target) & occupied)
-        if target in around[1] and (target not in peels[0][1]
-                                    or fewer < len(_dug(peels[0], target) & occupied)):
-            peels.append(around)
-        tries = [partial(_dig_hole, depth=depth, peel=peel)
-                 for peel in peels for depth in PARK_DEPTHS]
-    for dig_once in tries:
-        done = dig_once(tracker, goal, fixed, target)
-        if done and walled() < before:
+        single = [partial(_dig_end, depth=depth, shift=shift)
+                  for shift in (True, False) for depth in PARK_DEPTHS]
+        # a cavity of the goal full of ends is dug out at once when that takes
+        # fewer steps per end freed than digging them one by one (blob 1,000
+        # seed 0: five digs of one end or two, each parking the same wall)
+        cavity = [partial(_dig_cavity, depth=depth) for depth in PARK_DEPTHS]
+        at_once = first(cavity)
+        if at_once is None:
+            return first(single) is not None
+        tracker.undo_to(start)
+        one = first(single)
+        if one is not None and one <= at_once:
             return True
         tracker.undo_to(start)
-    return False
+        return first(cavity) is not None
+    # a hole: the goal's peel, then the peel around the modules standing now
+    # (only when it parks fewer modules: on blob 300 seed 0 digs by it as
+    # a fallback made the plan 30 % longer; tried first, it cost two of
+    # the eight blobs of 1,000 their local plans)
+    occupied = frozenset(tracker.occupied)
+    peels = [goal_peel(goal)]
+    around = state_peel(goal, occupied)
+    fewer = len(_dug(around, target) & occupied)
+    if target in around[1] and (target not in peels[0][1]
+                                or fewer < len(_dug(peels[0], target) & occupied)):
+        peels.append(around)
+    return first([partial(_dig_hole, depth=depth, peel=peel)
+                  for peel in peels for depth in PARK_DEPTHS]) is not None
 
 
 def _dug(peel, hole: Cell) -> set[Cell]:
@@ -435,12 +464,54 @@ def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
     return False
 
 
-def _peeled(occupied: frozenset[Cell], target: Cell, fixed: Cell | None):
+def _dig_cavity(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
+                depth: int) -> bool:
+    """Dig out ``end`` and the walled-in ends packed with it at once."""
+    occupied = tracker.occupied
+    cluster = _walled_cluster(occupied, goal, fixed, end)
+    if len(cluster) < 2:
+        return False
+    gone, close = _peeled(frozenset(occupied), end, fixed, keep_target=False)
+    cluster &= gone
+    if len(cluster) < 2:
+        return False
+    removed = set().union(*(close(c) for c in cluster))
+    if fixed in removed or len(removed) > DIG_LIMIT:
+        return False
+    start = len(tracker.moves)
+    order: list[Cell] = []
+    parked = _empty(tracker, goal, fixed, end, set(removed), set(removed), depth, order=order)
+    if parked is None:
+        tracker.undo_to(start)
+        return False
+    for cell in [c for c in reversed(order) if c in goal]:
+        if not _fill_from(tracker, parked, cell, fixed):
+            break  # the outermost cells may stay voids
+    return True
+
+
+def _walled_cluster(occupied: set[Cell], goal: frozenset[Cell], fixed: Cell | None,
+                    end: Cell) -> set[Cell]:
+    """``end`` and the walled-in ends touching it through walled-in ends (within
+    ``DIG_REACH``): a cavity of the goal full of modules."""
+    walled = fillable(frozenset(occupied), occupied - goal) - {fixed}
+    found, queue = {end}, [end]
+    while queue:
+        for n in neighbors(queue.pop()):
+            if n in walled and n not in found and distance(n, end) <= DIG_REACH:
+                found.add(n)
+                queue.append(n)
+    return found
+
+
+def _peeled(occupied: frozenset[Cell], target: Cell, fixed: Cell | None,
+            keep_target: bool = True):
     """The occupied cells within ``DIG_REACH`` of ``target`` peeled from the
     outside in: the cells that can go, and a function giving a cell's closure
-    (the cell and the peeled cells that had to go before it)."""
+    (the cell and the peeled cells that had to go before it). With
+    ``keep_target`` the module at ``target`` stays (the cells that free it)."""
     region = {c for c in disc(target, DIG_REACH)
-              if c in occupied and c != fixed and c != target}
+              if c in occupied and c != fixed and (c != target or not keep_target)}
     gone: set[Cell] = set()
     needs: dict[Cell, list[Cell]] = {}
     changed = True

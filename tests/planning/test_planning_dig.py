@@ -16,6 +16,7 @@ from hexbot.planning.hexlattice import distance
 from hexbot.planning.journey import journey_flow
 from hexbot.planning.local import forward
 from hexbot.planning.robust import fillable, pack_consecutive, plan_robust
+from hexbot.planning.schedule import critical_chain
 from hexbot.planning.tracker import Tracker
 
 NO_LIMIT = Deadline(None)
@@ -127,6 +128,83 @@ def test_a_walled_in_end_at_the_bottom_of_a_slot_is_dug_out():
     occupied = tracker.occupied
     assert bottom not in occupied and not fillable(frozenset(occupied), occupied - goal)
     assert_legal(start, tracker)
+
+
+def walled_ends(tracker: Tracker, goal: frozenset) -> set:
+    occupied = tracker.occupied
+    return fillable(frozenset(occupied), occupied - goal)
+
+
+def walled_cells(tracker: Tracker, goal: frozenset) -> int:
+    """Goal cells and ends walled in: what a kept dig lowers."""
+    occupied = tracker.occupied
+    return len(fillable(goal, set(goal - occupied))) + len(walled_ends(tracker, goal))
+
+
+def dig_all_ends(tracker: Tracker, goal: frozenset) -> int:
+    """Dig until no end is walled in: the number of digs."""
+    digs = 0
+    while walled_ends(tracker, goal):
+        assert dig.dig_ends(tracker, goal, None, NO_LIMIT)
+        digs += 1
+    return digs
+
+
+def test_a_cavity_of_the_goal_full_of_ends_is_dug_out_at_once_in_fewer_steps(monkeypatch):
+    # blob 1,000 seed 0: seven ends packed in a cavity of the goal were dug
+    # out one or two at a time, each dig parking and refilling the same wall
+    block = parallelogram(8, 8)
+    cavity = {(3, 3), (4, 3), (3, 4)}
+    goal = frozenset((block - cavity) | {(8, 0), (8, 1), (9, 0)})
+    start = Configuration.from_cells(block)
+    assert fillable(start.cells, set(cavity)) == cavity
+    at_once = Tracker(start, 10**6)
+    assert dig_all_ends(at_once, goal) == 1
+    assert not cavity & at_once.occupied
+    assert_legal(start, at_once)
+    monkeypatch.setattr(dig, "_dig_cavity", lambda *args, **kwargs: False)
+    one_by_one = Tracker(start, 10**6)
+    assert dig_all_ends(one_by_one, goal) == 3
+    # the digs' moves in a parallel schedule: the cavity's take fewer steps
+    assert critical_chain(at_once.moves)[0] < critical_chain(one_by_one.moves)[0]
+
+
+def test_an_end_dig_takes_the_way_with_fewer_steps_per_cell_freed(monkeypatch):
+    # blob 300 seed 1: digging its cavity of four ends at once takes 245
+    # steps of dependent moves, digging out two of them 50: the two are dug
+    # (and the next dig frees the others). Each dig of an end is checked
+    # against both ways, run here apart and taken back.
+    chosen = []
+    kept = dig._kept
+
+    def compared(tracker, goal, fixed, target):
+        if target not in tracker.occupied:
+            return kept(tracker, goal, fixed, target)
+        start, before = len(tracker.moves), walled_cells(tracker, goal)
+        per_cell = {}
+        for way, tries in (("at once", [dig._dig_cavity]), ("one", [dig._dig_end])):
+            for depth in dig.PARK_DEPTHS:
+                if tries[0](tracker, goal, fixed, target, depth=depth):
+                    freed = before - walled_cells(tracker, goal)
+                    if freed > 0:
+                        per_cell[way] = critical_chain(tracker.moves[start:])[0] / freed
+                tracker.undo_to(start)
+                if way in per_cell:
+                    break
+        done = kept(tracker, goal, fixed, target)
+        if done and len(per_cell) == 2:
+            freed = before - walled_cells(tracker, goal)
+            chosen.append((critical_chain(tracker.moves[start:])[0] / freed, per_cell))
+        return done
+
+    monkeypatch.setattr(dig, "_kept", compared)
+    a, b = make_pair("blob", 300, 1)
+    start = Configuration.from_cells(a)
+    forward(start, b, partial(journey_flow, digs=True), 10**6, None, NO_LIMIT, "local")
+    assert chosen
+    for steps, per_cell in chosen:
+        assert steps == pytest.approx(min(per_cell.values()))
+    assert any(per_cell["one"] < per_cell["at once"] for _, per_cell in chosen)
 
 
 def test_a_void_no_end_reaches_moves_towards_the_nearest_free_end():
