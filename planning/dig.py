@@ -346,12 +346,17 @@ def _trios(cell: Cell) -> list[tuple[Cell, ...]]:
 
 def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> bool:
     """Dig at ``target``; kept when fewer cells are walled in afterwards."""
-    def walled() -> int:
+    def walled_in() -> tuple[set[Cell], set[Cell]]:
+        """The goal cells and the ends walled in."""
         occupied = tracker.occupied
-        return (len(fillable(goal, set(goal - occupied)))
-                + len(fillable(frozenset(occupied), occupied - goal)))
+        return (fillable(goal, set(goal - occupied)),
+                fillable(frozenset(occupied), occupied - goal))
 
-    before = walled()
+    def walled() -> int:
+        return sum(map(len, walled_in()))
+
+    holes, ends = walled_in()
+    before = len(holes) + len(ends)
     start = len(tracker.moves)
 
     def first(tries) -> float | None:
@@ -374,7 +379,10 @@ def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> b
         # a cavity of the goal full of ends is dug out at once when that takes
         # fewer steps per end freed than digging them one by one (blob 1,000
         # seed 0: five digs of one end or two, each parking the same wall)
-        cavity = [partial(_dig_cavity, depth=depth) for depth in PARK_DEPTHS]
+        cavity = _walled_cluster(ends - {fixed}, target)
+        if len(cavity) < 2:
+            return first(single) is not None
+        cavity = [partial(_dig_cavity, depth=depth, cluster=cavity) for depth in PARK_DEPTHS]
         at_once = first(cavity)
         if at_once is None:
             return first(single) is not None
@@ -465,14 +473,11 @@ def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
 
 
 def _dig_cavity(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
-                depth: int) -> bool:
-    """Dig out ``end`` and the walled-in ends packed with it at once."""
+                depth: int, cluster: set[Cell]) -> bool:
+    """Dig out ``end`` and the walled-in ends packed with it (``cluster``) at once."""
     occupied = tracker.occupied
-    cluster = _walled_cluster(occupied, goal, fixed, end)
-    if len(cluster) < 2:
-        return False
     gone, close = _peeled(frozenset(occupied), end, fixed, keep_target=False)
-    cluster &= gone
+    cluster = cluster & gone
     if len(cluster) < 2:
         return False
     removed = set().union(*(close(c) for c in cluster))
@@ -490,11 +495,9 @@ def _dig_cavity(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
     return True
 
 
-def _walled_cluster(occupied: set[Cell], goal: frozenset[Cell], fixed: Cell | None,
-                    end: Cell) -> set[Cell]:
-    """``end`` and the walled-in ends touching it through walled-in ends (within
-    ``DIG_REACH``): a cavity of the goal full of modules."""
-    walled = fillable(frozenset(occupied), occupied - goal) - {fixed}
+def _walled_cluster(walled: set[Cell], end: Cell) -> set[Cell]:
+    """``end`` and the ``walled`` ends (the walled-in ones) touching it through
+    walled-in ends, within ``DIG_REACH``: a cavity of the goal full of modules."""
     found, queue = {end}, [end]
     while queue:
         for n in neighbors(queue.pop()):

@@ -182,9 +182,11 @@ def test_an_end_dig_takes_the_way_with_fewer_steps_per_cell_freed(monkeypatch):
             return kept(tracker, goal, fixed, target)
         start, before = len(tracker.moves), walled_cells(tracker, goal)
         per_cell = {}
-        for way, tries in (("at once", [dig._dig_cavity]), ("one", [dig._dig_end])):
+        cavity = dig._walled_cluster(walled_ends(tracker, goal), target)
+        ways = (("at once", partial(dig._dig_cavity, cluster=cavity)), ("one", dig._dig_end))
+        for way, dig_once in ways:
             for depth in dig.PARK_DEPTHS:
-                if tries[0](tracker, goal, fixed, target, depth=depth):
+                if dig_once(tracker, goal, fixed, target, depth=depth):
                     freed = before - walled_cells(tracker, goal)
                     if freed > 0:
                         per_cell[way] = critical_chain(tracker.moves[start:])[0] / freed
