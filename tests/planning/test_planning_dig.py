@@ -169,6 +169,26 @@ def test_a_cavity_of_the_goal_full_of_ends_is_dug_out_at_once_in_fewer_steps(mon
     assert critical_chain(at_once.moves)[0] < critical_chain(one_by_one.moves)[0]
 
 
+@pytest.mark.parametrize("fixed, digs", [((5, 3), 1), ((2, 3), 2)])
+def test_a_cavity_dig_never_moves_the_bolted_module(fixed, digs):
+    # bolted beside the cavity, out of the closures it empties: one dig; in
+    # them: the ends are dug one by one round it
+    block = parallelogram(8, 8)
+    cavity = {(3, 3), (4, 3), (3, 4)}
+    goal = frozenset((block - cavity) | {(8, 0), (8, 1), (9, 0)})
+    start = Configuration.from_cells(block)
+    tracker = Tracker(start, 10**6)
+    done = 0
+    while walled_ends(tracker, goal):
+        assert dig.dig_ends(tracker, goal, fixed, NO_LIMIT)
+        done += 1
+    assert done == digs
+    assert all(m.src != fixed for m in tracker.moves)
+    report = check_plan(start, frozenset(tracker.occupied),
+                        pack_consecutive(start, tracker.moves), fixed=fixed)
+    assert report.ok, report.problem
+
+
 def test_an_end_dig_takes_the_way_with_fewer_steps_per_cell_freed(monkeypatch):
     # blob 300 seed 1: digging its cavity of four ends at once takes 245
     # steps of dependent moves, digging out two of them 50: the two are dug
