@@ -377,7 +377,7 @@ def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> b
         single = [partial(_dig_end, depth=depth, shift=shift)
                   for shift in (True, False) for depth in PARK_DEPTHS]
         # a cavity of the goal full of ends is dug out at once when that takes
-        # fewer steps per end freed than digging them one by one (blob 1,000
+        # fewer steps per cell freed than digging them one by one (blob 1,000
         # seed 0: five digs of one end or two, each parking the same wall)
         cavity = _walled_cluster(ends - {fixed}, target)
         if len(cavity) < 2:
