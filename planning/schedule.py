@@ -306,18 +306,29 @@ def schedule_in_pieces(initial: Configuration, serial: list[Move],
                        deadline: Deadline = NO_DEADLINE) -> list[Step]:
     """The list schedule of ``serial``; where it gets stuck, the list schedules
     of its halves, one after the other (recursively: the depth is at most
-    log2 of the plan's length, and a single move is always scheduled)."""
+    log2 of the plan's length). A single move of a legal plan is always
+    scheduled; one that is not raises :class:`ValueError` (a planner's bug)."""
+    return _in_pieces(initial, serial, 0, deadline)
+
+
+def _in_pieces(initial: Configuration, serial: list[Move], first_index: int,
+               deadline: Deadline) -> list[Step]:
     steps = schedule_parallel(initial, serial, deadline)
     if steps is not None:
         return steps
+    if len(serial) == 1:
+        move = serial[0]
+        raise ValueError(f"move {first_index + 1} of module {move.module} from {move.src} "
+                         f"to {move.dst} cannot run where the plan makes it (a swept cell "
+                         "is taken, its substrate is gone or the rest would split)")
     half = len(serial) // 2
-    first = schedule_in_pieces(initial, serial[:half], deadline)
+    first = _in_pieces(initial, serial[:half], first_index, deadline)
     occupied = set(initial.cells)
     for move in serial[:half]:
         occupied.discard(move.src)
         occupied.add(move.dst)
     middle = Configuration.from_cells(frozenset(occupied))
-    return first + schedule_in_pieces(middle, serial[half:], deadline)
+    return first + _in_pieces(middle, serial[half:], first_index + half, deadline)
 
 
 def schedule(initial: Configuration, serial: list[Move],

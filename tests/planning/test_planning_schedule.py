@@ -80,3 +80,13 @@ def test_the_c_schedule_refuses_a_move_off_its_rotations_substrate():
                      bad.substrate_module)
     with pytest.raises(ValueError, match="not on its rotation's substrate"):
         schedule_parallel(start, serial)
+
+
+def test_a_move_that_would_split_the_rest_is_reported_not_recursed_on():
+    # (0, 0) holds (0, 1) and (1, -1) together; its rotation about (0, 1) is
+    # open, but no schedule runs it, and halving a plan of one move cannot
+    # help (it used to recurse until Python's stack ran out)
+    start = Configuration.from_cells({(0, 0), (0, 1), (1, -1)})
+    move = Move(start[(0, 0)].id, (0, 0), (-1, 1), 2, "CW", (0, 1), start[(0, 1)].id)
+    with pytest.raises(ValueError, match=rf"move 1 of module {move.module} from \(0, 0\)"):
+        scheduling.schedule_in_pieces(start, [move])
