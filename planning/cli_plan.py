@@ -138,7 +138,9 @@ def write_plan_json(plan: Plan, style: str, out: TextIO,
 
 
 def _json_head(plan: Plan, omitted: str) -> dict[str, Any]:
-    extra = {"commands_omitted": omitted} if omitted else {}
+    extra: dict[str, Any] = {"commands_omitted": omitted} if omitted else {}
+    if plan.tried:
+        extra["tried"] = plan.tried
     return {**extra, "mode": plan.mode, "method": plan.method, "reached": plan.reached}
 
 
@@ -180,6 +182,8 @@ def _text_lines(plan: Plan, style: str) -> Iterator[str]:
            f"{step_bound(plan.initial.cells, plan.goal).value} time steps)"
            if plan.lower_bound is not None else "")
     )
+    for reason in plan.tried:
+        yield f"note: tried first, no plan: {reason}"
     omitted = unaddressable(plan)
     if omitted:
         yield f"note: {omitted}"

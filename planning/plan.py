@@ -29,6 +29,7 @@ class Plan:
     warnings: list[str] = field(default_factory=list)
     lower_bound: int | None = None
     method: str = ""  # robust mode: which method planned (direct, backwards, canonical)
+    tried: list[str] = field(default_factory=list)  # robust mode: why the methods before it did not
 
     @property
     def move_count(self) -> int:

@@ -619,6 +619,7 @@ def plan_robust(
             failures.append(f"{name}: {exc}" if not str(exc).startswith(name) else str(exc))
             continue
         plan.method = name
+        plan.tried = failures  # why it came to this one (a strip plan is long)
         break
     if serial is None:
         plan.reason = "no plan found: " + "; ".join(failures)

@@ -45,6 +45,7 @@ def test_robust_mode_text_output_and_plot(capsys, examples_dir, tmp_path):
     code, out, _ = run_plan(capsys, examples_dir / P01[1], examples_dir / P01[0], "--plot", png)
     assert code == 0
     assert "mode robust (direct): goal reached" in out and "Select(" in out
+    assert "tried first" not in out  # the first method planned
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
@@ -67,6 +68,30 @@ def test_pair_apart_from_toml_files_goes_through_the_middle_ball(capsys, tmp_pat
     # the detour stays within a few times the distance bound (the strip took 9x here)
     bound = distance_lower_bound(frozenset(initial), frozenset((x + shift, y) for x, y in goal))
     assert bound < sum(len(step["moves"]) for step in result["steps"]) < 3 * bound
+
+
+def test_a_fallback_plan_says_why_the_methods_before_it_did_not_plan(capsys, tmp_path):
+    # a disc of radius 4 whose centre must be emptied: the direct methods, the
+    # local flows and the middle ball do not plan it, the canonical strip does
+    from hexbot.planning.windows import disc
+
+    cells = disc((0, 0), 4)
+    files = []
+    for name, shape in (("initial", cells - {(4, 0)}), ("goal", cells - {(0, 0)})):
+        path = tmp_path / f"{name}.toml"
+        path.write_text("cells = [" + ", ".join(f"[{x}, {y}]" for x, y in sorted(shape)) + "]\n")
+        files.append(path)
+    code, out, _ = run_plan(capsys, *files, "--json")
+    result = json.loads(out)
+    assert code == 0 and result["reached"] is True and result["method"] == "canonical strip"
+    tried = result["tried"]
+    assert [reason.split(":")[0] for reason in tried] == [
+        "direct", "direct, backwards", "local", "middle ball"]
+    assert all(len(reason.split(": ", 1)[1]) > 10 for reason in tried)  # a reason each
+    code, out, _ = run_plan(capsys, *files)
+    assert code == 0
+    notes = [line for line in out.splitlines() if line.startswith("note: tried first")]
+    assert len(notes) == 4 and "middle ball" in notes[-1]
 
 
 def test_bad_grid_file_names_file_and_line(capsys, tmp_path, examples_dir):
