@@ -19,6 +19,7 @@ from rich.progress import (
     BarColumn,
     MofNCompleteColumn,
     Progress,
+    SpinnerColumn,
     TaskID,
     TextColumn,
     TimeElapsedColumn,
@@ -53,6 +54,18 @@ def meter(description: str, total: int | None, *, stream=None) -> Iterator[Meter
                         disable=not console.is_terminal, transient=False)
     with progress:
         yield Meter(progress, progress.add_task(description, total=total))
+
+
+@contextmanager
+def stages(description: str, *, stream=None) -> Iterator[Meter]:
+    """A spinner, ``description``, the stage (``Meter.describe``) and the time
+    elapsed, for work whose length is not known (a plan of 10,000 modules
+    takes minutes); drawn only on a terminal, and gone when the work is done."""
+    console = Console(file=stream or sys.stderr)
+    progress = Progress(SpinnerColumn(), TextColumn("{task.description}"), TimeElapsedColumn(),
+                        console=console, disable=not console.is_terminal, transient=True)
+    with progress:
+        yield Meter(progress, progress.add_task(description, total=None))
 
 
 @contextmanager

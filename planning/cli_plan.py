@@ -102,10 +102,15 @@ def make_plan(args: argparse.Namespace, initial: Configuration | None = None) ->
         initial = load_configuration(args.initial)
     goal = load_configuration(args.goal).cells
     if args.mode == "robust":
+        from hexbot.host.cli_progress import stages
         from hexbot.planning.robust import plan_robust
 
-        return plan_robust(initial, goal, parallel=not args.serial, fixed=args.fixed,
-                           budget=args.budget)
+        # on a terminal, the stage the planner is at (minutes at 10,000 modules)
+        what = f"planning {len(initial)} modules"
+        with stages(what) as shown:
+            return plan_robust(initial, goal, parallel=not args.serial, fixed=args.fixed,
+                               budget=args.budget,
+                               progress=lambda stage: shown.describe(f"{what}: {stage}"))
     if args.mode == "exact":
         from hexbot.planning.exact import plan_exact
 

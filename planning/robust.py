@@ -556,6 +556,7 @@ def plan_robust(
     max_moves: int = MAX_MOVES,
     fixed: Cell | None = None,
     budget: float | None = DEFAULT_BUDGET,
+    progress: Callable[[str], None] | None = None,
 ) -> Plan:
     """Plan a connected, collision-free reconfiguration (see the module docstring).
 
@@ -570,8 +571,10 @@ def plan_robust(
     needed (:mod:`hexbot.planning.tidy`; not the strip's) before the schedule.
     ``budget`` is the time budget in seconds (None: none); each method gets
     its ``SHARES`` of what is left and gives up with a reason when it is used
-    up.
+    up. ``progress`` is told each stage as it starts (a method's name, then
+    "tidy" and "schedule"): at 10,000 modules a plan takes minutes.
     """
+    tell = progress or (lambda stage: None)
     from hexbot.planning.canonical import replay, via_strip
     from hexbot.planning.local import JOURNEY_LIMIT, LOCAL_LIMIT, local_cap, via_local
     from hexbot.planning.middle import via_middle
@@ -613,6 +616,7 @@ def plan_robust(
             failures.append(f"{name}: not tried, the time budget of {budget:.3g} s is used up")
             continue
         share = deadline.share(SHARES.get(name, 1.0))
+        tell(name)
         try:
             serial = method(share)
         except PlanningFailure as exc:
@@ -626,11 +630,13 @@ def plan_robust(
         return plan
     tidied = None
     if plan.method != "canonical strip":  # its journeys are shortest rolls already
+        tell("tidy")
         tidied = shorten(initial, serial, deadline)
         serial = regroup(initial, tidied, fixed, deadline)
     if not parallel:
         plan.steps = [Step([m]) for m in serial]
     else:
+        tell("schedule")
         plan.steps, late = schedule(initial, serial, deadline)
         if tidied is not None and len(tidied) != len(serial):
             # regrouped, a plan has fewer moves but can take more steps (one

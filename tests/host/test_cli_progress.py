@@ -98,3 +98,26 @@ def test_send_shows_replies_elapsed_and_time_out_while_it_waits():
     assert proc.returncode == 0, shown
     assert b"Localize(): replied" in shown and b"/2" in shown
     assert re.search(rb"\d+\.\d s of \d+ s", shown), shown
+
+
+def test_plan_shows_the_stage_the_planner_is_at_and_keeps_a_pipe_clean(tmp_path):
+    from hexbot.bench.planning import make_pair
+
+    files = []
+    for name, cells in zip(("initial", "goal"), make_pair("blob", 300, 0), strict=True):
+        path = tmp_path / f"{name}.toml"
+        path.write_text("cells = [" + ", ".join(f"[{x}, {y}]" for x, y in sorted(cells)) + "]\n")
+        files.append(str(path))
+    proc, master = _start("plan", *files)  # the local flows take seconds here
+    try:
+        out, _ = proc.communicate(timeout=120)
+        shown = _read_until(master, b"\x00", 2)  # whatever the pty still holds
+    finally:
+        proc.kill()
+        os.close(master)
+    assert proc.returncode == 0 and out.startswith("mode robust (local): goal reached")
+    assert b"planning 300 modules: local" in shown
+    # piped, nothing is drawn
+    piped = subprocess.run([sys.executable, "-m", "hexbot.cli", "plan", *files],
+                           capture_output=True, text=True, timeout=120)
+    assert piped.returncode == 0 and piped.stderr == ""

@@ -94,6 +94,20 @@ def test_a_fallback_plan_says_why_the_methods_before_it_did_not_plan(capsys, tmp
     assert len(notes) == 4 and "middle ball" in notes[-1]
 
 
+def test_the_planner_tells_each_stage_as_it_starts():
+    from hexbot.planning.configuration import Configuration
+    from hexbot.planning.robust import plan_robust
+    from hexbot.planning.windows import disc
+
+    cells = disc((0, 0), 4)
+    told: list[str] = []
+    plan = plan_robust(Configuration.from_cells(cells - {(4, 0)}), frozenset(cells - {(0, 0)}),
+                       progress=told.append)
+    assert plan.reached
+    assert told == ["direct", "direct, backwards", "local", "middle ball", "canonical strip",
+                    "schedule"]  # the strip's plan is not tidied
+
+
 def test_bad_grid_file_names_file_and_line(capsys, tmp_path, examples_dir):
     bad = tmp_path / "bad.txt"
     bad.write_text("0 0 1\n0 2 1\n")
