@@ -92,6 +92,7 @@ def row(family: str, n: int, plan, seconds: float, initial, goal) -> dict:
         "step_lower_bound": step_bound(frozenset(initial), frozenset(goal)).value,
         "method": plan.method,
         "reason": plan.reason,
+        "tried": plan.tried,  # why the methods before ``method`` did not plan
     }
 
 
@@ -327,6 +328,7 @@ def plan_pair(family: str, n: int, seed: int, fixed: bool, budget: float) -> dic
         "planned": bool(report and report.ok),
         "method": plan.method,
         "reason": plan.reason or (report.problem if report and not report.ok else ""),
+        "tried": plan.tried,  # why the methods before ``method`` did not plan
         "warnings": plan.warnings,  # e.g. the schedule ran out of time: one move per step
         "moves": plan.move_count, "move_bound": moves.value, "move_bound_kind": moves.kind,
         "steps": plan.time_steps, "step_bound": steps.value, "step_bound_kind": steps.kind,

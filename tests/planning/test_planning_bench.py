@@ -13,6 +13,8 @@ def test_a_row_is_checked_and_bounded():
     rows = [plan_pair("scramble", 10, seed, True, 30.0) for seed in range(2)]
     for row in rows:
         assert row["planned"] and row["reason"] == "" and row["warnings"] == []
+        # a fallback's row says why the methods before it did not plan
+        assert (row["tried"] == []) == (row["method"] == "direct")
         assert row["moves"] >= row["move_bound"] > 0
         assert row["steps"] >= row["step_bound"] > 0
         assert row["move_bound_kind"] == "assignment" and row["peak_mib"] > 0
