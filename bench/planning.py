@@ -309,7 +309,7 @@ def make_pair(family: str, n: int, seed: int):
 
 def plan_pair(family: str, n: int, seed: int, fixed: bool, budget: float) -> dict:
     """Plan one pair, check it independently, measure it (runs in a child process)."""
-    from hexbot.planning.bounds import bottleneck_bound, move_lower_bound, step_bound
+    from hexbot.planning.bounds import plan_bounds
     from hexbot.planning.checker import check_plan
     from hexbot.planning.configuration import Configuration
     from hexbot.planning.robust import plan_robust
@@ -321,8 +321,8 @@ def plan_pair(family: str, n: int, seed: int, fixed: bool, budget: float) -> dic
     plan = plan_robust(start, goal, fixed=anchor, budget=budget)
     seconds = time.perf_counter() - t0
     report = check_plan(start, goal, plan.steps, fixed=anchor) if plan.reached else None
-    moves, steps = move_lower_bound(initial, goal), step_bound(initial, goal, anchor)
-    plain = bottleneck_bound(initial, goal)
+    bounds = plan_bounds(initial, goal, anchor)
+    moves, steps, plain = bounds.moves, bounds.time_steps, bounds.bottleneck
     return {
         "family": family, "modules": n, "seed": seed, "fixed": fixed,
         "planned": bool(report and report.ok),

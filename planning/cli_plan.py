@@ -20,7 +20,7 @@ from typing import Any, TextIO
 from hexbot.errors import ScenarioError
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.workflows import Verify
-from hexbot.planning.bounds import step_bound
+from hexbot.planning.bounds import NEVER, PlanBounds, plan_bounds
 from hexbot.planning.budget import DEFAULT_BUDGET
 from hexbot.planning.commands import MoveCommands, command_json, plan_to_commands
 from hexbot.planning.config_io import load_configuration
@@ -146,7 +146,45 @@ def _json_head(plan: Plan, omitted: str) -> dict[str, Any]:
     extra: dict[str, Any] = {"commands_omitted": omitted} if omitted else {}
     if plan.tried:
         extra["tried"] = plan.tried
-    return {**extra, "mode": plan.mode, "method": plan.method, "reached": plan.reached}
+    if plan.reason:
+        extra["reason"] = plan.reason
+    if plan.warnings:
+        extra["warnings"] = plan.warnings
+    bounds = pair_bounds(plan)
+    if bounds is not None:
+        extra["bounds"] = bounds.as_json()
+    return {**extra, "mode": plan.mode, "method": plan.method, "reached": plan.reached,
+            "moves": plan.move_count, "time_steps": plan.time_steps}
+
+
+def pair_bounds(plan: Plan) -> PlanBounds | None:
+    """The lower bounds of the plan's pair (None when the pair is not one: the
+    module counts differ, the goal is empty, the fixed module is not in both;
+    or when no plan can exist: a module must leave that never can)."""
+    fixed, cells = plan.fixed, plan.initial.cells
+    if (not plan.goal or len(cells) != len(plan.goal)
+            or (fixed is not None and (fixed not in cells or fixed not in plan.goal))):
+        return None
+    bounds = plan_bounds(cells, plan.goal, fixed)
+    return bounds if bounds.time_steps.value < NEVER else None
+
+
+def plan_summary(plan: Plan) -> str:
+    """One line: the method, whether the goal is reached, the plan's size and
+    what no plan of this pair can beat (docs/planning.md, *Bounds*)."""
+    line = (f"mode {plan.mode}{f' ({plan.method})' if plan.method else ''}: "
+            f"goal {'reached' if plan.reached else 'NOT reached'}, "
+            f"{plan.time_steps} time step(s), {plan.move_count} move(s)")
+    bounds = pair_bounds(plan)
+    if bounds is None:
+        return line
+    return line + (f" (lower bounds: {_bound(bounds.moves, 'moves')}, "
+                   f"{_bound(bounds.time_steps, 'time steps')}; "
+                   f"plain bottleneck {_bound(bounds.bottleneck, 'steps')})")
+
+
+def _bound(bound, unit: str) -> str:
+    return f"{bound.value} {unit}" + (" (nearest cells)" if bound.kind == "nearest" else "")
 
 
 def _steps_json(plan: Plan, style: str, omitted: str) -> Iterator[dict[str, Any]]:
@@ -179,14 +217,7 @@ def plan_text(plan: Plan, style: str = "combined") -> str:
 
 def _text_lines(plan: Plan, style: str) -> Iterator[str]:
     """The lines of the text report, one at a time (a plan may have millions of moves)."""
-    yield (
-        f"mode {plan.mode}{f' ({plan.method})' if plan.method else ''}: "
-        f"goal {'reached' if plan.reached else 'NOT reached'}, "
-        f"{plan.time_steps} time step(s), {plan.move_count} move(s)"
-        + (f" (lower bounds: {plan.lower_bound} moves, "
-           f"{step_bound(plan.initial.cells, plan.goal).value} time steps)"
-           if plan.lower_bound is not None else "")
-    )
+    yield plan_summary(plan)
     for reason in plan.tried:
         yield f"note: tried first, no plan: {reason}"
     omitted = unaddressable(plan)

@@ -92,7 +92,7 @@ def plan_exact(initial: Configuration, goal: frozenset[Cell], fixed: Cell | None
                budget: float | None = DEFAULT_BUDGET, parallel: bool = True) -> Plan:
     """A plan with the fewest moves (``plan.reason`` says why when there is none)."""
     goal = frozenset(goal)
-    plan = Plan(mode="exact", initial=initial, goal=goal, method="A*")
+    plan = Plan(mode="exact", initial=initial, goal=goal, method="A*", fixed=fixed)
     plan.lower_bound = move_lower_bound(initial.cells, goal).value
     reason = check_inputs(initial, goal, fixed)
     if not reason and len(initial) > EXACT_LIMIT:

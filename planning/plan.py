@@ -9,7 +9,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from hexbot.planning.configuration import Configuration, is_connected
-from hexbot.planning.hexlattice import Cell, distance
+from hexbot.planning.hexlattice import Cell
 from hexbot.planning.moves import Move, orientation_after, rule_of
 
 
@@ -27,7 +27,8 @@ class Plan:
     reached: bool = False
     reason: str = ""
     warnings: list[str] = field(default_factory=list)
-    lower_bound: int | None = None
+    lower_bound: int | None = None  # fewest moves of any plan (bounds.move_lower_bound)
+    fixed: Cell | None = None  # the module bolted to the base (robust and exact modes)
     method: str = ""  # robust mode: which method planned (direct, backwards, canonical)
     tried: list[str] = field(default_factory=list)  # robust mode: why the methods before it did not
 
@@ -102,16 +103,3 @@ def check_step(config: Configuration, step: Step) -> list[str]:
     if not is_connected(after):
         problems.append("the configuration is disconnected after the step")
     return problems
-
-
-def distance_lower_bound(current: frozenset[Cell], goal: frozenset[Cell]) -> int:
-    """Fewest moves any plan needs. Each rotation moves one module by one cell, so
-    every electron travels at least to its nearest void and every void is
-    filled from at least its nearest electron; the larger sum is a bound."""
-    electrons = list(current - goal)
-    voids = list(goal - current)
-    if not electrons or not voids:
-        return 0
-    by_electron = sum(min(distance(e, v) for v in voids) for e in electrons)
-    by_void = sum(min(distance(e, v) for e in electrons) for v in voids)
-    return max(by_electron, by_void)

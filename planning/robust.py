@@ -45,6 +45,7 @@ from collections import Counter, deque
 from collections.abc import Callable
 from dataclasses import dataclass, replace
 
+from hexbot.planning.bounds import move_lower_bound
 from hexbot.planning.budget import (
     DEFAULT_BUDGET,
     MAX_MOVES,
@@ -55,7 +56,7 @@ from hexbot.planning.budget import (
 from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.hexlattice import LETTER_CELLS, ROTATIONS, Cell, distance, neighbors
 from hexbot.planning.moves import Move, new_move
-from hexbot.planning.plan import Plan, Step, distance_lower_bound
+from hexbot.planning.plan import Plan, Step
 from hexbot.planning.schedule import (  # noqa: F401 - re-exported (exact.py, tests)
     pack_consecutive,
     schedule,
@@ -583,8 +584,8 @@ def plan_robust(
 
     goal = frozenset(goal)
     deadline = Deadline(budget)
-    plan = Plan(mode="robust", initial=initial, goal=goal)
-    plan.lower_bound = distance_lower_bound(initial.cells, goal)
+    plan = Plan(mode="robust", initial=initial, goal=goal, fixed=fixed)
+    plan.lower_bound = move_lower_bound(initial.cells, goal).value
     reason = check_inputs(initial, goal, fixed)
     if reason:
         plan.reason = reason

@@ -23,10 +23,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from hexbot.planning.bounds import move_lower_bound
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.hexlattice import Cell
 from hexbot.planning.moves import Move
-from hexbot.planning.plan import Plan, Step, apply_move, check_step, distance_lower_bound
+from hexbot.planning.plan import Plan, Step, apply_move, check_step
 from hexbot.planning.thesis.actuation import hex_actuate
 from hexbot.planning.thesis.layers import find_ve, mobile_electrons, potential_voids
 from hexbot.planning.thesis.mdp import next_location
@@ -98,7 +99,7 @@ def plan_faithful(
     options = options or FaithfulOptions()
     mode = "faithful-parallel" if parallel else "faithful-serial"
     plan = Plan(mode=mode, initial=initial, goal=frozenset(goal))
-    plan.lower_bound = distance_lower_bound(initial.cells, plan.goal)
+    plan.lower_bound = move_lower_bound(initial.cells, plan.goal).value
     if len(initial) != len(goal):
         plan.reason = f"the goal has {len(goal)} cells for {len(initial)} modules"
         return plan

@@ -22,9 +22,13 @@ def test_json_object_has_the_documented_shape(capsys, examples_dir):
                               "--mode", "faithful-parallel", "--json")
     assert code == 0 and err == ""
     data = json.loads(out)
-    assert set(data) == {"mode", "method", "reached", "steps"}
+    assert set(data) == {"mode", "method", "reached", "moves", "time_steps", "bounds", "steps"}
     assert data["mode"] == "faithful-parallel" and data["reached"] is True
-    assert len(data["steps"]) == 5
+    assert len(data["steps"]) == data["time_steps"] == 5
+    assert data["moves"] == sum(len(step["moves"]) for step in data["steps"])
+    assert data["bounds"] == {"moves": {"value": 6, "kind": "assignment"},
+                              "time_steps": {"value": 3, "kind": "pivot"},
+                              "bottleneck": {"value": 2, "kind": "bottleneck"}}
     move = data["steps"][0]["moves"][0]
     assert set(move) == {"module", "from", "to", "joint", "direction", "substrate", "commands"}
     assert 1 <= move["joint"] <= 6 and move["direction"] in ("CW", "CCW")
@@ -36,8 +40,28 @@ def test_unreached_goal_exits_non_zero_with_reason(capsys, examples_dir):
     code, out, err = run_plan(capsys, examples_dir / P01[1], examples_dir / P01[0],
                               "--mode", "faithful-parallel", "--json")
     assert code == 1
-    assert json.loads(out)["reached"] is False
+    data = json.loads(out)
+    assert data["reached"] is False and "stalled" in data["reason"]
     assert "goal not reached" in err and "stalled" in err
+
+
+def test_the_report_gives_the_pairs_lower_bounds_with_the_fixed_module(capsys, examples_dir):
+    """What no plan can beat, next to the plan: the assignment bound on moves,
+    the pivot bound on time steps (the bolted module never leaves, so fixing
+    one can raise it) and the plain bottleneck; none for a pair that is not one."""
+    s02 = (examples_dir / "test_all_s02_initial.txt", examples_dir / "test_all_s02_goal.txt")
+    code, out, _ = run_plan(capsys, *s02, "--mode", "exact")
+    assert code == 0
+    first = out.splitlines()[0]
+    assert first.startswith("mode exact (A*): goal reached, ") and " 17 move(s)" in first
+    assert first.endswith("(lower bounds: 15 moves, 4 time steps; plain bottleneck 2 steps)")
+    code, out, _ = run_plan(capsys, *s02, "--fixed", "0,3", "--json")
+    data = json.loads(out)
+    assert code == 0 and data["bounds"]["time_steps"] == {"value": 5, "kind": "pivot"}
+    assert data["time_steps"] >= 5 and data["moves"] >= 15
+    code, out, _ = run_plan(capsys, *s02, "--fixed", "0,0", "--json")  # (0, 0) not in S02
+    data = json.loads(out)
+    assert code == 1 and "bounds" not in data and "fixed module" in data["reason"]
 
 
 def test_robust_mode_text_output_and_plot(capsys, examples_dir, tmp_path):
@@ -50,8 +74,8 @@ def test_robust_mode_text_output_and_plot(capsys, examples_dir, tmp_path):
 
 
 def test_pair_apart_from_toml_files_goes_through_the_middle_ball(capsys, tmp_path):
+    from hexbot.planning.bounds import move_lower_bound
     from hexbot.planning.generate import random_blob
-    from hexbot.planning.plan import distance_lower_bound
 
     initial = sorted(random_blob(30, 0, 0.8))
     goal = random_blob(30, 1, 0.8)
@@ -65,9 +89,11 @@ def test_pair_apart_from_toml_files_goes_through_the_middle_ball(capsys, tmp_pat
     result = json.loads(out)
     assert code == 0 and result["reached"] is True
     assert result["method"] == "middle ball"
-    # the detour stays within a few times the distance bound (the strip took 9x here)
-    bound = distance_lower_bound(frozenset(initial), frozenset((x + shift, y) for x, y in goal))
-    assert bound < sum(len(step["moves"]) for step in result["steps"]) < 3 * bound
+    # the detour stays within a few times the move bound (the strip took 9x here)
+    bound = move_lower_bound(frozenset(initial), frozenset((x + shift, y) for x, y in goal))
+    assert result["bounds"]["moves"] == {"value": bound.value, "kind": "assignment"}
+    assert bound.value < result["moves"] < 2 * bound.value
+    assert result["moves"] == sum(len(step["moves"]) for step in result["steps"])
 
 
 def test_a_fallback_plan_says_why_the_methods_before_it_did_not_plan(capsys, tmp_path):
