@@ -262,7 +262,7 @@ def run_execute(args: argparse.Namespace) -> int:
     """Localize the cluster behind the port, plan from it, execute the plan."""
     from hexbot.host.cli_common import session
     from hexbot.host.workflows import localize
-    from hexbot.planning.execute import configuration_of, execute
+    from hexbot.planning.execute import configuration_of, default_reference, execute
 
     wanted = load_configuration(args.initial).cells
     if len(wanted) > MAX_SELECT_ID:
@@ -270,11 +270,7 @@ def run_execute(args: argparse.Namespace) -> int:
             f"{args.initial}: {len(wanted)} modules, but the link addresses module ids "
             f"1..{MAX_SELECT_ID} only: plan it without --execute")
     with session(args) as sess:
-        sim = sess.host.simulator
-        reference = args.reference
-        if reference is None:
-            reference = (sim.base if sim is not None and sim.base is not None
-                         else min(sess.learn() or {1}))
+        reference = args.reference if args.reference is not None else default_reference(sess)
         poses = localize(sess, reference)
         initial = configuration_of(poses)
         if wanted != initial.cells:

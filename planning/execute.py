@@ -27,7 +27,9 @@ from hexbot.errors import HexBotError
 from hexbot.host import workflows
 from hexbot.host.session import Session
 from hexbot.host.workflows import Pose, Verify
+from hexbot.planning.budget import DEFAULT_BUDGET
 from hexbot.planning.configuration import Configuration, Module
+from hexbot.planning.hexlattice import Cell
 from hexbot.planning.moves import orientation_after
 from hexbot.planning.plan import Plan
 
@@ -74,6 +76,30 @@ class ExecutionReport:
 def configuration_of(poses: dict[int, Pose]) -> Configuration:
     """Localized poses as a planner configuration."""
     return Configuration({p.cell: Module(ident, p.orientation) for ident, p in poses.items()})
+
+
+def default_reference(session: Session) -> int:
+    """The module that becomes (0, 0) and never moves when the user names
+    none: the simulator's base module, else the lowest id heard so far."""
+    sim = session.host.simulator
+    if sim is not None and sim.base is not None:
+        return sim.base
+    return min(session.learn() or {1})
+
+
+def plan_from_cluster(session: Session, goal: frozenset[Cell], reference: int, *,
+                      budget: float | None = DEFAULT_BUDGET,
+                      progress: Callable[[str], None] | None = None
+                      ) -> tuple[Plan, dict[int, Pose]]:
+    """Localize the cluster from ``reference`` and plan (robust mode) from it as
+    it stands to ``goal``, the reference module fixed (localization needs it
+    where it is): the plan, and the poses it starts from (for :func:`execute`)."""
+    from hexbot.planning.robust import plan_robust
+
+    poses = workflows.localize(session, reference)
+    initial = configuration_of(poses)
+    return plan_robust(initial, frozenset(goal), fixed=poses[reference].cell, budget=budget,
+                       progress=progress), poses
 
 
 def execute(plan: Plan, session: Session, reference: int, *, verify: Verify = Verify.AUTO,

@@ -38,7 +38,7 @@ from hexbot.host.capture import Record
 from hexbot.host.console.boards_view import BoardsView
 from hexbot.host.console.composer import Composer
 from hexbot.host.console.connection import PortPanel
-from hexbot.host.console.dialogs import HelpScreen, PromptScreen, RotateScreen
+from hexbot.host.console.dialogs import HelpScreen, PlanScreen, PromptScreen, RotateScreen
 from hexbot.host.console.lattice import LatticeLegend, LatticeView
 from hexbot.host.console.messages import Parsed, PortState, SimEvent
 from hexbot.host.console.messages import Traffic as TrafficMsg
@@ -84,6 +84,8 @@ class HexBotConsole(App[None]):
         ("localize", "Localize cluster (66)", "Ref, then localization and status of all"),
         ("status", "Status (70)", "status of the selected modules (or all)"),
         ("rotate", "Rotate CW/CCW (67/68)", "rotate a mobile module about a lattice joint"),
+        ("plan", "Plan and execute (goal file)",
+         "localize, plan to a goal configuration, check the plan, execute and verify it"),
         ("all_off", "All actuators off (20)", "TurnOffAll to every module"),
         ("set_role", "Set role (71)", "mobile (1) or substrate (2) for the selected modules"),
         ("clear_error", "Clear error (72)", "clear the last error of the selected modules"),
@@ -104,6 +106,7 @@ class HexBotConsole(App[None]):
         Binding("l", "localize", "Localize"),
         Binding("t", "status", "Status"),
         Binding("w", "rotate", "Rotate"),
+        Binding("g", "plan", "Plan"),
         Binding("o", "all_off", "All off"),
         Binding("escape", "cancel", "Cancel", show=False),
         Binding("m", "cycle_mode", "View", show=False),
@@ -149,6 +152,8 @@ class HexBotConsole(App[None]):
         self.sim_log: list[PlantVerdict] = []  # the plant's verdicts, newest last
         self._refresh_pending = False
         self.step_progress = (0, 1)  # (steps done, steps) of the running operation
+        self.after_operation: Callable[[], None] | None = None  # see start_operation
+        self.goal_file = ""  # the last goal configuration planned to
         #: exit status for `hexbot console` when the session could not go on
         self.failure_status: int | None = None
 
@@ -474,7 +479,10 @@ class HexBotConsole(App[None]):
         step.__name__ = str(command)
         return step
 
-    def start_operation(self, title: str, steps: list[Step]) -> None:
+    def start_operation(self, title: str, steps: list[Step],
+                        then: Callable[[], None] | None = None) -> None:
+        """Run ``steps`` in a worker; ``then`` runs on the UI thread after
+        they all succeeded (not after a failure or a cancel)."""
         if self.busy:
             self.notify(f"busy: {self.busy}", severity="warning")
             return
@@ -489,6 +497,7 @@ class HexBotConsole(App[None]):
         bar.update(total=len(steps), progress=0)
         bar.display = True
         self._update_status()
+        self.after_operation = then
         self._operation(title, steps, self.cancel_event)
 
     @work(thread=True, exclusive=True, group="operation")
@@ -539,6 +548,7 @@ class HexBotConsole(App[None]):
         self._update_status()
 
     def _finished(self, result: str, ok: bool, total: int) -> None:
+        then, self.after_operation = self.after_operation, None
         self.busy = ""
         self.last_result = escape(result) if ok else f"[red]{escape(result)}[/]"
         bar = self.main_query("#progress", ProgressBar)
@@ -547,6 +557,8 @@ class HexBotConsole(App[None]):
         self.notify(escape(result), title="Done" if ok else "Failed",
                     severity="information" if ok else "error")
         self._update_status()
+        if ok and then is not None:
+            then()
 
     def action_cancel(self) -> None:
         """Escape: leave a text input first (so letter keys act again),
@@ -660,6 +672,74 @@ class HexBotConsole(App[None]):
                                     substrate).describe()
         step.__name__ = f"module {mobile} on {substrate}, then verify"
         self.start_operation(f"Rotate {direction} {joint}", [step])
+
+    def action_plan(self) -> None:
+        self.push_screen(PromptScreen(
+            "Plan to a goal: configuration file (0/1 grid or .toml cells); the "
+            "reference module stays where it is", self.goal_file),
+            lambda path: self.plan_to(path) if path else None)
+
+    def plan_to(self, path: str) -> None:
+        """The plan workflow: localize from the reference, plan from the cluster
+        as it stands to the goal in ``path`` (robust mode, the reference
+        fixed), show the plan; :meth:`execute_plan` runs it when confirmed."""
+        from hexbot.planning.cli_plan import plan_summary
+        from hexbot.planning.config_io import load_configuration
+        from hexbot.planning.execute import default_reference, plan_from_cluster
+
+        if self.session is None:
+            self.notify("no session yet", severity="error")
+            return
+        try:
+            goal = load_configuration(path).cells
+        except HexBotError as exc:  # file:line: problem
+            self.notify(str(exc), title="Goal not loaded", severity="error")
+            return
+        self.goal_file = path
+        session, made = self.session, {}
+        reference = default_reference(session)
+
+        def step() -> str:
+            plan, poses = plan_from_cluster(session, goal, reference)
+            if not plan.reached:
+                raise HexBotError(f"no plan: {plan.reason}")
+            made.update(plan=plan, poses=poses)
+            return plan_summary(plan)
+        step.__name__ = f"localize from module {reference}, then plan to {Path(path).name}"
+        self.start_operation("Plan", [step], then=lambda: self.push_screen(
+            PlanScreen(made["plan"]), lambda go: self.execute_plan(
+                made["plan"], reference, made["poses"]) if go else None))
+
+    def execute_plan(self, plan, reference: int, poses) -> None:
+        """Run a confirmed plan move by move (:func:`hexbot.planning.execute.execute`:
+        each move verified, the first refused or unverified one ends it, and
+        the goal is claimed only after a final localization)."""
+        from hexbot.planning.execute import execute
+
+        session, total = self.session, plan.move_count
+
+        def moved(line: str) -> None:  # one line per verified move, from the worker
+            self.call_from_thread(self._move_done, line, total)
+
+        def step() -> str:
+            assert session is not None
+            report = execute(plan, session, reference, poses=poses, log=moved)
+            done = sum(m.ok for m in report.moves)
+            if not report.reached:
+                raise HexBotError(f"after {done} of {total} moves: {report.failure}")
+            return (f"goal reached (localized): {done} of {total} moves in "
+                    f"{report.seconds:.1f} s")
+        step.__name__ = f"{total} moves in {plan.time_steps} time steps"
+        self.start_operation("Execute plan", [step])
+        self.step_progress = (0, total)
+
+    def _move_done(self, line: str, total: int) -> None:
+        """The bar and the status line follow the moves (the lattice legend
+        shows each verdict)."""
+        done = self.step_progress[0] + 1
+        self.step_progress = (done, total)
+        last = line.split(": ", 1)[-1]
+        self._progress(done, f"Execute plan: {done} of {total} moves, last: {last}")
 
     # --- views ---------------------------------------------------------------
 

@@ -1,4 +1,5 @@
-"""Small modal screens: the help screen, a value prompt, the rotation form."""
+"""Small modal screens: the help screen, a value prompt, the rotation form,
+a plan to confirm."""
 
 from __future__ import annotations
 
@@ -31,6 +32,11 @@ with decoded replies, a modules table and the lattice.
 - **Rotate** (`w`): 67/68 about a joint in lattice directions; each
   module's body joint is computed from its orientation; Table 3-1 timings.
 - **All off** (`o`): code 20 (TurnOffAll) to every module.
+- **Plan** (`g`): asks for a goal configuration file, localizes, plans
+  from the cluster as it stands (robust mode, the reference module stays
+  put) and shows the plan next to its lower bounds; **Execute** runs it
+  move by move, each move verified, and claims the goal only after a last
+  localization. The first refused or unverified move stops it.
 
 Long operations show progress in the status line (replies so far,
 seconds waited and the time-out); `escape` cancels.
@@ -123,3 +129,47 @@ class RotateScreen(ModalScreen[tuple[str, int, int, int] | None]):
 
     def action_cancel(self) -> None:
         self.dismiss(None)
+
+
+#: Moves listed in the plan dialog (a plan of 63 modules can have hundreds).
+PLAN_PREVIEW = 12
+
+
+class PlanScreen(ModalScreen[bool]):
+    """A plan to execute or discard: its summary line (size, lower bounds),
+    why a fallback method planned, and its first moves."""
+
+    BINDINGS = [Binding("e", "execute", "Execute"), Binding("escape", "discard", "Discard")]
+
+    def __init__(self, plan) -> None:  # a hexbot.planning.plan.Plan
+        super().__init__()
+        self.plan = plan
+
+    def compose(self) -> ComposeResult:
+        from hexbot.planning.cli_plan import plan_summary
+
+        plan = self.plan
+        moves = [(t, m) for t, step in enumerate(plan.steps, start=1) for m in step.moves]
+        lines = [f"step {t}: module {m.module} {m.src} -> {m.dst}, joint {m.joint} "
+                 f"{m.direction} on module {m.substrate_module}"
+                 for t, m in moves[:PLAN_PREVIEW]]
+        if len(moves) > PLAN_PREVIEW:
+            lines.append(f"... and {len(moves) - PLAN_PREVIEW} more moves")
+        with Vertical(classes="dialog", id="plan-box"):
+            yield Label(plan_summary(plan), id="plan-summary")
+            for reason in plan.tried:
+                yield Label(f"tried first, no plan: {reason}", classes="hint")
+            yield Label("\n".join(lines), id="plan-moves")
+            with Horizontal(classes="form-row"):
+                yield Button("Execute", id="plan-go", variant="primary")
+                yield Button("Discard", id="plan-discard")
+            yield Label("e executes (each move verified; escape then cancels), "
+                        "escape discards", classes="hint")
+
+    @on(Button.Pressed, "#plan-go")
+    def action_execute(self) -> None:
+        self.dismiss(True)
+
+    @on(Button.Pressed, "#plan-discard")
+    def action_discard(self) -> None:
+        self.dismiss(False)

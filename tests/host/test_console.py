@@ -9,6 +9,7 @@ from pilot_sync import sync
 from hexbot.host import cli_console
 from hexbot.host.console.app import HexBotConsole
 from hexbot.host.console.composer import Composer
+from hexbot.host.console.dialogs import PlanScreen
 from hexbot.host.console.lattice import lattice_cells
 from hexbot.host.console.modules_view import ModulesView
 from hexbot.host.console.terminal import Terminal
@@ -587,3 +588,60 @@ async def test_a_boards_refresh_while_the_view_is_torn_down_is_skipped(responder
         app.refresh_boards()  # must not raise
         await pilot.pause()
         assert app.query_one(BoardsView) is view
+
+
+@sync
+async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args, tmp_path):
+    """The plan workflow (key g): a goal the cluster cannot take fails red
+    with the planner's reason and sends no rotation; a goal it can take is
+    planned from the cluster as localized, shown with its lower bounds,
+    discarded once (nothing sent), then executed: the plant moves module 2
+    and the goal is claimed after a last localization."""
+    bad, goal = tmp_path / "three.toml", tmp_path / "goal.toml"
+    bad.write_text("cells = [[0, 0], [0, 1], [1, 0]]\n")
+    goal.write_text("cells = [[0, 0], [0, 1]]\n")
+    app = HexBotConsole(opener=cli_console.make_opener(pair_args))
+    async with app.run_test(size=(120, 36)) as pilot:
+        assert await until(pilot, lambda: app.host is not None, timeout=60)
+        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+
+        async def plan_to(path) -> None:
+            await pilot.press("g")
+            await pilot.pause()
+            app.screen.query_one("#prompt-input").value = str(path)
+            await pilot.press("enter")
+
+        await plan_to(tmp_path / "missing.toml")  # a file that is not there: no operation
+        assert await until(pilot, lambda: any(n.title == "Goal not loaded"
+                                              for n in app._notifications))
+        assert not app.busy
+        await plan_to(bad)
+        assert await until(pilot, lambda: not app.busy and "Plan" in app.last_result,
+                           timeout=120)
+        assert app.last_result.startswith("[red]") and "no plan" in app.last_result
+        assert "the initial configuration has 2 modules, the goal 3 cells" in app.last_result
+        assert not isinstance(app.screen, PlanScreen)
+
+        await plan_to(goal)
+        assert await until(pilot, lambda: isinstance(app.screen, PlanScreen), timeout=120)
+        summary = str(app.screen.query_one("#plan-summary").render())
+        assert "goal reached, 1 time step(s), 1 move(s)" in summary, summary
+        assert "lower bounds: 1 moves, 1 time steps" in summary, summary
+        assert "step 1: module 2 (-1, 1) -> (0, 1), joint 4 CW on module 1" in str(
+            app.screen.query_one("#plan-moves").render())
+        await pilot.press("escape")  # discard: nothing is sent
+        await pilot.pause()
+        assert not isinstance(app.screen, PlanScreen) and not app.busy
+        assert "> CW(" not in ir_text(app)
+        assert app.host.simulator.placements()[2] == Placement((-1, 1), 0)
+
+        await plan_to(goal)
+        assert await until(pilot, lambda: isinstance(app.screen, PlanScreen), timeout=120)
+        await pilot.pause()
+        await pilot.press("e")  # the dialog's Execute
+        assert await until(pilot, lambda: not app.busy and "Execute plan" in app.last_result,
+                           timeout=120), (app.busy, app.last_result, app.screen)
+        assert "goal reached (localized): 1 of 1 moves" in app.last_result, app.last_result
+        assert not app.last_result.startswith("[red]")
+        assert app.host.simulator.placements()[2] == Placement((0, 1), 2)
+        assert "S01 ACK 67 CW" in ir_text(app) and "M02 ACK 67 CW" in ir_text(app)
