@@ -154,6 +154,8 @@ class HexBotConsole(App[None]):
         self.step_progress = (0, 1)  # (steps done, steps) of the running operation
         self.after_operation: Callable[[], None] | None = None  # see start_operation
         self.goal_file = ""  # the last goal configuration planned to
+        #: the goal of the plan shown or running (outlined in the lattice)
+        self.goal_cells: frozenset[tuple[int, int]] = frozenset()
         #: exit status for `hexbot console` when the session could not go on
         self.failure_status: int | None = None
 
@@ -377,8 +379,8 @@ class HexBotConsole(App[None]):
         with self.host.lock:  # a copy: readers must not wait for the drawing
             model = copy.deepcopy(self.host.model)
         self.main_query(ModulesView).refresh_from(model)
-        self.main_query(LatticeView).refresh_from(model, truth)
-        self.main_query(LatticeLegend).refresh_from(model, truth, self.sim_log)
+        self.main_query(LatticeView).refresh_from(model, truth, self.goal_cells)
+        self.main_query(LatticeLegend).refresh_from(model, truth, self.sim_log, self.goal_cells)
         self._update_status()
 
     def refresh_boards(self) -> None:
@@ -706,9 +708,17 @@ class HexBotConsole(App[None]):
             made.update(plan=plan, poses=poses)
             return plan_summary(plan)
         step.__name__ = f"localize from module {reference}, then plan to {Path(path).name}"
-        self.start_operation("Plan", [step], then=lambda: self.push_screen(
-            PlanScreen(made["plan"]), lambda go: self.execute_plan(
-                made["plan"], reference, made["poses"]) if go else None))
+
+        def show() -> None:
+            self.show_goal(made["plan"].goal)
+            self.push_screen(PlanScreen(made["plan"]), lambda go: self.execute_plan(
+                made["plan"], reference, made["poses"]) if go else self.show_goal(frozenset()))
+        self.start_operation("Plan", [step], then=show)
+
+    def show_goal(self, goal: frozenset[tuple[int, int]]) -> None:
+        """Outline ``goal`` in the lattice (empty: none)."""
+        self.goal_cells = frozenset(goal)
+        self.refresh_cluster()
 
     def execute_plan(self, plan, reference: int, poses) -> None:
         """Run a confirmed plan move by move (:func:`hexbot.planning.execute.execute`:

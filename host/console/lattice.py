@@ -6,6 +6,9 @@ plant's placements (``SimulatorAccess.placements()``, protocol types only);
 on hardware there are none.
 
 Coordinates as in Table 4-1: +y is side 2 (up), +x is side 3 (up-right).
+While a plan is shown or runs, the goal's empty cells are drawn as yellow
+outlines (``/  \\`` over ``\\  /``), so the shape fills in as the moves land.
+
 Each module is two text rows: ``/id\\`` over ``\\role arrow/``; the arrow
 points along the module's body side 1 in the lattice (global side
 Yref + 1), so orientation is visible at a glance. Neighbours in y are two
@@ -60,14 +63,17 @@ def sim_cells(model: ClusterModel, truth: Truth) -> Cells:
     return out
 
 
-def draw_lattice(model: ClusterModel, truth: Truth | None = None) -> Text:
+def draw_lattice(model: ClusterModel, truth: Truth | None = None,
+                 goal: frozenset[tuple[int, int]] = frozenset()) -> Text:
     cells = lattice_cells(model)
     ghosts = {c: v for c, v in sim_cells(model, truth or {}).items() if c not in cells}
     if not cells and not ghosts:
         return Text("no positions yet: localize the cluster (key l)", style="dim")
     occupied = set(cells) | set(ghosts)
-    empty = {(x + dx, y + dy) for (x, y) in occupied for dx, dy in SIDE_OFFSETS.values()} - occupied
-    every = occupied | empty
+    wanted = set(goal) - occupied  # goal cells still to fill
+    empty = {(x + dx, y + dy) for (x, y) in occupied | wanted
+             for dx, dy in SIDE_OFFSETS.values()} - occupied - wanted
+    every = occupied | empty | wanted
     rows = [-(x + 2 * y) for x, y in every]
     cols = [x * CELL_W for x, y in every]
     top, left = min(rows), min(cols)
@@ -81,6 +87,10 @@ def draw_lattice(model: ClusterModel, truth: Truth | None = None) -> Text:
 
     for x, y in sorted(empty):
         put(-(x + 2 * y) - top, x * CELL_W - left, " .. ", "dim")
+    for x, y in sorted(wanted):
+        r, c = -(x + 2 * y) - top, x * CELL_W - left
+        put(r, c, "/  \\", "yellow")
+        put(r + 1, c, "\\  /", "yellow")
     drawn = [(cell, v, False) for cell, v in cells.items()]
     drawn += [(cell, v, True) for cell, v in ghosts.items()]
     for (x, y), (label, role, yref), ghost in sorted(drawn):
@@ -102,10 +112,15 @@ def draw_lattice(model: ClusterModel, truth: Truth | None = None) -> Text:
 
 
 def lattice_legend(model: ClusterModel, truth: Truth | None = None,
-                   verdicts: Sequence[PlantVerdict] = ()) -> str:
-    """Positions in words, a note on the dim cells, the plant's last verdicts."""
+                   verdicts: Sequence[PlantVerdict] = (),
+                   goal: frozenset[tuple[int, int]] = frozenset()) -> str:
+    """Positions in words, a note on the dim cells, the plant's last verdicts,
+    how much of a plan's goal is filled."""
     cells = lattice_cells(model)
     lines = []
+    if goal:
+        filled = len(goal & set(cells))
+        lines.append(f"goal: {filled} of {len(goal)} cells filled (yellow: still empty)")
     if cells:
         parts = [f"{label} ({x:+d},{y:+d}) yref {'?' if yref is None else yref}"
                  for (x, y), (label, _, yref) in sorted(cells.items(), key=lambda kv: kv[1][0])]
@@ -121,13 +136,15 @@ def lattice_legend(model: ClusterModel, truth: Truth | None = None,
 class LatticeView(Static):
     """The drawing (scrolls with its container for big clusters)."""
 
-    def refresh_from(self, model: ClusterModel, truth: Truth | None = None) -> None:
-        self.update(draw_lattice(model, truth))
+    def refresh_from(self, model: ClusterModel, truth: Truth | None = None,
+                     goal: frozenset[tuple[int, int]] = frozenset()) -> None:
+        self.update(draw_lattice(model, truth, goal))
 
 
 class LatticeLegend(Static):
     """Positions in words, the plant's last verdicts, the axes."""
 
     def refresh_from(self, model: ClusterModel, truth: Truth | None = None,
-                     verdicts: Sequence[PlantVerdict] = ()) -> None:
-        self.update(Text(lattice_legend(model, truth, verdicts), style="dim"))
+                     verdicts: Sequence[PlantVerdict] = (),
+                     goal: frozenset[tuple[int, int]] = frozenset()) -> None:
+        self.update(Text(lattice_legend(model, truth, verdicts, goal), style="dim"))

@@ -629,8 +629,13 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
         assert "lower bounds: 1 moves, 1 time steps" in summary, summary
         assert "step 1: module 2 (-1, 1) -> (0, 1), joint 4 CW on module 1" in str(
             app.screen.query_one("#plan-moves").render())
+        # the goal's empty cell is outlined in the lattice while the plan is shown
+        legend = app.query_one("#lattice-legend")
+        assert "goal: 1 of 2 cells filled" in str(legend.render())
+        assert "/  \\" in str(app.query_one("#lattice-view").render())
         await pilot.press("escape")  # discard: nothing is sent
         await pilot.pause()
+        assert "goal:" not in str(legend.render())
         assert not isinstance(app.screen, PlanScreen) and not app.busy
         assert "> CW(" not in ir_text(app)
         assert app.host.simulator.placements()[2] == Placement((-1, 1), 0)
@@ -645,3 +650,5 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
         assert not app.last_result.startswith("[red]")
         assert app.host.simulator.placements()[2] == Placement((0, 1), 2)
         assert "S01 ACK 67 CW" in ir_text(app) and "M02 ACK 67 CW" in ir_text(app)
+        assert await until(pilot, lambda: "goal: 2 of 2 cells filled" in str(legend.render()))
+        assert "/  \\" not in str(app.query_one("#lattice-view").render())
