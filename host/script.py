@@ -21,6 +21,15 @@ first failed step. Grammar (``[...]`` optional, ``ID...`` one or more)::
                                    body indices from each module's last status,
                                    thesis timings; verified (plant on the
                                    simulator, re-localization elsewhere)
+    plan GOAL [reference ID] [verify auto|plant|localize|status]
+                                   localize from the reference (default: the
+                                   simulator's base module, else the lowest
+                                   id), plan from the cluster to the goal
+                                   configuration file GOAL (relative to the
+                                   script; robust mode, the reference fixed),
+                                   execute it move by move, each verified, and
+                                   localize again: the step passes only when
+                                   the cluster is the goal
     wait S                         let S seconds pass (replies keep arriving)
     expect ack CODE [from ID...] [within S]
     expect err CODE [REASON] [from ID...] [within S]
@@ -160,6 +169,8 @@ def _parse_line(line: str, where: str, number: int) -> Step:  # noqa: C901 - one
             cmd = parse_command(["Status"])
         elif verb == "rotate":
             _parse_rotate(rest, where)
+        elif verb == "plan":
+            _parse_plan(rest, where)
         elif verb == "expect":
             _parse_expect(rest, where)
         elif verb == "echo":
@@ -192,6 +203,34 @@ def _parse_rotate(rest: list[str], where: str) -> tuple[str, int, int, int, work
         raise ScenarioError(f"{where}: joint must be 1..6, got {joint}")
     return (direction, joint, _int(rest[3], "mobile id", where),
             _int(rest[5], "substrate id", where), verify)
+
+
+def _parse_plan(rest: list[str], where: str
+                ) -> tuple[frozenset[tuple[int, int]], int | None, workflows.Verify]:
+    """(goal cells, reference or None, verify): the goal file is read here, so
+    a script whose goal cannot be read sends nothing."""
+    from hexbot.planning.config_io import load_configuration
+
+    if not rest or len(rest) % 2 != 1:
+        raise ScenarioError(f"{where}: expected 'plan GOAL [reference ID] "
+                            "[verify auto|plant|localize|status]'")
+    options = _options(rest[1:], where, {"reference": 1, "verify": 1})
+    reference = (_int(options["reference"][0], "reference id", where)
+                 if "reference" in options else None)
+    try:
+        verify = workflows.Verify(options.get("verify", ["auto"])[0].lower())
+    except ValueError:
+        raise ScenarioError(f"{where}: verify must be one of "
+                            f"{', '.join(v.value for v in workflows.Verify)}") from None
+    script = Path(where.rsplit(":", 1)[0])
+    goal = Path(rest[0])
+    if not goal.is_absolute() and script.parent.is_dir():
+        goal = script.parent / goal
+    try:
+        cells = load_configuration(goal).cells
+    except HexBotError as exc:
+        raise ScenarioError(f"{where}: {exc}") from None
+    return cells, reference, verify
 
 
 _EXPECT_OPTIONS = {
@@ -400,9 +439,33 @@ class ScriptRunner:
             self.mark = self.host.mark()
             return workflows.rotate(self.session, direction, joint, mobile, substrate,
                                     verify=verify).describe()
+        if step.verb == "plan":
+            return self._plan(step, w, where)
         if step.verb == "expect":
             return self._expect(step, w, where)
         raise self._fail(step, f"unknown verb {step.verb}")  # parse_script prevents this
+
+    def _plan(self, step: Step, w: list[str], where: str) -> str:
+        """Localize, plan, execute, localize again (:mod:`hexbot.planning.execute`,
+        the same as ``hexbot plan --execute`` and the console's plan)."""
+        from hexbot.planning.cli_plan import plan_summary
+        from hexbot.planning.execute import default_reference, execute, plan_from_cluster
+
+        goal, reference, verify = _parse_plan(w, where)
+        if reference is None:
+            reference = default_reference(self.session)
+        self.mark = self.host.mark()
+        plan, poses = plan_from_cluster(self.session, goal, reference)
+        if not plan.reached:
+            raise self._fail(step, f"no plan: {plan.reason}")
+        self.out(f"{step.line:4d} ..    {plan_summary(plan)}")
+        report = execute(plan, self.session, reference, verify=verify, poses=poses,
+                         log=lambda line: self.out(f"{step.line:4d} ..    {line.strip()}"))
+        done = sum(m.ok for m in report.moves)
+        if not report.reached:
+            raise self._fail(step, f"after {done} of {plan.move_count} moves: {report.failure}")
+        return (f"goal reached (localized): {done} moves in {plan.time_steps} time steps, "
+                f"{report.seconds:.1f} s")
 
     def _exchange(self, step: Step, cmd: Command | None) -> str:
         assert cmd is not None
