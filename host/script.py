@@ -205,32 +205,16 @@ def _parse_rotate(rest: list[str], where: str) -> tuple[str, int, int, int, work
             _int(rest[5], "substrate id", where), verify)
 
 
-def _parse_plan(rest: list[str], where: str
-                ) -> tuple[frozenset[tuple[int, int]], int | None, workflows.Verify]:
-    """(goal cells, reference or None, verify): the goal file is read here, so
-    a script whose goal cannot be read sends nothing."""
-    from hexbot.planning.config_io import load_configuration
+def _parse_plan(rest: list[str], where: str):
+    """The step's :class:`~hexbot.planning.execute.PlanRequest` (its goal file
+    relative to the script)."""
+    from hexbot.planning.execute import plan_request
 
-    if not rest or len(rest) % 2 != 1:
-        raise ScenarioError(f"{where}: expected 'plan GOAL [reference ID] "
-                            "[verify auto|plant|localize|status]'")
-    options = _options(rest[1:], where, {"reference": 1, "verify": 1})
-    reference = (_int(options["reference"][0], "reference id", where)
-                 if "reference" in options else None)
-    try:
-        verify = workflows.Verify(options.get("verify", ["auto"])[0].lower())
-    except ValueError:
-        raise ScenarioError(f"{where}: verify must be one of "
-                            f"{', '.join(v.value for v in workflows.Verify)}") from None
     script = Path(where.rsplit(":", 1)[0])
-    goal = Path(rest[0])
-    if not goal.is_absolute() and script.parent.is_dir():
-        goal = script.parent / goal
     try:
-        cells = load_configuration(goal).cells
+        return plan_request(rest, script.parent if script.parent.is_dir() else None)
     except HexBotError as exc:
         raise ScenarioError(f"{where}: {exc}") from None
-    return cells, reference, verify
 
 
 _EXPECT_OPTIONS = {
@@ -451,15 +435,16 @@ class ScriptRunner:
         from hexbot.planning.cli_plan import plan_summary
         from hexbot.planning.execute import default_reference, execute, plan_from_cluster
 
-        goal, reference, verify = _parse_plan(w, where)
+        request = _parse_plan(w, where)
+        reference = request.reference
         if reference is None:
             reference = default_reference(self.session)
         self.mark = self.host.mark()
-        plan, poses = plan_from_cluster(self.session, goal, reference)
+        plan, poses = plan_from_cluster(self.session, request.goal, reference)
         if not plan.reached:
             raise self._fail(step, f"no plan: {plan.reason}")
         self.out(f"{step.line:4d} ..    {plan_summary(plan)}")
-        report = execute(plan, self.session, reference, verify=verify, poses=poses,
+        report = execute(plan, self.session, reference, verify=request.verify, poses=poses,
                          log=lambda line: self.out(f"{step.line:4d} ..    {line.strip()}"))
         done = sum(m.ok for m in report.moves)
         if not report.reached:

@@ -21,9 +21,10 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
-from hexbot.errors import HexBotError
+from hexbot.errors import HexBotError, ScenarioError
 from hexbot.host import workflows
 from hexbot.host.session import Session
 from hexbot.host.workflows import Pose, Verify
@@ -76,6 +77,47 @@ class ExecutionReport:
 def configuration_of(poses: dict[int, Pose]) -> Configuration:
     """Localized poses as a planner configuration."""
     return Configuration({p.cell: Module(ident, p.orientation) for ident, p in poses.items()})
+
+
+@dataclass(frozen=True)
+class PlanRequest:
+    """``GOAL [reference ID] [verify auto|plant|localize|status]``: what the
+    console's plan prompt and a script's ``plan`` step ask for."""
+
+    goal: frozenset[Cell]
+    reference: int | None  # None: :func:`default_reference`
+    verify: Verify
+
+
+PLAN_USAGE = "GOAL [reference ID] [verify auto|plant|localize|status]"
+
+
+def plan_request(words: list[str], relative_to: Path | None = None) -> PlanRequest:
+    """Parse a plan request; the goal file is read here (a relative path
+    from ``relative_to``, e.g. a script's folder), so a bad request sends
+    nothing. :class:`ScenarioError` says what is wrong."""
+    from hexbot.planning.config_io import load_configuration
+
+    if not words or len(words) % 2 != 1:
+        raise ScenarioError(f"expected {PLAN_USAGE}")
+    options = dict(zip(words[1::2], words[2::2], strict=True))
+    unknown = set(options) - {"reference", "verify"}
+    if unknown:
+        raise ScenarioError(f"unexpected {sorted(unknown)[0]!r} (expected {PLAN_USAGE})")
+    reference = None
+    if "reference" in options:
+        if not options["reference"].isdigit():
+            raise ScenarioError(f"reference must be a module id, got {options['reference']!r}")
+        reference = int(options["reference"])
+    try:
+        verify = Verify(options.get("verify", "auto").lower())
+    except ValueError:
+        raise ScenarioError("verify must be one of "
+                            f"{', '.join(v.value for v in Verify)}") from None
+    goal = Path(words[0])
+    if relative_to is not None and not goal.is_absolute():
+        goal = relative_to / goal
+    return PlanRequest(load_configuration(goal).cells, reference, verify)
 
 
 def default_reference(session: Session) -> int:

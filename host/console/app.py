@@ -676,30 +676,34 @@ class HexBotConsole(App[None]):
         self.start_operation(f"Rotate {direction} {joint}", [step])
 
     def action_plan(self) -> None:
-        self.push_screen(PromptScreen(
-            "Plan to a goal: configuration file (0/1 grid or .toml cells); the "
-            "reference module stays where it is", self.goal_file),
-            lambda path: self.plan_to(path) if path else None)
+        from hexbot.planning.execute import PLAN_USAGE
 
-    def plan_to(self, path: str) -> None:
-        """The plan workflow: localize from the reference, plan from the cluster
-        as it stands to the goal in ``path`` (robust mode, the reference
-        fixed), show the plan; :meth:`execute_plan` runs it when confirmed."""
+        self.push_screen(PromptScreen(
+            f"Plan to a goal: {PLAN_USAGE} (GOAL: a 0/1 grid or .toml cells file; the "
+            "reference, by default the simulator's base module, stays where it is)",
+            self.goal_file), lambda text: self.plan_to(text) if text else None)
+
+    def plan_to(self, text: str) -> None:
+        """The plan workflow for ``GOAL [reference ID] [verify ...]``: localize
+        from the reference, plan from the cluster as it stands to the goal
+        (robust mode, the reference fixed), show the plan; :meth:`execute_plan`
+        runs it when confirmed."""
         from hexbot.planning.cli_plan import plan_summary
-        from hexbot.planning.config_io import load_configuration
-        from hexbot.planning.execute import default_reference, plan_from_cluster
+        from hexbot.planning.execute import default_reference, plan_from_cluster, plan_request
 
         if self.session is None:
             self.notify("no session yet", severity="error")
             return
         try:
-            goal = load_configuration(path).cells
-        except HexBotError as exc:  # file:line: problem
+            request = plan_request(text.split())
+        except HexBotError as exc:  # file:line: problem, or a bad option
             self.notify(str(exc), title="Goal not loaded", severity="error")
             return
-        self.goal_file = path
+        self.goal_file, goal = text, request.goal
         session, made = self.session, {}
-        reference = default_reference(session)
+        reference = (request.reference if request.reference is not None
+                     else default_reference(session))
+        path = text.split()[0]
 
         def step() -> str:
             plan, poses = plan_from_cluster(session, goal, reference)
@@ -712,7 +716,8 @@ class HexBotConsole(App[None]):
         def show() -> None:
             self.show_goal(made["plan"].goal)
             self.push_screen(PlanScreen(made["plan"]), lambda go: self.execute_plan(
-                made["plan"], reference, made["poses"]) if go else self.show_goal(frozenset()))
+                made["plan"], reference, made["poses"], request.verify)
+                if go else self.show_goal(frozenset()))
         self.start_operation("Plan", [step], then=show)
 
     def show_goal(self, goal: frozenset[tuple[int, int]]) -> None:
@@ -720,7 +725,7 @@ class HexBotConsole(App[None]):
         self.goal_cells = frozenset(goal)
         self.refresh_cluster()
 
-    def execute_plan(self, plan, reference: int, poses) -> None:
+    def execute_plan(self, plan, reference: int, poses, verify=None) -> None:
         """Run a confirmed plan move by move (:func:`hexbot.planning.execute.execute`:
         each move verified, the first refused or unverified one ends it, and
         the goal is claimed only after a final localization)."""
@@ -733,7 +738,8 @@ class HexBotConsole(App[None]):
 
         def step() -> str:
             assert session is not None
-            report = execute(plan, session, reference, poses=poses, log=moved)
+            report = execute(plan, session, reference, poses=poses, log=moved,
+                             verify=verify or workflows.Verify.AUTO)
             done = sum(m.ok for m in report.moves)
             if not report.reached:
                 raise HexBotError(f"after {done} of {total} moves: {report.failure}")

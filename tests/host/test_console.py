@@ -615,6 +615,10 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
         assert await until(pilot, lambda: any(n.title == "Goal not loaded"
                                               for n in app._notifications))
         assert not app.busy
+        await plan_to(f"{goal} reference one")  # a bad option: no operation either
+        assert await until(pilot, lambda: any("reference must be a module id" in str(n.message)
+                                              for n in app._notifications))
+        assert not app.busy
         await plan_to(bad)
         assert await until(pilot, lambda: not app.busy and "Plan" in app.last_result,
                            timeout=120)
@@ -640,7 +644,7 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
         assert "> CW(" not in ir_text(app)
         assert app.host.simulator.placements()[2] == Placement((-1, 1), 0)
 
-        await plan_to(goal)
+        await plan_to(f"{goal} reference 1 verify plant")
         assert await until(pilot, lambda: isinstance(app.screen, PlanScreen), timeout=120)
         await pilot.pause()
         await pilot.press("e")  # the dialog's Execute
