@@ -118,3 +118,23 @@ def test_initial_must_match_the_cluster(tmp_path, capsys):
                    "--scenario", "thesis-fig5-8", "--no-log"])
     assert status == 1
     assert "does not describe scenario thesis-fig5-8" in capsys.readouterr().err
+
+
+def test_a_plan_request_reads_its_goal_and_options_or_says_what_is_wrong(tmp_path):
+    import re
+
+    from hexbot.errors import ScenarioError
+    from hexbot.planning.execute import plan_request
+
+    (tmp_path / "g.toml").write_text(PAIR_GOAL)
+    request = plan_request(["g.toml", "verify", "Localize", "reference", "2"], tmp_path)
+    assert request.goal == frozenset({(0, 0), (0, 1)})
+    assert (request.reference, request.verify) == (2, Verify.LOCALIZE)
+    assert plan_request([str(tmp_path / "g.toml")]).reference is None
+    for words, problem in ((["g.toml", "reference"], "expected GOAL [reference ID]"),
+                           (["g.toml", "speed", "2"], "unexpected 'speed'"),
+                           (["g.toml", "reference", "two"], "reference must be a module id"),
+                           (["g.toml", "verify", "maybe"], "verify must be one of"),
+                           (["missing.toml"], "missing.toml")):
+        with pytest.raises(ScenarioError, match=re.escape(problem)):
+            plan_request(words, tmp_path)
