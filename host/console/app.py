@@ -15,6 +15,7 @@ import threading
 import time
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from rich.markup import escape
 from textual import on, work
@@ -54,6 +55,9 @@ from hexbot.host.session import Outcome, Session, select
 from hexbot.protocol import frames, wire
 from hexbot.protocol.frames import Command
 from hexbot.protocol.simulation import PlantVerdict, Refused
+
+if TYPE_CHECKING:  # the planner loads when a plan is asked for, not at start-up
+    from hexbot.planning.plan import Plan
 
 #: Opens the session's ports (in a worker thread); ``listeners`` see every
 #: event from the first byte on.
@@ -725,7 +729,8 @@ class HexBotConsole(App[None]):
         self.goal_cells = frozenset(goal)
         self.refresh_cluster()
 
-    def execute_plan(self, plan, reference: int, poses, verify=None) -> None:
+    def execute_plan(self, plan: Plan, reference: int, poses: dict[int, workflows.Pose],
+                     verify: workflows.Verify = workflows.Verify.AUTO) -> None:
         """Run a confirmed plan move by move (:func:`hexbot.planning.execute.execute`:
         each move verified, the first refused or unverified one ends it, and
         the goal is claimed only after a final localization)."""
@@ -738,8 +743,7 @@ class HexBotConsole(App[None]):
 
         def step() -> str:
             assert session is not None
-            report = execute(plan, session, reference, poses=poses, log=moved,
-                             verify=verify or workflows.Verify.AUTO)
+            report = execute(plan, session, reference, poses=poses, log=moved, verify=verify)
             done = sum(m.ok for m in report.moves)
             if not report.reached:
                 raise HexBotError(f"after {done} of {total} moves: {report.failure}")
