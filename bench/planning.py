@@ -53,7 +53,7 @@ import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
-from hexbot.planning.bounds import step_bound
+from hexbot.planning.bounds import plan_bounds
 from hexbot.planning.budget import DEFAULT_BUDGET
 from hexbot.planning.config_io import load_configuration
 from hexbot.planning.configuration import Configuration
@@ -80,6 +80,7 @@ def timed(fn):
 
 
 def row(family: str, n: int, plan, seconds: float, initial, goal) -> dict:
+    bounds = plan_bounds(initial, goal, plan.fixed)
     return {
         "family": family,
         "modules": n,
@@ -88,8 +89,9 @@ def row(family: str, n: int, plan, seconds: float, initial, goal) -> dict:
         "seconds": round(seconds, 3),
         "moves": plan.move_count,
         "time_steps": plan.time_steps,
-        "move_lower_bound": plan.lower_bound,
-        "step_lower_bound": step_bound(frozenset(initial), frozenset(goal)).value,
+        "move_lower_bound": bounds.moves.value,
+        "step_lower_bound": bounds.time_steps.value,
+        "bottleneck": bounds.bottleneck.value,
         "method": plan.method,
         "reason": plan.reason,
         "tried": plan.tried,  # why the methods before ``method`` did not plan
@@ -309,7 +311,6 @@ def make_pair(family: str, n: int, seed: int):
 
 def plan_pair(family: str, n: int, seed: int, fixed: bool, budget: float) -> dict:
     """Plan one pair, check it independently, measure it (runs in a child process)."""
-    from hexbot.planning.bounds import plan_bounds
     from hexbot.planning.checker import check_plan
     from hexbot.planning.configuration import Configuration
     from hexbot.planning.robust import plan_robust
