@@ -178,9 +178,9 @@ def plan_summary(plan: Plan) -> str:
     bounds = pair_bounds(plan)
     if bounds is None:
         return line
-    return line + (f" (lower bounds: {_bound(bounds.moves, 'moves')}, "
-                   f"{_bound(bounds.time_steps, 'time steps')}; "
-                   f"plain bottleneck {_bound(bounds.bottleneck, 'steps')})")
+    return line + (f" (lower bounds: {_bound(bounds.moves, 'move(s)')}, "
+                   f"{_bound(bounds.time_steps, 'time step(s)')}; "
+                   f"plain bottleneck {_bound(bounds.bottleneck, 'step(s)')})")
 
 
 def _bound(bound, unit: str) -> str:

@@ -630,7 +630,7 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
         assert await until(pilot, lambda: isinstance(app.screen, PlanScreen), timeout=120)
         summary = str(app.screen.query_one("#plan-summary").render())
         assert "goal reached, 1 time step(s), 1 move(s)" in summary, summary
-        assert "lower bounds: 1 moves, 1 time steps" in summary, summary
+        assert "lower bounds: 1 move(s), 1 time step(s)" in summary, summary
         assert "step 1: module 2 (-1, 1) -> (0, 1), joint 4 CW on module 1" in str(
             app.screen.query_one("#plan-moves").render())
         # the goal's empty cell is outlined in the lattice while the plan is shown

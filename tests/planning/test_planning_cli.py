@@ -54,7 +54,7 @@ def test_the_report_gives_the_pairs_lower_bounds_with_the_fixed_module(capsys, e
     assert code == 0
     first = out.splitlines()[0]
     assert first.startswith("mode exact (A*): goal reached, ") and " 17 move(s)" in first
-    assert first.endswith("(lower bounds: 15 moves, 4 time steps; plain bottleneck 2 steps)")
+    assert first.endswith("(lower bounds: 15 move(s), 4 time step(s); plain bottleneck 2 step(s))")
     code, out, _ = run_plan(capsys, *s02, "--fixed", "0,3", "--json")
     data = json.loads(out)
     assert code == 0 and data["bounds"]["time_steps"] == {"value": 5, "kind": "pivot"}
