@@ -656,3 +656,34 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
         assert "S01 ACK 67 CW" in ir_text(app) and "M02 ACK 67 CW" in ir_text(app)
         assert await until(pilot, lambda: "goal: 2 of 2 cells filled" in str(legend.render()))
         assert "/  \\" not in str(app.query_one("#lattice-view").render())
+
+
+@sync
+async def test_escape_cancels_a_running_plan_and_claims_nothing(pair_args, tmp_path):
+    """Escape while a plan runs (here during its last localization, after
+    the move): the operation ends red as cancelled and the goal is never
+    claimed, though the plant did move module 2."""
+    goal = tmp_path / "goal.toml"
+    goal.write_text("cells = [[0, 0], [0, 1]]\n")
+    app = HexBotConsole(opener=cli_console.make_opener(pair_args))
+    async with app.run_test(size=(120, 36)) as pilot:
+        assert await until(pilot, lambda: app.host is not None, timeout=60)
+        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        await pilot.press("g")
+        await pilot.pause()
+        app.screen.query_one("#prompt-input").value = str(goal)
+        await pilot.press("enter")
+        assert await until(pilot, lambda: isinstance(app.screen, PlanScreen), timeout=120)
+        await pilot.pause()
+        await pilot.press("e")
+        assert await until(pilot, lambda: app.host.simulator.placements()[2]
+                           == Placement((0, 1), 2), timeout=60)
+        assert app.busy.startswith("Execute plan")  # the last localization is running
+        await pilot.press("escape")
+        assert await until(pilot, lambda: not app.busy, timeout=60)
+        assert app.last_result == "[red]Execute plan: cancelled[/]", app.last_result
+        assert not any("goal reached" in str(n.message) for n in app._notifications)
+        # the last localization was cut short: its Localize went out, its Status never did
+        await pilot.pause(1.0)
+        sent = [line.split("> ", 1)[1] for line in ir_text(app).splitlines() if "> " in line]
+        assert sent[-2:] == ["Select(0)", "Localize()"] and sent.count("Status()") == 1, sent
