@@ -187,10 +187,9 @@ def _parse_rotate(rest: list[str], where: str) -> tuple[str, int, int, int, work
     verify = workflows.Verify.AUTO
     if len(rest) == 8 and rest[6] == "verify":
         try:
-            verify = workflows.Verify(rest[7].lower())
-        except ValueError:
-            raise ScenarioError(f"{where}: verify must be one of "
-                                f"{', '.join(v.value for v in workflows.Verify)}") from None
+            verify = workflows.Verify.named(rest[7])
+        except ScenarioError as exc:
+            raise ScenarioError(f"{where}: {exc}") from None
         rest = rest[:6]
     if len(rest) != 6 or rest[2] != "mobile" or rest[4] != "substrate":
         raise ScenarioError(f"{where}: expected 'rotate cw|ccw JOINT mobile ID substrate ID "
@@ -433,24 +432,16 @@ class ScriptRunner:
         """Localize, plan, execute, localize again (:mod:`hexbot.planning.execute`,
         the same as ``hexbot plan --execute`` and the console's plan)."""
         from hexbot.planning.cli_plan import plan_summary
-        from hexbot.planning.execute import default_reference, execute, plan_from_cluster
+        from hexbot.planning.execute import execute, plan_from_cluster
 
         request = _parse_plan(w, where)
-        reference = request.reference
-        if reference is None:
-            reference = default_reference(self.session)
+        reference = request.reference_in(self.session)
         self.mark = self.host.mark()
         plan, poses = plan_from_cluster(self.session, request.goal, reference)
-        if not plan.reached:
-            raise self._fail(step, f"no plan: {plan.reason}")
         self.out(f"{step.line:4d} ..    {plan_summary(plan)}")
         report = execute(plan, self.session, reference, verify=request.verify, poses=poses,
                          log=lambda line: self.out(f"{step.line:4d} ..    {line.strip()}"))
-        done = sum(m.ok for m in report.moves)
-        if not report.reached:
-            raise self._fail(step, f"after {done} of {plan.move_count} moves: {report.failure}")
-        return (f"goal reached (localized): {done} moves in {plan.time_steps} time steps, "
-                f"{report.seconds:.1f} s")
+        return report.outcome(plan.move_count)
 
     def _exchange(self, step: Step, cmd: Command | None) -> str:
         assert cmd is not None

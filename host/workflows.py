@@ -27,7 +27,7 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
-from hexbot.errors import CommandRefusedError, HexBotTimeoutError
+from hexbot.errors import CommandRefusedError, HexBotTimeoutError, ScenarioError
 from hexbot.host.session import OutcomeKind, Session, select
 from hexbot.protocol import frames
 from hexbot.protocol.codes import ErrorCode, Role
@@ -53,6 +53,15 @@ class Verify(enum.Enum):
     PLANT = "plant"
     LOCALIZE = "localize"
     STATUS = "status"
+
+    @classmethod
+    def named(cls, word: str) -> Verify:
+        """The check a user named (any case); ScenarioError lists the others."""
+        try:
+            return cls(word.lower())
+        except ValueError:
+            raise ScenarioError("verify must be one of "
+                                f"{', '.join(v.value for v in cls)}") from None
 
 
 @dataclass(frozen=True)

@@ -58,6 +58,14 @@ class ExecutionReport:
     failure: str = ""
     seconds: float = 0.0  # session time (simulated on a simulator)
 
+    def outcome(self, total: int) -> str:
+        """One line when the goal was reached (localized), else
+        :class:`HexBotError` saying how far the run got and why it stopped."""
+        done = sum(m.ok for m in self.moves)
+        if not self.reached:
+            raise HexBotError(f"after {done} of {total} moves: {self.failure}")
+        return f"goal reached (localized): {done} of {total} moves in {self.seconds:.1f} s"
+
     def as_json(self) -> dict[str, Any]:
         return {
             "localized": self.localized,
@@ -88,6 +96,9 @@ class PlanRequest:
     reference: int | None  # None: :func:`default_reference`
     verify: Verify
 
+    def reference_in(self, session: Session) -> int:
+        return self.reference if self.reference is not None else default_reference(session)
+
 
 PLAN_USAGE = "GOAL [reference ID] [verify auto|plant|localize|status]"
 
@@ -109,11 +120,7 @@ def plan_request(words: list[str], relative_to: Path | None = None) -> PlanReque
         if not options["reference"].isdigit():
             raise ScenarioError(f"reference must be a module id, got {options['reference']!r}")
         reference = int(options["reference"])
-    try:
-        verify = Verify(options.get("verify", "auto").lower())
-    except ValueError:
-        raise ScenarioError("verify must be one of "
-                            f"{', '.join(v.value for v in Verify)}") from None
+    verify = Verify.named(options.get("verify", "auto"))
     goal = Path(words[0])
     if relative_to is not None and not goal.is_absolute():
         goal = relative_to / goal
@@ -135,13 +142,17 @@ def plan_from_cluster(session: Session, goal: frozenset[Cell], reference: int, *
                       ) -> tuple[Plan, dict[int, Pose]]:
     """Localize the cluster from ``reference`` and plan (robust mode) from it as
     it stands to ``goal``, the reference module fixed (localization needs it
-    where it is): the plan, and the poses it starts from (for :func:`execute`)."""
+    where it is): the plan, and the poses it starts from (for :func:`execute`).
+    :class:`HexBotError` with the planner's reason when there is no plan."""
     from hexbot.planning.robust import plan_robust
 
     poses = workflows.localize(session, reference)
     initial = configuration_of(poses)
-    return plan_robust(initial, frozenset(goal), fixed=poses[reference].cell, budget=budget,
-                       progress=progress), poses
+    plan = plan_robust(initial, frozenset(goal), fixed=poses[reference].cell, budget=budget,
+                       progress=progress)
+    if not plan.reached:
+        raise HexBotError(f"no plan: {plan.reason}")
+    return plan, poses
 
 
 def execute(plan: Plan, session: Session, reference: int, *, verify: Verify = Verify.AUTO,

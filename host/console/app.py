@@ -693,7 +693,7 @@ class HexBotConsole(App[None]):
         (robust mode, the reference fixed), show the plan; :meth:`execute_plan`
         runs it when confirmed."""
         from hexbot.planning.cli_plan import plan_summary
-        from hexbot.planning.execute import default_reference, plan_from_cluster, plan_request
+        from hexbot.planning.execute import plan_from_cluster, plan_request
 
         if self.session is None:
             self.notify("no session yet", severity="error")
@@ -705,14 +705,11 @@ class HexBotConsole(App[None]):
             return
         self.goal_file, goal = text, request.goal
         session, made = self.session, {}
-        reference = (request.reference if request.reference is not None
-                     else default_reference(session))
+        reference = request.reference_in(session)
         path = text.split()[0]
 
         def step() -> str:
             plan, poses = plan_from_cluster(session, goal, reference)
-            if not plan.reached:
-                raise HexBotError(f"no plan: {plan.reason}")
             made.update(plan=plan, poses=poses)
             return plan_summary(plan)
         step.__name__ = f"localize from module {reference}, then plan to {Path(path).name}"
@@ -744,11 +741,7 @@ class HexBotConsole(App[None]):
         def step() -> str:
             assert session is not None
             report = execute(plan, session, reference, poses=poses, log=moved, verify=verify)
-            done = sum(m.ok for m in report.moves)
-            if not report.reached:
-                raise HexBotError(f"after {done} of {total} moves: {report.failure}")
-            return (f"goal reached (localized): {done} of {total} moves in "
-                    f"{report.seconds:.1f} s")
+            return report.outcome(total)
         step.__name__ = f"{total} moves in {plan.time_steps} time steps"
         self.start_operation("Execute plan", [step])
         self.step_progress = (0, total)

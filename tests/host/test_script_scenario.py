@@ -47,7 +47,7 @@ def test_the_shipped_plan_script_plans_executes_and_verifies(log_dir, capsys):
     out = capsys.readouterr().out
     assert "mode robust (direct): goal reached, 1 time step(s), 1 move(s)" in out
     assert "module 2 moved at (0, 1) facing 2 (verified by plant)" in out
-    assert "ok    plan pair_goal.toml reference 1  -> goal reached (localized): 1 moves" in out
+    assert "ok    plan pair_goal.toml reference 1  -> goal reached (localized): 1 of 1 moves" in out
 
 
 def test_a_plan_step_fails_with_the_planners_reason_and_sends_no_rotation(tmp_path, log_dir,
