@@ -42,7 +42,8 @@ module near it has moved. For a void that no end reaches, a goal module
 nearer the end fills it (:func:`propagate`, the thesis' void propagation).
 Holes with big closures are dug before the flow fills anything
 (:func:`dig_deep`); one still deeper than a dig reaches fails the flow at
-once (:func:`check_depth`).
+once (:func:`check_depth`), and so does an end walled in deeper than that
+before the flow starts (:func:`check_ends`).
 
 A dig is kept only when fewer goal cells and ends are walled in afterwards
 (so two digs in a row cannot undo each other), and a flow makes at most
@@ -153,6 +154,27 @@ def check_depth(occupied: set[Cell], goal: frozenset[Cell], method: str) -> None
     if deepest is not None and depth[deepest] > DIG_LIMIT:
         raise PlanningFailure(f"{method}: goal cell {deepest} is walled in {depth[deepest]} "
                               f"cells deep, more than a dig moves ({DIG_LIMIT})")
+
+
+def check_ends(occupied: set[Cell], goal: frozenset[Cell], method: str) -> None:
+    """Raise :class:`PlanningFailure` when an end cannot leave before more
+    modules that stay than a dig moves have made room. The mirror of
+    :func:`check_depth`: the current shape is peeled from the outside in
+    (:func:`state_peel`, counting only the modules that both shapes keep),
+    and an end that is not reached within ``DIG_LIMIT`` of them is walled in
+    now. It only gets more walled in as the goal fills round it, because
+    ends that leave do not count. On the blob of 10,000 two ends sit side by
+    side in a notch of the start, each blocking the other's way out. The
+    flow spent its whole time cap on them before the strip planned
+    (docs/planning.md, "The blob of 10,000: a notch of the start")."""
+    shape = frozenset(occupied)
+    order, _, _ = state_peel(shape, shape & goal)
+    walled = sorted(end for end in shape - goal if end not in order)
+    if walled:
+        raise PlanningFailure(
+            f"{method}: end {walled[0]} can leave only after more than {DIG_LIMIT} modules "
+            f"that stay have moved, more than a dig moves"
+            + (f" ({len(walled)} such ends)" if len(walled) > 1 else ""))
 
 
 def dig_ends(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,

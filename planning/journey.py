@@ -331,6 +331,8 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
     last_tries = LAST_TRIES
     finishes = FINISHES if digs else 0
     sweeping = False  # the last fill was a sweep's: try the sweep first again
+    if digs:
+        dig.check_ends(tracker.occupied, goal, method)
     while digs_left and dig.dig_deep(tracker, goal, fixed, deadline, failed):
         digs_left -= 1
     if digs:

@@ -333,3 +333,28 @@ def test_a_hole_deeper_than_a_dig_reaches_fails_at_once_with_the_reason():
     start = Configuration.from_cells((goal - {centre}) | {(13, 0)})
     with pytest.raises(PlanningFailure, match=r"goal cell \(6, 6\) is walled in \d+ cells deep"):
         forward(start, goal, partial(journey_flow, digs=True), 10**6, None, NO_LIMIT, "local")
+
+
+def test_an_end_walled_in_deeper_than_a_dig_reaches_fails_at_once_with_the_reason():
+    # the mirror of the test above: the centre of a 13 x 13 block is a
+    # module to take away, and more modules that stay wall it in than a dig
+    # moves; the flow says so before it moves anything, instead of spending
+    # its time cap (the blob of 10,000 spent 68 s on two such ends)
+    block = parallelogram(13, 13)
+    centre = (6, 6)
+    start = Configuration.from_cells(block)
+    goal = (block - {centre}) | {(13, 0)}
+    with pytest.raises(PlanningFailure,
+                       match=r"end \(6, 6\) can leave only after more than 40 modules that "
+                             r"stay have moved"):
+        forward(start, goal, partial(journey_flow, digs=True), 10**6, None, NO_LIMIT, "local")
+    # the centre of an 8 x 8 block is within a dig's reach: no failure, and
+    # the flow takes it out
+    block = parallelogram(8, 8)
+    start = Configuration.from_cells(block)
+    goal = (block - {(4, 4)}) | {(8, 0)}
+    dig.check_ends(set(block), goal, "local")
+    moves = forward(start, goal, partial(journey_flow, digs=True), 10**6, None, NO_LIMIT,
+                    "local")
+    report = check_plan(start, goal, pack_consecutive(start, moves))
+    assert report.ok, report.problem
