@@ -39,6 +39,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--mode", choices=MODES, default="robust",
                         help="planner (default: robust)")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument("--summary", action="store_true",
+                        help="leave the steps out: the summary line, the notes and warnings "
+                             "(--json: the object without \"steps\"); a plan of 10,000 "
+                             "modules has millions of moves")
     parser.add_argument("--plot", metavar="FILE.png", help="draw one panel per time step")
     parser.add_argument("--render", metavar="FILE.gif",
                         help="animate the plan: a frame per time step, grid, counter, legend "
@@ -131,11 +135,15 @@ def plan_json(plan: Plan, style: str = "combined") -> dict[str, Any]:
 
 
 def write_plan_json(plan: Plan, style: str, out: TextIO,
-                    extra: dict[str, Any] | None = None) -> None:
+                    extra: dict[str, Any] | None = None, steps: bool = True) -> None:
     """The text of ``json.dumps({**plan_json(plan, style), **extra})`` and a
     newline, written a step at a time: a strip plan of 10,000 modules has five
-    million moves, and their dicts all at once needed gigabytes."""
+    million moves, and their dicts all at once needed gigabytes. Without
+    ``steps``, the object without its ``"steps"``."""
     omitted = unaddressable(plan)
+    if not steps:
+        out.write(json.dumps({**_json_head(plan, omitted), **(extra or {})}) + "\n")
+        return
     out.write(json.dumps(_json_head(plan, omitted))[:-1] + ', "steps": [')
     for k, step in enumerate(_steps_json(plan, style, omitted)):
         out.write((", " if k else "") + json.dumps(step))
@@ -211,19 +219,20 @@ def _move_commands(plan: Plan, style: str, omitted: str) -> Iterable[list[MoveCo
     return plan_to_commands(plan, style)  # type: ignore[arg-type]
 
 
-def plan_text(plan: Plan, style: str = "combined") -> str:
-    return "\n".join(_text_lines(plan, style))
+def plan_text(plan: Plan, style: str = "combined", steps: bool = True) -> str:
+    return "\n".join(_text_lines(plan, style, steps))
 
 
-def _text_lines(plan: Plan, style: str) -> Iterator[str]:
-    """The lines of the text report, one at a time (a plan may have millions of moves)."""
+def _text_lines(plan: Plan, style: str, steps: bool = True) -> Iterator[str]:
+    """The lines of the text report, one at a time (a plan may have millions of
+    moves); without ``steps``, all but the steps."""
     yield plan_summary(plan)
     for reason in plan.tried:
         yield f"note: tried first, no plan: {reason}"
     omitted = unaddressable(plan)
     if omitted:
         yield f"note: {omitted}"
-    for t, step in enumerate(_move_commands(plan, style, omitted), start=1):
+    for t, step in enumerate(_move_commands(plan, style, omitted) if steps else (), start=1):
         yield f"step {t}:"
         for mc in step:
             m = mc.move
@@ -240,9 +249,9 @@ def run(args: argparse.Namespace) -> int:
         return run_execute(args)
     plan = make_plan(args)
     if args.json:
-        write_plan_json(plan, args.style, sys.stdout)
+        write_plan_json(plan, args.style, sys.stdout, steps=not args.summary)
     else:
-        for line in _text_lines(plan, args.style):
+        for line in _text_lines(plan, args.style, steps=not args.summary):
             print(line)
     if args.plot:
         from hexbot.planning.plot import plot_plan
@@ -282,18 +291,19 @@ def run_execute(args: argparse.Namespace) -> int:
             args.fixed = poses[reference].cell  # localization needs the reference to stay
         plan = make_plan(args, initial)
         if not plan.reached:
-            print(plan_text(plan, args.style))
+            print(plan_text(plan, args.style, steps=not args.summary))
             print(f"hexbot plan: goal not reached, nothing executed: {plan.reason}",
                   file=sys.stderr)
             return 1
         if not args.json:
-            print(plan_text(plan, args.style))
+            print(plan_text(plan, args.style, steps=not args.summary))
             print(f"executing through {sess.host.channel().settings.url}: move by move, "
                   f"verify {args.verify}")
         report = execute(plan, sess, reference, verify=Verify(args.verify), poses=poses,
                          log=None if args.json else print)
     if args.json:
-        write_plan_json(plan, args.style, sys.stdout, {"execution": report.as_json()})
+        write_plan_json(plan, args.style, sys.stdout, {"execution": report.as_json()},
+                        steps=not args.summary)
     else:
         done = sum(m.ok for m in report.moves)
         print(f"executed {done}/{plan.move_count} moves in {report.seconds:.1f} s; "

@@ -168,6 +168,32 @@ def _toml(path, cells):
     return path
 
 
+def test_summary_leaves_the_steps_out_and_keeps_the_rest(capsys, examples_dir):
+    """``--summary``: what a plan of millions of moves is printed for, without
+    its moves: the summary line, the notes, the counts and bounds, the exit
+    status."""
+    s02 = (examples_dir / "test_all_s02_initial.txt", examples_dir / "test_all_s02_goal.txt")
+    code, full, _ = run_plan(capsys, *s02)
+    code_short, short, _ = run_plan(capsys, *s02, "--summary")
+    assert code == code_short == 0
+    assert short.splitlines() == [line for line in full.splitlines()
+                                  if not line.startswith(("step ", "  ", "      "))]
+    assert short.splitlines()[0] == full.splitlines()[0] and "step 1:" in full
+    code, out, _ = run_plan(capsys, *s02, "--json")
+    whole = json.loads(out)
+    code_short, out, _ = run_plan(capsys, *s02, "--json", "--summary")
+    head = json.loads(out)
+    assert code == code_short == 0 and "steps" not in head
+    assert head == {k: v for k, v in whole.items() if k != "steps"}
+    assert head["moves"] == sum(len(step["moves"]) for step in whole["steps"])
+    # an unreached goal: still exit 1 with the reason, and no steps
+    code, out, err = run_plan(capsys, examples_dir / P01[1], examples_dir / P01[0],
+                              "--mode", "faithful-parallel", "--json", "--summary")
+    data = json.loads(out)
+    assert code == 1 and data["reached"] is False and "steps" not in data
+    assert "stalled" in data["reason"] and "goal not reached" in err
+
+
 def test_json_plans_any_size_and_ids_without_commands_past_the_link(capsys, tmp_path):
     from hexbot.planning.generate import blob_pair, scramble
 

@@ -92,6 +92,20 @@ def _fixed_base_plan() -> Plan:
     return Plan("robust", initial, frozenset({(0, -1), (0, 0)}), [Step([bad])], reached=True)
 
 
+def test_execute_with_summary_reports_the_run_without_the_plans_steps(tmp_path, capsys):
+    initial, goal = tmp_path / "initial.toml", tmp_path / "goal.toml"
+    initial.write_text(PAIR_INITIAL)
+    goal.write_text(PAIR_GOAL)
+    status = main(["plan", str(initial), str(goal), "--scenario", "pair", "--execute",
+                   "--summary", "--no-log"])
+    lines = capsys.readouterr().out.splitlines()
+    assert status == 0
+    assert lines[0].startswith("mode robust") and "goal reached" in lines[0]
+    assert not any(line.startswith("step 1:") or "CW(" in line for line in lines)
+    assert any("module 2 moved at (0, 1)" in line for line in lines)
+    assert lines[-1].startswith("executed 1/1 moves") and "goal reached (localized)" in lines[-1]
+
+
 def test_a_refused_move_stops_with_the_plants_reason(open_session):
     session = open_session("pair")
     report = execute(_fixed_base_plan(), session, reference=2)
