@@ -12,8 +12,7 @@ from pathlib import Path
 
 from hexbot.errors import FlashingError
 from hexbot.host.flash.cli import DEFAULT_BUILD, REPO_ROOT, flash_board
-
-BOOT_SECONDS = 2.0  # simulated time to let each module print its boot text
+from hexbot.protocol import timing
 
 
 def build_firmware(version: str | None, build_dir: Path, say=print) -> None:
@@ -57,8 +56,11 @@ def flash_all(args: argparse.Namespace, say=print) -> int:
         isp.server.close()
     if args.dry_run:
         return 0
-    sim.run(BOOT_SECONDS)
-    say(f"--- after {BOOT_SECONDS:.0f} s of simulated time")
+    # until the last module's boot slot has passed: its boot text then reached the PC
+    boot = timing.boot_seconds(sim.modules, *([args.firmware_version] if args.firmware_version
+                                                else []))
+    sim.run(boot)
+    say(f"--- after {boot:.1f} s of simulated time")
     for module in sorted(sim.modules):
         text = sim.debug_read(module).decode("ascii", "replace").strip()
         say(f"module {module} control debug port: {text or '(silent)'}")

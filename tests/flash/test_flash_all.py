@@ -33,3 +33,8 @@ def test_flash_all_rebuilds_and_every_module_boots_the_new_version(tmp_path, hex
     # each module boots the new image and still reads its own DIP switches
     assert "CTR. BOARD READY ID=01 FW=isp-test-7" in boot_lines[0]
     assert "CTR. BOARD READY ID=02 FW=isp-test-7" in boot_lines[1]
+    # and the PC hears every comm board's boot text in its slot (the last
+    # slot ends seconds after reset: timing.boot_seconds)
+    heard = result.out.split("PC transceiver heard", 1)[1]
+    assert "COMM. LISTENING ID=01 FW=isp-test-7" in heard
+    assert "COMM. LISTENING ID=02 FW=isp-test-7" in heard
