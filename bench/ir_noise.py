@@ -36,7 +36,7 @@ from hexbot.host.endpoints import sim_url
 from hexbot.host.host import IR, Host
 from hexbot.host.link import PortSettings
 from hexbot.host.session import Session, select
-from hexbot.protocol import frames, wire
+from hexbot.protocol import frames, timing, wire
 from hexbot.protocol.codes import CODES, Board
 from hexbot.protocol.mavlink_codec import Framing
 from hexbot.protocol.parser import Ack, ControlMessage, ReplyParser
@@ -193,7 +193,7 @@ def air_times() -> list[tuple[str, int, int | None]]:
 
 def run(args: argparse.Namespace) -> int:
     if args.air_time:
-        byte_ms = 1000 * 10 / wire.BAUD_IR
+        byte_ms = 1000 * timing.BYTE_BITS / wire.BAUD_IR
         print(f"{'message':<44} {'MAVLink':>13} {'legacy':>13}")
         for name, mav_len, legacy in air_times():
             print(f"{name:<44} {mav_len:3d} B {mav_len * byte_ms:4.0f} ms "

@@ -30,9 +30,9 @@ from pathlib import Path
 
 from hexbot.bench.raw import avr_program, raw_simavr_seconds
 from hexbot.hil_sim._avr import SIMAVR_VERSION, Cluster
+from hexbot.protocol.wire import F_CPU
 
 FIRMWARE = Path(__file__).resolve().parent.parent / "firmware" / "build"
-F_CPU = 1_000_000
 
 
 def best_of(repeat: int, runs: dict) -> dict:

@@ -23,6 +23,7 @@ from types import FrameType
 from typing import Any, TextIO
 
 from hexbot.errors import HexBotError
+from hexbot.protocol.wire import BAUD_IR
 
 from .pty_bridge import PtyBridge
 from .scenario import builtin_names, load_scenario
@@ -139,7 +140,7 @@ def _serve_rfc2217(args: argparse.Namespace) -> int:
     query = f"speed={args.speed:g}" + (f"&seed={args.seed}" if args.seed is not None else "")
     try:
         port = serial.serial_for_url(f"{urlhandler.SCHEME}://{name}?{query}",
-                                     baudrate=300, timeout=0.1)
+                                     baudrate=BAUD_IR, timeout=0.1)
     except serial.SerialException as exc:
         raise HexBotError(f"cannot start the simulator: {exc}") from exc
     stop = _Stop()

@@ -33,6 +33,7 @@ from dataclasses import dataclass, field
 
 from hexbot.errors import LinkUnavailableError
 from hexbot.protocol import wire
+from hexbot.protocol.wire import BAUD_IR
 
 from .simulator import Simulator
 from .uart_line import LineSettings, resample
@@ -48,7 +49,7 @@ class _Port:
     master: int
     slave: int
     name: str
-    wire: LineSettings = LineSettings(300)  # what the modules' UART speaks
+    wire: LineSettings = LineSettings(BAUD_IR)  # what the modules' UART speaks
     dropped: int = 0
     early: bytes = b""  # read while waiting for a client, not yet passed on
 
@@ -67,7 +68,7 @@ class _Port:
         return resample(data, self.wire, self.client_line())
 
     @classmethod
-    def open(cls, baud: int = 300) -> _Port:
+    def open(cls, baud: int = BAUD_IR) -> _Port:
         try:
             master, slave = os.openpty()
         except OSError as exc:

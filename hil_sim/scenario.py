@@ -49,16 +49,16 @@ from pathlib import Path
 from typing import Any
 
 from hexbot.errors import ScenarioError
-from hexbot.protocol.pins import DIP_SWITCHES
 from hexbot.protocol.timing import CLOCK_TOLERANCE
+from hexbot.protocol.wire import LOC_COORD_LIMIT, MAX_MODULE_ID
 from hexbot.toml_lines import TomlLines as _Lines
 
 from .geometry import Cell
 
 #: A module's id is its control board's DIP switches: up to 255 modules. (The
 #: legacy Select frame addresses 1..63, MAVLink frames all of them.)
-MAX_ID = (1 << DIP_SWITCHES) - 1
-COORD_LIMIT = 99  # MSG1 carries two decimal digits per coordinate
+MAX_ID = MAX_MODULE_ID
+COORD_LIMIT = LOC_COORD_LIMIT  # MSG1 carries two decimal digits per coordinate
 MAX_CLOCK_PPM = round(CLOCK_TOLERANCE * 1e6)  # an RC clock further off cannot talk at all
 PC = "pc"
 

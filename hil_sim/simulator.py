@@ -44,7 +44,14 @@ from hexbot.protocol.pins import (
     RF12_SPI_PINS,
     SELECTOR_PINS,
 )
-from hexbot.protocol.timing import BAUD_BOARD, BAUD_DEBUG, BAUD_IR, CLOCK_TOLERANCE, F_CPU
+from hexbot.protocol.timing import (
+    BAUD_BOARD,
+    BAUD_DEBUG,
+    BAUD_IR,
+    BYTE_BITS,
+    CLOCK_TOLERANCE,
+    F_CPU,
+)
 
 from .geometry import CENTRE, CHANNEL_SIDE, SIDE_CHANNEL, Cell, facing, neighbor, to_body, to_global
 from .ir_bus import PC_FRAME, AirByte, Frame, IrMedium
@@ -167,8 +174,8 @@ class Simulator:
         self.medium = IrMedium(
             self, self.seed, faults_for=scenario.faults_for, emit=self._emit
         )
-        self._ir_frame_cycles = round(10 * hz / BAUD_IR)
-        self._debug_frame_cycles = round(10 * hz / BAUD_DEBUG)
+        self._ir_frame_cycles = round(BYTE_BITS * hz / BAUD_IR)
+        self._debug_frame_cycles = round(BYTE_BITS * hz / BAUD_DEBUG)
         self._pc_tx: deque[tuple[int, int, int]] = deque()  # (start, end, byte)
         self._pc_tx_free = 0  # cycle the PC's transmitter is free again
         self._debug_tx: dict[int, deque[tuple[int, int]]] = {m: deque() for m in self.modules}

@@ -26,7 +26,7 @@ from hexbot.protocol.parser import (
     Text,
     YrefReport,
 )
-from hexbot.protocol.wire import MAX_MODULE_ID
+from hexbot.protocol.wire import BOOT_ID_TAIL, MAX_MODULE_ID, TEXT_COMM_READY, TEXT_CTR_READY
 
 LOCALIZE_CODE = lookup("Localize").code
 
@@ -133,7 +133,7 @@ class ClusterModel:
         if isinstance(ev, Text):
             if ev.phrase == "LOCALIZED":
                 self._pending[port] = _PendingReport()
-            elif ev.phrase in ("COMM. BOARD READY", "CTR. BOARD READY") and ev.tail:
+            elif ev.phrase in (TEXT_COMM_READY, TEXT_CTR_READY) and ev.tail:
                 ident = _id_from_tail(ev.tail)
                 if ident is not None:
                     row = self._row(None, ident)
@@ -194,9 +194,10 @@ class ClusterModel:
 
 
 def _id_from_tail(tail: str) -> int | None:
+    key = BOOT_ID_TAIL.strip()
     for word in tail.split():
-        if word.upper().startswith("ID="):
-            digits = word[3:]
+        if word.upper().startswith(key):
+            digits = word[len(key):]
             if digits.isdigit() and 1 <= int(digits) <= MAX_MODULE_ID:
                 return int(digits)  # 0: the comm board has no id before the handshake
     return None

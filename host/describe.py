@@ -10,7 +10,7 @@ from dataclasses import asdict
 from typing import Any
 
 from hexbot.errors import FrameError
-from hexbot.protocol import frames
+from hexbot.protocol import frames, wire
 from hexbot.protocol.codes import CODES, ErrorCode
 from hexbot.protocol.mavlink_codec import MavInfo, describe_mavlink_tx
 from hexbot.protocol.parser import (
@@ -35,10 +35,8 @@ def who(role: str | None, module: int | None) -> str:
 
 
 def code_name(code: int) -> str:
-    if code == ord("N"):
-        return "N"
-    if code == ord("~"):
-        return "~"
+    if code in (wire.UNUSED, wire.TIMEOUT):  # "did nothing", control board time-out
+        return chr(code)
     fn = CODES.get(code)
     return f"{code} {fn.name}" if fn else f"{code} ?"
 

@@ -46,6 +46,9 @@ from hexbot.protocol.frames import Command
 from hexbot.protocol.mavlink_codec import MAX_FRAME_LEN, Framing, MavStatus
 from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
 
+#: ``ID=`` of a boot text's tail, as a regular expression (``wire.BOOT_ID_TAIL``)
+_BOOT_ID = r"\b" + re.escape(wire.BOOT_ID_TAIL.strip())
+
 SELECT = lookup("Select").code
 STATUS = lookup("Status").code
 #: Before the first Select nobody has an id on the air: one reply is awaited.
@@ -487,7 +490,7 @@ class Session:
         two replies that collided (their bytes AND on the IR link)."""
         return any(obs.port == port and isinstance(obs.event, Text)
                    and obs.event.phrase == wire.TEXT_COMM_LISTENING.rstrip()
-                   and re.search(r"\bID=0+\b", obs.event.tail)
+                   and re.search(_BOOT_ID + r"0+\b", obs.event.tail)
                    for obs in self.host.since(0))
 
     def port_lost(self, port: str = IR) -> str | None:
@@ -528,7 +531,7 @@ class Session:
 def listening_id(event: object) -> int | None:
     """The module id of a ``COMM. LISTENING ID=nn ...`` boot text."""
     if isinstance(event, Text) and event.phrase == wire.TEXT_COMM_LISTENING.rstrip():
-        m = re.search(r"\bID=(\d+)", event.tail)
+        m = re.search(_BOOT_ID + r"(\d+)", event.tail)
         if m and int(m.group(1)):
             return int(m.group(1))
     return None

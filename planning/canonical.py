@@ -48,7 +48,7 @@ from hexbot.planning.hexlattice import (
     rotate_cell,
     wrap,
 )
-from hexbot.planning.moves import Move, new_move
+from hexbot.planning.moves import TURN, Move, new_move
 from hexbot.planning.robust import (
     _AROUND12,
     ROTATION_MASKS,
@@ -314,12 +314,11 @@ def replay(config: Configuration, moves: list[Move]) -> Configuration:
     """The configuration after ``moves`` (fast: one dict of (id, orientation), the
     modules made once at the end; a strip route replays millions of moves)."""
     cells = {c: (m.id, m.orientation) for c, m in config.items()}
-    turn = {"CW": 2, "CCW": -2}
     for move in moves:
         module, facing = cells.pop(move.src)
         if module != move.module:
             raise ValueError(f"module {move.module} is not at {move.src}")
-        cells[move.dst] = (module, (facing + turn[move.direction]) % 6)
+        cells[move.dst] = (module, (facing + TURN[move.direction]) % 6)
     return Configuration({c: Module(i, o) for c, (i, o) in cells.items()})
 
 

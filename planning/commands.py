@@ -30,6 +30,7 @@ from typing import Literal
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.moves import Move
 from hexbot.planning.plan import Plan, apply_step
+from hexbot.protocol.codes import Role
 from hexbot.protocol.frames import Command, encode_pc, make, select
 from hexbot.protocol.lattice import to_global
 from hexbot.protocol.rotation import (  # noqa: F401 - body_index is part of this module's API
@@ -40,9 +41,6 @@ from hexbot.protocol.rotation import (  # noqa: F401 - body_index is part of thi
 )
 
 Style = Literal["combined", "single"]
-
-ROLE_MOBILE = 1
-ROLE_SUBSTRATE = 2
 
 #: Table 3-1 delays (t1, t2, t3) in 10 ms ticks, per direction and role.
 TIMINGS = THESIS_TIMINGS
@@ -81,7 +79,7 @@ def move_commands(
                 single_rotation(move.direction, "mobile", move.joint, mobile_orientation)]
     roles = {} if roles is None else roles
     out: list[Command] = []
-    for module_id, role in ((m, ROLE_MOBILE), (s, ROLE_SUBSTRATE)):
+    for module_id, role in ((m, int(Role.MOBILE)), (s, int(Role.SUBSTRATE))):
         if roles.get(module_id) != role:
             out += [select([module_id]), make("SetRole", role)]
             roles[module_id] = role

@@ -72,7 +72,12 @@ def magnets(joint: int, direction: Direction) -> Magnets:
     return Magnets(mobile, wrap(joint + 2), wrap(joint + 1))
 
 
+#: Per direction, how a rotation turns the mobile module's body, in sixth-turns
+#: clockwise (``Rotation.turn``: the same for every joint).
+TURN: dict[str, int] = {r.direction: r.turn for r in ROTATION_BY_KEY.values()}
+
+
 def orientation_after(orientation: int, direction: Direction) -> int:
     """A 120-degree rotation turns the mobile module's body by two sides
     (clockwise adds two to Yref)."""
-    return (orientation + (2 if direction == "CW" else -2)) % 6
+    return (orientation + TURN[direction]) % 6

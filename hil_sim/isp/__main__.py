@@ -15,6 +15,7 @@ import sys
 
 from hexbot.hil_sim.isp import Atmega162Isp, Atmega162Memory, IspPtyServer, MemoryBackend
 from hexbot.hil_sim.isp.stk500v2 import Stk500v2Programmer
+from hexbot.protocol.wire import SIGNATURE
 
 
 def _byte(text: str) -> int:
@@ -27,7 +28,7 @@ def _byte(text: str) -> int:
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m hexbot.hil_sim.isp", description=__doc__,
                                      formatter_class=argparse.RawDescriptionHelpFormatter)
-    parser.add_argument("--signature", default="1e9404",
+    parser.add_argument("--signature", default=SIGNATURE.hex(),
                         help="device signature, 6 hex digits (default: ATmega162)")
     parser.add_argument("--lfuse", type=_byte)
     parser.add_argument("--hfuse", type=_byte)
