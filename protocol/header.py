@@ -23,8 +23,11 @@ HEADER_PATH = Path(__file__).resolve().parent.parent / "firmware" / "include" / 
 SCHEMA_LINE = "@SCHEMA@"
 
 
-def _c_string(text: str) -> str:
-    return '"' + text.replace("\\", "\\\\").replace('"', '\\"') + '"'
+def _c_string(text: str | bytes) -> str:
+    if isinstance(text, bytes):
+        text = text.decode("ascii")
+    escaped = text.replace("\\", "\\\\").replace('"', '\\"')
+    return '"' + escaped.replace("\n", "\\n").replace("\r", "\\r") + '"'
 
 
 def _offsets() -> list[lattice.Cell]:
@@ -78,6 +81,18 @@ def _timing() -> list[str]:
         f"#define HB_TEXT_COMM_LISTENING {_c_string(wire.TEXT_COMM_LISTENING)}",
         f"#define HB_TEXT_ID_TAIL     {_c_string(wire.BOOT_ID_TAIL)}",
         f"#define HB_TEXT_FW_TAIL     {_c_string(wire.BOOT_FW_TAIL)}",
+        f"#define HB_TEXT_RF12_READY  {_c_string(wire.TEXT_RF12_READY)}",
+        "/* Replies: preamble, line end, reply words, the localization report */",
+        f"#define HB_PREAMBLE         {_c_string(wire.PREAMBLE)}",
+        f"#define HB_EOL              {_c_string(wire.EOL)}",
+        f"#define HB_REPLY_ACK        {_c_string(wire.REPLY_ACK)}",
+        f"#define HB_REPLY_ERR        {_c_string(wire.REPLY_ERR)}",
+        f"#define HB_REPLY_STATUS     {_c_string(wire.REPLY_STATUS)}",
+        f"#define HB_REPLY_MSG        {_c_string(wire.REPLY_MSG)}",
+        f"#define HB_TEXT_LOCALIZED   {_c_string(wire.TEXT_LOCALIZED)}",
+        f"#define HB_LOC_SIDE         {_c_string(wire.LOC_SIDE)}",
+        f"#define HB_LOC_YREF         {_c_string(wire.LOC_YREF)}",
+        f"#define HB_LOC_POS          {_c_string(wire.LOC_POS)}",
         "",
         "/* Table 4-1: neighbour offset of global side 1..6 (index side - 1) */",
         f"#define HB_SIDE_DX {{{', '.join(str(dx) for dx, _ in _offsets())}}}",
@@ -179,6 +194,8 @@ def _render(schema: str) -> str:
     lines += ["", "/* Roles */"]
     for r in Role:
         lines.append(f"#define HB_ROLE_{r.name:<10} {r.value}  /* '{r.letter}' */")
+    for r in Role:  # as the replies spell them (the prefix, the status' role byte)
+        lines.append(f"#define HB_ROLE_LETTER_{r.name:<10} '{r.letter}'")
     lines += ["", "#endif /* HEXBOT_CODES_H */", ""]
     return "\n".join(lines)
 

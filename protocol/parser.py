@@ -33,7 +33,7 @@ from collections.abc import Iterable, Iterator
 from dataclasses import dataclass, field
 
 from hexbot.protocol import wire
-from hexbot.protocol.codes import CODES, ErrorCode
+from hexbot.protocol.codes import CODES, ErrorCode, Role
 
 EOL = wire.EOL
 
@@ -44,10 +44,10 @@ KNOWN_TEXTS = (
     wire.TEXT_CTR_READY,
     wire.TEXT_CTR_LISTENING,
     wire.TEXT_COMM_LISTENING,
-    "LOCALIZED",
-    "NOT LOCALIZED",
+    wire.TEXT_LOCALIZED,
+    "NOT " + wire.TEXT_LOCALIZED,
     "RECEIVED",
-    "RF12 READY",
+    wire.TEXT_RF12_READY,
 )
 _TAIL_CHARS = re.compile(rb"[ A-Za-z0-9=._:+\-/]*")
 _MAX_TAIL = 40
@@ -152,8 +152,13 @@ _STATUS_FIELDS = 7  # id, role, localized, x, y, yref, last error
 _SCHEMA_DIGITS = 8
 _HEX = re.compile(rb"[0-9a-f]{8}")
 _ID = rb"\d{%d,%d}" % (wire.ID_MIN_DIGITS, wire.ID_MAX_DIGITS)
-_PREFIX = re.compile(rb"([MS])(" + _ID + rb")?: ")
-_PREFIX_PARTIAL = re.compile(rb"[MS](\d{0,%d}|" % wire.ID_MAX_DIGITS + _ID + rb":|:)")
+#: A reply's prefix: the replying module's role letter (mobile or substrate)
+#: and, once addressed, its id.
+_PREFIX_ROLES = b"[" + (Role.MOBILE.letter + Role.SUBSTRATE.letter).encode() + b"]"
+_PREFIX = re.compile(b"(" + _PREFIX_ROLES + b")(" + _ID + rb")?: ")
+_PREFIX_PARTIAL = re.compile(_PREFIX_ROLES + rb"(\d{0,%d}|" % wire.ID_MAX_DIGITS + _ID + rb":|:)")
+#: The role byte of a status reply: any role's letter.
+_ROLE_LETTERS = frozenset(role.letter for role in Role)
 
 
 def _fixed(buf: bytes, head: bytes, nbody: int) -> bytes | str | None:
@@ -275,7 +280,7 @@ class ReplyParser:
         return None
 
     def _m_ack(self, buf: bytes):
-        body = _fixed(buf, b"ACK", 1)
+        body = _fixed(buf, wire.REPLY_ACK, 1)
         if body is None or body == PARTIAL:
             return body
         ev = Ack(raw=buf[:6], code=body[0], role=self._role, module=self._module)
@@ -283,7 +288,7 @@ class ReplyParser:
         return 6, ev
 
     def _m_err(self, buf: bytes):
-        body = _fixed(buf, b"ERR", 2)
+        body = _fixed(buf, wire.REPLY_ERR, 2)
         if body is None or body == PARTIAL:
             return body
         ev = ErrorReply(raw=buf[:7], code=body[0], reason=body[1], role=self._role,
@@ -295,9 +300,9 @@ class ReplyParser:
         # Seven fields, then either LF CR (firmware before the schema) or the
         # schema's hex digits and LF CR: a hex digit is never LF, so the byte
         # after the fields tells the two apart.
-        fields = 3 + _STATUS_FIELDS
+        fields = len(wire.REPLY_STATUS) + _STATUS_FIELDS
         if len(buf) > fields and buf[fields] != EOL[0]:
-            body = _fixed(buf, b"STA", _STATUS_FIELDS + _SCHEMA_DIGITS)
+            body = _fixed(buf, wire.REPLY_STATUS, _STATUS_FIELDS + _SCHEMA_DIGITS)
             if body is None or body == PARTIAL:
                 return body
             digits = bytes(body[_STATUS_FIELDS:])
@@ -305,14 +310,14 @@ class ReplyParser:
                 return None
             schema: int | None = int(digits, 16)
         else:
-            body = _fixed(buf, b"STA", _STATUS_FIELDS)
+            body = _fixed(buf, wire.REPLY_STATUS, _STATUS_FIELDS)
             if body is None or body == PARTIAL:
                 return body
             schema = None
         ident, role, loc, x, y, yref, err = body[:_STATUS_FIELDS]
-        if chr(role) not in "MS-" or loc > 1 or yref > 5:  # the id byte takes any value
+        if chr(role) not in _ROLE_LETTERS or loc > 1 or yref > 5:  # the id byte takes any value
             return None
-        end = 3 + len(body) + len(EOL)
+        end = len(wire.REPLY_STATUS) + len(body) + len(EOL)
         ev = StatusReport(raw=buf[:end], module_id=ident, role=chr(role), localized=bool(loc),
                           x=_signed(x), y=_signed(y), yref=yref, error=err,
                           prefix_role=self._role, schema=schema)
@@ -320,17 +325,20 @@ class ReplyParser:
         return end, ev
 
     def _m_msg(self, buf: bytes):
-        body = _fixed(buf, b"MSG", 5)
+        body = _fixed(buf, wire.REPLY_MSG, 5)
         if body is None or body == PARTIAL:
             return body
         return 10, ControlMessage(raw=buf[:10], code=body[0], args=tuple(body[1:]))
 
     _REPORTS = (
-        (re.compile(rb"Side: ([1-6])\n\r"), b"Side: 6\n\r",
+        (re.compile(re.escape(wire.LOC_SIDE) + rb"([1-6])" + re.escape(EOL)),
+         wire.LOC_SIDE + b"6" + EOL,
          lambda m, raw: SideReport(raw=raw, side=int(m.group(1)))),
-        (re.compile(rb"Yref: ([0-5])\n\r"), b"Yref: 5\n\r",
+        (re.compile(re.escape(wire.LOC_YREF) + rb"([0-5])" + re.escape(EOL)),
+         wire.LOC_YREF + b"5" + EOL,
          lambda m, raw: YrefReport(raw=raw, yref=int(m.group(1)))),
-        (re.compile(rb"Pos: ([+-]\d\d)([+-]\d\d)\n\r"), b"Pos: +00+00\n\r",
+        (re.compile(re.escape(wire.LOC_POS) + rb"([+-]\d\d)([+-]\d\d)" + re.escape(EOL)),
+         wire.LOC_POS + b"+00+00" + EOL,
          lambda m, raw: PositionReport(raw=raw, x=int(m.group(1)), y=int(m.group(2)))),
     )
 
@@ -379,12 +387,12 @@ def parse_all(data: bytes) -> list[Event]:
 
 
 def reply_ack(code: int, role: str | None = None, module: int | None = None) -> bytes:
-    return wire.PREAMBLE + _prefix(role, module) + b"ACK" + bytes([code]) + EOL
+    return wire.PREAMBLE + _prefix(role, module) + wire.REPLY_ACK + bytes([code]) + EOL
 
 
 def reply_error(code: int, reason: int, role: str | None = None,
                 module: int | None = None) -> bytes:
-    return wire.PREAMBLE + _prefix(role, module) + b"ERR" + bytes([code, reason]) + EOL
+    return wire.PREAMBLE + _prefix(role, module) + wire.REPLY_ERR + bytes([code, reason]) + EOL
 
 
 def reply_status(module_id: int, role: str, localized: bool, x: int, y: int, yref: int,
@@ -394,8 +402,8 @@ def reply_status(module_id: int, role: str, localized: bool, x: int, y: int, yre
     body = bytes([module_id, ord(role), int(localized), x & 0xFF, y & 0xFF, yref, error])
     if schema is not None:
         body += f"{schema:08x}".encode()
-    return wire.PREAMBLE + _prefix(prefix_role, module_id if prefix_role else None) + b"STA" + \
-        body + EOL
+    return (wire.PREAMBLE + _prefix(prefix_role, module_id if prefix_role else None)
+            + wire.REPLY_STATUS + body + EOL)
 
 
 def _prefix(role: str | None, module: int | None) -> bytes:

@@ -74,13 +74,15 @@ ACK_SLOT_TICKS = 60  # addressed mode: rank r answers r slots after rank 0
 ACK_SLOT_S = ACK_SLOT_TICKS * TICK_S
 
 ADDRESSED_PREFIX = b"M" + b"n" * wire.ID_MAX_DIGITS + b": "  # longest: role letter, id
-ACK_BODY = b"ACK" + bytes([0]) + wire.EOL
-ERR_BODY = b"ERR" + bytes([0, 0]) + wire.EOL
+ACK_BODY = wire.REPLY_ACK + bytes([0]) + wire.EOL
+ERR_BODY = wire.REPLY_ERR + bytes([0, 0]) + wire.EOL
 STATUS_FIELDS = 7  # id, role, localized, x, y, yref, last error
 SCHEMA_DIGITS = 8  # the schema hash as hex text (docs/protocol.md, "Status")
-STATUS_BODY_BYTES = len(b"STA") + STATUS_FIELDS + SCHEMA_DIGITS + len(wire.EOL)
-#: What a module that localized itself reports (comm/main.c, localize()).
-LOCALIZE_REPORT = wire.PREAMBLE + b"LOCALIZED\n\rSide: 1\n\rYref: 0\n\rPos: +00+00\n\r"
+STATUS_BODY_BYTES = len(wire.REPLY_STATUS) + STATUS_FIELDS + SCHEMA_DIGITS + len(wire.EOL)
+#: What a module that localized itself reports (comm/reply.c, reply_localized()).
+LOCALIZE_REPORT = (wire.PREAMBLE + wire.TEXT_LOCALIZED.encode() + wire.EOL
+                   + wire.LOC_SIDE + b"1" + wire.EOL + wire.LOC_YREF + b"0" + wire.EOL
+                   + wire.LOC_POS + b"+00+00" + wire.EOL)
 
 _HEAD = len(wire.PREAMBLE) + len(ADDRESSED_PREFIX)
 REPLY_BYTES_ACK = _HEAD + len(ACK_BODY)

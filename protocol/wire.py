@@ -21,6 +21,17 @@ LOC_FRAME_LEN = 8  # '*' sX X X sY Y Y S
 PREAMBLE = b"\n\r\n\r"  # LF CR LF CR before every reply
 EOL = b"\n\r"  # the firmware ends lines LF CR, as the thesis does
 
+# Reply words after the role/id prefix (``M03: ``), then their binary fields.
+REPLY_ACK = b"ACK"  # + function code
+REPLY_ERR = b"ERR"  # + function code, reason
+REPLY_STATUS = b"STA"  # + id, role letter, localized, x, y, yref, last error, schema
+REPLY_MSG = b"MSG"  # control board debug port: + the board frame it got (code, 4 args)
+# A module that localized itself reports four lines (comm firmware, localize()).
+TEXT_LOCALIZED = "LOCALIZED"
+LOC_SIDE = b"Side: "  # + the side it heard (1..6)
+LOC_YREF = b"Yref: "  # + its orientation (0..5)
+LOC_POS = b"Pos: "  # + sXX sYY
+
 BAUD_IR = 300
 BAUD_BOARD = 4800
 BAUD_DEBUG = 4800
@@ -38,6 +49,7 @@ TEXT_CTR_LISTENING = "CTR. LISTENING"
 TEXT_COMM_LISTENING = "COMM. LISTENING"
 BOOT_ID_TAIL = " ID="  # + the id, two or three digits
 BOOT_FW_TAIL = " FW="  # + the firmware version
+TEXT_RF12_READY = "RF12 READY"  # the RF12 wireless board's boot text (its UART1)
 
 #: A module id is its control board's 8 DIP switches (PC0..PC7): 1..255, 0 =
 #: no switch on. The legacy Select frame addresses 1..63 only (the thesis'

@@ -66,13 +66,14 @@ void reply_dec2(uint8_t v)
 void reply_preamble(void)
 {
     comm_ir_select(IR_CENTRE);
-    uart_puts_P(IR, PSTR("\n\r\n\r"));
+    uart_puts_P(IR, PSTR(HB_PREAMBLE));
 }
 
 static void prefix(void)
 {
     reply_preamble();
-    uart_putc(IR, g_state.role == HB_ROLE_SUBSTRATE ? 'S' : 'M');
+    uart_putc(IR, g_state.role == HB_ROLE_SUBSTRATE ? HB_ROLE_LETTER_SUBSTRATE
+                                                    : HB_ROLE_LETTER_MOBILE);
     if (g_state.addressed) {
         uint8_t digits[ID_TEXT_MAX];
         uart_write(IR, digits, id_text(digits, g_state.id));
@@ -82,8 +83,7 @@ static void prefix(void)
 
 static void eol(void)
 {
-    uart_putc(IR, '\n');
-    uart_putc(IR, '\r');
+    uart_puts_P(IR, PSTR(HB_EOL));
 }
 
 void reply_line_P(const char *text)
@@ -110,14 +110,12 @@ static uint8_t *boot_line(uint8_t *p, const char *text, uint8_t with_id, uint8_t
     }
     if (with_fw)
         p = text_P(p, PSTR(BOOT_FW_TAIL));
-    *p++ = '\n';
-    *p++ = '\r';
-    return p;
+    return text_P(p, PSTR(HB_EOL));
 }
 
 uint8_t reply_boot_text(uint8_t *buf, uint8_t which)
 {
-    uint8_t *p = text_P(buf, PSTR("\n\r\n\r"));
+    uint8_t *p = text_P(buf, PSTR(HB_PREAMBLE));
     if (which & BOOT_COMM_READY)
         p = boot_line(p, PSTR(HB_TEXT_COMM_READY), 0, 1);
     if (which & BOOT_CTR_READY)
@@ -137,7 +135,7 @@ void reply_ack_now(uint8_t code)
         return;
     }
     prefix();
-    uart_puts_P(IR, PSTR("ACK"));
+    uart_puts_P(IR, PSTR(HB_REPLY_ACK));
     uart_putc(IR, code);
     eol();
 }
@@ -151,7 +149,7 @@ void reply_err_now(uint8_t code, uint8_t reason)
         return;
     }
     prefix();
-    uart_puts_P(IR, PSTR("ERR"));
+    uart_puts_P(IR, PSTR(HB_REPLY_ERR));
     uart_putc(IR, code);
     uart_putc(IR, reason);
     eol();
@@ -179,11 +177,11 @@ void reply_status(void)
         return;
     }
     prefix();
-    uart_puts_P(IR, PSTR("STA"));
+    uart_puts_P(IR, PSTR(HB_REPLY_STATUS));
     uart_putc(IR, g_state.id);
-    uart_putc(IR, g_state.role == HB_ROLE_SUBSTRATE ? 'S'
-                  : g_state.role == HB_ROLE_MOBILE  ? 'M'
-                                                    : '-');
+    uart_putc(IR, g_state.role == HB_ROLE_SUBSTRATE ? HB_ROLE_LETTER_SUBSTRATE
+                  : g_state.role == HB_ROLE_MOBILE  ? HB_ROLE_LETTER_MOBILE
+                                                    : HB_ROLE_LETTER_NONE);
     uart_putc(IR, g_state.localized);
     uart_putc(IR, (uint8_t)g_state.x);
     uart_putc(IR, (uint8_t)g_state.y);
@@ -201,16 +199,16 @@ void reply_localized(void)
         return;
     }
     reply_preamble();
-    reply_line_P(PSTR("LOCALIZED"));
-    uart_puts_P(IR, PSTR("Side: "));
+    reply_line_P(PSTR(HB_TEXT_LOCALIZED));
+    uart_puts_P(IR, PSTR(HB_LOC_SIDE));
     uart_putc(IR, (uint8_t)('0' + g_state.heard_side));
-    uart_puts_P(IR, PSTR("\n\rYref: "));
+    uart_puts_P(IR, PSTR(HB_EOL HB_LOC_YREF));
     uart_putc(IR, (uint8_t)('0' + g_state.yref));
-    uart_puts_P(IR, PSTR("\n\rPos: "));
+    uart_puts_P(IR, PSTR(HB_EOL HB_LOC_POS));
     int8_t c[2] = {g_state.x, g_state.y};
     for (uint8_t i = 0; i < 2; i++) {
         uart_putc(IR, c[i] < 0 ? '-' : '+');
         reply_dec2((uint8_t)(c[i] < 0 ? -c[i] : c[i]));
     }
-    uart_puts_P(IR, PSTR("\n\r"));
+    eol();
 }

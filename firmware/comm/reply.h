@@ -29,9 +29,9 @@
  * HB_BOOT_TEXT_FIXED_BYTES); ids below 100 send two bytes less. */
 #define REPLY_BYTES_BOOT (HB_BOOT_TEXT_FIXED_BYTES + TEXT_LEN(HB_FW_VERSION))
 _Static_assert(REPLY_BYTES_BOOT ==
-                   4u + TEXT_LEN(HB_TEXT_CTR_READY HB_TEXT_ID_TAIL "nnn\n\r") +
-                       TEXT_LEN(HB_TEXT_CTR_LISTENING "\n\r") +
-                       TEXT_LEN(HB_TEXT_COMM_LISTENING HB_TEXT_ID_TAIL "nnn" BOOT_FW_TAIL "\n\r"),
+                   TEXT_LEN(HB_PREAMBLE) + TEXT_LEN(HB_TEXT_CTR_READY HB_TEXT_ID_TAIL "nnn" HB_EOL) +
+                       TEXT_LEN(HB_TEXT_CTR_LISTENING HB_EOL) +
+                       TEXT_LEN(HB_TEXT_COMM_LISTENING HB_TEXT_ID_TAIL "nnn" BOOT_FW_TAIL HB_EOL),
                "boot text and HB_BOOT_TEXT_FIXED_BYTES disagree");
 
 typedef uint8_t (*poll_fn)(void);

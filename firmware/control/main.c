@@ -37,13 +37,12 @@ static uint8_t module_id;
 static void debug_line_P(const char *text)
 {
     uart_puts_P(SRC_DEBUG, text);
-    uart_putc(SRC_DEBUG, '\n');
-    uart_putc(SRC_DEBUG, '\r');
+    uart_puts_P(SRC_DEBUG, PSTR(HB_EOL));
 }
 
 static void debug_preamble(void)
 {
-    uart_puts_P(SRC_DEBUG, PSTR("\n\r\n\r"));
+    uart_puts_P(SRC_DEBUG, PSTR(HB_PREAMBLE));
 }
 
 static void send_link(uint8_t what)
@@ -100,11 +99,11 @@ static void run_pending(void)
     if (pending_src == SRC_COMM)
         uart_putc(SRC_COMM, echo); /* the acknowledgement the comm board waits for */
     debug_preamble();
-    uart_puts_P(SRC_DEBUG, PSTR("ACK"));
+    uart_puts_P(SRC_DEBUG, PSTR(HB_REPLY_ACK));
     uart_putc(SRC_DEBUG, echo);
-    uart_puts_P(SRC_DEBUG, PSTR("\n\rMSG"));
+    uart_puts_P(SRC_DEBUG, PSTR(HB_EOL HB_REPLY_MSG));
     uart_write(SRC_DEBUG, &pending[1], 1 + HB_BOARD_ARGS);
-    uart_puts_P(SRC_DEBUG, PSTR("\n\r"));
+    uart_puts_P(SRC_DEBUG, PSTR(HB_EOL));
     if (ok)
         actuators_run(code, args);
     else
@@ -131,9 +130,9 @@ static uint8_t handshake(void)
 static void put_id_tail(void)
 {
     uint8_t digits[ID_TEXT_MAX];
-    uart_puts_P(SRC_DEBUG, PSTR(" ID="));
+    uart_puts_P(SRC_DEBUG, PSTR(HB_TEXT_ID_TAIL));
     uart_write(SRC_DEBUG, digits, id_text(digits, module_id));
-    uart_puts_P(SRC_DEBUG, PSTR(" FW=" HB_FW_VERSION));
+    uart_puts_P(SRC_DEBUG, PSTR(HB_TEXT_FW_TAIL HB_FW_VERSION));
 }
 
 int main(void)
@@ -157,13 +156,13 @@ int main(void)
     }
 
     debug_preamble();
-    uart_puts_P(SRC_DEBUG, PSTR("CTR. BOARD READY"));
+    uart_puts_P(SRC_DEBUG, PSTR(HB_TEXT_CTR_READY));
     put_id_tail();
-    uart_puts_P(SRC_DEBUG, PSTR("\n\r"));
+    uart_puts_P(SRC_DEBUG, PSTR(HB_EOL));
     if (handshake())
-        debug_line_P(PSTR("COMM. BOARD READY"));
+        debug_line_P(PSTR(HB_TEXT_COMM_READY));
     send_link(HB_LINK_LISTENING);
-    debug_line_P(PSTR("CTR. LISTENING"));
+    debug_line_P(PSTR(HB_TEXT_CTR_LISTENING));
 
     /* Idle: sleep through the ticks until a byte comes or a half frame
      * expires (docs/firmware.md, "The idle path"). */

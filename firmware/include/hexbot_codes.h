@@ -4,8 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0x6e4ab8a0UL
-#define HB_SCHEMA_HASH_TEXT "6e4ab8a0"
+#define HB_SCHEMA_HASH 0x958e52f1UL
+#define HB_SCHEMA_HASH_TEXT "958e52f1"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */
@@ -82,6 +82,18 @@
 #define HB_TEXT_COMM_LISTENING "COMM. LISTENING"
 #define HB_TEXT_ID_TAIL     " ID="
 #define HB_TEXT_FW_TAIL     " FW="
+#define HB_TEXT_RF12_READY  "RF12 READY"
+/* Replies: preamble, line end, reply words, the localization report */
+#define HB_PREAMBLE         "\n\r\n\r"
+#define HB_EOL              "\n\r"
+#define HB_REPLY_ACK        "ACK"
+#define HB_REPLY_ERR        "ERR"
+#define HB_REPLY_STATUS     "STA"
+#define HB_REPLY_MSG        "MSG"
+#define HB_TEXT_LOCALIZED   "LOCALIZED"
+#define HB_LOC_SIDE         "Side: "
+#define HB_LOC_YREF         "Yref: "
+#define HB_LOC_POS          "Pos: "
 
 /* Table 4-1: neighbour offset of global side 1..6 (index side - 1) */
 #define HB_SIDE_DX {-1, 0, 1, 1, 0, -1}
@@ -445,5 +457,8 @@
 #define HB_ROLE_NONE       0  /* '-' */
 #define HB_ROLE_MOBILE     1  /* 'M' */
 #define HB_ROLE_SUBSTRATE  2  /* 'S' */
+#define HB_ROLE_LETTER_NONE       '-'
+#define HB_ROLE_LETTER_MOBILE     'M'
+#define HB_ROLE_LETTER_SUBSTRATE  'S'
 
 #endif /* HEXBOT_CODES_H */

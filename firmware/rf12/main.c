@@ -71,9 +71,9 @@ int main(void)
     uart_init(UART1, HB_BAUD_DEBUG);
     power_on_leds();
     rf12_init();
-    uart_puts_P(UART1, PSTR("\n\r\n\rRF12 READY"));
+    uart_puts_P(UART1, PSTR(HB_PREAMBLE HB_TEXT_RF12_READY));
     uart_puts_P(UART1, rf12_board_tx_mode() ? PSTR(" MODE=TX") : PSTR(" MODE=RX"));
-    uart_puts_P(UART1, PSTR(" FW=" HB_FW_VERSION "\n\r"));
+    uart_puts_P(UART1, PSTR(HB_TEXT_FW_TAIL HB_FW_VERSION HB_EOL));
     if (rf12_board_tx_mode())
         tx_test();
     rx_test();
