@@ -4,8 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0x958e52f1UL
-#define HB_SCHEMA_HASH_TEXT "958e52f1"
+#define HB_SCHEMA_HASH 0xfd53df7cUL
+#define HB_SCHEMA_HASH_TEXT "fd53df7c"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */
@@ -31,6 +31,9 @@
 #define HB_RF12_CMD_RATE    0xC647u
 #define HB_RF12_CMD_SYNC    0xCED4u
 #define HB_RF12_PAYLOAD     16u
+/* a packet: preamble and sync, the payload, its checksum, the trailer */
+#define HB_RF12_HEAD {0xAA, 0xAA, 0xAA, 0x2D, 0xD4}
+#define HB_RF12_TRAILER {0xAA, 0xAA, 0xAA}
 #define HB_RF12_LINK_BYTES  15u
 
 /* Fuses (Table 3-6) and part */

@@ -62,7 +62,8 @@ uint8_t rf12_send_packet(const uint8_t *data)
     uint8_t sum = 0;
     rf12_board_xfer(0x0000);  /* read status: clears a pending interrupt */
     rf12_board_xfer(0x8239);  /* transmitter on */
-    static const uint8_t head[] = {0xAA, 0xAA, 0xAA, 0x2D, 0xD4};
+    static const uint8_t head[] = HB_RF12_HEAD;
+    static const uint8_t trailer[] = HB_RF12_TRAILER;
     for (uint8_t i = 0; i < sizeof head; i++)
         ok &= send_byte(head[i]);
     for (uint8_t i = 0; i < RF12_PAYLOAD; i++) {
@@ -70,8 +71,8 @@ uint8_t rf12_send_packet(const uint8_t *data)
         sum = (uint8_t)(sum + data[i]);
     }
     ok &= send_byte(sum);
-    for (uint8_t i = 0; i < 3; i++)
-        ok &= send_byte(0xAA); /* dummy bytes flush the shift register */
+    for (uint8_t i = 0; i < sizeof trailer; i++)
+        ok &= send_byte(trailer[i]); /* dummy bytes flush the shift register */
     rf12_board_xfer(0x8201);  /* transmitter off */
     return ok;
 }
