@@ -39,7 +39,14 @@ from hexbot.host.session import Session, select
 from hexbot.protocol import frames, timing, wire
 from hexbot.protocol.codes import CODES, Board
 from hexbot.protocol.mavlink_codec import Framing
-from hexbot.protocol.parser import Ack, ControlMessage, ReplyParser
+from hexbot.protocol.parser import (
+    Ack,
+    ControlMessage,
+    ReplyParser,
+    reply_ack,
+    reply_error,
+    reply_status,
+)
 
 RATES = (3e-4, 1e-3, 3e-3, 1e-2, 3e-2)
 FRAMINGS = ("legacy", "mavlink")
@@ -177,14 +184,17 @@ def air_times() -> list[tuple[str, int, int | None]]:
         cmd = frames.make(name, *args)
         rows.append((f"HEXBOT_COMMAND {cmd}", len(enc.encode(cmd, target=MODULE)),
                      wire.PC_FRAME_LEN))
-    prefix = len(wire.PREAMBLE) + len("M01: ")
+    # the legacy replies as the firmware sends them (the parser's encoders, the
+    # localization report of protocol/timing.py)
     replies = (
-        ("HEXBOT_ACK done", m.MAVLink_hexbot_ack_message(1, 1, 0, 0), prefix + 3 + 1 + 2),
-        ("HEXBOT_ACK error", m.MAVLink_hexbot_ack_message(1, 1, 1, 1), prefix + 3 + 2 + 2),
+        ("HEXBOT_ACK done", m.MAVLink_hexbot_ack_message(1, 1, 0, 0),
+         len(reply_ack(1, "M", MODULE))),
+        ("HEXBOT_ACK error", m.MAVLink_hexbot_ack_message(1, 1, 1, 1),
+         len(reply_error(1, 1, "M", MODULE))),
         ("HEXBOT_STATUS", m.MAVLink_hexbot_status_message(0xD3A1B21B, 2, 1, -3, 2, 1, 0, 0),
-         prefix + 3 + 7 + 8 + 2),
+         len(reply_status(MODULE, "S", True, -3, 2, 1, 0, "S", 0xD3A1B21B))),
         ("HEXBOT_LOCALIZED", m.MAVLink_hexbot_localized_message(4, 1, -3, 2),
-         len(wire.PREAMBLE) + len("LOCALIZED\n\rSide: 4\n\rYref: 1\n\rPos: -03+02\n\r")),
+         len(timing.LOCALIZE_REPORT)),
     )
     for name, msg, legacy in replies:
         rows.append((name, len(msg.pack(mav)), legacy))
