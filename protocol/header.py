@@ -49,6 +49,8 @@ def _timing() -> list[str]:
         f"#define HB_ACK_SLOT_TICKS   {t.ACK_SLOT_TICKS}u",
         f"#define HB_PC_BYTE_TIMEOUT_TICKS {t.PC_BYTE_TIMEOUT_TICKS}u",
         f"#define HB_IRSEL_HOLD_TICKS {t.IRSEL_HOLD_TICKS}u",
+        f"#define HB_YREF_BLINK_TICKS {t.YREF_BLINK_TICKS}u",
+        f"#define HB_REF_SHOWS        {t.REF_SHOWS}u",
         "/* Longest replies in addressed mode (preamble, 'M255: ', body) and their slots */",
         f"#define HB_REPLY_BYTES_ACK  {t.REPLY_BYTES_ACK}u",
         f"#define HB_REPLY_BYTES_ERR  {t.REPLY_BYTES_ERR}u",

@@ -175,6 +175,10 @@ LOCALIZE_WINDOW_S = LOC_WINDOW_TICKS * TICK_S
 # --- other firmware time-outs the PC can see -----------------------------------
 
 PC_BYTE_TIMEOUT_TICKS = 34  # a PC frame with a gap of 10 byte times is dropped
+#: LYref (code 30) shows global +Y on the side facing it: one LED pole, then
+#: the other, for YREF_BLINK_TICKS each; Ref (code 65) shows it REF_SHOWS times.
+YREF_BLINK_TICKS = 10
+REF_SHOWS = 3
 IRSEL_HOLD_TICKS = 1000  # IrSel falls back to the centre after 10 s of silence
 
 # --- how long a function keeps the comm board before it replies ---------------
@@ -197,9 +201,9 @@ _RUN_BY_NAME = {
     "MCW": _rotation, "MCCW": _rotation, "SCW": _rotation, "SCCW": _rotation,
     "SidePTest": _walk(6), "SideNTest": _walk(6), "JointTest": _walk(6),
     "LCircle": _walk(18), "LColor": _walk(3), "LFlash1": _walk(1), "LFlash2": _walk(1),
-    "LYref": lambda a: 20,  # two 10-tick blinks
+    "LYref": lambda a: 2 * YREF_BLINK_TICKS,  # two blinks
     "LMCW": _rotation, "LMCCW": _rotation, "LSCW": _rotation, "LSCCW": _rotation,
-    "Ref": lambda a: 3 * 20,  # LYref three times
+    "Ref": lambda a: REF_SHOWS * 2 * YREF_BLINK_TICKS,  # LYref REF_SHOWS times
     "CW": lambda a: max(_rotation(a[0:4]), _rotation(a[4:8])),  # the longer half
     "CCW": lambda a: max(_rotation(a[0:4]), _rotation(a[4:8])),
 }

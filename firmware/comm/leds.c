@@ -110,10 +110,10 @@ static void show_yref(uint8_t dir)
     uint8_t side = seq_around(2, (int8_t)-(int8_t)g_state.yref);
     comm_led_side(side, POLE_P, 1);
     comm_led_side(side, POLE_N, 0);
-    WAIT(10);
+    WAIT(HB_YREF_BLINK_TICKS);
     comm_led_side(side, POLE_N, 1);
     comm_led_side(side, POLE_P, 0);
-    WAIT(10);
+    WAIT(HB_YREF_BLINK_TICKS);
     comm_led_side(side, POLE_N, 0);
 }
 

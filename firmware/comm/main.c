@@ -290,7 +290,7 @@ static void comm_function(uint8_t code, const uint8_t *a, tick_t received)
         g_state.role = HB_ROLE_SUBSTRATE;
         g_state.x = g_state.y = 0;
         g_state.yref = 0;
-        for (uint8_t k = 0; k < 3; k++)
+        for (uint8_t k = 0; k < HB_REF_SHOWS; k++)
             leds_run(HB_FN_LYREF, (const uint8_t *)"\0");
         break;
     case HB_FN_LOCALIZE:

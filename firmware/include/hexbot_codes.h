@@ -4,8 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0xfd53df7cUL
-#define HB_SCHEMA_HASH_TEXT "fd53df7c"
+#define HB_SCHEMA_HASH 0x0563cf55UL
+#define HB_SCHEMA_HASH_TEXT "0563cf55"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */
@@ -53,6 +53,8 @@
 #define HB_ACK_SLOT_TICKS   60u
 #define HB_PC_BYTE_TIMEOUT_TICKS 34u
 #define HB_IRSEL_HOLD_TICKS 1000u
+#define HB_YREF_BLINK_TICKS 10u
+#define HB_REF_SHOWS        3u
 /* Longest replies in addressed mode (preamble, 'M255: ', body) and their slots */
 #define HB_REPLY_BYTES_ACK  16u
 #define HB_REPLY_BYTES_ERR  17u
