@@ -73,8 +73,7 @@ class PcRadio:
     def __init__(self, cell: Any, hz: int) -> None:
         self.cell = cell
         self.channel: Channel = rf.channel()
-        rate = rf.CMD_DATA_RATE
-        self._div = 29 * ((rate & 0x7F) + 1) * (8 if rate & 0x80 else 1)
+        self._div = rf.rate_divider()
         self._hz = hz
         self._ir_byte = round(BYTE_BITS * hz / BAUD_IR)
         self.tx: deque[tuple[int, int, int]] = deque()  # (start, end, byte)

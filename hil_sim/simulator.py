@@ -43,6 +43,7 @@ from hexbot.protocol.pins import (
     RF12_LINK_UART,
     RF12_SPI_PINS,
     SELECTOR_PINS,
+    SELECTOR_PORT,
 )
 from hexbot.protocol.timing import (
     BAUD_BOARD,
@@ -144,9 +145,7 @@ class Simulator:
             control = self.cluster.add_mcu(str(spec.firmware.control), f"control{spec.id}")
             self.cluster.connect_uart(comm, 0, control, 0)
             if self.ir_in_c:
-                sel_port = {p for p, _ in SELECTOR_PINS}
-                assert len(sel_port) == 1, "the core reads the selector from one port"
-                self.cluster.ir_attach(comm, 1, sel_port.pop(), tuple(b for _, b in SELECTOR_PINS))
+                self.cluster.ir_attach(comm, 1, SELECTOR_PORT, tuple(b for _, b in SELECTOR_PINS))
                 # the plant must see actuator changes when they happen, not
                 # at the next IR byte as before
                 self.cluster.wake_on_pins(control, "".join(CONTROL_PORTS))
@@ -432,7 +431,7 @@ class Simulator:
                 changes.append((cycle, module.id, board, port, value))
                 if board == "comm":
                     module.comm_ports[port] = value
-                    if port == "A":
+                    if port == SELECTOR_PORT:
                         module.record_selector(cycle, value, keep_from)
         changes.sort(key=lambda c: (c[0], c[1], c[2]))
         for cycle, module_id, board, port, value in changes:

@@ -14,6 +14,8 @@ from typing import Any, TextIO
 
 from vcd import VCDWriter
 
+from hexbot.protocol.pins import SELECTOR_PORT
+
 from .module import (
     JOINT_PINS,
     LED_PINS,
@@ -69,7 +71,7 @@ class VcdWriter:
                 if s.board != board:
                     continue
                 if s.pin is None:
-                    new = selector_index(ports.get("A", 0))
+                    new = selector_index(ports.get(SELECTOR_PORT, 0))
                 elif s.pin[0] != port:
                     continue
                 else:

@@ -38,6 +38,7 @@ LED_JOINT_PINS: tuple[Pin, ...] = (("D", 7), ("A", 7), ("E", 2), ("C", 5), ("C",
 #: listing's IrSel() writes Y1 (side 6) as PA2 alone and Y4 (side 5) as PA0
 #: alone, so A = PA2 and C = PA0, as Table 3-3 says.
 SELECTOR_PINS: tuple[Pin, ...] = (("A", 2), ("A", 1), ("A", 0))
+SELECTOR_PORT = SELECTOR_PINS[0][0]  # all three lines are on one port (PORTA)
 COMM_PORTS = ("A", "C", "D", "E")
 
 # --- wireless board (Appendix A, "Wireless SPI") ----------------------------------

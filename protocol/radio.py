@@ -34,10 +34,15 @@ def channel() -> tuple[int, int, int]:
     return ((CMD_CONFIG >> 4) & 0x3, CMD_FREQUENCY & 0x0FFF, CMD_DATA_RATE & 0xFF)
 
 
+def rate_divider(rate_word: int = CMD_DATA_RATE) -> int:
+    """Crystal cycles per bit of a 0xC6xx word: 29 (R + 1) (1 + 7 cs)."""
+    r, cs = rate_word & 0x7F, (rate_word >> 7) & 1
+    return 29 * (r + 1) * (1 + 7 * cs)
+
+
 def bit_rate(rate_word: int = CMD_DATA_RATE) -> float:
     """Bits per second of a 0xC6xx word: 10 MHz / 29 / (R + 1) / (1 + 7 cs)."""
-    r, cs = rate_word & 0x7F, (rate_word >> 7) & 1
-    return XTAL_HZ / 29 / (r + 1) / (1 + 7 * cs)
+    return XTAL_HZ / rate_divider(rate_word)
 
 
 def checksum(payload: bytes) -> int:
