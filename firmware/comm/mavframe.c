@@ -55,6 +55,9 @@ static const mavlink_msg_entry_t *mavlink_get_msg_entry(uint32_t msgid);
 #include "mavlink/hexbot/mavlink.h"
 #pragma GCC diagnostic pop
 
+/* main.c tells a MAVLink frame by its first byte without the generated headers */
+_Static_assert(MAV_START == MAVLINK_STX, "MAV_START is not the generated MAVLINK_STX");
+
 static const mavlink_msg_entry_t entries[] PROGMEM = MAVLINK_MESSAGE_CRCS;
 
 static const mavlink_msg_entry_t *mavlink_get_msg_entry(uint32_t msgid)
