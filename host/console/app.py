@@ -53,6 +53,7 @@ from hexbot.host.link import LinkState, PortSettings
 from hexbot.host.replay_control import ReplayControl
 from hexbot.host.session import Outcome, Session, select
 from hexbot.protocol import frames, wire
+from hexbot.protocol.codes import Role, lookup
 from hexbot.protocol.frames import Command
 from hexbot.protocol.simulation import PlantVerdict, Refused
 
@@ -74,6 +75,11 @@ WAIT_TICK_S = 0.25
 BOARDS_TICK_S = 0.2  # the Boards tab's poll of the simulated pins
 
 
+def _code(name: str) -> int:
+    """A function's code, as the menus show it (Table 3-7)."""
+    return lookup(name).code
+
+
 class HexBotConsole(App[None]):
     CSS_PATH = "console.tcss"
     TITLE = "HexBot console"
@@ -83,16 +89,23 @@ class HexBotConsole(App[None]):
             ("lattice", "Lattice"), ("ports", "Ports"))
     #: (action, palette title, help) of the thesis workflows
     WORKFLOWS = (
-        ("select", "Select modules (69)", "address the following commands to module ids"),
-        ("ref", "Make reference (65)", "the selected module becomes (0,0), Yref 0, role S"),
-        ("localize", "Localize cluster (66)", "Ref, then localization and status of all"),
-        ("status", "Status (70)", "status of the selected modules (or all)"),
-        ("rotate", "Rotate CW/CCW (67/68)", "rotate a mobile module about a lattice joint"),
+        ("select", f"Select modules ({_code('Select')})",
+         "address the following commands to module ids"),
+        ("ref", f"Make reference ({_code('Ref')})",
+         "the selected module becomes (0,0), Yref 0, role S"),
+        ("localize", f"Localize cluster ({_code('Localize')})",
+         "Ref, then localization and status of all"),
+        ("status", f"Status ({_code('Status')})", "status of the selected modules (or all)"),
+        ("rotate", f"Rotate CW/CCW ({_code('CW')}/{_code('CCW')})",
+         "rotate a mobile module about a lattice joint"),
         ("plan", "Plan and execute (goal file)",
          "localize, plan to a goal configuration, check the plan, execute and verify it"),
-        ("all_off", "All actuators off (20)", "TurnOffAll to every module"),
-        ("set_role", "Set role (71)", "mobile (1) or substrate (2) for the selected modules"),
-        ("clear_error", "Clear error (72)", "clear the last error of the selected modules"),
+        ("all_off", f"All actuators off ({_code('TurnOffAll')})", "TurnOffAll to every module"),
+        ("set_role", f"Set role ({_code('SetRole')})",
+         f"mobile ({Role.MOBILE.value}) or substrate ({Role.SUBSTRATE.value}) for the selected "
+         "modules"),
+        ("clear_error", f"Clear error ({_code('ClearError')})",
+         "clear the last error of the selected modules"),
         ("cancel", "Cancel operation", "stop the running workflow"),
         ("cycle_mode", "Terminal view: decoded/text/hex", "cycle how terminals show bytes"),
         ("cycle_stamps", "Time stamps: session/wall clock", "seconds since start or time of day"),

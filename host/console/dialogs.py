@@ -10,6 +10,8 @@ from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.screen import ModalScreen
 from textual.widgets import Button, Input, Label, Markdown, Select
 
+from hexbot.protocol.codes import lookup
+
 HELP = """\
 # HexBot console
 
@@ -98,7 +100,8 @@ class RotateScreen(ModalScreen[tuple[str, int, int, int] | None]):
             yield Label("Rotate the mobile module about a lattice joint (Table 3-1 timings)")
             with Horizontal(classes="form-row"):
                 yield Label("direction", classes="form-label")
-                yield Select([("CW (67)", "cw"), ("CCW (68)", "ccw")], value="cw",
+                yield Select([(f"CW ({lookup('CW').code})", "cw"),
+                              (f"CCW ({lookup('CCW').code})", "ccw")], value="cw",
                              allow_blank=False, id="rot-dir")
             with Horizontal(classes="form-row"):
                 yield Label("joint 1..6", classes="form-label")
