@@ -55,10 +55,6 @@ from hexbot.toml_lines import TomlLines as _Lines
 
 from .geometry import Cell
 
-#: A module's id is its control board's DIP switches: up to 255 modules. (The
-#: legacy Select frame addresses 1..63, MAVLink frames all of them.)
-MAX_ID = MAX_MODULE_ID
-COORD_LIMIT = LOC_COORD_LIMIT  # MSG1 carries two decimal digits per coordinate
 MAX_CLOCK_PPM = round(CLOCK_TOLERANCE * 1e6)  # an RC clock further off cannot talk at all
 PC = "pc"
 
@@ -232,10 +228,10 @@ def parse_scenario(text: str, path: Path) -> Scenario:
         module_id = raw.get("id")
         if not isinstance(module_id, int) or isinstance(module_id, bool):
             raise fail(lines.find("module", index, "id"), "module id must be an integer")
-        if not 1 <= module_id <= MAX_ID:
+        if not 1 <= module_id <= MAX_MODULE_ID:
             raise fail(
                 lines.find("module", index, "id"),
-                f"module id {module_id} outside 1..{MAX_ID} (DIP switches PC0..PC7)",
+                f"module id {module_id} outside 1..{MAX_MODULE_ID} (DIP switches PC0..PC7)",
             )
         if module_id in ids:
             raise fail(
@@ -252,8 +248,8 @@ def parse_scenario(text: str, path: Path) -> Scenario:
         ):
             raise fail(pos_line, f"position must be [x, y] with two integers, not {pos!r}")
         cell = (pos[0], pos[1])
-        if max(abs(cell[0]), abs(cell[1])) > COORD_LIMIT:
-            raise fail(pos_line, f"position {list(cell)} outside +-{COORD_LIMIT}")
+        if max(abs(cell[0]), abs(cell[1])) > LOC_COORD_LIMIT:
+            raise fail(pos_line, f"position {list(cell)} outside +-{LOC_COORD_LIMIT}")
         if cell in cells:
             raise fail(pos_line, f"cell {list(cell)} already holds module {cells[cell]}")
         cells[cell] = module_id

@@ -18,9 +18,10 @@ from __future__ import annotations
 import random
 
 from hexbot.errors import ScenarioError
+from hexbot.protocol.wire import LOC_COORD_LIMIT, MAX_MODULE_ID
 
 from .geometry import SIDES, Cell, neighbor
-from .scenario import COORD_LIMIT, MAX_ID, ModuleSpec, Scenario, load_scenario
+from .scenario import ModuleSpec, Scenario, load_scenario
 
 SHAPES = ("blob", "line")
 
@@ -56,14 +57,14 @@ def generate(shape: str, count: int, seed: int = 1) -> Scenario:
     """``count`` modules in a ``shape`` ("blob" or "line"), drawn from ``seed``."""
     if shape not in SHAPES:
         raise ScenarioError(f"unknown shape {shape!r}: generated shapes are {', '.join(SHAPES)}")
-    if not 1 <= count <= MAX_ID:
-        raise ScenarioError(f"{count} modules: a cluster has 1..{MAX_ID} (8 DIP switches)")
+    if not 1 <= count <= MAX_MODULE_ID:
+        raise ScenarioError(f"{count} modules: a cluster has 1..{MAX_MODULE_ID} (8 DIP switches)")
     rng = random.Random(seed)
     cells = _blob(count, rng) if shape == "blob" else _line(count)
     far = max(max(abs(x), abs(y)) for x, y in cells)
-    if far > COORD_LIMIT:
+    if far > LOC_COORD_LIMIT:
         raise ScenarioError(
-            f"a {shape} of {count} modules reaches coordinate {far}, beyond +-{COORD_LIMIT} "
+            f"a {shape} of {count} modules reaches coordinate {far}, beyond +-{LOC_COORD_LIMIT} "
             "(MSG1 carries two decimal digits)"
         )
     firmware = load_scenario("single").modules[0].firmware

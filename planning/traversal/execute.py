@@ -25,7 +25,7 @@ from hexbot.planning.traversal.engine import Result
 from hexbot.planning.traversal.surface import Surface, shifted
 from hexbot.protocol.lattice import Cell, distance
 
-#: The legacy Select frame addresses modules 1..63 (hil_sim/scenario.py MAX_ID is the DIP range).
+#: The legacy Select frame addresses modules 1..63 (wire.MAX_MODULE_ID is the DIP range).
 MAX_MODULES = 63
 
 

@@ -4,8 +4,9 @@ import pytest
 
 from hexbot.errors import ScenarioError
 from hexbot.hil_sim.geometry import SIDES, neighbor
-from hexbot.hil_sim.scenario import MAX_ID, load_scenario
+from hexbot.hil_sim.scenario import load_scenario
 from hexbot.hil_sim.scenario_gen import generate
+from hexbot.protocol.wire import MAX_MODULE_ID
 
 
 def connected(cells) -> bool:
@@ -20,7 +21,7 @@ def connected(cells) -> bool:
     return seen == cells
 
 
-@pytest.mark.parametrize("count", [1, 7, 50, MAX_ID])
+@pytest.mark.parametrize("count", [1, 7, 50, MAX_MODULE_ID])
 def test_blob_is_connected_with_ids_one_to_count(count):
     scenario = generate("blob", count, seed=4)
     cells = [m.position for m in scenario.modules]
