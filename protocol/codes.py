@@ -225,6 +225,10 @@ class ErrorCode(enum.IntEnum):
     NO_ROLE = 6  # a combined rotation reached a module without a role
     NOT_HEARD = 7  # localization: no neighbour message heard on any side
     BUSY = 8  # frames came faster than the module ran them: the newest was dropped
+    STOPPED = 9  # a newer control command stopped this sequence before its end
+    WATCHDOG_RESET = 10  # the comm board restarted by its watchdog: role, place lost
+    BROWN_OUT = 11  # the comm board restarted after its supply sagged
+    CONTROL_RESTARTED = 12  # the control board restarted: every actuator dropped
 
 
 class Role(enum.IntEnum):

@@ -32,6 +32,11 @@ uint8_t inbox_count(void)
     return count;
 }
 
+const inbox_entry_t *inbox_peek(uint8_t k)
+{
+    return &entries[wrap((uint8_t)(head + k))];
+}
+
 uint8_t inbox_take(inbox_entry_t *out)
 {
     if (!count)

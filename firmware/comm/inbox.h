@@ -32,6 +32,9 @@ uint8_t inbox_keep(void);
 /** Frames waiting. */
 uint8_t inbox_count(void);
 
+/** The @p k-th oldest waiting frame (k < inbox_count()). */
+const inbox_entry_t *inbox_peek(uint8_t k);
+
 /** Move the oldest frame to @p out; 0 when there is none. */
 uint8_t inbox_take(inbox_entry_t *out);
 

@@ -150,7 +150,9 @@ void leds_run(uint8_t code, const uint8_t *a)
     }
 }
 
-void leds_mirror(uint8_t code, const uint8_t *a)
+uint8_t leds_mirror(uint8_t code, const uint8_t *a)
 {
+    seq_take_stopped();
     seq_run_function(&outputs, code, a);
+    return seq_take_stopped();
 }

@@ -18,7 +18,9 @@ void leds_joint_all(uint8_t on);
 /** Run LED function @p code with arguments a[0..3] (range-checked). */
 void leds_run(uint8_t code, const uint8_t *a);
 
-/** LED echo of a control-board function (what the thesis showed). */
-void leds_mirror(uint8_t code, const uint8_t *a);
+/** LED echo of a control-board function (what the thesis showed), as long
+ *  as the function runs on the control board; 1 when the wait hook stopped
+ *  it before its end. */
+uint8_t leds_mirror(uint8_t code, const uint8_t *a);
 
 #endif /* LEDS_H */

@@ -8,6 +8,7 @@
  * and acknowledged with the control board's echo. The board sleeps between
  * interrupts; every wait is bounded.
  */
+#include <avr/io.h>
 #include <avr/pgmspace.h>
 #include <string.h>
 
@@ -29,6 +30,9 @@
 
 #define HANDSHAKE_TICKS 300u       /* wait this long for the control board at boot */
 #define HANDSHAKE_RETRY_TICKS 10u  /* resend 'R' every 100 ms (thesis) */
+/* A control board that booted with us says 'R' after its 0.7 s self-test;
+ * past this, it is already listening (only we restarted) and we ask. */
+#define HANDSHAKE_PROBE_TICKS 100u
 #define LINK_ID_TICKS 3u           /* the id byte follows 'R'/'L' at once */
 
 /* Boot slots: every module of a cluster boots at once and the PC hears them
@@ -44,6 +48,9 @@ module_state_t g_state;
 static frame_rx_t pc_rx;
 static tick_t last_ir_byte;
 static uint8_t control_ready; /* 'R' seen from the control board */
+static uint8_t booted;        /* past the boot handshake: a new 'R' is a restart */
+static uint8_t mirroring;     /* a control function's LED echo is running */
+static uint8_t off_unechoed;  /* a TurnOffAll went out whose echo may still come */
 static const uint8_t *boot_next; /* boot text still to queue (see boot_texts) */
 static uint8_t boot_left;
 
@@ -60,6 +67,8 @@ static void link_byte(uint8_t b)
     if (b == HB_LINK_READY) {
         control_ready = 1;
         g_state.control_up = 0;
+        if (booted) /* reset or brown-out: its magnets and joints dropped */
+            g_state.last_error = HB_ERR_CONTROL_RESTARTED;
         uart_putc(CTRL, HB_LINK_READY);
     } else {
         g_state.control_up = 1;
@@ -145,15 +154,45 @@ static uint8_t poll_inputs(void)
 {
     int16_t b;
     poll_ir();
-    while ((b = uart_getc(CTRL)) >= 0)
-        link_byte((uint8_t)b);
+    while ((b = uart_getc(CTRL)) >= 0) {
+        if (b == HB_FN_TURN_OFF_ALL)
+            off_unechoed = 0; /* the late echo of control_off(0) */
+        else
+            link_byte((uint8_t)b);
+    }
     return inbox_count() != 0;
+}
+
+/* A frame that would drive the control board. */
+static uint8_t drives_control(uint8_t code)
+{
+    return table_board(code) == HB_BOARD_CONTROL || code == HB_FN_CW || code == HB_FN_CCW;
+}
+
+/* While a control function runs, only a frame that drives the control board
+ * stops it (whoever it is addressed to: control_off() makes the stop real);
+ * a Status or an LED function waits in the inbox until it has ended. */
+static uint8_t poll_control_stop(void)
+{
+    uint8_t n = poll_inputs();
+    for (uint8_t k = 0; n && k < inbox_count(); k++)
+        if (drives_control(inbox_peek(k)->frame[1]))
+            return 1;
+    return 0;
 }
 
 /* Sequence delay that gives way to a new PC command. */
 static uint8_t wait_or_abort(tick_t n)
 {
-    return sys_delay_polling(n, poll_inputs, ir_due);
+    return sys_delay_polling(n, mirroring ? poll_control_stop : poll_inputs, ir_due);
+}
+
+static void send_board_frame(uint8_t code, const uint8_t *a)
+{
+    uart_putc(CTRL, HB_START);
+    uart_putc(CTRL, code);
+    uart_write(CTRL, a, HB_BOARD_ARGS);
+    uart_putc(CTRL, HB_END);
 }
 
 /* Forward a control-board function; returns the echo, HB_TIMEOUT, or the
@@ -162,10 +201,7 @@ static uint8_t wait_or_abort(tick_t n)
  * arrive go to the inbox and run after this one. */
 static uint8_t forward(uint8_t code, const uint8_t *a)
 {
-    uart_putc(CTRL, HB_START);
-    uart_putc(CTRL, code);
-    uart_write(CTRL, a, HB_BOARD_ARGS);
-    uart_putc(CTRL, HB_END);
+    send_board_frame(code, a);
     tick_t start = tick_now();
     while (tick_since(start) < HB_CONTROL_ACK_TIMEOUT_TICKS) {
         uint8_t mark = sys_io_events;
@@ -175,8 +211,15 @@ static uint8_t forward(uint8_t code, const uint8_t *a)
             sys_idle_until(ir_due((tick_t)(start + HB_CONTROL_ACK_TIMEOUT_TICKS)), mark);
             continue;
         }
-        if (b == code)
+        if (b == code) {
+            if (code == HB_FN_TURN_OFF_ALL)
+                off_unechoed = 0;
             return code;
+        }
+        if (off_unechoed && b == HB_FN_TURN_OFF_ALL) {
+            off_unechoed = 0;
+            continue;
+        }
         if (b == HB_LINK_READY || b == HB_LINK_LISTENING) {
             link_byte((uint8_t)b); /* the control board restarted meanwhile */
             continue;
@@ -188,22 +231,54 @@ static uint8_t forward(uint8_t code, const uint8_t *a)
 
 /* --- functions ------------------------------------------------------------ */
 
-static void control_function(uint8_t code, const uint8_t *a)
+/* Every actuator off on the control board: after a broken exchange, what it
+ * runs is unknown. @p wait_echo 0 when it did not answer at all: the frame
+ * goes out, and its late echo is dropped (forward(), poll_inputs()). */
+static void control_off(uint8_t wait_echo)
 {
-    uint8_t echo = forward(code, a);
+    static const uint8_t none[HB_BOARD_ARGS];
+    if (wait_echo) {
+        forward(HB_FN_TURN_OFF_ALL, none);
+    } else {
+        send_board_frame(HB_FN_TURN_OFF_ALL, none);
+        off_unechoed = 1;
+    }
+}
+
+/* Function @p run on the control board for the PC's @p code; the LED echo
+ * lasts as long as it runs, and the ACK says it ran to its end. A control
+ * frame that arrives meanwhile stops it: ERR STOPPED, never ACK. @p moves:
+ * this module's cell changes (it is no longer localized). */
+static void drive_control(uint8_t code, uint8_t run, const uint8_t *args, uint8_t moves)
+{
+    uint8_t echo = forward(run, args);
     if (echo == HB_TIMEOUT) {
         g_state.last_error = HB_ERR_CONTROL_TIMEOUT;
         reply_ack(HB_TIMEOUT); /* the thesis' '~' */
+        control_off(0);
         return;
     }
-    if (echo != code) {
+    if (echo != run) {
+        control_off(1);
         reply_err(code, HB_ERR_CONTROL_MISMATCH);
         return;
     }
-    if ((code == HB_FN_MCW || code == HB_FN_MCCW) && !g_state.reference)
-        g_state.localized = 0; /* the mobile module moved */
-    leds_mirror(code, a);
+    if (moves && !g_state.reference)
+        g_state.localized = 0; /* the mobile module moved, or began to */
+    mirroring = 1;
+    uint8_t stopped = leds_mirror(run, args);
+    mirroring = 0;
+    if (stopped) {
+        control_off(1);
+        reply_err(code, HB_ERR_STOPPED);
+        return;
+    }
     reply_ack(code);
+}
+
+static void control_function(uint8_t code, const uint8_t *a)
+{
+    drive_control(code, code, a, code == HB_FN_MCW || code == HB_FN_MCCW);
 }
 
 /* 67/68: the substrate runs SCW/SCCW(si..), the mobile MCW/MCCW(mi..). */
@@ -217,20 +292,7 @@ static void combined_rotation(uint8_t code, const uint8_t *a)
         reply_err(code, HB_ERR_NO_ROLE);
         return;
     }
-    uint8_t echo = forward(run, args);
-    if (echo == HB_TIMEOUT) {
-        g_state.last_error = HB_ERR_CONTROL_TIMEOUT;
-        reply_ack(HB_TIMEOUT);
-        return;
-    }
-    if (echo != run) {
-        reply_err(code, HB_ERR_CONTROL_MISMATCH);
-        return;
-    }
-    if (!sub && !g_state.reference)
-        g_state.localized = 0; /* the mobile module moved */
-    leds_mirror(run, args);
-    reply_ack(code);
+    drive_control(code, run, args, !sub);
 }
 
 static void localize(uint8_t code, tick_t started)
@@ -347,11 +409,17 @@ static uint8_t handshake(void)
 {
     uint8_t texts = BOOT_COMM_LISTENING;
     tick_t start = tick_now();
-    while (!control_ready && tick_since(start) < HANDSHAKE_TICKS) {
+    tick_t probe = (tick_t)(start + HANDSHAKE_PROBE_TICKS);
+    while (!control_ready && !g_state.control_up && tick_since(start) < HANDSHAKE_TICKS) {
         uint8_t mark = sys_io_events;
+        if ((int16_t)(tick_now() - probe) >= 0) { /* a listening board answers 'L' id */
+            uart_putc(CTRL, HB_LINK_READY);
+            probe = (tick_t)(tick_now() + HANDSHAKE_RETRY_TICKS);
+        }
         poll_inputs();
-        if (!control_ready)
-            sys_idle_until(ir_due((tick_t)(start + HANDSHAKE_TICKS)), mark);
+        if (!control_ready && !g_state.control_up)
+            sys_idle_until(ir_due(tick_earlier((tick_t)(start + HANDSHAKE_TICKS), probe)),
+                           mark);
     }
     if (control_ready) {
         leds_run(HB_FN_LFLASH1, flash_args);
@@ -419,8 +487,16 @@ int main(void)
     leds_init(wait_or_abort);
     reply_init(poll_inputs, ir_due);
 
+    /* A restart the PC did not ask for leaves its trace in Status. */
+    uint8_t why = sys_reset_flags();
+    if (why & (1u << WDRF))
+        g_state.last_error = HB_ERR_WATCHDOG_RESET;
+    else if (why & (1u << BORF))
+        g_state.last_error = HB_ERR_BROWN_OUT;
+
     boot();
     inbox_clear(); /* nothing sent during boot is for us */
+    booted = 1;
 
     /* Idle: sleep through the ticks until a byte comes or a time-out is due
      * (docs/firmware.md, "The idle path"). */

@@ -15,6 +15,7 @@
 
 static wait_fn wait_hook;
 static void (*stop_hook)(void);
+static uint8_t stopped; /* a pattern stopped since seq_take_stopped() */
 
 #define WAIT SEQ_WAIT
 
@@ -29,7 +30,15 @@ uint8_t seq_wait(tick_t ticks)
     if (!wait_hook(ticks))
         return 0;
     stop_hook();
+    stopped = 1;
     return 1;
+}
+
+uint8_t seq_take_stopped(void)
+{
+    uint8_t was = stopped;
+    stopped = 0;
+    return was;
 }
 
 uint8_t seq_around(uint8_t i, int8_t k)

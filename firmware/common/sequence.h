@@ -48,6 +48,9 @@ uint8_t seq_wait(tick_t ticks);
             return;          \
     } while (0)
 
+/** 1 when a pattern was stopped by the wait hook since the last call. */
+uint8_t seq_take_stopped(void);
+
 /** Side/joint i + k around the hexagon, for i in 1..6 and k in -6..6. */
 uint8_t seq_around(uint8_t i, int8_t k);
 

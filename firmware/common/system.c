@@ -50,9 +50,14 @@ __asm__(".pushsection .text.__vector_17,\"ax\",@progbits\n"
         ".size __vector_17, .-__vector_17\n"
         ".popsection\n");
 
+static uint8_t reset_flags;
+
 void sys_init(void)
 {
-    /* Board init ran first (microseconds): only now may the watchdog start. */
+    /* Board init ran first (microseconds): only now may the watchdog start.
+     * The reset flags are kept for sys_reset_flags() before they are cleared
+     * (a set WDRF would keep the next reset's cause ambiguous). */
+    reset_flags = MCUCSR;
     MCUCSR = 0;
     wdt_disable();
     TCCR0 = 0;
@@ -62,6 +67,11 @@ void sys_init(void)
     set_sleep_mode(SLEEP_MODE_IDLE);
     wdt_enable(WDTO_2S);
     sei();
+}
+
+uint8_t sys_reset_flags(void)
+{
+    return reset_flags;
 }
 
 tick_t tick_now(void)
@@ -113,6 +123,9 @@ void sys_delay(tick_t n)
 
 uint8_t sys_delay_polling(tick_t n, uint8_t (*poll)(void), due_fn due)
 {
+    /* A pattern of zero-tick waits (LCircle(255, 0): 9,180 of them) never
+     * sleeps, so it is fed here; every such pattern is bounded. */
+    wdt_reset();
     tick_t start = tick_now();
     while (tick_since(start) < n) {
         uint8_t mark = sys_io_events;

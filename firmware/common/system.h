@@ -26,6 +26,9 @@ typedef uint16_t tick_t;
 /** Start the tick, arm the watchdog (2 s) and enable interrupts. */
 void sys_init(void);
 
+/** MCUCSR as it was at reset (PORF, EXTRF, BORF, WDRF: why we started). */
+uint8_t sys_reset_flags(void);
+
 /** Ticks since boot (wraps after 655 s; compare with tick_since()). */
 tick_t tick_now(void);
 

@@ -58,7 +58,10 @@ static uint8_t poll_links(void)
         int16_t b;
         while ((b = uart_getc(src)) >= 0) {
             if (src == SRC_COMM && rx[src].len == 0 && b == HB_LINK_READY) {
-                send_link(HB_LINK_LISTENING); /* comm board (re)started */
+                /* The comm board (re)started: what we run, nobody asked for
+                 * any more (and its LEDs no longer show it). */
+                actuators_off();
+                send_link(HB_LINK_LISTENING);
                 continue;
             }
             frame_result_t r = frame_push(&rx[src], (uint8_t)b);

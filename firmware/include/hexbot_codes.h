@@ -4,8 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0x0563cf55UL
-#define HB_SCHEMA_HASH_TEXT "0563cf55"
+#define HB_SCHEMA_HASH 0x50d29a86UL
+#define HB_SCHEMA_HASH_TEXT "50d29a86"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */
@@ -457,6 +457,10 @@
 #define HB_ERR_NO_ROLE            6
 #define HB_ERR_NOT_HEARD          7
 #define HB_ERR_BUSY               8
+#define HB_ERR_STOPPED            9
+#define HB_ERR_WATCHDOG_RESET     10
+#define HB_ERR_BROWN_OUT          11
+#define HB_ERR_CONTROL_RESTARTED  12
 
 /* Roles */
 #define HB_ROLE_NONE       0  /* '-' */

@@ -120,7 +120,11 @@ typedef enum HEXBOT_ERROR
    HEXBOT_ERROR_NO_ROLE=6, /* no role | */
    HEXBOT_ERROR_NOT_HEARD=7, /* not heard | */
    HEXBOT_ERROR_BUSY=8, /* busy | */
-   HEXBOT_ERROR_ENUM_END=9, /*  | */
+   HEXBOT_ERROR_STOPPED=9, /* stopped | */
+   HEXBOT_ERROR_WATCHDOG_RESET=10, /* watchdog reset | */
+   HEXBOT_ERROR_BROWN_OUT=11, /* brown out | */
+   HEXBOT_ERROR_CONTROL_RESTARTED=12, /* control restarted | */
+   HEXBOT_ERROR_ENUM_END=13, /*  | */
 } HEXBOT_ERROR;
 #endif
 

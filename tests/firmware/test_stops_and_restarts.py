@@ -1,0 +1,101 @@
+"""What the PC is told when a control sequence does not run to its end, or
+when one board of a module restarts on its own: never "done", never a
+module that lost its id, never an actuator left on that nobody asked for."""
+
+from __future__ import annotations
+
+from fwsim import Bench, pc_frame
+
+from hexbot.hil_sim.module import decode_actuators
+from hexbot.hil_sim.plant import OFF
+from hexbot.protocol import frames, parser
+from hexbot.protocol.codes import ErrorCode
+
+BOOT_TEXT = b"COMM. BOARD READY"
+MCW_3S = pc_frame(21, 1, 100, 100, 100)  # MCW about joint 1, 1 s per phase
+
+
+def actuators(bench: Bench, module: int = 1):
+    control = bench.sim.modules[module].control
+    return decode_actuators({p: control.port(p)[1] for p in "ABD"})
+
+
+def all_off(bench: Bench, module: int = 1) -> bool:
+    joints, magnets = actuators(bench, module)
+    return not any(joints) and all(m == OFF for m in magnets)
+
+
+def replies_to(bench: Bench, mark: int, count: int, timeout: float) -> list:
+    """The first ``count`` replies heard after ``mark``, with their times."""
+    got: list = []
+
+    def enough(obs) -> bool:
+        if isinstance(obs.event, (parser.Ack, parser.ErrorReply, parser.StatusReport)):
+            got.append(obs)
+        return len(got) >= count
+
+    assert bench.session.wait_for(enough, mark, timeout) is not None, got
+    return got
+
+
+def test_a_zero_tick_led_pattern_does_not_starve_the_watchdog(single: Bench):
+    # LCircle(170, 0): 6,120 waits of no time at all, about 2.5 s of LED
+    # writes; the comm board used to reboot (watchdog) before its ACK.
+    replies = single.frame(pc_frame(46, 170, 0), timeout=10.0)
+    assert [type(r).__name__ for r in replies] == ["Ack"] and replies[0].code == 46
+    assert BOOT_TEXT not in single.drain()
+    (sta,) = single.command("Status")
+    assert sta.module_id == 1 and sta.error == ErrorCode.NONE
+
+
+def test_a_rotation_stopped_by_a_new_control_command_is_reported_stopped(single: Bench):
+    mark = single.send(MCW_3S)
+    single.run(1.5)  # phase 2 of 3: joints open, magnets on
+    assert not all_off(single)
+    single.send(frames.encode_pc(frames.make("JxOpen", 2)))
+    first, second = replies_to(single, mark, 2, 8.0)
+    assert isinstance(first.event, parser.ErrorReply), first.event
+    assert first.event.code == 21 and first.event.reason == ErrorCode.STOPPED
+    assert isinstance(second.event, parser.Ack) and second.event.code == 1
+    # the rotation is over, only what the new command asked for is on
+    joints, magnets = actuators(single)
+    assert joints == (False, True, False, False, False, False)
+    assert all(m == OFF for m in magnets)
+
+
+def test_a_status_during_a_rotation_waits_for_its_end(single: Bench):
+    mark = single.send(MCW_3S)
+    sent = single.session.now()
+    single.run(1.5)
+    single.send(frames.encode_pc(frames.make("Status")))
+    ack, sta = replies_to(single, mark, 2, 8.0)
+    assert isinstance(ack.event, parser.Ack) and ack.event.code == 21
+    assert ack.t - sent >= 3.0  # the ACK says the rotation ran to its end
+    assert isinstance(sta.event, parser.StatusReport)
+    assert all_off(single)
+
+
+def test_an_unannounced_comm_restart_keeps_the_id_and_drops_the_actuators(single: Bench):
+    single.command("SxP", 1)
+    single.command("JxOpen", 2)
+    assert not all_off(single)
+    comm = single.sim.modules[1].comm
+    comm.cluster.reset(comm.index)  # the comm board alone restarts
+    single.run(4.0)
+    heard = single.drain()
+    assert BOOT_TEXT in heard and b"ID=01" in heard, heard
+    assert all_off(single)  # the control board let go of what nobody runs any more
+    (sta,) = single.command("Status")
+    assert sta.module_id == 1
+
+
+def test_a_control_restart_is_reported_in_status(single: Bench):
+    single.command("SxP", 1)
+    control = single.sim.modules[1].control
+    control.cluster.reset(control.index)
+    single.run(2.0)
+    assert all_off(single)
+    (sta,) = single.command("Status")
+    assert sta.module_id == 1 and sta.error == ErrorCode.CONTROL_RESTARTED
+    (ack,) = single.command("JxOpen", 3)  # and it listens again (code 1)
+    assert isinstance(ack, parser.Ack) and ack.code == 1
