@@ -50,6 +50,10 @@ TEXT_COMM_LISTENING = "COMM. LISTENING"
 BOOT_ID_TAIL = " ID="  # + the id, two or three digits
 BOOT_FW_TAIL = " FW="  # + the firmware version
 TEXT_RF12_READY = "RF12 READY"  # the RF12 wireless board's boot text (its UART1)
+TEXT_RF12_LINK_READY = "RF12 LINK READY"  # the radio-link bridge's boot text (its UART1)
+TEXT_RF12_RX_START = "START"  # the RF12 receive test: START, payload, sum matched 1/0
+#: MAVLink component id of a module's messages: its communication board.
+MAV_COMPONENT_COMM = 1
 
 #: A module id is its control board's 8 DIP switches (PC0..PC7): 1..255, 0 =
 #: no switch on. The legacy Select frame addresses 1..63 only (the thesis'

@@ -58,7 +58,7 @@ void comm_led_joint(uint8_t joint, uint8_t on)
 
 void comm_ir_select(uint8_t ch)
 {
-    if (ch > 6u)
+    if (ch >= sizeof channel_y)
         ch = IR_CENTRE;
     if (ch == ir_channel)
         return;

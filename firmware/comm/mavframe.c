@@ -30,7 +30,6 @@
 #include "uart.h"
 
 #define IR UART1
-#define COMP_COMM 1u /* our component id: the communication board */
 
 mavlink_system_t mavlink_system;
 static mavlink_status_t status;
@@ -136,7 +135,7 @@ mav_result_t mav_push(uint8_t b, uint8_t *frame, uint8_t *target)
 static void from_module(void)
 {
     mavlink_system.sysid = g_state.id;
-    mavlink_system.compid = COMP_COMM;
+    mavlink_system.compid = HB_MAV_COMPONENT_COMM;
 }
 
 void mav_send_ack(uint8_t code, uint8_t legacy_ack)

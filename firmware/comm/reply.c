@@ -50,10 +50,16 @@ void reply_wait_turn(uint8_t slots)
     else
         delay = 0;
     tick_t start = tick_now();
-    while (tick_since(start) < delay) {
+    tick_t waited;
+    while ((waited = tick_since(start)) < delay) {
         uint8_t mark = sys_io_events;
         poll_hook();
-        sys_idle_until(due_hook((tick_t)(start + delay)), mark);
+        /* Rank 137 and up waits more than 32,767 ticks for a Localize slot,
+         * which the idle's signed compare would take for a tick gone by:
+         * sleep toward it in steps the compare can see. */
+        tick_t step = (tick_t)(delay - waited) < SYS_IDLE_MAX_TICKS
+                          ? delay : (tick_t)(waited + SYS_IDLE_MAX_TICKS);
+        sys_idle_until(due_hook((tick_t)(start + step)), mark);
     }
 }
 

@@ -4,8 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0x50d29a86UL
-#define HB_SCHEMA_HASH_TEXT "50d29a86"
+#define HB_SCHEMA_HASH 0x0ebeae6eUL
+#define HB_SCHEMA_HASH_TEXT "0ebeae6e"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */
@@ -88,6 +88,9 @@
 #define HB_TEXT_ID_TAIL     " ID="
 #define HB_TEXT_FW_TAIL     " FW="
 #define HB_TEXT_RF12_READY  "RF12 READY"
+#define HB_TEXT_RF12_LINK_READY "RF12 LINK READY"
+#define HB_TEXT_RF12_RX_START "START"
+#define HB_MAV_COMPONENT_COMM 1u
 /* Replies: preamble, line end, reply words, the localization report */
 #define HB_PREAMBLE         "\n\r\n\r"
 #define HB_EOL              "\n\r"

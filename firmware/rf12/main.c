@@ -55,11 +55,10 @@ static void rx_test(void)
         int8_t r = rf12_receive_packet(data);
         if (r == RF12_RX_NONE)
             continue;
-        uart_puts_P(UART1, PSTR("START"));
+        uart_puts_P(UART1, PSTR(HB_TEXT_RF12_RX_START));
         uart_write(UART1, data, RF12_PAYLOAD);
         uart_putc(UART1, (uint8_t)r);
-        uart_putc(UART1, '\n');
-        uart_putc(UART1, '\r');
+        uart_puts_P(UART1, PSTR(HB_EOL));
     }
 }
 

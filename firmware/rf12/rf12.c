@@ -2,12 +2,16 @@
  * wireless listing, with every wait on nIRQ bounded. */
 #include "rf12.h"
 
+#include <avr/wdt.h>
+
 #include "hexbot_codes.h"
 #include "rf12_board.h"
 #include "system.h"
 
 #define IRQ_TIMEOUT_TICKS 10u    /* a byte at 4.8 kbps takes 1.7 ms */
-#define PACKET_TIMEOUT_TICKS 200u /* wait this long for a packet to start */
+/* Wait this long for a packet to start: well inside the 2 s watchdog, which
+ * wait_irq() feeds once per wait (the callers loop, each wait is bounded). */
+#define PACKET_TIMEOUT_TICKS 150u
 
 static const uint16_t init_words[] = {
     HB_RF12_CMD_CONFIG, /* 0x80D7: EL, EF, 433 MHz band, 12.0 pF */
@@ -40,6 +44,7 @@ void rf12_init(void)
  * register underrun. The tick interrupt still bounds the wait. */
 static uint8_t wait_irq(tick_t ticks)
 {
+    wdt_reset();
     tick_t start = tick_now();
     while (!rf12_board_irq()) {
         if (tick_since(start) >= ticks)
@@ -56,23 +61,30 @@ static uint8_t send_byte(uint8_t b)
     return 1;
 }
 
+/* @p n bytes out; 0 at the first the radio did not take. */
+static uint8_t send_bytes(const uint8_t *p, uint8_t n)
+{
+    for (uint8_t i = 0; i < n; i++)
+        if (!send_byte(p[i]))
+            return 0;
+    return 1;
+}
+
 uint8_t rf12_send_packet(const uint8_t *data)
 {
-    uint8_t ok = 1;
-    uint8_t sum = 0;
-    rf12_board_xfer(0x0000);  /* read status: clears a pending interrupt */
-    rf12_board_xfer(0x8239);  /* transmitter on */
     static const uint8_t head[] = HB_RF12_HEAD;
     static const uint8_t trailer[] = HB_RF12_TRAILER;
-    for (uint8_t i = 0; i < sizeof head; i++)
-        ok &= send_byte(head[i]);
-    for (uint8_t i = 0; i < RF12_PAYLOAD; i++) {
-        ok &= send_byte(data[i]);
+    uint8_t sum = 0;
+    for (uint8_t i = 0; i < RF12_PAYLOAD; i++)
         sum = (uint8_t)(sum + data[i]);
-    }
-    ok &= send_byte(sum);
-    for (uint8_t i = 0; i < sizeof trailer; i++)
-        ok &= send_byte(trailer[i]); /* dummy bytes flush the shift register */
+    rf12_board_xfer(0x0000);  /* read status: clears a pending interrupt */
+    rf12_board_xfer(0x8239);  /* transmitter on */
+    /* A radio that stops taking bytes (absent, stuck) ends the packet at
+     * once: the rest would only wait out 25 more time-outs (2.5 s, past the
+     * watchdog) for a packet nobody can decode. The trailer's dummy bytes
+     * flush the shift register. */
+    uint8_t ok = send_bytes(head, sizeof head) && send_bytes(data, RF12_PAYLOAD) &&
+                 send_byte(sum) && send_bytes(trailer, sizeof trailer);
     rf12_board_xfer(0x8201);  /* transmitter off */
     return ok;
 }

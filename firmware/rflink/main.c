@@ -62,7 +62,8 @@ int main(void)
     uart_init(UART1, HB_BAUD_DEBUG);
     rf12_init();
     rf12_rx_arm();
-    uart_puts_P(UART1, PSTR("\n\rRF12 LINK READY FW=" HB_FW_VERSION "\n\r"));
+    uart_puts_P(UART1, PSTR(HB_PREAMBLE HB_TEXT_RF12_LINK_READY HB_TEXT_FW_TAIL HB_FW_VERSION
+                            HB_EOL));
     tick_t last = tick_now();
     for (;;) {
         /* Busy, never asleep: nIRQ is no interrupt pin, and the two-byte FIFO

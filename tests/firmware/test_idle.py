@@ -6,10 +6,11 @@ from __future__ import annotations
 
 import subprocess
 
-from fwsim import BUILD, Bench
+from fwsim import BUILD, Bench, scenario_file
 
 from hexbot.hil_sim.module import decode_actuators
 from hexbot.hil_sim.plant import OFF
+from hexbot.protocol import frames
 from hexbot.protocol.timing import TICK_TRUE_S
 
 #: Awake cycles per idle tick: the tick interrupt and one check of the
@@ -17,10 +18,11 @@ from hexbot.protocol.timing import TICK_TRUE_S
 IDLE_CYCLES_PER_TICK_MAX = 70
 
 
-def awake_per_tick(bench: Bench, seconds: float) -> dict[str, tuple[float, float]]:
+def awake_per_tick(bench: Bench, seconds: float,
+                   module_id: int = 1) -> dict[str, tuple[float, float]]:
     """Per board: (awake cycles, SLEEPs) per tick over ``seconds`` of idle."""
     cluster = bench.sim.cluster
-    module = bench.sim.modules[1]
+    module = bench.sim.modules[module_id]
     boards = {"comm": module.comm.index, "control": module.control.index}
     before = {b: cluster.sleep_stats(i) for b, i in boards.items()}
     bench.run(seconds)
@@ -85,3 +87,18 @@ def test_a_half_frame_expires_on_its_tick_while_the_board_sleeps(single: Bench):
     assert magnets_on(single)  # not abandoned early
     single.run(0.013)
     assert not magnets_on(single)  # abandoned within the 4th tick
+
+
+def test_a_reply_slot_minutes_away_is_waited_asleep(images, tmp_path):
+    # Select(0) gives id 200 rank 199; its Localize reply waits 199 x 4
+    # slots (8 min). A due tick more than 32,767 ticks ahead looked past to
+    # the signed compare, and the comm board polled awake for 2.5 minutes.
+    sc = scenario_file(tmp_path, [(200, (0, 0), 0)])
+    bench = Bench.boot(sc)
+    bench.send(frames.encode_pc(frames.make("Select", 0)))
+    bench.run(125.0)  # its own ACK slot: 199 x 0.6 s
+    assert b"ACK" in bench.drain()
+    bench.send(frames.encode_pc(frames.make("Localize")))
+    bench.run(60.0)  # past the localization window, into the reply wait
+    awake, _sleeps = awake_per_tick(bench, 5.0, module_id=200)["comm"]
+    assert awake < IDLE_CYCLES_PER_TICK_MAX, awake

@@ -88,3 +88,23 @@ def test_receive_mode_by_jumper(radio):
     sim.run(2.0)
     assert sim.debug_read(1).endswith(b"RF12 READY MODE=RX FW=0.1.0\n\r")
     assert sim.modules[1].control.state in ("running", "sleeping")
+
+
+def test_a_radio_that_takes_no_byte_ends_the_packet_and_never_the_board(radio):
+    # nIRQ stays high: no byte is ever taken. The packet ends at its first
+    # byte's time-out (transmitter off at once); it used to wait out all 25
+    # and the watchdog rebooted the board in the middle of the second packet.
+    sim, changes = radio
+    sim.run(8.0)
+    assert sim.debug_read(1).count(b"RF12 READY") == 1
+    words = spi_words(changes)[len(INIT_WORDS):]
+    assert words[:3] == [0x0000, 0x8239, 0x8201]  # status, transmitter on, off
+    assert not [w for w in words if w & 0xFF00 == 0xB800]
+
+
+def test_receive_mode_waits_for_packets_without_rebooting(radio):
+    sim, _changes = radio
+    control = sim.modules[1].control.index
+    sim.cluster.set_input(control, "A", 1, 0)  # jumper closed: receive test
+    sim.run(10.0)
+    assert sim.debug_read(1).count(b"RF12 READY") == 1

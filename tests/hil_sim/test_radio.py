@@ -14,12 +14,13 @@ import pytest
 
 from hexbot.hil_sim import Simulator, load_scenario
 from hexbot.hil_sim.radio import RadioMedium
+from hexbot.protocol import wire
 from hexbot.protocol.pins import RF12_MODE_PIN
 
 ROOT = Path(__file__).resolve().parents[2]
 RF12_ELF = ROOT / "firmware" / "build" / "rf12.elf"
 PAYLOAD = bytes([1, 2, 3, 4, 5, 6, 7, 8, 9] + [0] * 7)
-GOOD_PACKET = b"START" + PAYLOAD + b"\x01\n\r"
+GOOD_PACKET = wire.TEXT_RF12_RX_START.encode() + PAYLOAD + b"\x01" + wire.EOL
 
 
 @pytest.fixture(scope="module")
