@@ -13,6 +13,7 @@
 #include <stdint.h>
 
 #include "hexbot_codes.h"
+#include "system.h"
 
 #define INBOX_FRAMES 4u
 
@@ -20,6 +21,7 @@ typedef struct {
     uint8_t frame[HB_PC_FRAME_LEN]; /* legacy layout '*' code args '#' */
     uint8_t framing;                /* FRAMING_LEGACY or FRAMING_MAVLINK */
     uint8_t target;                 /* MAVLink target_system: 0 = as Select says */
+    tick_t received;                /* its last byte: a Localize's window starts here */
 } inbox_entry_t;
 
 /** Where the next frame is assembled; always free (not one of the kept). */

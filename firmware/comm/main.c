@@ -92,6 +92,7 @@ static void keep_frame(uint8_t framing, uint8_t target)
     inbox_entry_t *e = inbox_slot();
     e->framing = framing;
     e->target = target;
+    e->received = last_ir_byte;
     if (!inbox_keep())
         g_state.last_error = HB_ERR_BUSY;
 }
@@ -504,7 +505,7 @@ int main(void)
         uint8_t mark = sys_io_events;
         inbox_entry_t next;
         if (poll_inputs() && inbox_take(&next)) {
-            handle_frame(next.frame, tick_now(), next.framing, next.target);
+            handle_frame(next.frame, next.received, next.framing, next.target);
         } else {
             tick_t due = ir_due(tick_now() + SYS_IDLE_MAX_TICKS);
             if (comm_ir_channel() != IR_CENTRE) {

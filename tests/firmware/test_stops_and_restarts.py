@@ -10,6 +10,7 @@ from hexbot.hil_sim.module import decode_actuators
 from hexbot.hil_sim.plant import OFF
 from hexbot.protocol import frames, parser
 from hexbot.protocol.codes import ErrorCode
+from hexbot.protocol.timing import LOCALIZE_WINDOW_S
 
 BOOT_TEXT = b"COMM. BOARD READY"
 MCW_3S = pc_frame(21, 1, 100, 100, 100)  # MCW about joint 1, 1 s per phase
@@ -99,3 +100,17 @@ def test_a_control_restart_is_reported_in_status(single: Bench):
     assert sta.module_id == 1 and sta.error == ErrorCode.CONTROL_RESTARTED
     (ack,) = single.command("JxOpen", 3)  # and it listens again (code 1)
     assert isinstance(ack, parser.Ack) and ack.code == 1
+
+
+def test_a_localize_that_waited_for_a_rotation_keeps_the_clusters_window(single: Bench):
+    # Every module times the hops of a localization from the frame's arrival;
+    # one that was busy must not start its window late (and miss its hops).
+    mark = single.send(MCW_3S)
+    single.run(1.5)
+    sent = single.session.now()
+    single.send(frames.encode_pc(frames.make("Localize")))
+    ack, err = replies_to(single, mark, 2, LOCALIZE_WINDOW_S + 10.0)
+    assert isinstance(ack.event, parser.Ack) and ack.event.code == 21
+    assert isinstance(err.event, parser.ErrorReply) and err.event.reason == ErrorCode.NOT_HEARD
+    frame_s = 11 * 10 / 300  # the Localize frame itself at 300 baud
+    assert err.t - sent - frame_s < LOCALIZE_WINDOW_S + 0.5, (err.t - sent, LOCALIZE_WINDOW_S)
