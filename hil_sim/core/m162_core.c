@@ -833,17 +833,23 @@ static void m162_sfior_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *pa
 
 /* A reset does not unplug what drives the pins from outside (DIP switches):
  * put the external levels back into PINx, since simavr's IRQs filter a
- * later set_input of the same value as "no change". */
+ * later set_input of the same value as "no change". The other pins read 0
+ * after the reset, and their IRQs must say so too: else the firmware's
+ * pull-up (PORTx bit set, DDRx clear) raises an IRQ that already holds 1,
+ * simavr drops it as no change, and the pin reads 0 for good (after a
+ * watchdog reset the RF12 board read its mode jumper as closed). */
 static void m162_reapply_external(m162_t *m)
 {
 	avr_ioport_t *ports[M162_NPORTS] = { &m->mcu.porta, &m->mcu.portb, &m->mcu.portc,
 		&m->mcu.portd, &m->mcu.porte };
 	for (int i = 0; i < M162_NPORTS; i++) {
 		uint8_t mask = ports[i]->external.pull_mask;
-		if (!mask)
-			continue;
 		uint8_t *pin = &m->avr->data[m162_port_regs[i][0]];
 		*pin = (uint8_t)((*pin & ~mask) | (ports[i]->external.pull_value & mask));
+		for (int b = 0; b < 8; b++)
+			if (!(mask & (1 << b)))
+				ports[i]->io.irq[b].value = 0;
+		ports[i]->io.irq[IOPORT_IRQ_PIN_ALL].value = *pin;
 	}
 }
 

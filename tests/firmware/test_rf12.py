@@ -108,3 +108,29 @@ def test_receive_mode_waits_for_packets_without_rebooting(radio):
     sim.cluster.set_input(control, "A", 1, 0)  # jumper closed: receive test
     sim.run(10.0)
     assert sim.debug_read(1).count(b"RF12 READY") == 1
+
+
+def test_after_a_watchdog_reset_the_open_mode_jumper_still_reads_open(radio):
+    # Simulator fidelity: PORTA0's pull-up holds the open jumper high. After
+    # a watchdog reset the pin read 0 for good (simavr dropped the pull-up's
+    # rise as "no change"), and the board came back in receive mode.
+    import subprocess
+
+    sim, _changes = radio
+    control = sim.modules[1].control.index
+    sim.run(2.0)
+    assert sim.debug_read(1).endswith(b"MODE=TX FW=0.1.0\n\r")
+    nm = subprocess.run(["avr-nm", str(BUILD / "rf12.elf")], check=True,
+                        capture_output=True, text=True).stdout
+    at = next(int(line.split()[0], 16) for line in nm.splitlines()
+              if line.split()[-1] == "rf12_send_packet")
+    flash = bytearray(sim.cluster.read_flash(control))
+    original = bytes(flash[at:at + 2])
+    flash[at:at + 2] = (0xCFFF).to_bytes(2, "little")  # rjmp .-2: hang, the watchdog bites
+    sim.cluster.write_flash(control, bytes(flash))
+    sim.run(3.0)
+    flash[at:at + 2] = original
+    sim.cluster.write_flash(control, bytes(flash))
+    sim.run(2.5)
+    assert sim.debug_read(1).endswith(b"RF12 READY MODE=TX FW=0.1.0\n\r")
+    assert sim.modules[1].control.port("A")[2] & 1  # PINA0: jumper open
