@@ -184,9 +184,16 @@ IRSEL_HOLD_TICKS = 1000  # IrSel falls back to the centre after 10 s of silence
 # --- how long a function keeps the comm board before it replies ---------------
 
 
+#: What one step of a walk costs the comm board beyond its delay t: the LED
+#: writes and a poll of both links, 0.45 ms (LCircle) to 2.65 ms (LFlash2)
+#: measured at 1 MHz on the simulator; with t = 0 that is all a walk takes
+#: (LCircle(255, 0): 9,180 steps, 4.6 s). A bound for every walk.
+WALK_STEP_TICKS = 0.3
+
+
 def _walk(steps_per_round: int):
     # seq_walk / flash1: n rounds of steps_per_round outputs, each on t then off t.
-    return lambda a: a[0] * steps_per_round * 2 * a[1]
+    return lambda a: a[0] * steps_per_round * 2 * (a[1] + WALK_STEP_TICKS)
 
 
 def _rotation(a: Sequence[int]) -> int:
@@ -220,7 +227,7 @@ def run_ticks(code: int, args: Sequence[int] = ()) -> int:
     if not args:
         args = [a.hi for a in fn.args]
     run = _RUN_TICKS.get(code)
-    return run(list(args) + [0] * 8) if run else 0
+    return math.ceil(run(list(args) + [0] * 8)) if run else 0
 
 
 def reply_timeout_s(code: int, replies: int, args: Sequence[int] = (),

@@ -114,3 +114,11 @@ def test_a_localize_that_waited_for_a_rotation_keeps_the_clusters_window(single:
     assert isinstance(err.event, parser.ErrorReply) and err.event.reason == ErrorCode.NOT_HEARD
     frame_s = 11 * 10 / 300  # the Localize frame itself at 300 baud
     assert err.t - sent - frame_s < LOCALIZE_WINDOW_S + 0.5, (err.t - sent, LOCALIZE_WINDOW_S)
+
+
+def test_zero_delay_walks_are_answered_within_their_protocol_time_out(single: Bench):
+    # The steps of a walk cost time of their own: with t = 0 the walk is all
+    # steps, and the PC's time-out (protocol/timing.py) must still cover it.
+    for name in ("LCircle", "LFlash2", "SPTest"):
+        out = single.session.exchange(frames.make(name, 255, 0))
+        assert out.ok, out.reason

@@ -2,6 +2,8 @@
 host derives from it (their hold on the real firmware is checked in
 tests/firmware/test_timing_bounds.py)."""
 
+import math
+
 import pytest
 
 from hexbot.protocol import timing, wire
@@ -92,8 +94,11 @@ def test_reply_timeout_grows_with_replies_and_run_time():
     assert timing.reply_timeout_s(70, 0) == 0.0
     with pytest.raises(ValueError):
         timing.reply_timeout_s(70, -1)
-    # JTest(2, 5): 2 rounds x 6 joints x (5 on + 5 off) ticks before the ACK.
-    assert timing.run_ticks(5, [2, 5]) == 120
+    # JTest(2, 5): 2 rounds x 6 joints x (5 on + 5 off) ticks before the ACK,
+    # plus what each of its 24 steps costs beyond its delay.
+    assert timing.run_ticks(5, [2, 5]) == math.ceil(24 * (5 + timing.WALK_STEP_TICKS))
+    # with no delay at all the steps still take time (LCircle(255, 0): 4.6 s)
+    assert timing.run_ticks(46, [255, 0]) * timing.TICK_S > 4.6
     assert timing.reply_timeout_s(5, 1, [2, 5]) < timing.reply_timeout_s(5, 1)  # worst case
     # A control function waits up to 2.5 s for the echo, a comm function not.
     assert timing.reply_timeout_s(1, 1) - timing.reply_timeout_s(44, 1) >= 2.5
