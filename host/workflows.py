@@ -124,6 +124,19 @@ def poses(session: Session) -> dict[int, Pose]:
 # --- roles and rotation ----------------------------------------------------------
 
 
+def all_off(session: Session) -> None:
+    """Every actuator of every module off, whatever runs and whoever is
+    selected. ``TurnOffAll`` goes first: a rotation that runs keeps every
+    other frame (a ``Select`` too) waiting in its module's inbox until it
+    ends, but a control frame stops it on any module that hears it
+    (docs/firmware.md). Then ``Select(0)`` and ``TurnOffAll`` again, for the
+    modules the first one did not address."""
+    turn_off_all = frames.make("TurnOffAll")
+    session.request(turn_off_all)
+    session.request(select(0))
+    session.request(turn_off_all)
+
+
 def set_role(session: Session, module: int, role: Role) -> None:
     """Give ``module`` a role (code 71), unless its last reply showed it."""
     row = session.host.model.module(module)

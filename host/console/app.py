@@ -164,6 +164,7 @@ class HexBotConsole(App[None]):
         self.replay_control: ReplayControl | None = None  # while a replay plays
         self.cancel_event = threading.Event()
         self.busy = ""
+        self.all_off_next = False  # All off asked while an operation ran
         self.last_result = ""
         self.port_states: dict[str, tuple[LinkState, str]] = {}
         self.sim_log: list[PlantVerdict] = []  # the plant's verdicts, newest last
@@ -578,6 +579,9 @@ class HexBotConsole(App[None]):
         self._update_status()
         if ok and then is not None:
             then()
+        if self.all_off_next:  # All off was asked while this ran
+            self.all_off_next = False
+            self.action_all_off()
 
     def action_cancel(self) -> None:
         """Escape: leave a text input first (so letter keys act again),
@@ -624,8 +628,21 @@ class HexBotConsole(App[None]):
         self.start_operation("Status", [self._exchange(frames.make("Status"))])
 
     def action_all_off(self) -> None:
-        self.start_operation("All off", [self._exchange(select(0)),
-                                         self._exchange(frames.make("TurnOffAll"))])
+        """Everything off, at any time: a running operation is cancelled
+        first, and All off runs as soon as it has stopped."""
+        if self.busy:
+            self.all_off_next = True
+            self.cancel_event.set()
+            if self.session is not None:
+                self.session.wake()
+            return
+
+        def step() -> str:
+            assert self.session is not None
+            workflows.all_off(self.session)
+            return ""
+        step.__name__ = "TurnOffAll, Select(0), TurnOffAll"
+        self.start_operation("All off", [step])
 
     def action_set_role(self) -> None:
         def chosen(ids: list[int]) -> None:

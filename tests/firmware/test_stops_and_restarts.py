@@ -122,3 +122,22 @@ def test_zero_delay_walks_are_answered_within_their_protocol_time_out(single: Be
     for name in ("LCircle", "LFlash2", "SPTest"):
         out = single.session.exchange(frames.make(name, 255, 0))
         assert out.ok, out.reason
+
+
+def test_all_off_stops_a_running_rotation_and_every_actuator(images, tmp_path):
+    from fwsim import scenario_file
+
+    from hexbot.host import workflows
+    from hexbot.host.session import select
+
+    bench = Bench.boot(scenario_file(tmp_path, [(1, (0, 0), 0), (2, (-1, 1), 0)]))
+    bench.session.request(select(2))
+    bench.session.request(frames.make("SxP", 3))  # module 2: a magnet left on
+    bench.session.request(select(1))
+    bench.send(frames.encode_pc(frames.make("MCW", 1, 250, 250, 250)))  # 7.5 s on module 1
+    bench.run(1.0)
+    assert not all_off(bench, 1) and not all_off(bench, 2)
+    started = bench.session.now()
+    workflows.all_off(bench.session)  # raises unless every step was acknowledged
+    assert bench.session.now() - started < 5.0  # did not wait for the rotation's end
+    assert all_off(bench, 1) and all_off(bench, 2)
