@@ -252,6 +252,8 @@ class Session:
         self.cluster: frozenset[int] = frozenset(modules)
         #: ids seen in replies and boot texts: a hint, there may be more
         self.known: set[int] = set(modules)
+        #: the module the last localization took as origin (workflows.localize)
+        self.reference: int | None = None
         #: after Select: the ids that answer, in rank order (ALL -> every known id)
         self.selection: tuple[int, ...] | None = LEGACY
         self.all_selected = False  # the last Select was Select(0): ranks are id - 1

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 from hexbot.errors import CommandRefusedError, HexBotTimeoutError, ScenarioError
 from hexbot.host.session import OutcomeKind, Session, select
-from hexbot.protocol import frames
+from hexbot.protocol import frames, lattice
 from hexbot.protocol.codes import ErrorCode, Role
 from hexbot.protocol.parser import StatusReport
 from hexbot.protocol.rotation import combined_rotation, direction_of
@@ -89,6 +89,7 @@ def localize(session: Session, reference: int) -> dict[int, Pose]:
     wave adds nobody or a module is not localized afterwards."""
     session.request(select(reference))
     session.request(frames.make("Ref"))
+    session.reference = reference  # the origin of every pose from here on
     unheard: set[int | None] | None = None
     while True:
         session.request(select(0))
@@ -190,7 +191,13 @@ def rotate(session: Session, direction: str, joint: int, mobile: int, substrate:
     if how is Verify.PLANT:
         got = _plant_verdict(session, mobile, verdicts_before)
     elif how is Verify.LOCALIZE:
-        got = localize(session, reference if reference is not None else substrate).get(mobile)
+        # the origin of the poses the rotation was planned from: a second
+        # Ref elsewhere would give the cluster two origins
+        origin = next(r for r in (reference, session.reference, substrate) if r is not None)
+        got = localize(session, origin).get(mobile)
+        if got is None:
+            raise CommandRefusedError(f"module {mobile} reported no place after {d} about "
+                                      f"joint {joint}: the rotation is not verified")
     else:
         _status_after_move(session, mobile)
         got = None
@@ -208,6 +215,8 @@ def _plant_verdict(session: Session, mobile: int, since: int) -> Pose:
     simulator = session.host.simulator
     assert simulator is not None
     found: list[Moved | Refused] = []
+    origin = (simulator.placements().get(session.reference)
+              if session.reference is not None else None)
 
     def ready() -> bool:
         found[:] = [v for v in simulator.verdicts(since) if v.module == mobile]
@@ -220,7 +229,13 @@ def _plant_verdict(session: Session, mobile: int, since: int) -> Pose:
     if isinstance(verdict, Refused):
         raise CommandRefusedError(f"the plant refused: module {mobile} "
                                   f"{verdict.reason.value} ({verdict.detail})")
-    return Pose(verdict.dst, verdict.orientation)
+    if origin is None:
+        return Pose(verdict.dst, verdict.orientation)
+    # the plant's frame is the scenario's; the poses are the localization's,
+    # whose origin is the reference, facing 0
+    (ox, oy), oo = origin.cell, origin.orientation
+    cell = lattice.turn((verdict.dst[0] - ox, verdict.dst[1] - oy), -oo)
+    return Pose(cell, (verdict.orientation - oo) % 6)
 
 
 def _status_after_move(session: Session, mobile: int) -> None:

@@ -78,6 +78,16 @@ def to_body(global_side: int, orientation: int) -> int:
     return wrap(global_side - orientation)
 
 
+def turn(cell: Cell, sides: int) -> Cell:
+    """``cell`` turned about the origin by ``sides`` sides clockwise (60
+    degrees each; negative: anticlockwise): side ``s``'s offset becomes side
+    ``s + sides``'s."""
+    x, y = cell
+    for _ in range(sides % 6):
+        x, y = x + y, -x
+    return (x, y)
+
+
 def distance(a: Cell, b: Cell) -> int:
     """Lattice distance (number of side steps) between two cells."""
     dx, dy = b[0] - a[0], b[1] - a[1]

@@ -38,3 +38,12 @@ def test_distance():
 def test_table_3_5_channels_as_printed():
     # Y0 side 1, Y1 side 6, Y2 centre (PC), Y3 side 2, Y4 side 5, Y5 side 3, Y6 side 4.
     assert L.CHANNEL_SIDE == {0: 1, 1: 6, 2: L.CENTRE, 3: 2, 4: 5, 5: 3, 6: 4, 7: None}
+
+
+def test_turning_a_cell_turns_every_side_offset_to_the_next_sides():
+    for side, offset in L.SIDE_OFFSETS.items():
+        for k in range(-7, 8):
+            assert L.turn(offset, k) == L.SIDE_OFFSETS[L.wrap(side + k)]
+    cell = (3, -5)
+    assert L.turn(cell, 6) == cell == L.turn(L.turn(cell, 2), -2)
+    assert all(L.distance((0, 0), L.turn(cell, k)) == 5 for k in range(6))
