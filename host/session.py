@@ -158,6 +158,38 @@ class Waiting:
 
 
 @dataclass
+class _Owed:
+    """A reply a module still owes to an earlier command whose wait ended
+    without it (cancelled, timed out): when it comes, it is that command's,
+    not the answer to whatever was sent next. ``module`` None: legacy mode
+    (no id on the air)."""
+
+    module: int | None
+    code: int
+    until: float  # session seconds: past this, nobody expects it any more
+
+    def pays(self, event: object) -> bool:
+        if isinstance(event, Ack):
+            code = event.code
+        elif isinstance(event, ErrorReply):
+            code = event.code
+        elif isinstance(event, StatusReport):
+            code = STATUS
+        else:
+            return False
+        return code == self.code and self.module in (None, _module_of(event))
+
+
+def _pay(owed: list[_Owed], event: object) -> bool:
+    """Strike the oldest debt ``event`` pays off; True if it paid one."""
+    for debt in owed:
+        if debt.pays(event):
+            owed.remove(debt)
+            return True
+    return False
+
+
+@dataclass
 class _Collector:
     """The replies to one command, as they arrive."""
 
@@ -171,11 +203,15 @@ class _Collector:
     checked: int = 0
     roll_call: bool = False  # every module's answer counts
     anonymous_ok: bool = False  # a module without id (ID=00 at boot) is on this port
+    owed: list[_Owed] = field(default_factory=list)  # the session's, struck as paid
 
     def take(self, journal: list[Observed]) -> None:
         for obs in journal[self.checked:]:
             if obs.port == self.port and isinstance(obs.event, Garbage):
                 self.garbage.append(obs)
+            if obs.port == self.port and _pay(self.owed, obs.event):
+                self.extra.append(obs)  # an earlier command's late reply
+                continue
             if self._is_reply(obs) and _module_of(obs.event) == 0 and not self.anonymous_ok:
                 self.garbage.append(obs)  # no module here has id 0: replies collided
                 continue
@@ -260,6 +296,9 @@ class Session:
         self.cancel = threading.Event()
         #: the exchange under way, read by progress displays (None: idle)
         self.waiting: Waiting | None = None
+        #: replies still owed to commands whose wait ended without them
+        self._owed: list[_Owed] = []
+        self._owed_checked = 0  # journal events already matched against them
 
     # --- time ----------------------------------------------------------------
 
@@ -407,12 +446,14 @@ class Session:
             timeout = self.reply_timeout(command, ids, need)
         self.cancel.clear()
         started = self.now()
+        self._settle_debts(port, started)
         try:
             mark = self.host.send(command, port, strict=strict, target=target)
         except LinkUnavailableError as exc:
             return Outcome(command, OutcomeKind.PORT_LOST, detail=str(exc))
         got = _Collector(code, set(ids) if ids is not None else None, need, port,
-                         checked=mark, roll_call=roll_call, anonymous_ok=self._anonymous(port))
+                         checked=mark, roll_call=roll_call, anonymous_ok=self._anonymous(port),
+                         owed=self._owed)
         waiting = self.waiting = Waiting(
             str(command) if isinstance(command, Command) else f"frame {command.hex(' ')}",
             need, started, timeout)
@@ -439,11 +480,29 @@ class Session:
                                  settle)
             with self.host.lock:
                 got.take(self.host.since(0))
+        self._owed_checked = got.checked
         outcome = self._judge(command, got, ids, started, port)
+        if (code is not None and port == IR
+                and outcome.kind in (OutcomeKind.CANCELLED, OutcomeKind.TIMED_OUT)):
+            # its replies may still come: twice its time-out from the send
+            owers = outcome.missing or ((None,) if not outcome.replies else ())
+            until = started + 2 * timeout
+            self._owed += [_Owed(m, code, until) for m in owers]
         if outcome.ok and isinstance(command, Command) and command.code == SELECT and not target:
             self.selection = ids
             self.all_selected = command.args[0] == 0
         return outcome
+
+    def _settle_debts(self, port: str, now: float) -> None:
+        """Forget debts past their time; strike those that replies heard
+        since the last exchange paid."""
+        self._owed[:] = [d for d in self._owed if d.until > now]
+        with self.host.lock:
+            journal = self.host.since(self._owed_checked)
+        for obs in journal:
+            if obs.port == port:
+                _pay(self._owed, obs.event)
+            self._owed_checked = obs.seq + 1
 
     def settle_framing(self) -> Framing:
         """``--framing auto``: a MAVLink Status request to one known module

@@ -141,3 +141,16 @@ def test_all_off_stops_a_running_rotation_and_every_actuator(images, tmp_path):
     workflows.all_off(bench.session)  # raises unless every step was acknowledged
     assert bench.session.now() - started < 5.0  # did not wait for the rotation's end
     assert all_off(bench, 1) and all_off(bench, 2)
+
+
+def test_a_late_reply_to_an_abandoned_command_is_not_the_next_ones_answer(single: Bench):
+    # The PC gives up on a 3 s rotation after 1 s and sends another: the
+    # module answers the first with ERR STOPPED, then runs the second.
+    first = single.session.exchange(frames.make("MCW", 1, 100, 100, 100), timeout=1.0)
+    assert first.kind.value == "timed out"
+    second = single.session.exchange(frames.make("MCW", 1, 10, 10, 10))
+    assert second.ok, second.reason  # was: "refused: ERR STOPPED", the first one's
+    (late,) = [o.event for o in second.extra]
+    assert isinstance(late, parser.ErrorReply) and late.reason == ErrorCode.STOPPED
+    # and the first one's ACK that never came is not waited for forever
+    assert single.session.exchange(frames.make("Status")).ok
