@@ -15,7 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from hexbot.host.describe import error_name
-from hexbot.protocol.codes import lookup
+from hexbot.protocol.codes import Role, lookup
 from hexbot.protocol.parser import (
     Ack,
     ErrorReply,
@@ -26,7 +26,13 @@ from hexbot.protocol.parser import (
     Text,
     YrefReport,
 )
-from hexbot.protocol.wire import BOOT_ID_TAIL, MAX_MODULE_ID, TEXT_COMM_READY, TEXT_CTR_READY
+from hexbot.protocol.wire import (
+    BOOT_ID_TAIL,
+    MAX_MODULE_ID,
+    TEXT_COMM_LISTENING,
+    TEXT_COMM_READY,
+    TEXT_CTR_READY,
+)
 
 LOCALIZE_CODE = lookup("Localize").code
 
@@ -138,6 +144,13 @@ class ClusterModel:
                 if ident is not None:
                     row = self._row(None, ident)
                     assert row is not None
+                    row.boot, row.last_seen = ev.tail, t
+                    return True
+            elif ev.phrase == TEXT_COMM_LISTENING.rstrip() and ev.tail:
+                ident = _id_from_tail(ev.tail)
+                row = self._row(None, ident) if ident is not None else None
+                if row is not None:  # (re)booted: it forgot its role and place
+                    row.role, row.localized = Role.MOBILE.letter, False
                     row.boot, row.last_seen = ev.tail, t
                     return True
             return False

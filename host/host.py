@@ -37,6 +37,7 @@ from hexbot.host.link import Link, LinkState, PortSettings
 from hexbot.host.replay_control import ReplayControl
 from hexbot.host.session_log import SessionLog
 from hexbot.protocol import frames
+from hexbot.protocol.codes import ErrorCode
 from hexbot.protocol.frames import Command
 from hexbot.protocol.header import schema_mismatch
 from hexbot.protocol.mavlink_codec import FramedParser, Framing, MavlinkEncoder
@@ -46,6 +47,15 @@ from hexbot.protocol.simulation import PlantVerdict, SimulatorAccess
 #: Port names: the central IR transceiver and one control board's UART1.
 IR, DEBUG = "ir", "debug"
 QUIET_FLUSH_S = 1.0  # a half reply older than this becomes garbage
+#: Last errors that say a board restarted on its own, and what that means.
+_RESTARTS = {
+    ErrorCode.WATCHDOG_RESET: "its comm board restarted (watchdog): role, place and "
+                              "selection are lost",
+    ErrorCode.BROWN_OUT: "its comm board restarted (brown-out): role, place and "
+                         "selection are lost",
+    ErrorCode.CONTROL_RESTARTED: "its control board restarted: every joint and magnet "
+                                 "was released",
+}
 
 __all__ = ["DEBUG", "IR", "Host", "Listener", "Observed"]
 
@@ -98,6 +108,7 @@ class Host:
         self._listeners: list[Listener] = []
         self.warnings: list[str] = []
         self._schema_checked: set[int] = set()
+        self._restarts_told: dict[int, int] = {}  # module -> restart error warned
         self.clock: Clock = WallClock(self.changed)
         #: how commands go out on the IR port (AUTO: the session probes first)
         self.framing = Framing.LEGACY
@@ -213,6 +224,19 @@ class Host:
             why = schema_mismatch(ev.schema)
             if why is not None:
                 self.warn(t, f"module {ev.module_id}: {why}")
+        if isinstance(ev, StatusReport):
+            self._warn_restart(t, ev)
+
+    def _warn_restart(self, t: float, ev: StatusReport) -> None:
+        """A board that restarted on its own says so in its last error
+        (docs/firmware.md); tell the user once per module and cause."""
+        said = self._restarts_told.get(ev.module_id)
+        if ev.error not in _RESTARTS:
+            self._restarts_told.pop(ev.module_id, None)
+            return
+        if said != ev.error:
+            self._restarts_told[ev.module_id] = ev.error
+            self.warn(t, f"module {ev.module_id}: {_RESTARTS[ev.error]}")
 
     def warn(self, t: float, text: str) -> None:
         """Tell the user once, in the log and to every listener."""

@@ -299,6 +299,7 @@ class Session:
         #: replies still owed to commands whose wait ended without them
         self._owed: list[_Owed] = []
         self._owed_checked = 0  # journal events already matched against them
+        self._boots_checked = 0  # journal events already searched for restarts
 
     # --- time ----------------------------------------------------------------
 
@@ -444,6 +445,16 @@ class Session:
             need = max(1, len(self.known))
         if timeout is None:
             timeout = self.reply_timeout(command, ids, need)
+        restarted = self._restarted(port)
+        if restarted and code not in (None, SELECT) and self.selection is not LEGACY:
+            # a module that restarted forgot the Select: it would run (and
+            # answer) everything; say the selection again first
+            ids_again = (0,) if self.all_selected else self.selection
+            self.host.warn(self.now(), f"module(s) {', '.join(map(str, restarted))} "
+                           f"restarted: Select({', '.join(map(str, ids_again))}) again")
+            again = self.exchange(select(*ids_again), port=port)
+            if not again.ok:
+                return again
         self.cancel.clear()
         started = self.now()
         self._settle_debts(port, started)
@@ -492,6 +503,17 @@ class Session:
             self.selection = ids
             self.all_selected = command.args[0] == 0
         return outcome
+
+    def _restarted(self, port: str) -> list[int]:
+        """Modules whose boot text (``COMM. LISTENING ID=nn``) came since
+        the last look: they restarted and forgot any Select and role."""
+        with self.host.lock:
+            journal = self.host.since(self._boots_checked)
+        ids = [i for obs in journal if obs.port == port
+               and (i := listening_id(obs.event)) is not None]
+        if journal:
+            self._boots_checked = journal[-1].seq + 1
+        return ids
 
     def _settle_debts(self, port: str, now: float) -> None:
         """Forget debts past their time; strike those that replies heard

@@ -154,3 +154,27 @@ def test_a_late_reply_to_an_abandoned_command_is_not_the_next_ones_answer(single
     assert isinstance(late, parser.ErrorReply) and late.reason == ErrorCode.STOPPED
     # and the first one's ACK that never came is not waited for forever
     assert single.session.exchange(frames.make("Status")).ok
+
+
+def test_after_a_module_restarts_the_session_selects_again_and_forgets_its_role(
+        images, tmp_path):
+    from fwsim import scenario_file
+
+    from hexbot.host import workflows
+    from hexbot.host.session import select
+
+    bench = Bench.boot(scenario_file(tmp_path, [(1, (0, 0), 0), (2, (-1, 1), 0)]))
+    workflows.localize(bench.session, 1)
+    workflows.set_role(bench.session, 1, workflows.Role.SUBSTRATE)
+    assert bench.host.model.module(1).role == "S"
+    bench.session.request(select(2))
+    comm = bench.sim.modules[1].comm
+    comm.cluster.reset(comm.index)  # module 1's comm board restarts alone
+    bench.run(4.0)
+    # it forgot the Select: without a new one it would open its joint 3 too
+    out = bench.session.request(frames.make("JxOpen", 3))
+    assert [o.event.module for o in out.replies] == [2]
+    assert not actuators(bench, 1)[0][2] and actuators(bench, 2)[0][2]
+    assert any("module(s) 1 restarted" in w for w in bench.host.warnings)
+    row = bench.host.model.module(1)  # the model forgot its role and place
+    assert row.role == "M" and not row.localized
