@@ -445,6 +445,12 @@ class Session:
             need = max(1, len(self.known))
         if timeout is None:
             timeout = self.reply_timeout(command, ids, need)
+        # Legacy mode (no Select yet): every module runs the command and
+        # answers without an id, a substrate 1 s later, one without its
+        # control board with '~' after 2.5 s. Unless the cluster is known to
+        # be one module, listen for the whole bound and judge every answer.
+        legacy_all = (ids is None and count is None and not roll_call and code is not None
+                      and len(self.cluster) != 1)
         restarted = self._restarted(port)
         if restarted and code not in (None, SELECT) and self.selection is not LEGACY:
             # a module that restarted forgot the Select: it would run (and
@@ -473,7 +479,8 @@ class Session:
             with self.host.lock:
                 got.take(self.host.since(0))
             waiting.replied = len(got.replies)
-            return got.complete or self.cancel.is_set() or self._lost(port) is not None
+            return ((got.complete and not legacy_all) or self.cancel.is_set()
+                    or self._lost(port) is not None)
 
         try:
             self.host.clock.wait(ready, timeout)
@@ -486,6 +493,10 @@ class Session:
             got.need = len(got.replies)
             ids = tuple(sorted({i for r in got.replies if (i := _module_of(r.event))}))
             self.known |= set(ids)
+        if legacy_all and got.complete:
+            got.replies += [o for o in got.extra if got._is_reply(o)]
+            got.extra = [o for o in got.extra if not got._is_reply(o)]
+            got.need = len(got.replies)
         if got.complete and settle > 0 and not self.cancel.is_set():
             self.host.clock.wait(lambda: self.cancel.is_set() or self._lost(port) is not None,
                                  settle)

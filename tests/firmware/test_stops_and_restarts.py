@@ -178,3 +178,24 @@ def test_after_a_module_restarts_the_session_selects_again_and_forgets_its_role(
     assert any("module(s) 1 restarted" in w for w in bench.host.warnings)
     row = bench.host.model.module(1)  # the model forgot its role and place
     assert row.role == "M" and not row.localized
+
+
+def test_in_legacy_mode_every_modules_answer_is_judged(images, tmp_path):
+    # Before any Select every module answers, without an id. Module 2 has
+    # no working control board (an RF12 image in its place): it answers
+    # '~' 2.5 s after module 1's ACK, and that must fail the command.
+    from fwsim import BUILD
+
+    from hexbot.host.session import OutcomeKind, RefusalCause
+
+    scenario = tmp_path / "deadctl.toml"
+    scenario.write_text(
+        'name = "deadctl"\nseed = 1\nbase = 1\n'
+        "[[module]]\nid = 1\nposition = [0, 0]\norientation = 0\n"
+        "[[module]]\nid = 2\nposition = [-1, 1]\norientation = 0\n"
+        f'firmware = {{ control = "{BUILD / "rf12.elf"}" }}\n')
+    bench = Bench.boot(scenario)
+    out = bench.session.exchange(frames.make("JxOpen", 3))
+    assert out.kind is OutcomeKind.REFUSED, out.reason
+    assert [r.cause for r in out.refusals] == [RefusalCause.CONTROL_TIMEOUT]
+    assert len(out.replies) == 2  # module 1's ACK 1 is there too
