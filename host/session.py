@@ -217,6 +217,8 @@ class _Collector:
                 continue
             if self.roll_call and self._is_reply(obs):
                 self.replies.append(obs)
+                if self.wanted is not None:
+                    self.wanted.discard(_module_of(obs.event))  # type: ignore[arg-type]
             elif self._is_reply(obs):
                 ident = _module_of(obs.event)
                 if self.wanted is not None and ident not in self.wanted:
@@ -232,6 +234,8 @@ class _Collector:
 
     @property
     def complete(self) -> bool:
+        if self.roll_call and self.wanted:
+            return False  # a module we know of has not answered yet
         return len(self.replies) >= self.need
 
     def _is_reply(self, obs: Observed) -> bool:
@@ -438,13 +442,15 @@ class Session:
         if ids is not None and not ids:
             raise CommandRefusedError(f"{command}: no module would answer")
         # Select(0) to a cluster of unknown ids: every answer counts; wait for
-        # the ids seen so far, then until the link is quiet.
+        # each id seen so far (its reply slot is id - 1: the bound is the
+        # highest's), then until the link is quiet.
         roll_call = ids is None and count is None and code == SELECT
+        seen: tuple[int, ...] = ()
         if roll_call:
-            self.learn()
-            need = max(1, len(self.known))
+            seen = tuple(sorted(self.learn()))
+            need = max(1, len(seen))
         if timeout is None:
-            timeout = self.reply_timeout(command, ids, need)
+            timeout = self.reply_timeout(command, seen or ids, need)
         # Legacy mode (no Select yet): every module runs the command and
         # answers without an id, a substrate 1 s later, one without its
         # control board with '~' after 2.5 s. Unless the cluster is known to
@@ -468,7 +474,8 @@ class Session:
             mark = self.host.send(command, port, strict=strict, target=target)
         except LinkUnavailableError as exc:
             return Outcome(command, OutcomeKind.PORT_LOST, detail=str(exc))
-        got = _Collector(code, set(ids) if ids is not None else None, need, port,
+        wanted = set(ids) if ids is not None else set(seen) if roll_call else None
+        got = _Collector(code, wanted, need, port,
                          checked=mark, roll_call=roll_call, anonymous_ok=self._anonymous(port),
                          owed=self._owed)
         waiting = self.waiting = Waiting(
@@ -491,6 +498,9 @@ class Session:
             with self.host.lock:
                 got.take(self.host.since(0))
             got.need = len(got.replies)
+            # whoever answered is the selection; an id heard once (a boot
+            # text two modules garbled into a third id) does not fail it
+            got.wanted = set()
             ids = tuple(sorted({i for r in got.replies if (i := _module_of(r.event))}))
             self.known |= set(ids)
         if legacy_all and got.complete:

@@ -199,3 +199,20 @@ def test_in_legacy_mode_every_modules_answer_is_judged(images, tmp_path):
     assert out.kind is OutcomeKind.REFUSED, out.reason
     assert [r.cause for r in out.refusals] == [RefusalCause.CONTROL_TIMEOUT]
     assert len(out.replies) == 2  # module 1's ACK 1 is there too
+
+
+def test_select_all_waits_for_the_slot_of_every_id_it_has_heard_of(images, tmp_path):
+    # On hardware the session is not told the cluster: it knows ids from
+    # the boot texts. Module 12 answers Select(0) in slot 11, 6.6 s after
+    # module 2; silence in between must not end the roll call.
+    from fwsim import scenario_file
+
+    from hexbot.host.session import Session, select
+
+    bench = Bench.boot(scenario_file(tmp_path, [(2, (0, 0), 0), (12, (-1, 1), 0)]))
+    session = Session(bench.host)  # no ids given
+    out = session.request(select(0))
+    assert sorted(o.event.module for o in out.replies) == [2, 12]
+    assert session.selection == (2, 12)
+    out = session.request(frames.make("Status"))
+    assert sorted(o.event.module_id for o in out.replies) == [2, 12]
