@@ -520,7 +520,10 @@ class Session:
             owers = outcome.missing or ((None,) if not outcome.replies else ())
             until = started + 2 * timeout
             self._owed += [_Owed(m, code, until) for m in owers]
-        if outcome.ok and isinstance(command, Command) and command.code == SELECT and not target:
+        if (isinstance(command, Command) and command.code == SELECT and not target
+                and ids is not None and outcome.kind is not OutcomeKind.PORT_LOST):
+            # the modules that heard it switched, answered or not: a module
+            # of the list that did not answer is missed by what follows
             self.selection = ids
             self.all_selected = command.args[0] == 0
         return outcome

@@ -216,3 +216,17 @@ def test_select_all_waits_for_the_slot_of_every_id_it_has_heard_of(images, tmp_p
     assert session.selection == (2, 12)
     out = session.request(frames.make("Status"))
     assert sorted(o.event.module_id for o in out.replies) == [2, 12]
+
+
+def test_a_select_that_one_module_missed_still_switches_the_others(images, tmp_path):
+    from fwsim import scenario_file
+
+    from hexbot.host.session import select
+
+    bench = Bench.boot(scenario_file(tmp_path, [(1, (0, 0), 0), (2, (-1, 1), 0)]))
+    bench.session.request(select(2))
+    assert not bench.session.exchange(select(1, 9)).ok  # there is no module 9
+    # module 1 heard it and is selected now: the session must expect it too
+    out = bench.session.exchange(frames.make("Status"))
+    assert [o.event.module_id for o in out.replies] == [1]
+    assert out.missing == (9,)
