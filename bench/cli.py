@@ -41,8 +41,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("benchmark", choices=BENCHMARKS, metavar="NAME",
                         help="the benchmark to run (list below)")
-    parser.add_argument("options", nargs=argparse.REMAINDER,
-                        help="its options: hexbot bench NAME --help")
+    options = parser.add_argument("options", nargs=argparse.REMAINDER,
+                                  help="its options: hexbot bench NAME --help")
+    options.required = False  # else a missing NAME reads "required: NAME, options"
 
 
 def run(args: argparse.Namespace) -> int:

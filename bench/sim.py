@@ -38,7 +38,7 @@ import time
 from pathlib import Path
 
 from hexbot.bench.raw import avr_program, raw_simavr_times
-from hexbot.errors import HexBotError
+from hexbot.errors import HexBotError, UsageError
 from hexbot.hil_sim.scenario_gen import generate
 from hexbot.hil_sim.simulator import Simulator
 from hexbot.protocol.frames import encode_pc, make, select
@@ -199,15 +199,15 @@ def _firmware_cost(case: dict) -> str:
 
 def run(args: argparse.Namespace) -> int:
     if args.seconds <= 0:
-        raise HexBotError(f"--seconds must be positive, not {args.seconds}")
+        raise UsageError(f"--seconds must be positive, not {args.seconds}")
     if args.repeat < 1:
-        raise HexBotError(f"--repeat must be at least 1, not {args.repeat}")
+        raise UsageError(f"--repeat must be at least 1, not {args.repeat}")
     if args.threads < 1:
-        raise HexBotError(f"--threads must be at least 1, not {args.threads}")
+        raise UsageError(f"--threads must be at least 1, not {args.threads}")
     try:
         sizes = [int(s) for s in args.sizes.split(",")]
     except ValueError:
-        raise HexBotError(
+        raise UsageError(
             f"--sizes takes numbers separated by commas, not {args.sizes!r}") from None
     if args.firmware and not (Path(args.firmware) / "comm.elf").is_file():
         raise HexBotError(f"--firmware {args.firmware}: no comm.elf there")

@@ -1,8 +1,8 @@
 """The toolchain's exceptions: one base class and one subclass per cause.
 
 Library code raises these; only the CLI turns them into exit codes
-(``exit_status``: 1 a refusal or failure, 3 a time-out, 4 a lost or
-missing port, 130 cancelled), so a script can tell "the module said no"
+(``exit_status``: 1 a refusal or failure, 2 a usage error, 3 a time-out,
+4 a lost or missing port, 130 cancelled), so a script can tell "the module said no"
 from "nobody answered" from "the cable is out".
 """
 
@@ -11,6 +11,14 @@ class HexBotError(Exception):
     """Base class of every error the toolchain raises on purpose."""
 
     exit_status = 1
+
+
+class UsageError(HexBotError):
+    """Options that do not fit together or a value argparse cannot check on
+    its own (an empty seed range, a log folder that cannot be created):
+    exit 2 like argparse's own usage errors, before any port opens."""
+
+    exit_status = 2
 
 
 class LinkUnavailableError(HexBotError):

@@ -22,11 +22,12 @@ from pathlib import Path
 from types import FrameType
 from typing import Any, TextIO
 
-from hexbot.errors import HexBotError
+from hexbot.cli_args import output_file, rate, seconds, tcp_port
+from hexbot.errors import HexBotError, UsageError
 from hexbot.protocol.wire import BAUD_IR
 
 from .pty_bridge import PtyBridge
-from .scenario import builtin_names, load_scenario
+from .scenario import MAX_THREADS, builtin_names, load_scenario
 from .simulator import Simulator
 from .vcd import VcdWriter
 
@@ -44,30 +45,43 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--pty", action="store_true", help="serve the IR and debug ports on pseudo-terminals"
     )
     parser.add_argument(
-        "--rfc2217", type=int, metavar="TCP_PORT",
+        "--rfc2217", type=tcp_port, metavar="TCP_PORT",
         help="serve the IR port over RFC 2217 on localhost:TCP_PORT (0: any free port): "
              "modem lines, parity and baud as a USB adapter takes them",
     )
     parser.add_argument(
-        "--speed", type=float, default=1.0,
+        "--speed", type=rate, default=1.0,
         help="times real time (default 1; 0 = as fast as possible)",
     )
     parser.add_argument("--seed", type=int, help="override the scenario's seed")
     parser.add_argument(
-        "--threads", type=int,
+        "--threads", type=_threads,
         help="host threads that run each quantum's MCUs (default: the scenario's "
              "threads, else 1); the trace is the same with any number",
     )
-    parser.add_argument("--events", type=Path, help="write plant and bus events as JSON lines")
-    parser.add_argument("--vcd", type=Path, help="write actuator, selector and LED pins as VCD")
+    parser.add_argument("--events", type=output_file,
+                        help="write plant and bus events as JSON lines")
+    parser.add_argument("--vcd", type=output_file,
+                        help="write actuator, selector and LED pins as VCD")
     parser.add_argument(
         "--wait-client", action="store_true",
         help="with --pty: start simulating only once a client opened the IR port",
     )
     parser.add_argument(
-        "--duration", type=float,
+        "--duration", type=seconds,
         help="stop after this many simulated seconds (default: run until SIGINT/SIGTERM)",
     )
+
+
+def _threads(text: str) -> int:
+    """Host threads per quantum: the core takes 1..MAX_THREADS."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if not 1 <= value <= MAX_THREADS:
+        raise argparse.ArgumentTypeError(f"threads must be 1..{MAX_THREADS}, got {value}")
+    return value
 
 
 class _Stop:
@@ -78,20 +92,18 @@ class _Stop:
         self.requested = True
 
 
-def _open(path: Path, stack: ExitStack) -> TextIO:
+def _open(path: str, stack: ExitStack) -> TextIO:
     try:
-        return stack.enter_context(path.open("w", encoding="utf-8"))
+        return stack.enter_context(Path(path).open("w", encoding="utf-8"))
     except OSError as exc:
         raise HexBotError(f"cannot write {path}: {exc.strerror}") from exc
 
 
 def run(args: argparse.Namespace) -> int:
-    if args.speed < 0:
-        raise HexBotError(f"--speed must be 0 or more, not {args.speed}")
     if args.rfc2217 is not None:
         return _serve_rfc2217(args)
     if not args.pty and args.duration is None:
-        raise HexBotError("nothing to do: give --pty to serve ports, or --duration to run")
+        raise UsageError("nothing to do: give --pty to serve ports, or --duration to run")
     sim = Simulator(load_scenario(args.scenario), seed=args.seed, threads=args.threads)
     stop = _Stop()
     previous = {s: signal.signal(s, stop) for s in (signal.SIGINT, signal.SIGTERM)}
@@ -131,9 +143,9 @@ def _serve_rfc2217(args: argparse.Namespace) -> int:
     from .rfc2217_server import Rfc2217Server
 
     if args.pty or args.events or args.vcd or args.duration is not None or args.threads:
-        raise HexBotError("--rfc2217 serves one port until stopped: it does not combine "
-                          "with --pty, --events, --vcd, --duration or --threads (the "
-                          "scenario's threads key applies)")
+        raise UsageError("--rfc2217 serves one port until stopped: it does not combine "
+                         "with --pty, --events, --vcd, --duration or --threads (the "
+                         "scenario's threads key applies)")
     urlhandler.register()
     target = Path(args.scenario)
     name = str(target.resolve()) if target.suffix == ".toml" else args.scenario

@@ -49,6 +49,7 @@ from pathlib import Path
 from typing import Any
 
 from hexbot.errors import ScenarioError
+from hexbot.files import read_text
 from hexbot.protocol.timing import CLOCK_TOLERANCE
 from hexbot.protocol.wire import LOC_COORD_LIMIT, MAX_MODULE_ID
 from hexbot.toml_lines import TomlLines as _Lines
@@ -177,7 +178,7 @@ def load_scenario(source: str | Path) -> Scenario:
     if text_source.endswith(".toml") or path.is_file():
         if not path.is_file():
             raise ScenarioError(f"{path}: no such scenario file")
-        return parse_scenario(path.read_text(encoding="utf-8"), path)
+        return parse_scenario(read_text(path), path)
     folder = resources.files("hexbot.hil_sim") / "scenarios"
     candidate = folder / f"{text_source}.toml"
     if not candidate.is_file():

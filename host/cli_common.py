@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import argparse
 import sys
+import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
 
@@ -31,7 +32,7 @@ def session(args: argparse.Namespace, *, wait_s: float = 5.0, verbose_states: bo
         for ch in host.channels.values():
             ch.link.start(wait_s)
         if host.log is not None:
-            print(f"session log: {host.log.folder}", file=sys.stderr)
+            err_line(f"session log: {host.log.folder}")
         sim = host.simulator
         sess = Session(host, sim.module_ids() if sim is not None else ())
         if sim is not None and wait_boot:
@@ -41,12 +42,23 @@ def session(args: argparse.Namespace, *, wait_s: float = 5.0, verbose_states: bo
         host.close()
 
 
+_stderr_lock = threading.Lock()
+
+
+def err_line(text: str) -> None:
+    """One whole line on stderr. Port states come from the link's reader
+    thread while the main thread prints too: print() writes the text and
+    its newline separately, so two threads' lines ran into one."""
+    with _stderr_lock:
+        sys.stderr.write(text + "\n")
+        sys.stderr.flush()
+
+
 def _print_state(event: HostEvent) -> None:
     if isinstance(event, HostWarning):
-        print(f"warning: {event.text}", file=sys.stderr, flush=True)
+        err_line(f"warning: {event.text}")
     elif isinstance(event, PortChanged) and event.state in (LinkState.LOST, LinkState.CONNECTED):
-        print(f"{event.port}: {event.state.value} {event.detail}".rstrip(),  # type: ignore[attr-defined]
-              file=sys.stderr, flush=True)
+        err_line(f"{event.port}: {event.state.value} {event.detail}".rstrip())  # type: ignore[attr-defined]
 
 
 def _wait_booted(sess: Session, scenario: str, ids: list[int]) -> None:

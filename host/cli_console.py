@@ -11,9 +11,9 @@ import argparse
 from collections.abc import Iterable
 from pathlib import Path
 
+from hexbot.cli_args import seconds
 from hexbot.host import endpoints
 from hexbot.host.capture import read_capture
-from hexbot.host.cli_args import seconds
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.events import Listener
 from hexbot.host.host import Host

@@ -7,6 +7,7 @@ import json
 import queue
 import sys
 
+from hexbot.cli_args import seconds
 from hexbot.host.cli_common import session
 from hexbot.host.describe import describe_event, describe_tx, event_json
 from hexbot.host.endpoints import add_port_arguments
@@ -15,7 +16,7 @@ from hexbot.host.events import HostEvent, Observed, Traffic, TrafficDirection
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="one JSON object per line")
-    parser.add_argument("--duration", type=float, default=None, metavar="S",
+    parser.add_argument("--duration", type=seconds, default=None, metavar="S",
                         help="stop after S seconds (default: until Ctrl-C)")
     parser.add_argument("--tx", action="store_true",
                         help="also show what this host sends (nothing unless scripted)")
@@ -48,8 +49,9 @@ def run(args: argparse.Namespace) -> int:
             print(lines.get_nowait(), flush=True)
         return False
 
-    with session(args, wait_s=0.0, listener=listener, wait_boot=False,
-                 default_speed=1.0) as sess:
+    # Ports must open at the start (exit 4 otherwise, as send); one lost
+    # later is retried while monitoring.
+    with session(args, listener=listener, wait_boot=False, default_speed=1.0) as sess:
         # The session's clock keeps time (virtual with --sim-speed 0); print
         # as events come, at most a tenth of a second late.
         end = None if args.duration is None else sess.now() + args.duration

@@ -10,17 +10,24 @@ from pathlib import Path
 
 from hexbot.host.capture import read_capture
 from hexbot.host.describe import describe_event, describe_tx, event_json
+from hexbot.host.host import DEBUG, IR
 from hexbot.host.replay_control import ReplayControl
 from hexbot.host.session_log import CAPTURE_NAME
 from hexbot.protocol.mavlink_codec import FramedParser
+
+#: What a capture's records name: the two ports and the sources of notes
+#: (Host.warn and framing: host; plant verdicts: sim). A name outside these
+#: would filter every record away and print nothing.
+RECORD_PORTS = (IR, DEBUG, "host", "sim")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("capture", type=Path,
                         help=f"a capture file, or a session folder holding {CAPTURE_NAME}")
     parser.add_argument("--json", action="store_true", help="one JSON object per line")
-    parser.add_argument("--port", action="append", metavar="NAME",
-                        help="only this port (ir, debug); repeatable")
+    parser.add_argument("--port", action="append", metavar="NAME", choices=RECORD_PORTS,
+                        help="only this port (ir, debug; host and sim: their notes); "
+                             "repeatable")
     parser.add_argument("--speed", type=_positive, metavar="X",
                         help="pace the records at X times the recorded speed "
                              "(default: as fast as it prints)")

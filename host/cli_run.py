@@ -7,6 +7,9 @@ import re
 import sys
 from pathlib import Path
 
+from hexbot.cli_args import output_file
+from hexbot.errors import ScenarioError
+from hexbot.files import read_text
 from hexbot.host.cli_common import session
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.junit import write_junit
@@ -17,7 +20,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("script", type=Path, help="a .hbs script (see docs/console.md)")
     parser.add_argument("--check", action="store_true",
                         help="only check the script's syntax; send nothing")
-    parser.add_argument("--junit", type=Path, metavar="XML",
+    parser.add_argument("--junit", type=output_file, metavar="XML",
                         help="write JUnit XML for CI: one testcase per step with its time "
                              "(simulated seconds on the simulator); written also on failure")
     parser.add_argument("--quiet", type=float, default=1.5, metavar="S",
@@ -33,7 +36,7 @@ def declared_scenario(path: Path) -> str | None:
     """A script may name the simulator scenario it was written for in a
     comment line ``# scenario: NAME``; used when neither --port nor
     --scenario is given, so ``hexbot run SCRIPT`` just works."""
-    for line in path.read_text().splitlines():
+    for line in read_text(path, "script").splitlines():
         m = _SCENARIO_PRAGMA.match(line.strip())
         if m:
             return m.group(1)
@@ -42,6 +45,8 @@ def declared_scenario(path: Path) -> str | None:
 
 def run(args: argparse.Namespace) -> int:
     steps = load_script(args.script)  # every line checked before anything is sent
+    if not steps:  # "all 0 steps passed" would pass a truncated or wrong file
+        raise ScenarioError(f"{args.script}: no steps (only comments and blank lines)")
     if args.check:
         print(f"{args.script}: {len(steps)} steps, syntax OK")
         return 0

@@ -20,8 +20,8 @@ import argparse
 import json
 import sys
 
-from hexbot.errors import FrameError
-from hexbot.host.cli_args import seconds, seconds_or_zero
+from hexbot.cli_args import count, seconds, seconds_or_zero
+from hexbot.errors import FrameError, UsageError
 from hexbot.host.cli_common import session
 from hexbot.host.cli_progress import session_waits
 from hexbot.host.commands import parse_command, parse_raw
@@ -29,7 +29,7 @@ from hexbot.host.describe import describe_event, describe_tx, event_json
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.events import Observed
 from hexbot.host.session import Session, select
-from hexbot.protocol import frames
+from hexbot.protocol import frames, wire
 from hexbot.protocol.frames import Command
 from hexbot.protocol.mavlink_codec import Framing
 
@@ -44,10 +44,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                              "any ACK/ERR/STA answers them")
     parser.add_argument("--dry-run", action="store_true",
                         help="print the frames' bytes and send nothing")
-    parser.add_argument("--module", type=int, action="append", metavar="ID",
+    parser.add_argument("--module", type=_module_id, action="append", metavar="ID",
                         help="select this module first (code 69) and expect its reply; "
                              "repeat for several; 0 = every module")
-    parser.add_argument("--expect", type=int, default=None, metavar="N",
+    parser.add_argument("--expect", type=count, default=None, metavar="N",
                         help="replies to wait for without --module (default: what the "
                              "addressing implies; 1 before any Select)")
     parser.add_argument("--timeout", type=seconds, default=None, metavar="S",
@@ -61,6 +61,18 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="send codes/arguments outside the table's ranges (tests the "
                              "firmware's own checks)")
     add_port_arguments(parser, debug=False)
+
+
+def _module_id(text: str) -> int:
+    """A module id for Select: the DIP switches' range, 0 for every module."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a module id: {text!r}") from None
+    if not 0 <= value <= wire.MAX_MODULE_ID:
+        raise argparse.ArgumentTypeError(
+            f"a module id is 1..{wire.MAX_MODULE_ID} (0 = every module), got {value}")
+    return value
 
 
 def run(args: argparse.Namespace) -> int:
@@ -93,8 +105,10 @@ def run(args: argparse.Namespace) -> int:
 
 def _steps(args: argparse.Namespace) -> list[Command | bytes]:
     """The frames to send: Select(--module...) first, then the command."""
-    if (args.raw is None) == (args.function is None):
-        raise FrameError("give a function (CODE [ARG...]) or --raw HEX, not both")
+    if args.raw is None and args.function is None:
+        raise UsageError("give a function (CODE [ARG...]) or --raw HEX")
+    if args.raw is not None and args.function is not None:
+        raise UsageError("give a function (CODE [ARG...]) or --raw HEX, not both")
     if args.raw is not None:
         if args.args:
             raise FrameError("--raw takes no ARG words")

@@ -15,11 +15,12 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import quote
 
-from hexbot.errors import HexBotError
+from hexbot.cli_args import count, rate, seconds
+from hexbot.errors import UsageError
 from hexbot.host.events import Listener
 from hexbot.host.host import DEBUG, IR, Host
 from hexbot.host.link import PortSettings
-from hexbot.host.session_log import SessionLog, new_session_dir
+from hexbot.host.session_log import SessionLog, default_log_root, new_session_dir
 from hexbot.protocol import wire
 from hexbot.protocol.mavlink_codec import Framing
 
@@ -30,28 +31,28 @@ def add_port_arguments(parser: argparse.ArgumentParser, *, debug: bool = True) -
     g = parser.add_argument_group("ports (default: the embedded simulator)")
     g.add_argument("--port", metavar="DEVICE_OR_URL",
                    help="IR transceiver: /dev/ttyUSB0, socket://host:port, rfc2217://, loop://")
-    g.add_argument("--baud", type=int, default=wire.BAUD_IR, help="IR baud rate (default 300)")
+    g.add_argument("--baud", type=count, default=wire.BAUD_IR, help="IR baud rate (default 300)")
     g.add_argument("--parity", default="N", choices=list("NEOMS"))
     g.add_argument("--data-bits", type=int, default=8, choices=[5, 6, 7, 8])
     g.add_argument("--stop-bits", type=float, default=1, choices=[1, 1.5, 2])
     if debug:
         g.add_argument("--debug-port", metavar="DEVICE_OR_URL",
                        help="a control board's UART1 debug port")
-        g.add_argument("--debug-baud", type=int, default=wire.BAUD_DEBUG,
+        g.add_argument("--debug-baud", type=count, default=wire.BAUD_DEBUG,
                        help="debug port baud rate (default 4800)")
         g.add_argument("--debug-module", type=int, metavar="ID",
                        help="simulator: whose UART1 to open (default: lowest id)")
     g.add_argument("--scenario", default=None,
                    help=f"simulator scenario when no --port is given (default {DEFAULT_SCENARIO})")
     g.add_argument("--seed", type=int, default=None, help="simulator seed")
-    g.add_argument("--sim-speed", type=float, default=None, metavar="X",
+    g.add_argument("--sim-speed", type=rate, default=None, metavar="X",
                    help="simulator speed, times real time (0 = virtual time, as fast as it "
                         "goes; default: 0 for send/run/plan, 1 for console/monitor)")
     g.add_argument("--framing", choices=[f.value for f in Framing], default="legacy",
                    help="commands as legacy '*'...'#' frames or MAVLink 2 frames (dialect "
                         "protocol/hexbot.xml); auto: probe with a Status request first "
                         "(replies of both framings are always read)")
-    g.add_argument("--retry", type=float, default=1.0, metavar="S",
+    g.add_argument("--retry", type=seconds, default=1.0, metavar="S",
                    help="seconds between reconnection attempts (default 1)")
     lg = parser.add_argument_group("session log")
     lg.add_argument("--log-dir", type=Path, default=None,
@@ -91,7 +92,10 @@ def resolve(args: argparse.Namespace, default_speed: float = 1.0) -> Endpoints:
     debug_url = getattr(args, "debug_port", None)
     debug_baud = getattr(args, "debug_baud", wire.BAUD_DEBUG)
     if args.port and args.scenario:
-        raise HexBotError("--scenario starts the simulator; it cannot be combined with --port")
+        raise UsageError("--scenario starts the simulator; it cannot be combined with --port")
+    if args.port and getattr(args, "debug_module", None) is not None:
+        raise UsageError("--debug-module picks a simulated module's UART1; with --port, "
+                         "give its --debug-port")
     debug = PortSettings(debug_url, debug_baud) if debug_url else None
     if args.port:
         return Endpoints(PortSettings(args.port, args.baud, **frame), debug)
@@ -102,19 +106,37 @@ def resolve(args: argparse.Namespace, default_speed: float = 1.0) -> Endpoints:
                      [f"simulator scenario {scenario}"])
 
 
+def _session_log(args: argparse.Namespace) -> tuple[SessionLog | None, str]:
+    """The session's log and, when the default folder cannot hold one, why
+    the session runs without. An explicit ``--log-dir`` that cannot is a
+    usage error (before any port opens); the default (``$HEXBOT_LOG_DIR``,
+    ~/.local/state) only warns: a stale environment must not stop sessions."""
+    if args.no_log:
+        return None, ""
+    try:
+        return SessionLog(new_session_dir(args.log_dir)), ""
+    except OSError as exc:
+        reason = exc.strerror or str(exc)
+        if args.log_dir is not None:
+            raise UsageError(f"--log-dir {args.log_dir}: cannot create a session folder: "
+                             f"{reason}") from None
+        return None, (f"session log folder {default_log_root()}: {reason}; "
+                      "running without a session log")
+
+
 def open_host(args: argparse.Namespace, endpoints: Endpoints,
               listeners: Iterable[Listener] = ()) -> Host:
     """A host with the endpoints' ports, started, ``listeners`` attached
     before the first byte. An embedded simulator's debug port (UART1 of
     ``--debug-module``, default the lowest id) is added once its cluster
     is open."""
-    log = None
-    if not args.no_log:
-        log = SessionLog(new_session_dir(args.log_dir))
+    log, log_problem = _session_log(args)
     host = Host(log)
     host.set_framing(Framing(getattr(args, "framing", Framing.LEGACY.value)))
     for listener in listeners:
         host.add_listener(listener)
+    if log_problem:
+        host.warn(0.0, log_problem)
     try:
         for note in endpoints.notes:
             if log:
@@ -127,7 +149,10 @@ def open_host(args: argparse.Namespace, endpoints: Endpoints,
         sim = host.simulator
         if sim is not None and endpoints.debug is None and hasattr(args, "debug_port"):
             ids = sim.module_ids()
-            ident = endpoints.debug_module if endpoints.debug_module in ids else min(ids)
+            ident = endpoints.debug_module if endpoints.debug_module is not None else min(ids)
+            if ident not in ids:  # not another module's UART1 behind the user's back
+                raise UsageError(f"--debug-module {ident}: scenario {endpoints.scenario} has "
+                                 f"modules {', '.join(map(str, sorted(ids)))}")
             host.add_port(DEBUG, PortSettings(sim.uart1_url(ident),
                                               getattr(args, "debug_baud", wire.BAUD_DEBUG)),
                           args.retry).link.start()

@@ -51,6 +51,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from hexbot.errors import FrameError, HexBotError, LinkUnavailableError, ScenarioError
+from hexbot.files import read_text
 from hexbot.host import workflows
 from hexbot.host.commands import parse_command
 from hexbot.host.describe import describe_event
@@ -140,11 +141,7 @@ def parse_script(text: str, name: str = "<script>") -> list[Step]:
 
 def load_script(path: Path) -> list[Step]:
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except (OSError, UnicodeDecodeError) as exc:
-        raise ScenarioError(f"{path}: cannot read script: {exc}") from exc
-    return parse_script(text, str(path))
+    return parse_script(read_text(path, "script"), str(path))
 
 
 def _parse_line(line: str, where: str, number: int) -> Step:  # noqa: C901 - one branch a verb

@@ -17,6 +17,7 @@ import sys
 from collections.abc import Iterable, Iterator
 from typing import Any, TextIO
 
+from hexbot.cli_args import count, output_file
 from hexbot.errors import ScenarioError
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.workflows import Verify
@@ -43,8 +44,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="leave the steps out: the summary line, the notes and warnings "
                              "(--json: the object without \"steps\"); a plan of 10,000 "
                              "modules has millions of moves")
-    parser.add_argument("--plot", metavar="FILE.png", help="draw one panel per time step")
-    parser.add_argument("--render", metavar="FILE.gif",
+    parser.add_argument("--plot", metavar="FILE.png", type=output_file,
+                        help="draw one panel per time step")
+    parser.add_argument("--render", metavar="FILE.gif", type=output_file,
                         help="animate the plan: a frame per time step, grid, counter, legend "
                              "(plot extra)")
     parser.add_argument("--style", choices=("combined", "single"), default="combined",
@@ -57,7 +59,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--budget", type=_seconds, default=DEFAULT_BUDGET, metavar="SECONDS",
                         help="robust and exact modes: give up (exit 1, with the reason) "
                              f"after this many seconds (default {DEFAULT_BUDGET:g})")
-    parser.add_argument("--max-steps", type=int, default=200,
+    parser.add_argument("--max-steps", type=count, default=200,
                         help="faithful modes: give up after this many time steps (default 200)")
     hil = parser.add_argument_group(
         "execution (on the embedded simulator by default, or on --port: real modules or a pty)")
@@ -122,8 +124,6 @@ def make_plan(args: argparse.Namespace, initial: Configuration | None = None) ->
                           parallel=not args.serial)
     from hexbot.planning.thesis.planner import FaithfulOptions, plan_faithful
 
-    if args.max_steps < 1:
-        raise ScenarioError("--max-steps must be at least 1")
     return plan_faithful(initial, goal, parallel=args.mode == "faithful-parallel",
                          options=FaithfulOptions(max_steps=args.max_steps))
 

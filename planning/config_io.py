@@ -9,7 +9,8 @@ Two formats:
   ``#`` or ``%`` start a comment. Modules are numbered 1..n in reading order.
 * **TOML**: ``cells = [[x, y], ...]`` (numbered in reading order), or
   ``[[module]]`` tables with ``id``, ``cell = [x, y]`` and optional
-  ``orientation`` (0..5, the module's Yref).
+  ``orientation`` (0..5, the module's Yref); coordinates within
+  ``hexlattice.COORD_LIMIT``.
 
 Every error names the file, the line and the problem.
 """
@@ -22,8 +23,9 @@ from collections import Counter
 from pathlib import Path
 
 from hexbot.errors import ScenarioError
+from hexbot.files import read_text
 from hexbot.planning.configuration import Configuration, Module
-from hexbot.planning.hexlattice import Cell
+from hexbot.planning.hexlattice import COORD_LIMIT, Cell
 
 _ASSIGN = re.compile(r"^\s*[A-Za-z_]\w*\s*=")
 
@@ -77,6 +79,9 @@ def _as_cell(value: object, where: str) -> Cell:
         or not all(isinstance(v, int) and not isinstance(v, bool) for v in value)
     ):
         raise ScenarioError(f"{where}: a cell must be [x, y] with two integers, got {value!r}")
+    if max(abs(value[0]), abs(value[1])) > COORD_LIMIT:  # keeps the int32 arithmetic exact
+        raise ScenarioError(f"{where}: cell {value} is outside the planner's coordinate range "
+                            f"(-{COORD_LIMIT:,}..{COORD_LIMIT:,})")
     return (value[0], value[1])
 
 
@@ -125,10 +130,7 @@ def parse_toml(text: str, source: str = "<toml>") -> Configuration:
 def load_configuration(path: str | Path) -> Configuration:
     """Read a configuration file; the format follows the suffix (``.toml`` or grid text)."""
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise ScenarioError(f"{path}: cannot read: {exc.strerror or exc}") from exc
+    text = read_text(path)
     if path.suffix.lower() == ".toml":
         return parse_toml(text, str(path))
     return parse_grid(text, str(path))

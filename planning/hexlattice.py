@@ -41,6 +41,13 @@ from hexbot.protocol.rotation_geometry import (  # noqa: F401 - Table 4-3
 
 JOINTS = SIDES
 
+#: Largest |x| or |y| a configuration file may give. The planner's distance
+#: arrays are int32 (|dx + dy| reaches 4x this) and a connected cluster of
+#: N modules spans fewer than N cells, so this is far beyond any real plan;
+#: the link's localization range (protocol.wire.LOC_COORD_LIMIT, 99) is the
+#: executor's business, not the file reader's.
+COORD_LIMIT = 1_000_000
+
 
 # The offsets unpacked once: the planners ask for neighbours millions of times.
 (_X1, _Y1), (_X2, _Y2), (_X3, _Y3), (_X4, _Y4), (_X5, _Y5), (_X6, _Y6) = (

@@ -15,6 +15,7 @@ import argparse
 import sys
 from pathlib import Path
 
+from hexbot.cli_args import output_file
 from hexbot.errors import CancelledError, HexBotError
 from hexbot.extras import require
 
@@ -42,7 +43,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                      help="only check the sweep file and count its tasks")
     run.add_argument("--no-progress", action="store_true", help="no progress bar")
     rep = parser.add_argument_group("report")
-    rep.add_argument("--plot", metavar="FILE.png", help="also draw the outcomes per setting")
+    rep.add_argument("--plot", metavar="FILE.png", type=output_file,
+                     help="also draw the outcomes per setting")
 
 
 def run(args: argparse.Namespace) -> int:

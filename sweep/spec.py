@@ -33,6 +33,7 @@ from pathlib import Path
 from typing import Any
 
 from hexbot.errors import HexBotError, ScenarioError
+from hexbot.files import read_text
 from hexbot.sweep.kinds import Kind, Param, load_kind
 from hexbot.toml_lines import TomlLines
 
@@ -96,10 +97,7 @@ _TOML_LINE = re.compile(r"\((?:at line (\d+), column \d+|at end of document)\)")
 def load_spec(path: str | Path) -> Spec:
     """Read and check a sweep file; ScenarioError ``file:line: problem``."""
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise ScenarioError(f"{path}: cannot read the sweep file ({exc.strerror})") from exc
+    text = read_text(path, "the sweep file")
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:

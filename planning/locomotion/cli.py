@@ -12,7 +12,8 @@ import argparse
 import json
 import sys
 
-from hexbot.errors import ScenarioError
+from hexbot.cli_args import count, output_file
+from hexbot.errors import ScenarioError, UsageError
 from hexbot.host.cli_progress import meter
 from hexbot.planning.locomotion import render
 from hexbot.planning.locomotion.scenarios import (
@@ -29,14 +30,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     run = sub.add_parser("run", help="run RULESET on SCENARIO and report the outcome")
     run.add_argument("ruleset", help="salvador-free, salvador-pyramids, salvador, otero, or a file")
     run.add_argument("scenario", help="flat, a shipped map (see 'list'), or a .map file")
-    run.add_argument("--n", type=int, default=None, help="modules in the strip")
-    run.add_argument("--rounds", type=_positive, default=10_000, help="round limit (10000)")
+    run.add_argument("--n", type=count, default=None, help="modules in the strip")
+    run.add_argument("--rounds", type=count, default=10_000, help="round limit (10000)")
     run.add_argument(
-        "--until-advance", type=int, default=None, metavar="K",
+        "--until-advance", type=count, default=None, metavar="K",
         help="stop when K modules have come to rest past the strip's initial cells",
     )
     run.add_argument("--json", action="store_true", help="print one JSON object")
-    run.add_argument("--render", metavar="OUT", help="draw the run: .png (final) or .gif")
+    run.add_argument("--render", metavar="OUT", type=output_file,
+                     help="draw the run: .png (final) or .gif")
     run.add_argument(
         "--no-connectivity-check", action="store_true",
         help="skip the connectivity invariant (faster on huge runs)",
@@ -46,7 +48,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     bank.add_argument("--rulesets", default="salvador-pyramids,salvador",
                       help="comma-separated rule sets (default: salvador-pyramids,salvador)")
     bank.add_argument("--n", default="5,10,20", help="comma-separated strip sizes (5,10,20)")
-    bank.add_argument("--rounds", type=_positive, default=3000, help="round limit per run (3000)")
+    bank.add_argument("--rounds", type=count, default=3000, help="round limit per run (3000)")
     bank.add_argument("--directions", action="store_true",
                       help="also run the north, west and south versions of every map")
     bank.add_argument("--json", action="store_true", help="JSON instead of a Markdown table")
@@ -55,7 +57,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     rnd.add_argument("ruleset", help="salvador, otero, ... or a file")
     rnd.add_argument("--seeds", default="0:100", help="seed range FIRST:END (0:100)")
     rnd.add_argument("--n", default="5,12,20", help="comma-separated strip sizes (5,12,20)")
-    rnd.add_argument("--rounds", type=_positive, default=2500, help="round limit per run (2500)")
+    rnd.add_argument("--rounds", type=count, default=2500, help="round limit per run (2500)")
     rnd.add_argument("--json", action="store_true", help="print one JSON object")
     tables = sub.add_parser("tables", help="our rounds next to Tables 1-5 of Salvador's thesis")
     tables.add_argument("--only", default=None, help="comma-separated: table1,...,table5")
@@ -73,8 +75,6 @@ def run(args: argparse.Namespace) -> int:
         return _tables(args)
     if args.action == "random":
         return _random(args)
-    if args.until_advance is not None and args.until_advance < 1:
-        raise ScenarioError("--until-advance must be at least 1")
     if args.render and not args.render.lower().endswith((".png", ".gif")):
         raise ScenarioError(f"--render: {args.render!r} must end in .png or .gif")
     rs = load_ruleset(args.ruleset)
@@ -120,16 +120,6 @@ def run_status(status: str, *, has_goal: bool) -> int:
     return 1
 
 
-def _positive(text: str) -> int:
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
-    if value < 1:
-        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
-    return value
-
-
 def _int_list(text: str, what: str) -> list[int]:
     try:
         values = [int(v) for v in text.split(",") if v.strip()]
@@ -157,9 +147,9 @@ def _bank(args: argparse.Namespace) -> int:
 def _seed_range(text: str) -> range:
     first, sep, end = text.partition(":")
     if not sep or not first.strip().isdigit() or not end.strip().isdigit():
-        raise ScenarioError(f"--seeds: expected FIRST:END (e.g. 0:100), not {text!r}")
+        raise UsageError(f"--seeds: expected FIRST:END (e.g. 0:100), not {text!r}")
     if int(end) <= int(first):
-        raise ScenarioError(f"--seeds: {text!r} is empty (END must be above FIRST)")
+        raise UsageError(f"--seeds: {text!r} is empty (END must be above FIRST)")
     return range(int(first), int(end))
 
 

@@ -38,6 +38,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from hexbot.errors import ScenarioError
+from hexbot.files import read_text
 from hexbot.planning.locomotion.rules import (
     BUILTIN_CLASSES,
     DIRECTIONS,
@@ -382,8 +383,4 @@ def _finish(d: _Draft, default_sym: str) -> Rule:
 
 def load(path: str | Path) -> RuleSet:
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise ScenarioError(f"{path}: cannot read rule file: {exc.strerror}") from None
-    return loads(text, str(path))
+    return loads(read_text(path, "rule file"), str(path))

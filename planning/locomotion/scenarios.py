@@ -20,6 +20,7 @@ from importlib import resources
 from pathlib import Path
 
 from hexbot.errors import ScenarioError
+from hexbot.files import read_text
 from hexbot.planning.locomotion import rulefile
 from hexbot.planning.locomotion.engine import Engine, Goal, RunResult, World
 from hexbot.planning.locomotion.rules import RuleSet, rotate
@@ -186,7 +187,7 @@ def load_scenario(name: str, n: int | None = None) -> Scenario:
             seed = int(base[len("random-"):])
             sc = parse_map(random_map(seed), base, f"random seed {seed}", n)
         elif Path(name).is_file():
-            return parse_map(Path(name).read_text(encoding="utf-8"), Path(name).stem, name, n)
+            return parse_map(read_text(name), Path(name).stem, name, n)
         else:
             raise ScenarioError(
                 f"unknown scenario {name!r} (try: flat, {', '.join(sorted(maps))}; "

@@ -16,7 +16,8 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from hexbot.errors import ScenarioError
+from hexbot.cli_args import output_file
+from hexbot.errors import ScenarioError, UsageError
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.workflows import Verify
 from hexbot.planning.traversal.bridges import BridgeMap, find_bridge_cells
@@ -33,11 +34,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--no-bridges", action="store_true", help="form no bridge at all")
     parser.add_argument("--no-3-bridges", action="store_true", help="only 1- and 2-cell bridges")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
-    parser.add_argument("--render", metavar="OUT.gif", help="animate the rounds (plot extra)")
+    parser.add_argument("--render", metavar="OUT.gif", type=output_file,
+                        help="animate the rounds (plot extra)")
     parser.add_argument("--sweep", action="store_true",
                         help="instead of a map: the paper's Figs. 12-13 experiment (and the "
                              "SINGLE-bridge one), a table or --json")
-    parser.add_argument("--plot", metavar="OUT.png", help="with --sweep: draw the figures")
+    parser.add_argument("--plot", metavar="OUT.png", type=output_file,
+                        help="with --sweep: draw the figures")
     parser.add_argument("--random", metavar="FIRST..LAST",
                         help="instead of a map: run random:SEED for every seed in the range "
                              "and count reached/deadlock/violation (exit 1 unless all reached)")
@@ -66,8 +69,11 @@ def resolve_map(text: str) -> Surface:
         from hexbot.planning.traversal.bank import MAPS
 
         candidate = MAPS / f"{text}.txt"
-        if candidate.exists():
-            path = candidate
+        if not candidate.exists():
+            names = ", ".join(sorted(p.stem for p in MAPS.glob("*.txt")))
+            raise ScenarioError(f"{text}: neither a map file nor a shipped map "
+                                f"(shipped: {names}; or random:SEED)")
+        path = candidate
     return load_map(path)
 
 
@@ -108,6 +114,9 @@ def summary(bmap: BridgeMap, result: Result) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.plot and not args.sweep:
+        raise UsageError("--plot draws the --sweep figures: give --sweep too "
+                         "(--render animates one map)")
     if args.sweep:
         from hexbot.planning.traversal.experiments import run_sweep
 

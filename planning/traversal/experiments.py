@@ -15,7 +15,7 @@ import argparse
 import json
 from typing import Any
 
-from hexbot.errors import ScenarioError
+from hexbot.errors import ScenarioError, UsageError
 from hexbot.planning.traversal.bank import Feature, build
 from hexbot.planning.traversal.bridges import find_bridge_cells
 from hexbot.planning.traversal.engine import traverse
@@ -149,8 +149,10 @@ def run_random(args: argparse.Namespace) -> int:
     first, sep, last = args.random.partition("..")
     try:
         seeds = range(int(first), int(last if sep else first) + 1)
-    except ValueError as exc:
-        raise ScenarioError(f"--random {args.random}: expected FIRST..LAST seeds") from exc
+    except ValueError:
+        raise UsageError(f"--random {args.random}: expected FIRST..LAST seeds") from None
+    if not seeds:
+        raise UsageError(f"--random {args.random}: the range is empty (LAST below FIRST)")
     report = random_runs(seeds, args.motion or "deformable")
     if args.json:
         print(json.dumps(report))

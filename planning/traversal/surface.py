@@ -15,6 +15,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from hexbot.errors import ScenarioError
+from hexbot.files import read_text
 from hexbot.planning.configuration import is_connected
 from hexbot.protocol.lattice import SIDES, Cell, neighbor
 
@@ -92,11 +93,7 @@ def _check(surface: Surface, source: str, line_of: dict[Cell, int]) -> None:
 
 def load_map(path: str | Path) -> Surface:
     path = Path(path)
-    try:
-        text = path.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise ScenarioError(f"{path}: cannot read: {exc.strerror or exc}") from exc
-    return parse_map(text, str(path))
+    return parse_map(read_text(path), str(path))
 
 
 def map_text(surface: Surface, header: str = "") -> str:

@@ -120,7 +120,7 @@ def test_capture_is_byte_exact(responder, log_dir, capsys):
 
 
 def test_scenario_and_port_are_exclusive(log_dir, capsys):
-    assert main(["send", "Status", "--scenario", "pair", "--port", "loop://"]) == 1
+    assert main(["send", "Status", "--scenario", "pair", "--port", "loop://"]) == 2  # usage
     assert "cannot be combined with --port" in capsys.readouterr().err
 
 

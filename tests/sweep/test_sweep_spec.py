@@ -96,3 +96,12 @@ def test_shipped_example_sweeps_are_valid(capsys):
     assert examples
     for path in examples:
         assert main(["sweep", str(path), "--check"]) == 0, path
+
+
+def test_a_binary_sweep_file_is_not_text(tmp_path, capsys):
+    binary = tmp_path / "g.bin"
+    binary.write_bytes(bytes([0xA9, 0xFF, 0x00, 0xC3]) * 75)
+    assert main(["sweep", str(binary)]) == 1
+    err = capsys.readouterr().err
+    assert err.strip() == (f"hexbot sweep: error: {binary}: not a text file (UTF-8): "
+                           "byte 0xa9 at offset 0")

@@ -1,0 +1,77 @@
+"""Argument types shared by the CLI commands (host, simulator, planners): a
+bad value is a usage error (exit 2) before any port opens or any work
+starts, not a surprise after the boot or at the end of a long run."""
+
+from __future__ import annotations
+
+import argparse
+from pathlib import Path
+
+
+def seconds(text: str) -> float:
+    """A duration that must be positive (a time-out, a quiet period)."""
+    value = _number(text)
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"must be more than 0 seconds, got {text}")
+    return value
+
+
+def seconds_or_zero(text: str) -> float:
+    """A duration that may be 0 (``--linger 0``: none)."""
+    value = _number(text)
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"must be 0 or more seconds, got {text}")
+    return value
+
+
+def rate(text: str) -> float:
+    """A speed factor that may be 0 (``--speed 0``: as fast as it goes)."""
+    value = _number(text)
+    if value < 0:
+        raise argparse.ArgumentTypeError(f"must be 0 or more, got {text}")
+    return value
+
+
+def count(text: str) -> int:
+    """A whole number of at least 1 (modules, rounds, steps, threads, a baud rate)."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
+    return value
+
+
+def tcp_port(text: str) -> int:
+    """A TCP port to listen on; 0 lets the system pick a free one."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if not 0 <= value <= 65535:
+        raise argparse.ArgumentTypeError(f"a TCP port is 0..65535 (0: any free port), got {value}")
+    return value
+
+
+def output_file(text: str) -> str:
+    """argparse type of a file to write: its folder must exist now (usage
+    error, exit 2), so the work is not done for a result that cannot be saved."""
+    path = Path(text)
+    if not path.parent.exists():
+        raise argparse.ArgumentTypeError(f"{text}: folder {path.parent} does not exist")
+    if not path.parent.is_dir():
+        raise argparse.ArgumentTypeError(f"{text}: {path.parent} is not a folder")
+    if path.is_dir():
+        raise argparse.ArgumentTypeError(f"{text}: is a folder, give a file name")
+    return text
+
+
+def _number(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if value != value or value in (float("inf"), float("-inf")):
+        raise argparse.ArgumentTypeError(f"not a finite number: {text!r}")
+    return value
