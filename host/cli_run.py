@@ -23,9 +23,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--junit", type=output_file, metavar="XML",
                         help="write JUnit XML for CI: one testcase per step with its time "
                              "(simulated seconds on the simulator); written also on failure")
-    parser.add_argument("--quiet", type=float, default=1.5, metavar="S",
-                        help="after a broadcast, answers are over when the link was quiet "
-                             "this long (default 1.5; less with a fast simulator)")
     add_port_arguments(parser)
 
 
@@ -55,7 +52,7 @@ def run(args: argparse.Namespace) -> int:
     # Scripts are regressions: on the embedded simulator they run in virtual
     # time (default --sim-speed 0), where every time-out is simulated seconds.
     with session(args) as sess:
-        runner = ScriptRunner(sess, str(args.script), quiet=args.quiet)
+        runner = ScriptRunner(sess, str(args.script))
         try:
             runner.run(steps)
         except ScriptFailed as exc:

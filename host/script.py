@@ -63,7 +63,6 @@ from hexbot.protocol.frames import Command
 from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
 
 DEFAULT_TIMEOUT = 5.0
-ALL_QUIET_S = 1.5  # after a broadcast, answers end when the link is quiet this long
 
 
 class ScriptFailed(HexBotError):
@@ -339,11 +338,9 @@ class ScriptRunner:
     unless the script set ``timeout S``; expectations wait ``within`` or
     that time-out (5 s by default)."""
 
-    def __init__(self, session: Session, name: str = "<script>", out: Printer = print,
-                 quiet: float = ALL_QUIET_S) -> None:
+    def __init__(self, session: Session, name: str = "<script>", out: Printer = print) -> None:
         self.session = session
         self.host = session.host
-        self.quiet = quiet
         self.name = name
         self.out = out
         self.timeout = DEFAULT_TIMEOUT
@@ -443,18 +440,11 @@ class ScriptRunner:
     def _exchange(self, step: Step, cmd: Command | None) -> str:
         assert cmd is not None
         before = self.host.mark()
-        broadcast = self.session.expected_replies(cmd) is None
+        # (in legacy mode the session itself judges every module's answer)
         outcome = self.session.exchange(cmd, timeout=self.reply_timeout)
         self.mark = before
         if outcome.kind is OutcomeKind.PORT_LOST:
             outcome.raise_for_status()
-        if broadcast and outcome.ok:
-            # Legacy mode: any number of modules may answer; let them finish.
-            self.session.collect(before, self.quiet, self.timeout)
-            extra = [o for o in self.host.since(before) if o.port == IR
-                     and isinstance(o.event, ErrorReply) and o.event.code == cmd.code]
-            if extra:
-                raise self._fail(step, "; ".join(describe_event(o.event) for o in extra))
         if not outcome.ok:
             raise self._fail(step, outcome.reason)
         return ", ".join(outcome.lines())

@@ -33,8 +33,7 @@ def test_send_status_to_a_simulated_module(log_dir):
 def test_pair_rotation_script_moves_the_mobile_module(log_dir):
     """Localize, rotate CW about lattice joint 4, localize again: module 2
     is at (0,1) with its orientation turned by two sides."""
-    proc = hexbot("run", str(EXAMPLES / "pair_rotate.hbs"), "--scenario", "pair", *SIM,
-                  "--quiet", "0.5")
+    proc = hexbot("run", str(EXAMPLES / "pair_rotate.hbs"), "--scenario", "pair", *SIM)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     assert "STA id 2 role M at (+00,+01) yref 2" in proc.stdout
 
