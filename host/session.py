@@ -120,7 +120,8 @@ class Outcome:
         if self.kind is OutcomeKind.TIMED_OUT:
             who = (f"no reply from module{'s' if len(self.missing) > 1 else ''} "
                    f"{', '.join(map(str, self.missing))}" if self.missing else "no reply")
-            return f"{head}: {who} within {self.waited:.1f} s ({n} received)"
+            why = f"; {self.detail}" if self.detail else ""
+            return f"{head}: {who} within {self.waited:.1f} s ({n} received){why}"
         if self.kind is OutcomeKind.PORT_LOST:
             return f"{head}: port lost ({self.detail})" if self.detail else f"{head}: port lost"
         if self.kind is OutcomeKind.GARBLED:
@@ -571,8 +572,14 @@ class Session:
 
     def send(self, command: Command | bytes, *, strict: bool = True, port: str = IR) -> int:
         """Send without waiting (the composer's Send, a script's ``post``);
-        returns the journal mark taken just before."""
-        return self.host.send(command, port, strict=strict)
+        returns the journal mark taken just before. A Select sent this way
+        still changes who answers what follows."""
+        mark = self.host.send(command, port, strict=strict)
+        if isinstance(command, Command) and command.code == SELECT and port == IR:
+            ids = self.expected_replies(command)
+            self.selection = ids if ids is not None else tuple(sorted(self.learn()))
+            self.all_selected = command.args[0] == 0
+        return mark
 
     def reply_timeout(self, command: Command, ids: tuple[int, ...] | None, need: int) -> float:
         """Transmission of the frame plus the protocol's bound for its replies
@@ -632,7 +639,12 @@ class Session:
         if got.garbage:
             return Outcome(command, OutcomeKind.GARBLED, replies, extra, missing,
                            waited=waited, garbage=tuple(got.garbage))
-        return Outcome(command, OutcomeKind.TIMED_OUT, replies, extra, missing, waited=waited)
+        busy = sorted({f"{d.module if d.module is not None else 'a module'} may still be "
+                       f"running {CODES[d.code].name if d.code in CODES else d.code}, "
+                       "abandoned before"
+                       for d in self._owed if d.module is None or d.module in missing})
+        return Outcome(command, OutcomeKind.TIMED_OUT, replies, extra, missing, waited=waited,
+                       detail="; ".join(f"module {b}" if b[0].isdigit() else b for b in busy))
 
 
 def listening_id(event: object) -> int | None:

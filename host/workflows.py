@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 from hexbot.errors import CommandRefusedError, HexBotTimeoutError, ScenarioError
 from hexbot.host.session import OutcomeKind, Session, select
-from hexbot.protocol import frames, lattice
+from hexbot.protocol import frames, lattice, wire
 from hexbot.protocol.codes import ErrorCode, Role
 from hexbot.protocol.parser import StatusReport
 from hexbot.protocol.rotation import combined_rotation, direction_of
@@ -87,6 +87,9 @@ def localize(session: Session, reference: int) -> dict[int, Pose]:
     the last wave localized more of them, another 66 spreads the
     localization further (the localized ones keep theirs). Fails when a
     wave adds nobody or a module is not localized afterwards."""
+    if not 1 <= reference <= wire.MAX_SELECT_ID:  # Select(0) would make every module (0, 0)
+        raise CommandRefusedError(f"the reference must be a module id 1..{wire.MAX_SELECT_ID}, "
+                                  f"got {reference}")
     session.request(select(reference))
     session.request(frames.make("Ref"))
     session.reference = reference  # the origin of every pose from here on
@@ -119,6 +122,15 @@ def poses(session: Session) -> dict[int, Pose]:
     if lost:
         raise CommandRefusedError(f"not localized after Localize: module(s) "
                                   f"{', '.join(map(str, sorted(lost)))}")
+    by_cell: dict[Cell, list[int]] = {}
+    for module, pose in sorted(found.items()):
+        by_cell.setdefault(pose.cell, []).append(module)
+    crowded = {cell: ids for cell, ids in by_cell.items() if len(ids) > 1}
+    if crowded:  # e.g. two modules took Ref: two origins
+        cell, ids = min(crowded.items())
+        raise CommandRefusedError(
+            f"modules {', '.join(map(str, ids))} all report {cell}: the localization is "
+            "inconsistent (more than one reference?); localize again from one module")
     return found
 
 

@@ -33,6 +33,7 @@ from hexbot.planning.configuration import Configuration, Module
 from hexbot.planning.hexlattice import Cell
 from hexbot.planning.moves import orientation_after
 from hexbot.planning.plan import Plan
+from hexbot.protocol import wire
 
 
 class ExecutionError(HexBotError):
@@ -120,6 +121,9 @@ def plan_request(words: list[str], relative_to: Path | None = None) -> PlanReque
         if not options["reference"].isdigit():
             raise ScenarioError(f"reference must be a module id, got {options['reference']!r}")
         reference = int(options["reference"])
+        if not 1 <= reference <= wire.MAX_SELECT_ID:
+            raise ScenarioError(f"reference must be a module id 1..{wire.MAX_SELECT_ID}, "
+                                f"got {reference}")
     verify = Verify.named(options.get("verify", "auto"))
     goal = Path(words[0])
     if relative_to is not None and not goal.is_absolute():
@@ -147,6 +151,8 @@ def plan_from_cluster(session: Session, goal: frozenset[Cell], reference: int, *
     from hexbot.planning.robust import plan_robust
 
     poses = workflows.localize(session, reference)
+    if reference not in poses:
+        raise HexBotError(f"the reference module {reference} did not answer the localization")
     initial = configuration_of(poses)
     plan = plan_robust(initial, frozenset(goal), fixed=poses[reference].cell, budget=budget,
                        progress=progress)

@@ -13,6 +13,7 @@ from __future__ import annotations
 import copy
 import threading
 import time
+import traceback
 from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -453,6 +454,12 @@ class HexBotConsole(App[None]):
             if ch is not None:
                 ch.link.close()
             return
+        if self.host.simulator is not None:
+            # its ports belong to the cluster it runs: opening one again
+            # boots a new cluster behind the session's back
+            self.notify("the embedded simulator's ports open and close with it: ctrl+r "
+                        "restarts it", title="Not connected", severity="warning")
+            return
         ch = self.host.add_port(msg.port, msg.settings)
         ch.link.start()
 
@@ -463,7 +470,10 @@ class HexBotConsole(App[None]):
         self.send_command(msg.command)
 
     def send_command(self, command: Command | bytes) -> None:
-        self.main_query(Composer).remember(command)
+        if self.busy:  # its frame would land in the middle of the workflow's
+            self.notify(f"busy: {self.busy} (escape cancels it)", title="Not sent",
+                        severity="warning")
+            return
         self._send_worker(command)
 
     @work(thread=True, group="send")
@@ -475,6 +485,8 @@ class HexBotConsole(App[None]):
             self.session.send(command)
         except HexBotError as exc:
             self.call_from_thread(self.notify, str(exc), title="Not sent", severity="error")
+            return
+        self.call_from_thread(self.main_query(Composer).remember, command)
 
     # --- workflows -------------------------------------------------------------
 
@@ -485,7 +497,9 @@ class HexBotConsole(App[None]):
     def selection_text(self) -> str:
         """Who the next command addresses, as the session knows it."""
         s = self.session
-        if s is None or s.selection is None or s.all_selected:
+        if s is not None and s.selection is None:
+            return "none"  # no Select yet: every module runs and answers (legacy)
+        if s is None or s.all_selected:
             return "all"
         return ",".join(map(str, s.selection))
 
@@ -503,6 +517,9 @@ class HexBotConsole(App[None]):
                         then: Callable[[], None] | None = None) -> None:
         """Run ``steps`` in a worker; ``then`` runs on the UI thread after
         they all succeeded (not after a failure or a cancel)."""
+        if self.replay_records is not None and title != "Replay":
+            self.notify("this console plays a capture: nothing is sent", severity="warning")
+            return
         if self.busy:
             self.notify(f"busy: {self.busy}", severity="warning")
             return
@@ -522,19 +539,24 @@ class HexBotConsole(App[None]):
 
     @work(thread=True, exclusive=True, group="operation")
     def _operation(self, title: str, steps: list[Step], cancel: threading.Event) -> None:
-        detail, ok = "", True
+        detail, ok, cancelled = "", True, False
         for n, step in enumerate(steps):
             if cancel.is_set():
                 break
             self.call_from_thread(self._progress, n, f"{title}: {step.__name__}")
             try:
                 detail = step()
-            except CancelledError:
+            except CancelledError:  # Escape, or ctrl+r restarting the session
+                cancelled = True
                 break
             except HexBotError as exc:  # refused, timed out, port lost, not verified
                 detail, ok = str(exc), False
                 break
-        if cancel.is_set():
+            except Exception as exc:  # a bug must fail the operation, not kill the console
+                self.log.error(traceback.format_exc())
+                detail, ok = f"internal error: {type(exc).__name__}: {exc}", False
+                break
+        if cancel.is_set() or cancelled:
             result, ok = f"{title}: cancelled", False
         elif ok:
             result = f"{title}: done" + (f": {detail}" if detail else "")
@@ -611,7 +633,7 @@ class HexBotConsole(App[None]):
     def action_select(self) -> None:
         sel = self.selection_text()
         self._ask("Select module ids (0 = all; answers come in this order)",
-                  "0" if sel == "all" else sel.replace(",", " "), self.select_modules)
+                  "0" if sel in ("all", "none") else sel.replace(",", " "), self.select_modules)
 
     def select_modules(self, ids: list[int]) -> None:
         try:
@@ -622,6 +644,12 @@ class HexBotConsole(App[None]):
         self.start_operation(f"Select {' '.join(map(str, ids))}", [self._exchange(cmd)])
 
     def action_ref(self) -> None:
+        s = self.session
+        if s is not None and (s.selection is None or s.all_selected or len(s.selection) != 1):
+            # every module that runs Ref becomes (0, 0): two origins
+            self.notify("Ref makes the selected modules the origin: select exactly one "
+                        "module first (s)", severity="warning")
+            return
         self.start_operation("Ref", [self._exchange(frames.make("Ref"))])
 
     def action_status(self) -> None:
@@ -630,6 +658,9 @@ class HexBotConsole(App[None]):
     def action_all_off(self) -> None:
         """Everything off, at any time: a running operation is cancelled
         first, and All off runs as soon as it has stopped."""
+        if self.replay_records is not None:
+            self.notify("this console plays a capture: nothing is sent", severity="warning")
+            return
         if self.busy:
             self.all_off_next = True
             self.cancel_event.set()
@@ -659,7 +690,7 @@ class HexBotConsole(App[None]):
 
     def action_localize(self) -> None:
         sel = self.selection_text()
-        default = sel.split(",")[0] if sel != "all" else "1"
+        default = sel.split(",")[0] if sel not in ("all", "none") else "1"
         self._ask("Reference module id (becomes (0,0))", default,
                   lambda ids: self.localize(ids[0]))
 
@@ -855,8 +886,16 @@ class HexBotConsole(App[None]):
             self.terminal(port).clear()
 
     def action_save_terminals(self) -> None:
+        """Both terminals to the session folder (without a session log: the
+        current folder), stamped so that a second save keeps the first."""
         folder = self.host.log.folder if self.host and self.host.log else Path.cwd()
-        paths = [self.terminal(p).save(folder / f"terminal-{p}.txt") for p in (IR, DEBUG)]
+        stamp = time.strftime("%Y%m%d-%H%M%S")
+        try:
+            paths = [self.terminal(p).save(folder / f"terminal-{p}-{stamp}.txt")
+                     for p in (IR, DEBUG)]
+        except OSError as exc:
+            self.notify(f"{folder}: {exc.strerror or exc}", title="Not saved", severity="error")
+            return
         self.notify("saved " + ", ".join(str(p) for p in paths))
 
     def action_help(self) -> None:

@@ -230,3 +230,30 @@ def test_a_select_that_one_module_missed_still_switches_the_others(images, tmp_p
     out = bench.session.exchange(frames.make("Status"))
     assert [o.event.module_id for o in out.replies] == [1]
     assert out.missing == (9,)
+
+
+def test_a_select_sent_without_waiting_still_decides_who_answers_next(images, tmp_path):
+    from fwsim import scenario_file
+
+    from hexbot.host.session import select
+
+    bench = Bench.boot(scenario_file(tmp_path, [(1, (0, 0), 0), (2, (-1, 1), 0)]))
+    bench.session.request(select(1, 2))
+    bench.session.send(select(2))  # the console composer's Send
+    bench.run(1.0)
+    out = bench.session.request(frames.make("Status"))
+    assert [o.event.module_id for o in out.replies] == [2]
+
+
+def test_a_time_out_says_which_module_may_still_be_busy(images, tmp_path):
+    from fwsim import scenario_file
+
+    from hexbot.host.session import select
+
+    bench = Bench.boot(scenario_file(tmp_path, [(1, (0, 0), 0), (2, (-1, 1), 0)]))
+    bench.session.request(select(1))
+    abandoned = bench.session.exchange(frames.make("JTest", 200, 2), timeout=1.0)
+    assert not abandoned.ok
+    out = bench.session.exchange(frames.make("LOn"), timeout=2.0)  # JTest still runs
+    assert not out.ok
+    assert "module 1 may still be running JTest" in out.reason, out.reason

@@ -9,6 +9,7 @@ from pilot_sync import sync
 from hexbot.host import cli_console
 from hexbot.host.console.app import HexBotConsole
 from hexbot.host.console.composer import Composer
+from hexbot.host.console.connection import PortPanel
 from hexbot.host.console.dialogs import PlanScreen
 from hexbot.host.console.lattice import lattice_cells
 from hexbot.host.console.modules_view import ModulesView
@@ -690,3 +691,42 @@ async def test_escape_cancels_a_running_plan_and_claims_nothing(pair_args, tmp_p
         await pilot.pause(1.0)
         sent = [line.split("> ", 1)[1] for line in ir_text(app).splitlines() if "> " in line]
         assert sent[-2:] == ["Select(0)", "Localize()"] and sent.count("Status()") == 1, sent
+
+
+@sync
+async def test_the_console_refuses_what_would_mislead_and_survives_a_bug(pair_args):
+    """Session 27's audit: Ref with no single selection (every module would
+    become the origin), re-opening the simulator's port by hand, a bug in a
+    step (it used to kill the console), and ctrl+r in the middle of a wait
+    (it was reported done)."""
+    app = HexBotConsole(opener=cli_console.make_opener(pair_args))
+    async with app.run_test(size=(120, 36)) as pilot:
+        assert await until(pilot, lambda: app.host is not None, timeout=60)
+        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        assert app.selection_text() == "none"  # no Select has been sent
+        await pilot.press("r")
+        await pilot.pause()
+        assert any("select exactly one module" in str(n.message) for n in app._notifications)
+        assert "> Ref()" not in ir_text(app)
+
+        settings = app.host.channels[IR].link.settings
+        app.post_message(PortPanel.Apply(IR, settings))
+        assert await until(pilot, lambda: any(n.title == "Not connected"
+                                              for n in app._notifications))
+
+        def broken() -> str:
+            raise KeyError(0)
+        app.start_operation("Broken", [broken])
+        assert await until(pilot, lambda: not app.busy and "Broken" in app.last_result)
+        assert app.last_result.startswith("[red]") and "internal error: KeyError" in app.last_result
+
+        app.localize(1)  # about 50 s of localization: restart in the middle
+        assert await until(pilot, lambda: app.busy.startswith("Localize"))
+        await pilot.pause(1.0)
+        await pilot.press("ctrl+r")
+
+        def localize_toasts() -> list[str]:
+            return [str(n.message) for n in app._notifications
+                    if str(n.message).startswith("Localize")]
+        assert await until(pilot, lambda: localize_toasts(), timeout=60)
+        assert localize_toasts() == ["Localize: cancelled"]
