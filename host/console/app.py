@@ -421,7 +421,16 @@ class HexBotConsole(App[None]):
             return
 
     def _update_status(self) -> None:
+        # What runs, or how the last operation ended, comes first: on a
+        # narrow terminal (80 columns) the line is cut at its end.
         parts = []
+        if self.busy.startswith("Replay") and self.replay_control is not None:
+            parts.append(f"[b]Replay[/] {self.replay_control.describe()} "
+                         "(p pause, [ ] speed, . skip)")
+        elif self.busy:
+            parts.append(f"[b]{escape(self.busy)}[/]{self.wait_text()} (esc cancels)")
+        elif self.last_result:
+            parts.append(self.last_result)
         for name, label in ((IR, "IR"), (DEBUG, "UART1")):
             state = self.port_states.get(name)
             if state is None:
@@ -434,13 +443,6 @@ class HexBotConsole(App[None]):
             parts.append(f"{len(self.host.model.modules)} modules, "
                          f"{len(self.host.model.placements)} placed")
         parts.append(f"sel {self.selection_text()}")
-        if self.busy.startswith("Replay") and self.replay_control is not None:
-            parts.append(f"[b]Replay[/] {self.replay_control.describe()} "
-                         "(p pause, [ ] speed, . skip)")
-        elif self.busy:
-            parts.append(f"[b]{escape(self.busy)}[/]{self.wait_text()} (esc cancels)")
-        elif self.last_result:
-            parts.append(self.last_result)
         self.main_query("#status", Static).update(" | ".join(parts))
 
     # --- ports ---------------------------------------------------------------
