@@ -24,6 +24,14 @@ def seconds_or_zero(text: str) -> float:
     return value
 
 
+def positive(text: str) -> float:
+    """A factor that must be more than 0 (a replay's ``--speed``)."""
+    value = _number(text)
+    if value <= 0:
+        raise argparse.ArgumentTypeError(f"must be more than 0, got {text}")
+    return value
+
+
 def rate(text: str) -> float:
     """A speed factor that may be 0 (``--speed 0``: as fast as it goes)."""
     value = _number(text)

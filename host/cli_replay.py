@@ -8,6 +8,7 @@ import sys
 import threading
 from pathlib import Path
 
+from hexbot.cli_args import positive, seconds_or_zero
 from hexbot.host.capture import read_capture
 from hexbot.host.describe import describe_event, describe_tx, event_json
 from hexbot.host.host import DEBUG, IR
@@ -28,31 +29,17 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--port", action="append", metavar="NAME", choices=RECORD_PORTS,
                         help="only this port (ir, debug; host and sim: their notes); "
                              "repeatable")
-    parser.add_argument("--speed", type=_positive, metavar="X",
+    parser.add_argument("--speed", type=positive, metavar="X",
                         help="pace the records at X times the recorded speed "
                              "(default: as fast as it prints)")
     parser.add_argument("--realtime", dest="speed", action="store_const", const=1.0,
                         help="the same as --speed 1")
-    parser.add_argument("--from", dest="start", type=_seconds, default=0.0, metavar="T",
+    parser.add_argument("--from", dest="start", type=seconds_or_zero, default=0.0, metavar="T",
                         help="seek: print from T seconds on (earlier bytes still go "
                              "through the parser, so a reply across T decodes whole)")
-    parser.add_argument("--to", dest="stop", type=_seconds, metavar="T",
+    parser.add_argument("--to", dest="stop", type=seconds_or_zero, metavar="T",
                         help="stop after T seconds")
     parser.add_argument("--no-tx", action="store_true", help="hide what the PC sent")
-
-
-def _seconds(text: str) -> float:
-    value = float(text)
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"must not be negative, got {text}")
-    return value
-
-
-def _positive(text: str) -> float:
-    value = float(text)
-    if value <= 0:
-        raise argparse.ArgumentTypeError(f"must be positive, got {text}")
-    return value
 
 
 def run(args: argparse.Namespace) -> int:
