@@ -41,6 +41,7 @@ name: ``blob:50``, ``line:12``, ``blob:255:7`` (shape, modules, seed).
 
 from __future__ import annotations
 
+import math
 import random
 import tomllib
 from dataclasses import dataclass, field, replace
@@ -225,6 +226,8 @@ def parse_scenario(text: str, path: Path) -> Scenario:
     cells: dict[Cell, int] = {}
     for index, raw in enumerate(modules_raw):
         at = lines.find("module", index)
+        if not isinstance(raw, dict):
+            raise fail(at, "module must be an array of tables ([[module]]), not a list of values")
         unknown(set(raw), _MODULE_KEYS, "module", index)
         module_id = raw.get("id")
         if not isinstance(module_id, int) or isinstance(module_id, bool):
@@ -255,7 +258,8 @@ def parse_scenario(text: str, path: Path) -> Scenario:
             raise fail(pos_line, f"cell {list(cell)} already holds module {cells[cell]}")
         cells[cell] = module_id
         orientation = raw.get("orientation", 0)
-        if not isinstance(orientation, int) or not 0 <= orientation <= 5:
+        if (not isinstance(orientation, int) or isinstance(orientation, bool)
+                or not 0 <= orientation <= 5):
             raise fail(
                 lines.find("module", index, "orientation"),
                 f"orientation must be an integer 0..5, not {orientation!r}",
@@ -325,7 +329,7 @@ def parse_scenario(text: str, path: Path) -> Scenario:
 
 
 def _ppm(value: Any, line: int, key: str, fail: Any) -> float:
-    if isinstance(value, bool) or not isinstance(value, int | float):
+    if isinstance(value, bool) or not isinstance(value, int | float) or not math.isfinite(value):
         raise fail(line, f"{key} must be a number of ppm, not {value!r}")
     if abs(value) > MAX_CLOCK_PPM:
         raise fail(line, f"{key} = {value:g} beyond +-{MAX_CLOCK_PPM} ppm "

@@ -70,8 +70,8 @@ class SimCluster:
                  firmware: str | None = None) -> None:
         from hexbot.hil_sim import Simulator, load_scenario
 
-        if speed < 0:
-            raise HexBotError(f"speed must be 0 or more, not {speed:g}")
+        if not speed >= 0 or speed == float("inf"):  # nan too: it never runs
+            raise HexBotError(f"speed must be a number 0 or more, not {speed:g}")
         spec = load_scenario(scenario)
         if firmware:
             spec = spec.with_firmware(Path(firmware))

@@ -141,8 +141,12 @@ class Simulator:
                         f"{scenario.where(spec.line)}: module {spec.id}: {board} image "
                         f"{image} does not exist (build it with `make -C firmware`)"
                     )
-            comm = self.cluster.add_mcu(str(spec.firmware.comm), f"comm{spec.id}")
-            control = self.cluster.add_mcu(str(spec.firmware.control), f"control{spec.id}")
+            try:  # not an ELF, not for the AVR, built for another AVR, too big
+                comm = self.cluster.add_mcu(str(spec.firmware.comm), f"comm{spec.id}")
+                control = self.cluster.add_mcu(str(spec.firmware.control), f"control{spec.id}")
+            except ValueError as exc:
+                raise ScenarioError(f"{scenario.where(spec.line)}: module {spec.id}: {exc}") \
+                    from None
             self.cluster.connect_uart(comm, 0, control, 0)
             if self.ir_in_c:
                 self.cluster.ir_attach(comm, 1, SELECTOR_PORT, tuple(b for _, b in SELECTOR_PINS))
@@ -169,7 +173,7 @@ class Simulator:
                 if ppm:
                     self.cluster.set_clock(index, hz * (1 + ppm / 1e6))
             if spec.firmware.rf12 is not None:
-                self._add_rf12(module, spec.firmware.rf12)
+                self._add_rf12(module, spec.firmware.rf12, scenario.where(spec.line))
         self.medium = IrMedium(
             self, self.seed, faults_for=scenario.faults_for, emit=self._emit
         )
@@ -194,13 +198,16 @@ class Simulator:
             self.cluster.ir_seed(self.seed)
             self._send_ir_routes()
 
-    def _add_rf12(self, module: Module, image: Any) -> None:
+    def _add_rf12(self, module: Module, image: Any, where: str) -> None:
         """The module's wireless board: an MCU with an RF12 part on its SPI pins
         (nominal clock; its UART1 is a debug port like the control board's)."""
         if not image.is_file():
-            raise ScenarioError(f"module {module.id}: rf12 image {image} does not exist "
-                                "(build it with `make -C firmware`)")
-        index = self.cluster.add_mcu(str(image), f"rf12{module.id}")
+            raise ScenarioError(f"{where}: module {module.id}: rf12 image {image} does not "
+                                "exist (build it with `make -C firmware`)")
+        try:
+            index = self.cluster.add_mcu(str(image), f"rf12{module.id}")
+        except ValueError as exc:
+            raise ScenarioError(f"{where}: module {module.id}: {exc}") from None
         (port, sel), (_, sdi), (_, sdo), (_, sck) = RF12_SPI_PINS
         self.cluster.attach_rf12(index, (port, sel, sdi, sdo, sck), RF12_IRQ_PIN)
         self.cluster.watch_uart(index, 1)

@@ -29,6 +29,10 @@
  */
 #include <stdlib.h>
 #include <string.h>
+#include <fcntl.h>
+#include <unistd.h>
+#include <gelf.h>
+#include <libelf.h>
 #include <stdio.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -981,6 +985,8 @@ static void m162_setup_run(m162_t *m)
 	m->avr->gdb_port = 0;
 }
 
+static void m162_widen_data(avr_t *avr);
+
 m162_t *m162_make(void)
 {
 	m162_t *m = calloc(1, sizeof *m);
@@ -996,6 +1002,7 @@ m162_t *m162_make(void)
 		m->usart[i].ir_sel_port = -1;
 	}
 	avr_init(m->avr); /* calls m162_init, then resets */
+	m162_widen_data(m->avr);
 	m162_setup_run(m);
 	m162_hook_ports(m);
 	avr_irq_register_notify(m->avr->interrupts.irq + AVR_INT_IRQ_RUNNING, m162_reti, m->avr);
@@ -1032,6 +1039,7 @@ m162_t *m162_make_stock(const char *mmcu)
 		m->usart[i].ir_sel_port = -1;
 	}
 	avr_init(stock);
+	m162_widen_data(stock);
 	m->fixup_io = (avr_io_t){ .kind = "pinlog-reset", .reset = m162_stock_reset };
 	avr_register_io(stock, &m->fixup_io);
 	m162_setup_run(m);
@@ -1084,6 +1092,58 @@ void m162_free(m162_t *m)
 	free(m);
 }
 
+/* The device an avr-gcc ELF was built for: the last string of its
+ * .note.gnu.avr.deviceinfo note (avr-gcc 5 and later write one); an empty
+ * string when it has none. */
+static void elf_device(const char *path, char *dev, size_t devlen)
+{
+	dev[0] = 0;
+	int fd = open(path, O_RDONLY);
+	if (fd < 0)
+		return;
+	elf_version(EV_CURRENT);
+	Elf *e = elf_begin(fd, ELF_C_READ, NULL);
+	size_t shstrndx;
+	if (e && elf_getshdrstrndx(e, &shstrndx) == 0) {
+		for (Elf_Scn *scn = NULL; (scn = elf_nextscn(e, scn)) != NULL;) {
+			GElf_Shdr sh;
+			const char *name;
+			if (!gelf_getshdr(scn, &sh) || !(name = elf_strptr(e, shstrndx, sh.sh_name)) ||
+					strcmp(name, ".note.gnu.avr.deviceinfo") != 0)
+				continue;
+			Elf_Data *d = elf_getdata(scn, NULL);
+			if (!d || !d->d_buf)
+				break;
+			const char *p = d->d_buf;
+			size_t end = d->d_size;
+			while (end && !p[end - 1])
+				end--;
+			size_t start = end;
+			while (start && p[start - 1])
+				start--;
+			snprintf(dev, devlen, "%.*s", (int)(end - start), p + start);
+			break;
+		}
+	}
+	if (e)
+		elf_end(e);
+	close(fd);
+}
+
+/* simavr sizes data memory to RAMEND + 1 and, after it logs a write beyond
+ * it as invalid, still stores the byte: a firmware that runs off its stack
+ * or an array would write into the simulator's own heap (and other MCUs'
+ * state). 64 KiB covers every address an AVR instruction can form. */
+static void m162_widen_data(avr_t *avr)
+{
+	uint8_t *data = calloc(1, 0x10000);
+	if (!data)
+		return; /* keep simavr's: no worse than before */
+	memcpy(data, avr->data, avr->ramend + 1u);
+	free(avr->data);
+	avr->data = data;
+}
+
 /* libelf accepts some files that are not ELF at all: check the header. */
 static int check_avr_elf(const char *path, char *err, size_t errlen)
 {
@@ -1110,6 +1170,13 @@ int m162_load_elf(m162_t *m, const char *path, char *err, size_t errlen)
 {
 	if (check_avr_elf(path, err, errlen) != 0)
 		return -1;
+	char dev[32];
+	elf_device(path, dev, sizeof dev);
+	if (m->is_m162 && dev[0] && strcmp(dev, "atmega162") != 0) {
+		/* its registers, RAM and vectors are elsewhere: it would run astray */
+		snprintf(err, errlen, "%s: built for the %s, not the ATmega162", path, dev);
+		return -1;
+	}
 	/* elf_firmware_t is big and its layout depends on simavr's build flags:
 	 * give the library generous room. */
 	union {

@@ -92,3 +92,52 @@ def test_toml_syntax_error_names_the_line(tmp_path):
 def test_unknown_builtin_lists_the_choices():
     with pytest.raises(ScenarioError, match="flower7"):
         load_scenario("no-such-scenario")
+
+
+def test_bad_values_name_the_line_instead_of_a_traceback(tmp_path):
+    from hexbot.errors import ScenarioError
+
+    cases = {
+        "module = [1, 2]\n": "array of tables",
+        "[[module]]\nid = 1\nposition = [0, 0]\norientation = true\n": "orientation",
+        "clock_ppm = nan\n[[module]]\nid = 1\nposition = [0, 0]\n": "ppm",
+    }
+    for n, (text, word) in enumerate(cases.items()):
+        path = tmp_path / f"bad{n}.toml"
+        path.write_text('name = "bad"\n' + text)
+        with pytest.raises(ScenarioError, match=word) as info:
+            load_scenario(path)
+        assert str(info.value).startswith(f"{path}:"), info.value
+
+
+def test_an_image_built_for_another_avr_is_refused_with_its_line(tmp_path):
+    import subprocess
+
+    from hexbot.errors import ScenarioError
+    from hexbot.hil_sim import Simulator
+
+    src = tmp_path / "m328.c"
+    src.write_text("#include <avr/io.h>\nint main(void){DDRB=0xFF;for(;;)PORTB++;}\n")
+    elf = tmp_path / "control328.elf"
+    subprocess.run(["avr-gcc", "-mmcu=atmega328p", "-Os", "-o", str(elf), str(src)], check=True)
+    path = tmp_path / "wrong.toml"
+    path.write_text('name = "wrong"\n[[module]]\nid = 1\nposition = [0, 0]\n'
+                    f'firmware = {{ control = "{elf}" }}\n')
+    with pytest.raises(ScenarioError, match="built for the atmega328p, not the ATmega162"):
+        Simulator(load_scenario(path), seed=1)
+
+
+def test_a_wild_write_above_ramend_crashes_the_mcu_not_the_simulator(tmp_path):
+    import subprocess
+
+    from hexbot.hil_sim._avr import Cluster
+
+    src = tmp_path / "wild.c"
+    # 0xFF00: 63 KB past simavr's 1.25 KB of data memory, in the host's heap
+    src.write_text("int main(void){*(volatile unsigned char*)0xFF00=0xAA;for(;;);}\n")
+    elf = tmp_path / "wild.elf"
+    subprocess.run(["avr-gcc", "-mmcu=atmega162", "-Os", "-o", str(elf), str(src)], check=True)
+    cluster = Cluster()
+    mcu = cluster.add_mcu(str(elf), "wild")
+    cluster.run(2_000_000)
+    assert cluster.state(mcu) == "crashed" and "out of ram" in cluster.last_error(mcu)
