@@ -25,6 +25,7 @@ from __future__ import annotations
 
 import errno
 import os
+import sys
 import termios
 import time
 import tty
@@ -51,6 +52,7 @@ class _Port:
     name: str
     wire: LineSettings = LineSettings(BAUD_IR)  # what the modules' UART speaks
     dropped: int = 0
+    told: int = 0  # ``dropped`` when the last burst of drops ended
     early: bytes = b""  # read while waiting for a client, not yet passed on
 
     def client_line(self) -> LineSettings:
@@ -174,14 +176,24 @@ class PtyBridge:
                 self.sim.debug_write(module_id, port.from_client(data))
 
     def pump_out(self) -> None:
-        """Simulator -> client."""
+        """Simulator -> client; bytes a full pty had no room for are said on
+        stderr, once per burst (a client that stopped reading)."""
         data = self.sim.pc_read()
         if data:
-            self.ir.write(self.ir.to_client(data))
+            self._write(self.ir, data)
         for module_id, port in self.debug.items():
             data = self.sim.debug_read(module_id)
             if data:
-                port.write(port.to_client(data))
+                self._write(port, data)
+
+    def _write(self, port: _Port, data: bytes) -> None:
+        before = port.dropped
+        port.write(port.to_client(data))
+        if port.dropped > before and before == port.told:
+            print(f"hexbot sim: {port.name}: the client does not read fast enough: "
+                  "bytes are dropped", file=sys.stderr, flush=True)
+        if port.dropped == before:
+            port.told = port.dropped  # caught up: the next burst is said again
 
     def wait_for_client(self, keep_waiting: Callable[[], bool]) -> bool:
         """Block until a client opened the IR port (see ``_Port.wait_for_client``)."""

@@ -98,3 +98,27 @@ def test_rotation_over_the_ptys_writes_events_and_vcd(tmp_path):
     code = next(line.split()[3] for line in scope.splitlines() if line.endswith(" s4n $end"))
     changes = [line for line in body.splitlines() if line[1:] == code and line[0] in "01"]
     assert changes[-2:] == [f"1{code}", f"0{code}"]
+
+
+class _Chatty:
+    """Unit-test double of the simulator's output side: 100 bytes for the
+    PC at every pump, no debug ports."""
+
+    modules: dict = {}
+
+    def pc_read(self) -> bytes:
+        return b"A" * 100
+
+
+def test_bytes_a_slow_client_misses_are_said_once_per_burst(capsys):
+    from hexbot.hil_sim.pty_bridge import PtyBridge
+
+    bridge = PtyBridge(_Chatty())  # type: ignore[arg-type]
+    try:
+        for _ in range(3000):  # 300 kB, nobody reading: the pty fills
+            bridge.pump_out()
+        assert bridge.ir.dropped > 0
+        warnings = capsys.readouterr().err.splitlines()
+        assert len(warnings) == 1 and "bytes are dropped" in warnings[0], warnings
+    finally:
+        bridge.close()
