@@ -51,13 +51,11 @@ PARAMS = [
     Param("seed", int, None, "simulator seed (default: the scenario's)"),
     Param("firmware", str, None, "folder with comm.elf and control.elf (default: the "
           "scenario's images)", path=True, check=_check_firmware),
-    Param("quiet", float, 0.3, "simulated seconds of silence that end a broadcast's answers"),
 ]
 COUNT_BY = (("script", "firmware", "scenario"), "result")
 
 
-def run(script: str, scenario: str | None, seed: int | None, firmware: str | None,
-        quiet: float) -> dict:
+def run(script: str, scenario: str | None, seed: int | None, firmware: str | None) -> dict:
     path = Path(script)
     steps = load_script(path)
     scenario = scenario or declared_scenario(path) or DEFAULT_SCENARIO
@@ -69,8 +67,7 @@ def run(script: str, scenario: str | None, seed: int | None, firmware: str | Non
     with redirect_stderr(log):
         try:
             with session(args, verbose_states=False) as sess:
-                runner = ScriptRunner(sess, path.name, out=lambda line: print(line, file=log),
-                                      quiet=quiet)
+                runner = ScriptRunner(sess, path.name, out=lambda line: print(line, file=log))
                 try:
                     runner.run(steps)
                 finally:
