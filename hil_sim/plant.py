@@ -306,14 +306,40 @@ class Plant:
     def _move(self, body: Body, pivot: Rotation, info: dict, t: int, body_joint: int) -> None:
         source = body.cell
         target = pivot.goal_cell(source)
+        groups_before = len(self._groups())
         del self.cells[source]
         self.cells[target] = body.id
         body.cell = target
         body.orientation = (body.orientation + pivot.turn) % 6
         self.geometry_version += 1
+        # The mechanics allow a cut vertex to rotate away; the cluster then
+        # lies in pieces on the table, which the trace must say.
+        groups = self._groups()
+        if len(groups) > groups_before:
+            info = {**info, "split": sorted(m for g in groups if body.id not in g for m in g)}
         self.emit(t, {"event": "moved", "module": body.id, "from": list(source),
                       "to": list(target), "orientation": body.orientation,
                       "joint": body_joint, **info})
+
+    def _groups(self) -> list[set[int]]:
+        """The modules in touching groups (connected components of the cells)."""
+        seen: set[Cell] = set()
+        groups = []
+        for start in self.cells:
+            if start in seen:
+                continue
+            seen.add(start)
+            stack, group = [start], set()
+            while stack:
+                cell = stack.pop()
+                group.add(self.cells[cell])
+                for side in range(1, 7):
+                    nb = neighbor(cell, side)
+                    if nb in self.cells and nb not in seen:
+                        seen.add(nb)
+                        stack.append(nb)
+            groups.append(group)
+        return groups
 
     def _report_lonely_substrates(self, now: int) -> None:
         """A substrate pulse nobody used: say so once, after its mobile had time to finish."""

@@ -42,7 +42,7 @@ from hexbot.protocol.frames import Command
 from hexbot.protocol.header import schema_mismatch
 from hexbot.protocol.mavlink_codec import FramedParser, Framing, MavlinkEncoder
 from hexbot.protocol.parser import Event, StatusReport
-from hexbot.protocol.simulation import PlantVerdict, SimulatorAccess
+from hexbot.protocol.simulation import Moved, PlantVerdict, SimulatorAccess
 
 #: Port names: the central IR transceiver and one control board's UART1.
 IR, DEBUG = "ir", "debug"
@@ -248,6 +248,8 @@ class Host:
     def _verdict(self, verdict: PlantVerdict) -> None:
         if self.log:
             self.log.note("sim", verdict.describe())
+        if isinstance(verdict, Moved) and verdict.split:
+            self.warn(verdict.t, f"the cluster split: {verdict.describe()}")
         with self.changed:
             self.changed.notify_all()  # a workflow may be waiting for it
         self._notify(SimVerdict(verdict))

@@ -241,6 +241,8 @@ def _plant_verdict(session: Session, mobile: int, since: int) -> Pose:
     if isinstance(verdict, Refused):
         raise CommandRefusedError(f"the plant refused: module {mobile} "
                                   f"{verdict.reason.value} ({verdict.detail})")
+    if verdict.split:  # it moved, and the cluster is in pieces: not a success
+        raise CommandRefusedError(f"the cluster split: {verdict.describe()}")
     if origin is None:
         return Pose(verdict.dst, verdict.orientation)
     # the plant's frame is the scenario's; the poses are the localization's,

@@ -52,10 +52,13 @@ class Moved:
     orientation: int  # Yref after the move
     joint: int  # body-frame joint of the mobile module it turned about
     substrate: int | None = None
+    split: tuple[int, ...] = ()  # modules the move left apart from the mover's group
 
     def describe(self) -> str:
+        apart = (f"; module(s) {', '.join(map(str, self.split))} no longer touch it"
+                 if self.split else "")
         return (f"module {self.module} moved {self.src} -> {self.dst} "
-                f"facing {self.orientation}")
+                f"facing {self.orientation}{apart}")
 
 
 @dataclass(frozen=True)
@@ -84,7 +87,7 @@ def verdict_from_record(record: dict[str, Any]) -> PlantVerdict | None:
     if kind == "moved":
         return Moved(float(record["t"]), int(record["module"]), _cell(record["from"]),
                      _cell(record["to"]), int(record["orientation"]), int(record["joint"]),
-                     record.get("substrate"))
+                     record.get("substrate"), tuple(int(m) for m in record.get("split", ())))
     if kind == "refused":
         return Refused(float(record["t"]), record.get("module"),
                        RefusalReason(record["reason"]), str(record.get("detail", "")),

@@ -2,7 +2,9 @@
 
 import pytest
 
+from hexbot.hil_sim.geometry import Rotation, distance, neighbor, to_global
 from hexbot.hil_sim.plant import NEG, OFF, POS, Plant
+from hexbot.protocol.simulation import verdict_from_record
 
 MS = 1000  # cycles per millisecond at 1 MHz
 
@@ -245,3 +247,26 @@ def test_geometry_version_counts_moves():
     rig.finish()
     assert [e["event"] for e in rig.events] == ["moved"]
     assert rig.plant.geometry_version == before + 1
+
+
+def test_a_rotation_that_leaves_a_module_alone_says_the_cluster_split():
+    # Module 3 touches only the mobile module 2: when 2 rotates away, the
+    # mechanics let it, and the trace must say 3 is left on its own.
+    rot = Rotation(to_global(4, 0), "CW")
+    taken = {rot.goal_cell((-1, 1)), *rot.swept_cells((-1, 1)), (0, 0)}
+    third = next(c for c in (neighbor((-1, 1), s) for s in range(1, 7))
+                 if c not in taken and all(distance(c, o) > 1
+                                           for o in [(0, 0), rot.goal_cell((-1, 1))]))
+    rig = Rig(extra=[third])
+    thesis_cw(rig)
+    (moved,) = [e for e in rig.finish() if e["event"] == "moved"]
+    assert moved["split"] == [3]
+    verdict = verdict_from_record({**moved, "t": 0.0})
+    assert verdict.split == (3,) and "module(s) 3 no longer touch it" in verdict.describe()
+
+
+def test_an_ordinary_rotation_splits_nothing():
+    rig = Rig()
+    thesis_cw(rig)
+    (moved,) = [e for e in rig.finish() if e["event"] == "moved"]
+    assert "split" not in moved
