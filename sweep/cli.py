@@ -6,17 +6,19 @@
     hexbot sweep report sweep_locomotion.results [--plot outcomes.png]
 
 Exit status: 0 every task ok, 1 some task failed or was lost (the table
-says which), 130 interrupted (finished rows are kept; --resume goes on).
+says which), 2 a usage error, 130 interrupted (finished rows are kept;
+--resume goes on).
 """
 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 from pathlib import Path
 
-from hexbot.cli_args import output_file
-from hexbot.errors import CancelledError, HexBotError
+from hexbot.cli_args import count, output_file
+from hexbot.errors import CancelledError, HexBotError, UsageError
 from hexbot.extras import require
 
 REPORT = "report"
@@ -37,7 +39,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                      help="keep the folder's rows and run only the missing tasks")
     run.add_argument("--scheduler", metavar="tcp://HOST:8786",
                      help="a running Dask scheduler (default: an embedded local cluster)")
-    run.add_argument("--workers", type=int, metavar="N",
+    run.add_argument("--workers", type=count, metavar="N",
                      help="embedded cluster: worker processes (default: one per core)")
     run.add_argument("--check", action="store_true",
                      help="only check the sweep file and count its tasks")
@@ -53,7 +55,7 @@ def run(args: argparse.Namespace) -> int:
     if args.target == REPORT:
         return _report(args)
     if args.results or args.plot:
-        raise HexBotError("RESULTS and --plot belong to 'hexbot sweep report RESULTS'")
+        raise UsageError("RESULTS and --plot belong to 'hexbot sweep report RESULTS'")
     return _run(args)
 
 
@@ -62,9 +64,9 @@ def _report(args: argparse.Namespace) -> int:
 
     given = [o for o in RUN_OPTIONS if getattr(args, o) not in (None, False)]
     if given:
-        raise HexBotError(f"--{given[0].replace('_', '-')} is for running a sweep, not report")
+        raise UsageError(f"--{given[0].replace('_', '-')} is for running a sweep, not report")
     if not args.results:
-        raise HexBotError("report needs the results folder: hexbot sweep report RESULTS")
+        raise UsageError("report needs the results folder: hexbot sweep report RESULTS")
     print(report(args.results))
     if args.plot:
         print(f"plot: {plot(args.results, args.plot)}", file=sys.stderr)
@@ -76,9 +78,10 @@ def _run(args: argparse.Namespace) -> int:
 
     spec = load_spec(args.target)  # every error of the file, before anything runs
     tasks = spec.tasks()
-    if args.workers is not None and (args.workers < 1 or args.scheduler):
-        raise HexBotError("--workers: a positive count, for the embedded cluster only")
+    if args.workers is not None and args.scheduler:
+        raise UsageError("--workers is for the embedded cluster, not with --scheduler")
     out = args.out or spec.output or Path(f"{spec.path.stem}.results")
+    _check_out(out, create=not args.check)
     if args.check:
         print(f"{spec.path}: kind {spec.kind.name}, {len(tasks)} tasks, results in {out}")
         return 0
@@ -105,6 +108,26 @@ def _run(args: argparse.Namespace) -> int:
         print(f"{outcome.failed} tasks failed: hexbot sweep report {out}", file=sys.stderr)
         return 1
     return 0
+
+
+def _check_out(out: Path, create: bool) -> None:
+    """The results folder must be one this process can write, before anything
+    runs; ``create`` makes it (a usage error when that fails)."""
+    if out.exists() and not out.is_dir():
+        raise UsageError(f"--out {out}: is a file, not a results folder")
+    parent = out
+    while not parent.exists():
+        parent = parent.parent
+    if not parent.is_dir():
+        raise UsageError(f"--out {out}: {parent} is not a folder")
+    if not os.access(parent, os.W_OK | os.X_OK):
+        raise UsageError(f"--out {out}: cannot write in {parent}")
+    if create:
+        try:
+            out.mkdir(parents=True, exist_ok=True)
+        except OSError as exc:
+            raise UsageError(f"--out {out}: cannot make the folder: "
+                             f"{exc.strerror or exc}") from None
 
 
 def _write_junit(kind: str, out: Path) -> None:

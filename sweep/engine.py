@@ -10,8 +10,13 @@ as lost), and the same code runs on an embedded LocalCluster or on any
 scheduler address.
 
 A task's own exception is its result (an ``error`` row with the exception's
-type and text); only what kept a task from finishing anywhere (a lost
-worker, a cancelled run) leaves no row, so ``--resume`` runs exactly those.
+type and text), ``SystemExit`` and ``KeyboardInterrupt`` included; only what
+kept a task from finishing anywhere (a lost worker, a cancelled run) leaves
+no row, so ``--resume`` runs exactly those. A task whose worker died under
+it (its own doing or a neighbour's: Dask cannot tell) runs once more,
+alone, after the others, before it counts as lost: a task that kills its
+worker (``os._exit``, a crash in C code) then costs the tasks that shared
+the worker nothing.
 Ctrl-C keeps every row of a task that had finished, also those not yet
 taken back.
 """
@@ -35,6 +40,7 @@ from hexbot.sweep.summary import ENGINE_COLUMNS
 
 FAILURE = "failure"  # the figure a kind sets to fail its task, with the reason
 LOST = "lost"  # what the progress callback hears for a task that left no row
+RETRIES = 1  # a task lost with its worker runs again, alone, this many times
 
 
 @dataclass
@@ -63,10 +69,25 @@ def execute(target: str, call: dict[str, Any]) -> dict[str, Any]:
             raise HexBotError(f"{target} returned figures named like columns: {clash}")
         failure = figures.pop(FAILURE, None)
         outcome, error = ("failed", str(failure)) if failure else ("ok", "")
-    except Exception as exc:  # the task's result, stored with its type and text
+    except BaseException as exc:  # noqa: BLE001 - the task's result, with its type and text
+        # SystemExit and KeyboardInterrupt too: raised by a task, they would
+        # take its worker down with the results it holds
         figures, outcome, error = {}, "error", f"{type(exc).__name__}: {exc}"
     return {"outcome": outcome, "error": error,
             "seconds": round(time.perf_counter() - start, 6), **figures}
+
+
+def lost_reason(fut: Any, task: Task) -> str:
+    """Why a task left no row, for the message that counts the lost ones."""
+    params = ", ".join(f"{k}={v!r}" for k, v in task.params.items())
+    exc = fut.exception() if fut.status == "error" else None
+    if type(exc).__name__ == "KilledWorker":
+        why = "its worker died every time it ran (a task that exits or crashes its process?)"
+    elif exc is not None:
+        why = f"{type(exc).__name__}: {exc}"
+    else:
+        why = f"its result was lost with its worker (Dask status {fut.status!r})"
+    return f"e.g. task {task.id} ({params}): {why}"
 
 
 @contextmanager
@@ -102,7 +123,8 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
     from distributed import as_completed
 
     start = time.perf_counter()
-    tasks = spec.tasks()
+    tasks = list({t.id: t for t in spec.tasks()}.values())  # a task once, whatever the grid
+    store.order = {t.id: i for i, t in enumerate(tasks)}
     existing = store.existing()
     done = set(existing.column("task").to_pylist()) if existing is not None else set()
     if done and not resume:
@@ -121,17 +143,28 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
     # asynchronously, so a --resume that reused the key of a task cancelled a
     # moment before could get that cancellation and lose the task.
     run_token = uuid.uuid4().hex[:8]
+    tries: dict[str, int] = {}
+    suspects: list[Task] = []  # lost with a worker: run again, one at a time
+
+    def submit(task: Task) -> None:
+        again = tries.get(task.id, 0)
+        fut = client.submit(execute, spec.kind.target, task.call, pure=False,
+                            key=f"hexbot-sweep-{spec.kind.name}-{task.id}-{run_token}"
+                                + (f"-retry{again}" if again else ""))
+        in_flight[fut.key] = (task, fut)
+        finished.add(fut)
 
     def submit_next() -> None:
         task = next(todo, None)
         if task is not None:
-            fut = client.submit(execute, spec.kind.target, task.call,
-                                key=f"hexbot-sweep-{spec.kind.name}-{task.id}-{run_token}")
-            in_flight[fut.key] = (task, fut)
-            finished.add(fut)
+            submit(task)
 
-    def take(fut: Any) -> None:
+    def take(fut: Any, retry: bool = True) -> None:
         task, _ = in_flight.pop(fut.key)
+        if fut.status != "finished" and retry and tries.get(task.id, 0) < RETRIES:
+            tries[task.id] = tries.get(task.id, 0) + 1
+            suspects.append(task)  # its worker died: maybe not its fault
+            return
         if fut.status == "finished":
             row = {"task": task.id, "kind": spec.kind.name, **task.params, **fut.result()}
             store.add(row)
@@ -140,7 +173,7 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
             result = row["outcome"]
         else:
             outcome.lost += 1
-            outcome.lost_reason = outcome.lost_reason or repr(fut.exception())
+            outcome.lost_reason = outcome.lost_reason or lost_reason(fut, task)
             result = LOST
         if on_result:
             on_result(result)
@@ -151,10 +184,14 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
         for fut in finished:
             take(fut)
             submit_next()
+        for task in suspects:  # alone, so one that kills its worker takes no other with it
+            submit(task)
+            for fut in finished:
+                take(fut)
     except KeyboardInterrupt:
         outcome.interrupted = True
         for fut in [f for _, f in in_flight.values() if f.status == "finished"]:
-            take(fut)
+            take(fut, retry=False)
         client.cancel([f for _, f in in_flight.values()])
     finally:
         store.flush()

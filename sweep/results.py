@@ -49,7 +49,11 @@ def read_table(folder: str | Path) -> pa.Table | None:
     parts = [pq.read_table(p) for p in part_files(folder)]
     if not parts:
         return None
-    table = pa.concat_tables(parts, promote_options="permissive")
+    try:
+        table = pa.concat_tables(parts, promote_options="permissive")
+    except (pa.ArrowInvalid, pa.ArrowTypeError, pa.ArrowNotImplementedError):
+        # parts that disagree on a column's type: that column as text
+        table = rows_table([row for part in parts for row in part.to_pylist()])
     last = {task: i for i, task in enumerate(table.column("task").to_pylist())}
     if len(last) < table.num_rows:
         table = table.take(sorted(last.values()))
@@ -78,11 +82,18 @@ class ResultStore:
         self._rows: list[dict[str, Any]] = []
         self._last_flush = time.monotonic()
         self._lock: IO[str] | None = None
+        self._refused = False
         self.written = 0
+        # task id -> its place in the grid; closing sorts the table by it
+        self.order: dict[str, int] = {}
 
     def __enter__(self) -> ResultStore:
-        (self.folder / TABLE).mkdir(parents=True, exist_ok=True)
-        self._lock = open(self.folder / ".lock", "w")  # noqa: SIM115 - held until close
+        try:
+            (self.folder / TABLE).mkdir(parents=True, exist_ok=True)
+            self._lock = open(self.folder / ".lock", "w")  # noqa: SIM115 - held until close
+        except OSError as exc:
+            raise HexBotError(f"{self.folder}: cannot write the results there: "
+                              f"{exc.strerror or exc}") from None
         try:
             fcntl.flock(self._lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
@@ -95,15 +106,19 @@ class ResultStore:
         self.close()
 
     def existing(self) -> pa.Table | None:
-        """What an earlier run stored; refuses a folder of another kind."""
+        """What an earlier run stored; refuses a folder of another kind (and
+        then writes nothing there, not even when closing)."""
         table = read_table(self.folder)
         if table is not None:
             kind, _ = table_meta(table)
             if kind != self.kind:
+                self._refused = True
                 raise HexBotError(f"{self.folder} holds a {kind!r} sweep, not {self.kind!r}")
         return table
 
     def add(self, row: dict[str, Any]) -> None:
+        if self._refused:
+            raise HexBotError(f"{self.folder} holds another kind of sweep: no rows go there")
         self._rows.append(row)
         if (len(self._rows) >= self.flush_rows
                 or time.monotonic() - self._last_flush >= self.flush_seconds):
@@ -113,29 +128,50 @@ class ResultStore:
         self._last_flush = time.monotonic()
         if not self._rows:
             return
-        self._write(pa.Table.from_pylist(self._rows))
+        self._write(rows_table(self._rows))
         self.written += len(self._rows)
         self._rows = []
 
     def close(self) -> None:
-        """Write what is buffered, merge the parts into one, release the folder."""
+        """Write what is buffered, merge the parts into one in grid order,
+        release the folder. A store that wrote no rows (or refused the folder)
+        leaves the folder as it found it."""
         if self._lock is None:
             return
         try:
             self.flush()
             parts = part_files(self.folder)
-            if len(parts) > 1:
+            if self.written and not self._refused and parts:
                 merged = read_table(self.folder)
                 assert merged is not None
-                self._write(merged)
-                for p in parts:
-                    p.unlink()
+                ordered = self._grid_order(merged)
+                if len(parts) > 1 or ordered is not None:
+                    # the folder's own metadata (read_table keeps the last part's)
+                    self._write(ordered if ordered is not None else merged,
+                                merged.schema.metadata)
+                    for p in parts:
+                        p.unlink()
         finally:
             self._lock.close()
             self._lock = None
 
-    def _write(self, table: pa.Table) -> None:
-        meta = {META_KIND: self.kind.encode(), META_PARAMS: json.dumps(self.params).encode()}
+    def _grid_order(self, table: pa.Table) -> pa.Table | None:
+        """The table sorted by grid order (rows not in this grid last, as they
+        were); None when it is in that order already."""
+        if not self.order:
+            return None
+        end = len(self.order)
+        tasks = table.column("task").to_pylist()
+        keys = [(self.order.get(t, end), i) for i, t in enumerate(tasks)]
+        indices = [i for _, i in sorted(keys)]
+        if indices == list(range(len(tasks))):
+            return None
+        return table.take(indices)
+
+    def _write(self, table: pa.Table, meta: dict[bytes, bytes] | None = None) -> None:
+        if meta is None:
+            meta = {META_KIND: self.kind.encode(),
+                    META_PARAMS: json.dumps(self.params).encode()}
         table = table.replace_schema_metadata(meta)
         parts = part_files(self.folder)
         number = int(PART.match(parts[-1].name).group(1)) + 1 if parts else 1
@@ -143,3 +179,28 @@ class ResultStore:
         tmp = final.with_name(f".{final.name}.tmp")
         pq.write_table(table, tmp)
         os.replace(tmp, final)
+
+
+def rows_table(rows: list[dict[str, Any]]) -> pa.Table:
+    """The rows as an Arrow table; a column whose values Arrow cannot hold in
+    one type (a figure that is a number for some tasks, text for others) is
+    stored as text rather than losing every row."""
+    try:
+        return pa.Table.from_pylist(rows)
+    except (pa.ArrowInvalid, pa.ArrowTypeError, pa.ArrowNotImplementedError):
+        pass
+    names = list(dict.fromkeys(name for row in rows for name in row))
+    columns = {}
+    for name in names:
+        values = [row.get(name) for row in rows]
+        try:
+            columns[name] = pa.array(values)
+        except (pa.ArrowInvalid, pa.ArrowTypeError, pa.ArrowNotImplementedError):
+            columns[name] = pa.array([_as_text(v) for v in values], pa.string())
+    return pa.table(columns)
+
+
+def _as_text(value: Any) -> str | None:
+    if value is None or isinstance(value, str):
+        return value
+    return json.dumps(value, default=str)

@@ -13,7 +13,10 @@
     rounds = 2500
 
 The tasks are every combination of the axes (the first axis varies
-slowest), each with the kind's defaults for what the grid leaves out. A
+slowest), each with the kind's defaults for what the grid leaves out. An
+axis holds each value once and values of one type (ints and floats mix,
+as floats); a grid of more than ``MAX_TASKS`` tasks is refused, its size
+computed before any task is built. A
 task's id is a hash of its kind and parameters: the same task has the same
 id in every run, which is what ``--resume`` and a retried task rely on.
 
@@ -26,6 +29,7 @@ from __future__ import annotations
 import hashlib
 import itertools
 import json
+import math
 import re
 import tomllib
 from dataclasses import dataclass
@@ -37,6 +41,7 @@ from hexbot.files import read_text
 from hexbot.sweep.kinds import Kind, Param, load_kind
 from hexbot.toml_lines import TomlLines
 
+MAX_TASKS = 1_000_000  # a bigger grid is refused (split it into several sweep files)
 TOP_KEYS = {"kind", "description", "output", "grid"}
 RANGE_KEYS = {"start", "stop", "step"}
 
@@ -135,11 +140,27 @@ def parse_spec(data: dict[str, Any], text: str, path: Path) -> Spec:
     if not isinstance(grid, dict) or not grid:
         raise fail(lines.find("grid"), "a sweep needs a [grid] table with the kind's parameters")
 
+    sizes = {}
+    for name, raw in grid.items():
+        size = _size(raw)
+        if size > MAX_TASKS:
+            raise fail(lines.find("grid", -1, name), f"{name}: {size:,} values; a sweep "
+                       f"has at most {MAX_TASKS:,} tasks")
+        sizes[name] = size
+    total = math.prod(sizes.values())
+    if total > MAX_TASKS:
+        raise fail(lines.find("grid"), f"the grid has {total:,} tasks "
+                   f"({' x '.join(f'{sizes[n]:,} {n}' for n in sizes if sizes[n] > 1)}); "
+                   f"a sweep has at most {MAX_TASKS:,}")
+
     axes: dict[str, list[Any]] = {}
     for name, raw in grid.items():
         line = lines.find("grid", -1, name)
         values = _values(raw, lambda problem, name=name, line=line:
                          fail(line, f"{name}: {problem}"))
+        if isinstance(raw, list) and kind.params is None:  # a kind's Param checks the type
+            values = _one_type(values, lambda problem, name=name, line=line:
+                               fail(line, f"{name}: {problem}"))
         if kind.params is not None:
             param = kind.params.get(name)
             if param is None:
@@ -147,6 +168,9 @@ def parse_spec(data: dict[str, Any], text: str, path: Path) -> Spec:
                            f"{', '.join(kind.params)})")
             values = [_checked(param, v, path, lambda p, line=line: fail(line, p))
                       for v in values]
+        if isinstance(raw, list):
+            _once_each(values, lambda problem, name=name, line=line:
+                       fail(line, f"{name}: {problem}"))
         axes[name] = values
     if kind.params is not None:
         missing = [n for n, p in kind.params.items() if p.required and n not in axes]
@@ -155,6 +179,45 @@ def parse_spec(data: dict[str, Any], text: str, path: Path) -> Spec:
                        "in [grid]")
     out = (path.parent / output) if output else None
     return Spec(path, kind, description, out, axes)
+
+
+def _size(raw: Any) -> int:
+    """How many values an axis has, without building a range (0: let _values say why)."""
+    if isinstance(raw, list):
+        return len(raw)
+    if isinstance(raw, dict):
+        bounds = [raw.get("start", 0), raw.get("stop"), raw.get("step", 1)]
+        if all(isinstance(b, int) and not isinstance(b, bool) for b in bounds) and bounds[2] > 0:
+            return len(range(*bounds))
+        return 0
+    return 1
+
+
+def _one_type(values: list[Any], fail) -> list[Any]:
+    """A list axis's values, all of one type; ints among floats become floats."""
+    types = {type(v) for v in values}
+    if types == {int, float}:
+        return [float(v) for v in values]
+    if len(types) > 1:
+        names = ", ".join(sorted(t.__name__ for t in types))
+        raise fail(f"values of one type, please (this list mixes {names}: "
+                   f"{_short(values)})")
+    return values
+
+
+def _once_each(values: list[Any], fail) -> None:
+    seen: set[str] = set()
+    for value in values:
+        key = json.dumps(value, sort_keys=True, default=str)
+        if key in seen:
+            raise fail(f"{value!r} is in the list twice (a task runs once: "
+                       "drop the repeat)")
+        seen.add(key)
+
+
+def _short(values: list[Any]) -> str:
+    text = ", ".join(repr(v) for v in values[:6])
+    return f"[{text}{', ...' if len(values) > 6 else ''}]"
 
 
 def _values(raw: Any, fail) -> list[Any]:

@@ -161,3 +161,27 @@ def test_a_task_that_raises_is_an_error_row_and_the_sweep_goes_on(write_spec, tm
     assert by_n[3]["outcome"] == "ok"
     text = report(tmp_path / "out")
     assert "failed tasks (1):" in text and "n=0: error: ScenarioError" in text
+
+
+@pytest.mark.parametrize(("how", "error"), [("exit", "SystemExit: 3"),
+                                            ("interrupt", "KeyboardInterrupt: ")])
+def test_a_task_that_exits_or_is_interrupted_is_an_error_row_not_a_dead_worker(how, error):
+    from hexbot.sweep.engine import execute
+
+    row = execute("tests.sweep.sample_tasks:misbehave", {"seed": 2, "how": how})
+    assert (row["outcome"], row["error"]) == ("error", error)
+
+
+def test_a_task_that_kills_its_worker_costs_the_others_nothing(write_spec, tmp_path):
+    from hexbot.sweep.engine import connect
+
+    spec = load_spec(write_spec('kind = "tests.sweep.sample_tasks:misbehave"\n[grid]\n'
+                                'seed = { start = 0, stop = 6 }\nhow = "die"\n'))
+    with connect(workers=2) as client, \
+            ResultStore(tmp_path / "out", spec.kind.name, spec.param_names) as store:
+        outcome = run_sweep(spec, client, store)
+    rows = read_table(tmp_path / "out").to_pylist()
+    assert [r["seed"] for r in rows] == [0, 1, 3, 4, 5]  # every healthy task, in grid order
+    assert all(r["outcome"] == "ok" for r in rows)
+    assert (outcome.stored, outcome.lost) == (5, 1)
+    assert "seed=2" in outcome.lost_reason and "worker died" in outcome.lost_reason

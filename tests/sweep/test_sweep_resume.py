@@ -10,8 +10,11 @@ import sys
 import time
 from pathlib import Path
 
+import pytest
+
+from hexbot.errors import HexBotError
 from hexbot.sweep.engine import run_sweep
-from hexbot.sweep.results import ResultStore, part_files, read_table
+from hexbot.sweep.results import ResultStore, part_files, read_table, table_meta
 from hexbot.sweep.spec import load_spec
 
 HEXBOT = Path(sys.executable).with_name("hexbot")
@@ -110,3 +113,68 @@ def test_a_resume_right_after_an_interrupt_loses_no_task(write_spec, embedded_cl
         second = run_sweep(spec, embedded_client, store, resume=True)  # at once, same store
     assert (second.lost, second.stored) == (0, first.missing)
     assert len(read_table(out)) == 12
+
+
+def _rows(seeds) -> list[dict]:
+    return [{"task": f"t{s}", "kind": "k", "seed": s, "outcome": "ok"} for s in seeds]
+
+
+def test_a_refused_run_leaves_another_sweeps_folder_untouched(tmp_path):
+    out = tmp_path / "out"
+    # what a hard-killed sweep leaves: several parts, never merged
+    killed = ResultStore(out, "locomotion", ["seed"], flush_rows=2)
+    killed.__enter__()
+    for row in _rows(range(4)):
+        killed.add(row)
+    killed._lock.close()  # the process died: no close()
+    before = {p.name: p.read_bytes() for p in part_files(out)}
+    assert len(before) == 2
+
+    with ResultStore(out, "plan", ["modules"]) as other:
+        with pytest.raises(HexBotError, match="holds a 'locomotion' sweep, not 'plan'"):
+            other.existing()
+    assert {p.name: p.read_bytes() for p in part_files(out)} == before
+    assert table_meta(read_table(out)) == ("locomotion", ["seed"])
+
+    with ResultStore(out, "locomotion", ["seed"]) as nothing_new:
+        nothing_new.existing()
+    assert {p.name: p.read_bytes() for p in part_files(out)} == before  # no rows: untouched
+
+
+def test_merging_keeps_the_folders_metadata_and_sorts_by_grid_order(tmp_path):
+    out = tmp_path / "out"
+    with ResultStore(out, "k", ["seed"], flush_rows=2) as store:
+        store.order = {f"t{s}": s for s in range(6)}
+        for row in _rows([5, 0, 3, 1, 4, 2]):  # as the workers finished them
+            store.add(row)
+    assert len(part_files(out)) == 1
+    table = read_table(out)
+    assert table.column("seed").to_pylist() == list(range(6))
+    assert table_meta(table) == ("k", ["seed"])
+
+    with ResultStore(out, "k", ["seed"]) as one_part:  # a single part, out of order
+        one_part.order = {"t7": 0, "t6": 1}
+        for row in _rows([6, 7]):
+            one_part.add(row)
+    # this grid's rows first, in its order; rows of no grid task after them, as they were
+    assert read_table(out).column("seed").to_pylist() == [7, 6, 0, 1, 2, 3, 4, 5]
+
+
+def test_a_column_of_mixed_types_is_stored_as_text_not_lost(tmp_path):
+    out = tmp_path / "out"
+    with ResultStore(out, "k", ["seed"], flush_rows=3) as store:
+        for s in range(5):  # the first part all numbers, the second mixed
+            store.add({**_rows([s])[0], "note": s if s < 3 or s == 4 else f"s{s}"})
+    table = read_table(out)
+    assert table.num_rows == 5
+    assert table.column("note").to_pylist() == ["0", "1", "2", "s3", "4"]
+
+
+def test_a_repeated_task_runs_once(write_spec, tmp_path, embedded_client):
+    spec = load_spec(write_spec('kind = "hexbot.bench.sweep:noop"\n[grid]\n'
+                                'seed = [1, 2]\n'))
+    spec.axes["seed"] = [1, 2, 1]  # what the file check refuses, should it get through
+    with ResultStore(tmp_path / "out", spec.kind.name, spec.param_names) as store:
+        outcome = run_sweep(spec, embedded_client, store)
+    assert (outcome.total, outcome.stored) == (2, 2)
+    assert read_table(tmp_path / "out").column("seed").to_pylist() == [1, 2]

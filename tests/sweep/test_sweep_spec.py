@@ -56,6 +56,15 @@ def test_task_ids_depend_on_the_parameters_only(write_spec):
      "unknown rule set 'salvadore'"),
     ('kind = "plan"\n[grid]\nmodules = 10\nfamily = "square"\n', 4, "expected one of blob"),
     ('kind = "locomotion"\n[grid]\nruleset = "salvador"\nn = []\n', 4, "empty list"),
+    ('kind = "locomotion"\n[grid]\nruleset = "salvador"\nseed = [1, 2, 1]\n', 4,
+     "seed: 1 is in the list twice"),
+    ('kind = "hexbot.bench.sweep:noop"\n[grid]\n\nseed = [1, "two", 3.5]\n', 4,
+     "seed: values of one type, please (this list mixes float, int, str"),
+    ('kind = "locomotion"\n[grid]\nruleset = "salvador"\n'
+     'seed = { start = 0, stop = 1000000000 }\n', 4, "seed: 1,000,000,000 values"),
+    ('kind = "locomotion"\n[grid]\nruleset = "salvador"\nn = { start = 1, stop = 3000 }\n'
+     'seed = { start = 0, stop = 3000 }\nround_limit = { start = 1, stop = 3000 }\n', 2,
+     "the grid has 26,982,003,000 tasks (2,999 n x 3,000 seed x 2,999 round_limit)"),
 ])
 def test_errors_name_the_file_and_line(write_spec, text, line, words):
     path = write_spec(text)
@@ -105,3 +114,13 @@ def test_a_binary_sweep_file_is_not_text(tmp_path, capsys):
     err = capsys.readouterr().err
     assert err.strip() == (f"hexbot sweep: error: {binary}: not a text file (UTF-8): "
                            "byte 0xa9 at offset 0")
+
+
+def test_ints_among_floats_are_floats_and_a_big_grid_up_to_the_limit_is_fine(write_spec):
+    from hexbot.sweep.spec import MAX_TASKS
+
+    spec = load_spec(write_spec('kind = "hexbot.bench.sweep:noop"\n[grid]\nseed = [1, 2.5]\n'))
+    assert spec.axes["seed"] == [1.0, 2.5]
+    spec = load_spec(write_spec('kind = "hexbot.bench.sweep:noop"\n[grid]\n'
+                                f'seed = {{ start = 0, stop = {MAX_TASKS} }}\n', "big.toml"))
+    assert len(spec.axes["seed"]) == MAX_TASKS

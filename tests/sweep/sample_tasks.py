@@ -1,0 +1,23 @@
+"""Dotted-path task functions of the sweep tests (workers import them by name)."""
+
+from __future__ import annotations
+
+import os
+import sys
+
+
+def misbehave(seed: int, how: str = "ok") -> dict:
+    """Seed 2 leaves the way ``how`` says; the others return their seed."""
+    if seed == 2:
+        if how == "exit":
+            sys.exit(3)
+        if how == "interrupt":
+            raise KeyboardInterrupt
+        if how == "die":
+            os._exit(7)  # the worker process with it
+    return {"echo": seed}
+
+
+def mixed_figure(seed: int) -> dict:
+    """A figure that is a number for some tasks and text for others."""
+    return {"note": seed if seed % 2 else f"s{seed}"}
