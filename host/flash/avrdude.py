@@ -7,19 +7,34 @@ lines into one readable message with a hint at the usual cause.
 
 from __future__ import annotations
 
+import os
 import re
+import select
 import shutil
 import subprocess
 import tempfile
+import time
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from hexbot.errors import FlashingError
+from hexbot.errors import FlashingError, LinkUnavailableError
 from hexbot.host.flash.fuses import FuseSet
 
 PART = "m162"
 PROBE_TIMEOUT_S = 60.0  # avrdude retries a silent port for about a minute
 WRITE_TIMEOUT_S = 300.0  # a full 16 KiB at 115200 baud takes a few seconds
+# avrdude writes something (a progress '#', or "timeout" every 5 s while a
+# programmer is silent) at least every few seconds; a port that vanishes
+# mid-write leaves it looping without a word. This long without a byte on
+# its stdout/stderr, it is stopped and the port counted as lost (exit 4).
+NO_PROGRESS_S = 20.0
+ERASED_NOTE = "; the chip may be erased or half-written: flash it again"
+_DONE = "avrdude done.  Thank you."
+# stderr of a port that cannot be opened (avrdude 7.x; 6.x ser_open())
+_PORT_MISSING = ("cannot open port", "can't open device", "ser_open()")
+# stderr of a port lost while open (unplugged adapter, closed pty)
+_PORT_LOST = ("input/output error", "ser_send(): write error", "ser_recv(): read error",
+              "no such device")
 
 _WRITTEN = re.compile(r"(\d+) bytes? of (\w+) written")
 _VERIFIED = re.compile(r"(\d+) bytes? of (\w+) verified")
@@ -50,9 +65,12 @@ def explain(stderr: str, port: str, programmer: str) -> str:
     errors = [re.sub(r"^avrdude(?: OS)?(?: \S+\(\))? error: ", "", ln)
               for ln in lines if re.match(r"^avrdude.* error:", ln)]
     errors += [ln for ln in lines if "verification error" in ln or "mismatch" in ln]
-    text = "; ".join(dict.fromkeys(errors)) or (lines[-1] if lines else "no output")
+    # avrdude 6.x has no "error:" prefix and ends with a blank line: take
+    # the last line that says something
+    said = [re.sub(r"^avrdude(?: OS)?: ", "", ln) for ln in lines if ln and ln != _DONE]
+    text = "; ".join(dict.fromkeys(errors)) or (said[-1] if said else "no output")
     low = stderr.lower()
-    if "cannot open port" in low or "can't open device" in low:
+    if port_missing(stderr):
         hint = (f"is the programmer plugged in at {port}, and may you open it "
                 "(group dialout)?")
     elif "initialization failed" in low or "program enable" in low:
@@ -66,6 +84,51 @@ def explain(stderr: str, port: str, programmer: str) -> str:
     else:
         hint = ""
     return f"avrdude failed: {text}" + (f" ({hint})" if hint else "")
+
+
+def port_missing(stderr: str) -> bool:
+    low = stderr.lower()
+    return any(sign in low for sign in _PORT_MISSING)
+
+
+def port_lost(stderr: str) -> bool:
+    low = stderr.lower()
+    return any(sign in low for sign in _PORT_LOST)
+
+
+def _collect(proc: subprocess.Popen[bytes], timeout: float) -> tuple[bytes, bytes, str | None]:
+    """stdout and stderr of ``proc`` until it ends; kill it and say why
+    ("timeout", "stalled") when it runs too long or is silent too long."""
+    assert proc.stdout is not None and proc.stderr is not None
+    out, err = bytearray(), bytearray()
+    streams = {proc.stdout.fileno(): out, proc.stderr.fileno(): err}
+    start = last = time.monotonic()
+    why = None
+    while streams:
+        now = time.monotonic()
+        if now - start > timeout:
+            why = "timeout"
+            break
+        if now - last > NO_PROGRESS_S:
+            why = "stalled"
+            break
+        ready, _, _ = select.select(list(streams), [], [], 0.2)
+        for fd in ready:
+            data = os.read(fd, 65536)
+            if data:
+                streams[fd] += data
+                last = time.monotonic()
+            else:
+                del streams[fd]
+    if why is None:
+        try:
+            proc.wait(max(0.0, timeout - (time.monotonic() - start)) + 1.0)
+        except subprocess.TimeoutExpired:
+            why = "timeout"
+    if why is not None:
+        proc.kill()
+        proc.wait()
+    return bytes(out), bytes(err), why
 
 
 @dataclass
@@ -82,22 +145,40 @@ class Avrdude:
             raise FlashingError(
                 f"avrdude not found ({self.executable!r}): sudo apt-get install avrdude")
         cmd = [exe, "-c", self.programmer, "-P", self.port, "-p", PART]
-        if self.baud:
+        if self.baud is not None:
             cmd += ["-b", str(self.baud)]
         if self.bitclock:
             cmd += ["-B", self.bitclock]
         return cmd
 
-    def run(self, args: list[str], timeout: float) -> subprocess.CompletedProcess[str]:
+    def run(self, args: list[str], timeout: float,
+            writing: bool = False) -> subprocess.CompletedProcess[str]:
+        """Run avrdude with ``args``; ``writing``: the chip erase may have
+        started, so a failure may leave the chip erased."""
         cmd = self.base_command() + args
+        note = ERASED_NOTE if writing else ""
         try:
-            proc = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout)
-        except subprocess.TimeoutExpired:
+            popen = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+        except OSError as exc:
+            raise FlashingError(f"cannot run avrdude ({cmd[0]}): {exc}") from exc
+        with popen:
+            out, err, why = _collect(popen, timeout)
+        stdout = out.decode("utf-8", "replace")
+        stderr = err.decode("utf-8", "replace")
+        if why == "stalled":
+            raise LinkUnavailableError(
+                f"avrdude stopped: no output for {NO_PROGRESS_S:.0f} s, the programmer on "
+                f"{self.port} was lost or stopped answering{note}")
+        if why == "timeout":
             raise FlashingError(
                 f"avrdude gave no result within {timeout:.0f} s: no {self.programmer} "
-                f"programmer answered on {self.port}?") from None
+                f"programmer answered on {self.port}?{note}")
+        proc = subprocess.CompletedProcess(cmd, popen.returncode, stdout, stderr)
         if proc.returncode != 0:
-            raise FlashingError(explain(proc.stderr, self.port, self.programmer))
+            text = explain(stderr, self.port, self.programmer) + note
+            if port_missing(stderr) or port_lost(stderr):
+                raise LinkUnavailableError(text)
+            raise FlashingError(text)
         return proc
 
     def read_device(self) -> DeviceInfo:
@@ -132,7 +213,8 @@ class Avrdude:
     def write(self, image: Path, fuses: FuseSet | None, verify: bool) -> WriteReport:
         """Chip erase, flash (Intel HEX), then the fuses if given; avrdude
         reads every memory back unless ``verify`` is false."""
-        proc = self.run(self.write_args(image, fuses, verify), WRITE_TIMEOUT_S)
+        proc = self.run(self.write_args(image, fuses, verify), WRITE_TIMEOUT_S,
+                        writing=True)
         report = WriteReport(log=proc.stderr)
         for m in _WRITTEN.finditer(proc.stderr):
             report.written[m.group(2)] = report.written.get(m.group(2), 0) + int(m.group(1))

@@ -15,7 +15,8 @@ import argparse
 import shlex
 from pathlib import Path
 
-from hexbot.errors import FlashingError
+from hexbot.cli_args import count
+from hexbot.errors import FlashingError, UsageError
 from hexbot.host.flash.avrdude import Avrdude
 from hexbot.host.flash.fuses import TABLE_3_6, FuseSet, check_fuses, fuse_notes
 from hexbot.host.flash.ihex import read_hex
@@ -25,6 +26,10 @@ FLASH_BYTES = 16 * 1024
 BOARDS = ("comm", "control")
 REPO_ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_BUILD = REPO_ROOT / "firmware" / "build"
+PROGRAMMER = "stk500v2"
+#: options of one board that --all sets itself (every simulated board has an
+#: STK500v2 pty and its image is <build dir>/<board>.hex)
+NOT_WITH_ALL = ("image", "programmer", "baud", "bitclock")
 
 
 def _byte(text: str) -> int:
@@ -42,8 +47,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--image", type=Path,
                         help="Intel HEX image (default: firmware/build/<board>.hex)")
     parser.add_argument("--port", help="programmer port, e.g. /dev/ttyUSB0 or /dev/pts/7")
-    parser.add_argument("--programmer", default="stk500v2", help="avrdude -c (default stk500v2)")
-    parser.add_argument("--baud", type=int, help="avrdude -b, serial speed to the programmer")
+    parser.add_argument("--programmer", help=f"avrdude -c (default {PROGRAMMER})")
+    parser.add_argument("--baud", type=count,
+                        help="avrdude -b, serial speed to the programmer (at least 1)")
     parser.add_argument("--bitclock", help="avrdude -B, ISP clock period/frequency")
     parser.add_argument("--avrdude", default="avrdude", help="avrdude executable")
     parser.add_argument("--fuses", action="store_true",
@@ -118,14 +124,15 @@ def flash_board(args: argparse.Namespace, say=print) -> int:
     fuses = requested_fuses(args)
     if fuses is not None:
         guard_fuses(fuses, args.force, say)  # before touching the device at all
-    avrdude = Avrdude(args.port, args.programmer, args.avrdude, args.baud, args.bitclock)
+    avrdude = Avrdude(args.port, args.programmer or PROGRAMMER, args.avrdude, args.baud,
+                      args.bitclock)
     if args.dry_run:
         base = avrdude.base_command()
         say(shlex.join([*base, "-F", "-U", "signature:r:SIG:r", "-U", "lfuse:r:LFUSE:r",
                         "-U", "hfuse:r:HFUSE:r", "-U", "efuse:r:EFUSE:r", "-U", "lock:r:LOCK:r"]))
         say(shlex.join([*base, *avrdude.write_args(image, fuses, args.verify)]))
         return 0
-    say(f"reading the device on {args.port} through {args.programmer} ...")
+    say(f"reading the device on {args.port} through {avrdude.programmer} ...")
     device = avrdude.read_device()
     check_device(device.signature, device.part_guess, args.port)
     say(f"found an ATmega162 (signature {device.signature_text}); fuses {device.fuses}")
@@ -146,6 +153,11 @@ def run(args: argparse.Namespace) -> int:
     if args.all:
         from hexbot.host.flash.cluster import flash_all
 
+        given = [f"--{name}" for name in NOT_WITH_ALL if getattr(args, name, None) is not None]
+        if given:
+            raise UsageError(f"{', '.join(given)} cannot be used with --all (it flashes every "
+                             "simulated board with <build dir>/<board>.hex through its "
+                             "STK500v2 pty)")
         if not args.scenario:
             raise FlashingError("--all needs --scenario NAME (a simulated cluster)")
         return flash_all(args)

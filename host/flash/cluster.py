@@ -7,12 +7,46 @@ each module says.
 from __future__ import annotations
 
 import argparse
+import re
 import subprocess
 from pathlib import Path
 
 from hexbot.errors import FlashingError
 from hexbot.host.flash.cli import DEFAULT_BUILD, REPO_ROOT, flash_board
-from hexbot.protocol import timing
+from hexbot.protocol import timing, wire
+
+DEFAULT_VERSION = "0.1.0"  # firmware/Makefile's VERSION ?= ...
+_LISTENING = re.compile(re.escape(wire.TEXT_COMM_LISTENING + wire.BOOT_ID_TAIL) + r"(\d+)"
+                        + re.escape(wire.BOOT_FW_TAIL) + r"(\S+)")
+
+
+def flashed_version(args: argparse.Namespace) -> str:
+    """The version the images were built with: --firmware-version, else the
+    build folder's version stamp, else the Makefile's default."""
+    if args.firmware_version:
+        return args.firmware_version
+    stamp = Path(args.build_dir) / "version.stamp"
+    try:
+        return stamp.read_text().strip() or DEFAULT_VERSION
+    except OSError:
+        return DEFAULT_VERSION
+
+
+def not_booted(modules: list[int], heard: str, version: str) -> list[str]:
+    """Modules whose ``COMM. LISTENING ID=nn FW=<version>`` is not in
+    ``heard``, each with what was heard from it instead."""
+    seen: dict[int, list[str]] = {}
+    for m in _LISTENING.finditer(heard):
+        seen.setdefault(int(m.group(1)), []).append(m.group(2))
+    missing = []
+    for module in modules:
+        versions = seen.get(module, [])
+        if version in versions:
+            continue
+        what = (f"booted FW={', '.join(dict.fromkeys(versions))}" if versions
+                else "no COMM. LISTENING with its id")
+        missing.append(f"{module} ({what})")
+    return missing
 
 
 def build_firmware(version: str | None, build_dir: Path, say=print) -> None:
@@ -57,8 +91,7 @@ def flash_all(args: argparse.Namespace, say=print) -> int:
     if args.dry_run:
         return 0
     # until the last module's boot slot has passed: its boot text then reached the PC
-    boot = timing.boot_seconds(sim.modules, *([args.firmware_version] if args.firmware_version
-                                                else []))
+    boot = timing.boot_seconds(sim.modules, flashed_version(args))
     sim.run(boot)
     say(f"--- after {boot:.1f} s of simulated time")
     for module in sorted(sim.modules):
@@ -66,4 +99,12 @@ def flash_all(args: argparse.Namespace, say=print) -> int:
         say(f"module {module} control debug port: {text or '(silent)'}")
     pc = sim.pc_read().decode("ascii", "replace").strip()
     say(f"PC transceiver heard (one IR medium shared by all modules): {pc or '(nothing)'}")
+    version = flashed_version(args)
+    missing = not_booted(sorted(sim.modules), pc, version)
+    if missing:
+        raise FlashingError(
+            f"flashed, but not every module booted FW={version}: the PC heard no "
+            f"'{wire.TEXT_COMM_LISTENING}{wire.BOOT_ID_TAIL}nn{wire.BOOT_FW_TAIL}{version}' "
+            f"from module {', '.join(missing)}")
+    say(f"every module booted FW={version}: {', '.join(map(str, sorted(sim.modules)))}")
     return 0

@@ -38,3 +38,23 @@ def test_flash_all_rebuilds_and_every_module_boots_the_new_version(tmp_path, hex
     heard = result.out.split("PC transceiver heard", 1)[1]
     assert "COMM. LISTENING ID=01 FW=isp-test-7" in heard
     assert "COMM. LISTENING ID=02 FW=isp-test-7" in heard
+    assert "every module booted FW=isp-test-7: 1, 2" in result.out
+
+
+def test_flash_all_fails_naming_the_modules_that_did_not_boot(tmp_path, hexbot_flash, images,
+                                                              firmware_build, monkeypatch):
+    from hexbot.host.flash import cluster
+
+    # the real comm image, and a control image that never answers the comm
+    # board's handshake: the modules never send COMM. LISTENING with their id
+    build = tmp_path / "build"
+    build.mkdir()
+    (build / "comm.hex").write_bytes((firmware_build("isp-test-8") / "comm.hex").read_bytes())
+    (build / "control.hex").write_bytes(images("not-a-control-board")[1].read_bytes())
+    monkeypatch.setattr(cluster, "build_firmware", lambda *args, **kwargs: None)
+    result = hexbot_flash("--all", "--scenario", "pair", "--build-dir", str(build),
+                          "--firmware-version", "isp-test-8")
+    assert result.out.count("programmed with control.hex") == 2
+    assert result.code == 1
+    assert "not every module booted FW=isp-test-8" in result.err
+    assert "module 1 (no COMM. LISTENING with its id), 2 (no COMM. LISTENING" in result.err
