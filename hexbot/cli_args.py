@@ -5,39 +5,31 @@ starts, not a surprise after the boot or at the end of a long run."""
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
 from pathlib import Path
 
 
-def seconds(text: str) -> float:
-    """A duration that must be positive (a time-out, a quiet period)."""
-    value = _number(text)
-    if value <= 0:
-        raise argparse.ArgumentTypeError(f"must be more than 0 seconds, got {text}")
-    return value
+def _at_least(low: float, strict: bool, unit: str = "") -> Callable[[str], float]:
+    """An argparse type: a finite number above ``low`` (``strict``) or not below it."""
+    suffix = f" {unit}" if unit else ""
+    bound = f"more than {low:g}{suffix}" if strict else f"{low:g} or more{suffix}"
+
+    def check(text: str) -> float:
+        value = _number(text)
+        if value < low or (strict and value == low):
+            raise argparse.ArgumentTypeError(f"must be {bound}, got {text}")
+        return value
+    return check
 
 
-def seconds_or_zero(text: str) -> float:
-    """A duration that may be 0 (``--linger 0``: none)."""
-    value = _number(text)
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"must be 0 or more seconds, got {text}")
-    return value
-
-
-def positive(text: str) -> float:
-    """A factor that must be more than 0 (a replay's ``--speed``)."""
-    value = _number(text)
-    if value <= 0:
-        raise argparse.ArgumentTypeError(f"must be more than 0, got {text}")
-    return value
-
-
-def rate(text: str) -> float:
-    """A speed factor that may be 0 (``--speed 0``: as fast as it goes)."""
-    value = _number(text)
-    if value < 0:
-        raise argparse.ArgumentTypeError(f"must be 0 or more, got {text}")
-    return value
+#: A duration that must be positive (a time-out, a quiet period).
+seconds = _at_least(0, True, "seconds")
+#: A duration that may be 0 (``--linger 0``: none).
+seconds_or_zero = _at_least(0, False, "seconds")
+#: A factor that must be more than 0 (a replay's ``--speed``).
+positive = _at_least(0, True)
+#: A speed factor that may be 0 (``--speed 0``: as fast as it goes).
+rate = _at_least(0, False)
 
 
 def count(text: str) -> int:
