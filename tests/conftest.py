@@ -43,3 +43,18 @@ def open_session():
     yield factory
     for host in hosts:
         host.close()
+
+
+@pytest.fixture
+def cli_status(capsys):
+    """``cli_status(*argv)``: hexbot's exit status and stderr for ``argv``,
+    argparse's usage errors (SystemExit) included."""
+    from hexbot.cli import main
+
+    def run(*argv) -> tuple[int, str]:
+        try:
+            code = main([str(a) for a in argv])
+        except SystemExit as exc:
+            code = exc.code
+        return code, capsys.readouterr().err
+    return run

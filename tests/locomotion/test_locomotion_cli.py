@@ -119,20 +119,11 @@ def test_rounds_out_before_the_goal_is_a_time_out_and_zero_rounds_a_usage_error(
     assert "--rounds: must be at least 1, got 0" in capsys.readouterr().err
 
 
-def _status(capsys, *argv):
-    """Exit status and stderr, argparse's usage errors (SystemExit) included."""
-    try:
-        code = main(["locomotion", *map(str, argv)])
-    except SystemExit as exc:
-        code = exc.code
-    return code, capsys.readouterr().err
-
-
-def test_a_binary_map_or_rule_file_is_not_text(capsys, tmp_path):
+def test_a_binary_map_or_rule_file_is_not_text(cli_status, capsys, tmp_path):
     binary = tmp_path / "g.bin"
     binary.write_bytes(bytes([0xA9, 0xFF, 0x00, 0xC3]) * 75)
     for argv in (["run", "salvador", binary, "--n", "5"], ["run", binary, "flat", "--n", "5"]):
-        code, err = _status(capsys, *argv)
+        code, err = cli_status("locomotion", *argv)
         assert code == 1 and err.strip() == (
             f"hexbot locomotion: error: {binary}: not a text file (UTF-8): byte 0xa9 at offset 0")
 
@@ -143,6 +134,6 @@ def test_a_binary_map_or_rule_file_is_not_text(capsys, tmp_path):
     (["run", "salvador", "flat", "--render", "/nonexistent/x.gif"], "/nonexistent does not exist"),
     (["random", "salvador", "--seeds", "20:0"], "--seeds: '20:0' is empty"),
 ])
-def test_usage_errors_exit_2(capsys, argv, words):
-    code, err = _status(capsys, *argv)
+def test_usage_errors_exit_2(cli_status, capsys, argv, words):
+    code, err = cli_status("locomotion", *argv)
     assert code == 2 and words in err

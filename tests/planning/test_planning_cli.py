@@ -277,41 +277,33 @@ def test_render_animates_every_time_step_with_legend_and_grid(capsys, examples_d
     assert mover in seen  # this step's movers, and the legend's swatch
 
 
-def _status(capsys, *argv):
-    """Exit status and stderr, argparse's usage errors (SystemExit) included."""
-    try:
-        code = main(["plan", *map(str, argv)])
-    except SystemExit as exc:
-        code = exc.code
-    return code, capsys.readouterr().err
-
-
-def test_a_binary_configuration_file_is_not_text(capsys, tmp_path, examples_dir):
+def test_a_binary_configuration_file_is_not_text(cli_status, capsys, tmp_path, examples_dir):
     binary = tmp_path / "g.bin"
     binary.write_bytes(bytes([0xA9, 0xFF, 0x00, 0xC3]) * 75)
-    code, err = _status(capsys, binary, examples_dir / "block6_goal.txt")
+    code, err = cli_status("plan", binary, examples_dir / "block6_goal.txt")
     assert code == 1 and "Traceback" not in err
     assert err.strip() == (f"hexbot plan: error: {binary}: not a text file (UTF-8): "
                            "byte 0xa9 at offset 0")
 
 
-def test_an_output_in_a_missing_folder_is_refused_before_planning(capsys, tmp_path, examples_dir):
+def test_an_output_in_a_missing_folder_is_refused_before_planning(cli_status, tmp_path,
+                                                                   examples_dir):
     pair = (examples_dir / P01[1], examples_dir / P01[0])
     for option, name in (("--plot", "x.png"), ("--render", "x.gif")):
-        code, err = _status(capsys, *pair, option, tmp_path / "nope" / name)
+        code, err = cli_status("plan", *pair, option, tmp_path / "nope" / name)
         assert code == 2, err
         assert f"argument {option}: {tmp_path / 'nope' / name}: folder" in err
-    code, err = _status(capsys, *pair, "--plot", tmp_path)
+    code, err = cli_status("plan", *pair, "--plot", tmp_path)
     assert code == 2 and "is a folder, give a file name" in err
 
 
-def test_coordinates_beyond_the_planner_limit_name_file_and_line(capsys, tmp_path):
+def test_coordinates_beyond_the_planner_limit_name_file_and_line(cli_status, capsys, tmp_path):
     from hexbot.planning.hexlattice import COORD_LIMIT
 
     big = tmp_path / "big.toml"
     big.write_text("# far\ncells = [[0, 0], [0, 99999999999]]\n")
     two = _toml(tmp_path / "two.toml", [(0, 0), (0, 1)])
-    code, err = _status(capsys, big, two)
+    code, err = cli_status("plan", big, two)
     assert code == 1 and "Traceback" not in err
     assert f"{big}:2: cell [0, 99999999999] is outside the planner's coordinate range" in err
     with pytest.raises(ScenarioError, match=r"m.toml: \[\[module\]\] #1: cell"):
@@ -320,7 +312,7 @@ def test_coordinates_beyond_the_planner_limit_name_file_and_line(capsys, tmp_pat
         (COORD_LIMIT, -COORD_LIMIT)}
 
 
-def test_max_steps_below_one_is_a_usage_error(capsys, examples_dir):
-    code, err = _status(capsys, examples_dir / P01[1], examples_dir / P01[0],
+def test_max_steps_below_one_is_a_usage_error(cli_status, capsys, examples_dir):
+    code, err = cli_status("plan", examples_dir / P01[1], examples_dir / P01[0],
                         "--mode", "faithful-serial", "--max-steps", "0")
     assert code == 2 and "argument --max-steps: must be at least 1, got 0" in err

@@ -69,25 +69,16 @@ def test_random_range_must_be_seeds(capsys):
     assert "expected FIRST..LAST" in capsys.readouterr().err
 
 
-def _status(capsys, *argv):
-    """Exit status and stderr, argparse's usage errors (SystemExit) included."""
-    try:
-        code = main(["traverse", *map(str, argv)])
-    except SystemExit as exc:
-        code = exc.code
-    return code, capsys.readouterr().err
-
-
-def test_a_binary_map_file_is_not_text(capsys, tmp_path):
+def test_a_binary_map_file_is_not_text(cli_status, capsys, tmp_path):
     binary = tmp_path / "g.bin"
     binary.write_bytes(bytes([0xA9, 0xFF, 0x00, 0xC3]) * 75)
-    code, err = _status(capsys, binary)
+    code, err = cli_status("traverse", binary)
     assert code == 1 and err.strip() == (
         f"hexbot traverse: error: {binary}: not a text file (UTF-8): byte 0xa9 at offset 0")
 
 
-def test_an_unknown_map_is_neither_a_file_nor_a_shipped_map(capsys):
-    code, err = _status(capsys, "nosuchcase")
+def test_an_unknown_map_is_neither_a_file_nor_a_shipped_map(cli_status, capsys):
+    code, err = cli_status("traverse", "nosuchcase")
     assert code == 1 and "nosuchcase: neither a map file nor a shipped map" in err
     assert "fig14" in err and "random:SEED" in err
 
@@ -98,6 +89,6 @@ def test_an_unknown_map_is_neither_a_file_nor_a_shipped_map(capsys):
     (["fig14", "--plot", "x.png"], "--plot draws the --sweep figures: give --sweep too"),
     (["hil-basic-2", "--render", "/nonexistent/x.gif"], "folder /nonexistent does not exist"),
 ])
-def test_usage_errors_exit_2_before_any_run(capsys, argv, words):
-    code, err = _status(capsys, *argv)
+def test_usage_errors_exit_2_before_any_run(cli_status, capsys, argv, words):
+    code, err = cli_status("traverse", *argv)
     assert code == 2 and words in err
