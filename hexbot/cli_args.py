@@ -34,10 +34,7 @@ rate = _at_least(0, False)
 
 def count(text: str) -> int:
     """A whole number of at least 1 (modules, rounds, steps, threads, a baud rate)."""
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    value = _whole(text)
     if value < 1:
         raise argparse.ArgumentTypeError(f"must be at least 1, got {value}")
     return value
@@ -45,10 +42,7 @@ def count(text: str) -> int:
 
 def tcp_port(text: str) -> int:
     """A TCP port to listen on; 0 lets the system pick a free one."""
-    try:
-        value = int(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    value = _whole(text)
     if not 0 <= value <= 65535:
         raise argparse.ArgumentTypeError(f"a TCP port is 0..65535 (0: any free port), got {value}")
     return value
@@ -65,6 +59,13 @@ def output_file(text: str) -> str:
     if path.is_dir():
         raise argparse.ArgumentTypeError(f"{text}: is a folder, give a file name")
     return text
+
+
+def _whole(text: str) -> int:
+    try:
+        return int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
 
 
 def _number(text: str) -> float:
