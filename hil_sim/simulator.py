@@ -52,6 +52,7 @@ from hexbot.protocol.timing import (
     BYTE_BITS,
     CLOCK_TOLERANCE,
     F_CPU,
+    bit_cycles,
 )
 
 from .geometry import CENTRE, CHANNEL_SIDE, SIDE_CHANNEL, Cell, facing, neighbor, to_body, to_global
@@ -70,7 +71,9 @@ def lookahead_cycles(hz: int = F_CPU) -> int:
     wire the core routes (the board link), on the fastest clock allowed: the
     largest quantum that still delivers every byte on its exact cycle."""
     bits_to_mid_stop = 9.5  # start + 8 data + half a stop bit
-    return int(bits_to_mid_stop * hz / BAUD_BOARD / (1 + CLOCK_TOLERANCE))
+    # the USART's bit, not the nominal baud's: 208 cycles at 4800, 1,881 to
+    # mid-stop at +5 % (the nominal 208.3 made 1,884, two cycles too long)
+    return int(bits_to_mid_stop * bit_cycles(BAUD_BOARD, hz) / (1 + CLOCK_TOLERANCE))
 
 
 def _load_core() -> Any:

@@ -61,6 +61,14 @@ def ir_ticks(nbytes: int) -> int:
     return (nbytes * IR_BYTE_TICKS_X10 + 9) // 10
 
 
+def bit_cycles(baud: int, hz: int = F_CPU) -> int:
+    """CPU cycles of one bit as the USART makes it: UBRR rounded to nearest,
+    16 cycles a count (firmware/common/uart.c), so 4800 baud at 1 MHz is
+    208 cycles, 4807.7 baud, not 208.3."""
+    ubrr = (hz + 8 * baud) // (16 * baud) - 1
+    return 16 * (ubrr + 1)
+
+
 def wire_seconds(nbytes: int, baud: int) -> float:
     """Time on the wire of ``nbytes`` 8N1 bytes at ``baud``."""
     return nbytes * BYTE_BITS / baud

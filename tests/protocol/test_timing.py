@@ -113,3 +113,13 @@ def test_without_arguments_the_bound_holds_for_any():
     for fn in CODES.values():
         top = [a.hi for a in fn.args]
         assert timing.reply_timeout_s(fn.code, 1) == timing.reply_timeout_s(fn.code, 1, top) > 0
+
+
+def test_a_bit_is_what_the_usart_makes_of_the_baud_rate():
+    # UBRR rounded to nearest, 16 cycles a count (firmware/common/uart.c)
+    assert timing.bit_cycles(4800) == 208  # 4807.7 baud at 1 MHz
+    assert timing.bit_cycles(300) == 3328
+    from hexbot.hil_sim.simulator import lookahead_cycles
+
+    # start bit to mid-stop of a board byte on the fastest clock allowed
+    assert lookahead_cycles() == int(9.5 * 208 / (1 + timing.CLOCK_TOLERANCE)) == 1881
