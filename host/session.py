@@ -169,6 +169,11 @@ class _Owed:
     code: int
     until: float  # session seconds: past this, nobody expects it any more
 
+    def describe(self) -> str:
+        who = f"module {self.module}" if self.module is not None else "a module"
+        name = CODES[self.code].name if self.code in CODES else str(self.code)
+        return f"{who} may still be running {name}, abandoned before"
+
     def pays(self, event: object) -> bool:
         if isinstance(event, Ack):
             code = event.code
@@ -639,12 +644,10 @@ class Session:
         if got.garbage:
             return Outcome(command, OutcomeKind.GARBLED, replies, extra, missing,
                            waited=waited, garbage=tuple(got.garbage))
-        busy = sorted({f"{d.module if d.module is not None else 'a module'} may still be "
-                       f"running {CODES[d.code].name if d.code in CODES else d.code}, "
-                       "abandoned before"
-                       for d in self._owed if d.module is None or d.module in missing})
+        busy = sorted({d.describe() for d in self._owed
+                       if d.module is None or d.module in missing})
         return Outcome(command, OutcomeKind.TIMED_OUT, replies, extra, missing, waited=waited,
-                       detail="; ".join(f"module {b}" if b[0].isdigit() else b for b in busy))
+                       detail="; ".join(busy))
 
 
 def listening_id(event: object) -> int | None:

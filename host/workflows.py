@@ -80,6 +80,15 @@ class RotationResult:
 # --- localization -----------------------------------------------------------
 
 
+def reference_problem(reference: int) -> str:
+    """Why ``reference`` cannot be a localization's origin ("" if it can):
+    it is addressed with Select(reference), and Select(0) would make every
+    module (0, 0)."""
+    if 1 <= reference <= wire.MAX_SELECT_ID:
+        return ""
+    return f"the reference must be a module id 1..{wire.MAX_SELECT_ID}, got {reference}"
+
+
 def localize(session: Session, reference: int) -> dict[int, Pose]:
     """Make ``reference`` the origin, localize the whole cluster with code 66,
     read everyone's status; returns every module's pose. One 66 reaches 4
@@ -87,9 +96,9 @@ def localize(session: Session, reference: int) -> dict[int, Pose]:
     the last wave localized more of them, another 66 spreads the
     localization further (the localized ones keep theirs). Fails when a
     wave adds nobody or a module is not localized afterwards."""
-    if not 1 <= reference <= wire.MAX_SELECT_ID:  # Select(0) would make every module (0, 0)
-        raise CommandRefusedError(f"the reference must be a module id 1..{wire.MAX_SELECT_ID}, "
-                                  f"got {reference}")
+    why = reference_problem(reference)
+    if why:
+        raise CommandRefusedError(why)
     session.request(select(reference))
     session.request(frames.make("Ref"))
     session.reference = reference  # the origin of every pose from here on

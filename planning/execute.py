@@ -33,7 +33,6 @@ from hexbot.planning.configuration import Configuration, Module
 from hexbot.planning.hexlattice import Cell
 from hexbot.planning.moves import orientation_after
 from hexbot.planning.plan import Plan
-from hexbot.protocol import wire
 
 
 class ExecutionError(HexBotError):
@@ -121,9 +120,9 @@ def plan_request(words: list[str], relative_to: Path | None = None) -> PlanReque
         if not options["reference"].isdigit():
             raise ScenarioError(f"reference must be a module id, got {options['reference']!r}")
         reference = int(options["reference"])
-        if not 1 <= reference <= wire.MAX_SELECT_ID:
-            raise ScenarioError(f"reference must be a module id 1..{wire.MAX_SELECT_ID}, "
-                                f"got {reference}")
+        why = workflows.reference_problem(reference)
+        if why:  # before anything is sent
+            raise ScenarioError(why)
     verify = Verify.named(options.get("verify", "auto"))
     goal = Path(words[0])
     if relative_to is not None and not goal.is_absolute():
