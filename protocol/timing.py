@@ -61,12 +61,16 @@ def ir_ticks(nbytes: int) -> int:
     return (nbytes * IR_BYTE_TICKS_X10 + 9) // 10
 
 
+def ubrr(baud: int, hz: int = F_CPU) -> int:
+    """The USART's divisor for ``baud`` (normal speed), rounded to nearest;
+    the firmware's ``HB_UBRR_*`` are generated from it."""
+    return (hz + 8 * baud) // (16 * baud) - 1
+
+
 def bit_cycles(baud: int, hz: int = F_CPU) -> int:
-    """CPU cycles of one bit as the USART makes it: UBRR rounded to nearest,
-    16 cycles a count (firmware/common/uart.c), so 4800 baud at 1 MHz is
-    208 cycles, 4807.7 baud, not 208.3."""
-    ubrr = (hz + 8 * baud) // (16 * baud) - 1
-    return 16 * (ubrr + 1)
+    """CPU cycles of one bit as the USART makes it: 16 a count of UBRR, so
+    4800 baud at 1 MHz is 208 cycles, 4807.7 baud, not 208.3."""
+    return 16 * (ubrr(baud, hz) + 1)
 
 
 def wire_seconds(nbytes: int, baud: int) -> float:

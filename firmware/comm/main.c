@@ -481,8 +481,8 @@ int main(void)
 {
     comm_board_init(); /* LEDs off, selector on the centre */
     sys_init();
-    uart_init(CTRL, HB_BAUD_BOARD);
-    uart_init(IR, HB_BAUD_IR);
+    uart_init(CTRL, HB_UBRR_BOARD);
+    uart_init(IR, HB_UBRR_IR);
     frame_init(&pc_rx, HB_PC_FRAME_LEN, HB_PC_BYTE_TIMEOUT_TICKS);
     g_state.role = HB_ROLE_MOBILE;
     leds_init(wait_or_abort);

@@ -27,9 +27,8 @@ static uart_state_t port[2];
  * rest of the ring plus the shift register with margin. */
 #define FLUSH_MAX_TICKS 150u
 
-void uart_init(uint8_t u, uint32_t baud)
+void uart_init(uint8_t u, uint16_t ubrr)
 {
-    uint16_t ubrr = (uint16_t)((F_CPU + 8UL * baud) / (16UL * baud) - 1UL);
     if (u == UART0) {
         UCSR0B = 0;
         UCSR0A = 0;

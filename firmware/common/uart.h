@@ -16,8 +16,9 @@
 #define UART0 0u
 #define UART1 1u
 
-/** 8N1 at @p baud (F_CPU / 16 / baud rounded), receiver and transmitter on. */
-void uart_init(uint8_t u, uint32_t baud);
+/** 8N1 with divisor @p ubrr (the generated HB_UBRR_*), receiver and
+ *  transmitter on. */
+void uart_init(uint8_t u, uint16_t ubrr);
 
 /** Next received byte, or -1 if none is waiting. */
 int16_t uart_getc(uint8_t u);

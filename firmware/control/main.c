@@ -142,8 +142,8 @@ int main(void)
 {
     control_board_init(); /* every actuator off before anything else */
     sys_init();
-    uart_init(UART0, HB_BAUD_BOARD);
-    uart_init(UART1, HB_BAUD_DEBUG);
+    uart_init(UART0, HB_UBRR_BOARD);
+    uart_init(UART1, HB_UBRR_DEBUG);
     frame_init(&rx[0], HB_BOARD_FRAME_LEN, BOARD_BYTE_TIMEOUT_TICKS);
     frame_init(&rx[1], HB_BOARD_FRAME_LEN, BOARD_BYTE_TIMEOUT_TICKS);
     actuators_init(wait_or_abort);

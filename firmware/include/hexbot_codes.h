@@ -4,8 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0x0ebeae6eUL
-#define HB_SCHEMA_HASH_TEXT "0ebeae6e"
+#define HB_SCHEMA_HASH 0xc44e758eUL
+#define HB_SCHEMA_HASH_TEXT "c44e758e"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */
@@ -17,9 +17,10 @@
 #define HB_BOARD_FRAME_LEN  7
 #define HB_BOARD_ARGS       4
 #define HB_LOC_FRAME_LEN    8
-#define HB_BAUD_IR          300UL
-#define HB_BAUD_BOARD       4800UL
-#define HB_BAUD_DEBUG       4800UL
+/* UBRR of each link at F_CPU (protocol/timing.py ubrr: rounded to nearest) */
+#define HB_UBRR_IR          207u
+#define HB_UBRR_BOARD       12u
+#define HB_UBRR_DEBUG       12u
 #define HB_MAX_MODULE_ID    255
 #define HB_MAX_SELECT_ID    63
 #define HB_LOC_COORD_LIMIT  99

@@ -66,8 +66,8 @@ int main(void)
 {
     rf12_board_init();
     sys_init();
-    uart_init(UART0, HB_BAUD_BOARD);
-    uart_init(UART1, HB_BAUD_DEBUG);
+    uart_init(UART0, HB_UBRR_BOARD);
+    uart_init(UART1, HB_UBRR_DEBUG);
     power_on_leds();
     rf12_init();
     uart_puts_P(UART1, PSTR(HB_PREAMBLE HB_TEXT_RF12_READY));

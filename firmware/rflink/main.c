@@ -58,8 +58,8 @@ int main(void)
 {
     rf12_board_init();
     sys_init();
-    uart_init(LINK, HB_BAUD_IR);
-    uart_init(UART1, HB_BAUD_DEBUG);
+    uart_init(LINK, HB_UBRR_IR);
+    uart_init(UART1, HB_UBRR_DEBUG);
     rf12_init();
     rf12_rx_arm();
     uart_puts_P(UART1, PSTR(HB_PREAMBLE HB_TEXT_RF12_LINK_READY HB_TEXT_FW_TAIL HB_FW_VERSION

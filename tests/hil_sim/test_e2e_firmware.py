@@ -156,11 +156,22 @@ def test_two_runs_give_the_same_trace(hexbot_sim_factory, tmp_path):
     assert first != scripted_run(hexbot_sim_factory, path, 12)
 
 
-@pytest.mark.hexbot_scenario("single")
-def test_byte_before_the_receiver_is_enabled_is_dropped_and_reported(hexbot_sim):
-    hexbot_sim.debug_write(1, b"x")  # arrives 2 ms after reset: UART1 not yet set up
-    hexbot_sim.run(0.01)
-    dropped = [e for e in hexbot_sim.events if e["event"] == "debug-dropped"]
+def test_a_byte_the_receiver_is_not_enabled_for_is_dropped_and_reported(
+        hexbot_sim_factory, tmp_path):
+    # The real control image enables UART1 within 2 ms of reset, before a
+    # 4800-baud byte can arrive: a control board that never enables it
+    # (a test program's spin loop) stands for a receiver that is off.
+    import subprocess
+
+    avr = Path(__file__).parent / "avr"
+    subprocess.run(["make", "-s", "-C", str(avr), "build/cpuloop.atmega162.elf"], check=True)
+    path = tmp_path / "deaf.toml"
+    path.write_text('name = "deaf"\n[[module]]\nid = 1\nposition = [0, 0]\n'
+                    f'firmware = {{ control = "{avr / "build/cpuloop.atmega162.elf"}" }}\n')
+    sim = hexbot_sim_factory(path)
+    sim.debug_write(1, b"x")
+    sim.run(0.01)
+    dropped = [e for e in sim.events if e["event"] == "debug-dropped"]
     assert [(e["module"], e["reason"]) for e in dropped] == [
         (1, "receiver off (RXEN) or overrun")]
 
