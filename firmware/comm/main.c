@@ -78,12 +78,13 @@ static void link_byte(uint8_t b)
 /* A stray '*' eight bytes before a frame whose code is '#' (35, SideOffAllN)
  * makes "*" + 8 bytes + "*#" a complete frame, and the real one is lost.
  * A complete frame that ends in "*#" and that we would refuse anyway
- * (unknown code, argument out of range) is taken for that: its "*#" starts
+ * (unknown code, argument out of range, a filler byte that is not 'N')
+ * is taken for that: its "*#" starts
  * the next frame. A frame we would execute is executed. */
 static uint8_t junk_before_hash_code(const uint8_t *f)
 {
     return f[HB_PC_FRAME_LEN - 2] == HB_START &&
-           (table_board(f[1]) == HB_BOARD_NONE || !table_args_ok(f[1], f + 2));
+           (table_board(f[1]) == HB_BOARD_NONE || !table_args_ok(f[1], f + 2, HB_PC_ARGS));
 }
 
 /* The frame assembled in the inbox slot waits its turn (or is dropped). */
@@ -393,7 +394,7 @@ static void handle_frame(const uint8_t *f, tick_t received, uint8_t framing, uin
     uint8_t board = table_board(code);
     if (board == HB_BOARD_NONE)
         reply_ack(HB_UNUSED);
-    else if (!table_args_ok(code, a))
+    else if (!table_args_ok(code, a, HB_PC_ARGS))
         reply_err(code, HB_ERR_ARG_RANGE);
     else if (board == HB_BOARD_CONTROL)
         control_function(code, a);

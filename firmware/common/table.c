@@ -21,7 +21,7 @@ IN_FLASH uint8_t table_board(uint8_t code)
     }
 }
 
-uint8_t table_args_ok(uint8_t code, const uint8_t *args)
+uint8_t table_args_ok(uint8_t code, const uint8_t *args, uint8_t slots)
 {
 #define X(c, n, lo, hi)                                                             \
     if (code == (c) && ((c) != HB_FN_SELECT || (n) == 1) &&                         \
@@ -29,6 +29,11 @@ uint8_t table_args_ok(uint8_t code, const uint8_t *args)
         return 0;
     HB_ARG_RANGES(X)
 #undef X
+    /* The filler tells a frame from noise that happens to have its length:
+     * the host sends 'N' in every byte the function does not use. */
+    for (uint8_t k = table_nargs(code); k < slots; k++)
+        if (args[k] != HB_UNUSED)
+            return 0;
     return 1;
 }
 

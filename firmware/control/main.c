@@ -95,7 +95,7 @@ static void run_pending(void)
 {
     uint8_t code = pending[1];
     const uint8_t *args = &pending[2];
-    uint8_t ok = table_board(code) == HB_BOARD_CONTROL && table_args_ok(code, args);
+    uint8_t ok = table_board(code) == HB_BOARD_CONTROL && table_args_ok(code, args, HB_BOARD_ARGS);
     uint8_t echo = ok ? code : HB_UNUSED;
     have_pending = 0;
 

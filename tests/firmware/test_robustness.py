@@ -145,8 +145,25 @@ def test_a_valid_frame_ending_in_star_is_still_executed(single: Bench):
     assert (ack.code, ack.module) == (69, 1)
 
 
-def test_a_stray_star_before_a_valid_looking_frame_still_swallows_it(single: Bench):
-    # The documented limit: "*" + LOn's code and 7 bytes + "*#" is a frame this
-    # module executes (LOn takes no arguments); the '#'-coded frame after it is lost.
+def test_a_stray_star_before_a_frame_with_its_filler_is_told_apart(single: Bench):
+    # "*" + LOn's code and 7 bytes + "*#" has LOn's length, but its last
+    # unused byte is '*', not the 'N' filler: not a frame, so the '#'-coded
+    # frame after it runs and LOn does not.
     replies = single.frame(b"*,NNNNNNN" + SIDE_OFF_ALL_N)
-    assert [r.code for r in replies] == [44]
+    assert [r.code for r in replies] == [35]
+
+
+@pytest.mark.parametrize("frame, code", [
+    pytest.param(b"*\x01\x03XXXXXXX#", 1, id="JxOpen-control-board"),
+    pytest.param(b"*,NNNN\x00NNN#", 44, id="LOn-comm-board"),
+])
+def test_a_frame_whose_unused_bytes_are_not_the_filler_is_refused(single: Bench, frame, code):
+    # A byte the function does not use is 'N' in every frame a host sends: any
+    # other value is corruption, and the command must not run (the host's
+    # decoder refuses the same frame).
+    with pytest.raises(frames.FrameError, match="must be 'N'"):
+        frames.decode_pc(frame)
+    replies = single.frame(frame)
+    assert [(type(r).__name__, r.code, r.reason) for r in replies] == [
+        ("ErrorReply", code, ErrorCode.ARG_RANGE)]
+    single_ack(single.frame(LON), 44)  # and the next good frame runs
