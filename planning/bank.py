@@ -1,7 +1,7 @@
 """The small bank: reconfiguration pairs small enough for the exact mode.
 
 The thesis' examples (shipped in ``planning/examples``) both ways, and seeded
-random pairs of 6 to 10 modules from the benchmark's two families, with and
+random pairs of 6 to 10 modules from the benchmark's three families, with and
 without the module at (0, 0) fixed to the base. The benchmark (``hexbot bench
 planning --small``) and the tests measure the robust mode's optimality gap on
 them against :mod:`hexbot.planning.exact`.
@@ -14,7 +14,7 @@ from pathlib import Path
 
 from hexbot.planning.config_io import load_configuration
 from hexbot.planning.configuration import Configuration
-from hexbot.planning.generate import blob_pair, scramble
+from hexbot.planning.generate import blob_pair, holes_pair, scramble
 from hexbot.planning.hexlattice import Cell
 
 EXAMPLES = Path(__file__).resolve().parent / "examples"
@@ -40,7 +40,8 @@ class Case:
 
 def small_cases(random_pairs: int = 4) -> list[Case]:
     """The bank: thesis examples, then ``random_pairs`` blob and scramble pairs
-    each of 6, 8 and 10 modules, free and with (0, 0) fixed."""
+    each of 6, 8 and 10 modules, and holes pairs of 8 and 10 (a hole needs
+    six modules round it), free and with (0, 0) fixed."""
     cases = []
     for name, a, b in THESIS_PAIRS:
         initial = load_configuration(EXAMPLES / a)
@@ -48,9 +49,11 @@ def small_cases(random_pairs: int = 4) -> list[Case]:
     for n in (6, 8, 10):
         for seed in range(random_pairs):
             a, b = blob_pair(n, seed)
-            pairs = {"blob": b, "scramble": scramble(a, 3 * n, seed)}
-            for family, goal in pairs.items():
+            pairs = {"blob": (a, b), "scramble": (a, scramble(a, 3 * n, seed))}
+            if n >= 7:
+                pairs["holes"] = holes_pair(n, seed)
+            for family, (start, goal) in pairs.items():
                 for fixed in (None, (0, 0)):
                     label = f"{family} {n} seed {seed}" + (" fixed" if fixed else "")
-                    cases.append(Case(label, Configuration.from_cells(a), goal, fixed))
+                    cases.append(Case(label, Configuration.from_cells(start), goal, fixed))
     return cases

@@ -3,6 +3,9 @@
 ``random_blob`` grows a connected set cell by cell from (0, 0): each new
 cell is a random empty neighbour of the set, drawn with ``random.Random(seed)``,
 so the same (size, seed) always gives the same configuration.
+``holey_blob`` is such a blob with holes: empty pockets that the shape
+encloses, which a module can enter or leave only once a side of the pocket
+is opened (the bench's "holes" family).
 """
 
 from __future__ import annotations
@@ -26,6 +29,70 @@ def random_blob(size: int, seed: int, compact: float = 0.5) -> frozenset[Cell]:
         cells.add(cell)
         for n in neighbors(cell):
             if n not in cells:
+                frontier[n] = frontier.get(n, 0) + 1
+    return frozenset(cells)
+
+
+#: Sizes a hole is drawn from (cells): mostly single cells, as a lost module
+#: leaves, some larger pockets. At most 7: a hole that size cannot enclose
+#: more than one cell, so :func:`holey_blob`'s local check keeps it one piece.
+HOLE_SIZES = (1, 1, 1, 2, 2, 3, 4, 5, 7)
+
+
+def holey_blob(size: int, seed: int, compact: float = 0.8,
+               hole_share: float = 0.04) -> frozenset[Cell]:
+    """A connected set of ``size`` cells (at least 7) with holes: about
+    ``hole_share`` x ``size`` cells (at least one) are empty pockets that the
+    set encloses, each of 1-7 cells, two or more cells apart.
+
+    A random blob of ``size`` cells is grown from (0, 0); holes are carved out
+    of its interior (cells whose six neighbours are occupied; never (0, 0)),
+    and the set grows back to ``size`` round its border, never into a hole.
+    A blob too small to have an interior cell is grown round a single hole
+    next to (0, 0) instead."""
+    if size < 7:
+        raise ValueError(f"a shape with a hole has at least 7 cells, got {size}")
+    rng = random.Random(seed)
+    cells = set(random_blob(size, seed, compact))
+    inner = sorted(c for c in cells if c != (0, 0) and all(n in cells for n in neighbors(c)))
+    want = max(1, round(hole_share * size))
+    holes: set[Cell] = set()
+    near: set[Cell] = set()  # within two cells of a hole: no other hole there
+    tries = 0
+    while len(holes) < want and inner and tries < 20 * want:
+        tries += 1
+        first = inner[rng.randrange(len(inner))]
+        if first in near:
+            continue
+        hole = [first]
+        for _ in range(min(rng.choice(HOLE_SIZES), want - len(holes)) - 1):
+            grow = sorted({n for h in hole for n in neighbors(h)}
+                          .difference(hole, near).intersection(inner))
+            if not grow:
+                break
+            hole.append(rng.choice(grow))
+        if any(all(n in hole for n in neighbors(c)) for h in hole for c in neighbors(h)
+               if c not in hole):
+            continue  # a ring round a cell would cut it off
+        cells.difference_update(hole)
+        holes.update(hole)
+        near.update(m for h in hole for n in neighbors(h) for m in neighbors(n))
+    if not holes:  # too small for an interior cell: a ring round a neighbour of (0, 0)
+        hole_cell = neighbors((0, 0))[rng.randrange(6)]
+        cells, holes = set(neighbors(hole_cell)), {hole_cell}
+    # grow back as random_blob grows, never into a hole
+    frontier: dict[Cell, int] = {}
+    for c in cells:
+        for n in neighbors(c):
+            if n not in cells and n not in holes:
+                frontier[n] = frontier.get(n, 0) + 1
+    while len(cells) < size:
+        options = sorted(frontier)
+        cell = rng.choices(options, [1.0 + compact * 4 * (frontier[c] - 1) for c in options])[0]
+        del frontier[cell]
+        cells.add(cell)
+        for n in neighbors(cell):
+            if n not in cells and n not in holes:
                 frontier[n] = frontier.get(n, 0) + 1
     return frozenset(cells)
 
@@ -67,6 +134,13 @@ def blob_pair(size: int, seed: int,
     """The benchmark's "blob" family: two independent random blobs of ``size`` cells,
     both grown from (0, 0), the anchor they share (the fixed module with ``--fixed``)."""
     return random_blob(size, 2 * seed, compact), random_blob(size, 2 * seed + 1, compact)
+
+
+def holes_pair(size: int, seed: int,
+               compact: float = 0.8) -> tuple[frozenset[Cell], frozenset[Cell]]:
+    """The benchmark's "holes" family: two independent :func:`holey_blob` of
+    ``size`` cells sharing (0, 0), as :func:`blob_pair`."""
+    return holey_blob(size, 2 * seed, compact), holey_blob(size, 2 * seed + 1, compact)
 
 
 def scramble(cells: frozenset[Cell], moves: int, seed: int,
