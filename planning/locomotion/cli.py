@@ -13,7 +13,7 @@ import json
 import sys
 
 from hexbot.cli_args import count, output_file
-from hexbot.errors import ScenarioError, UsageError
+from hexbot.errors import UsageError
 from hexbot.host.cli_progress import meter
 from hexbot.planning.locomotion import render
 from hexbot.planning.locomotion.scenarios import (
@@ -76,7 +76,7 @@ def run(args: argparse.Namespace) -> int:
     if args.action == "random":
         return _random(args)
     if args.render and not args.render.lower().endswith((".png", ".gif")):
-        raise ScenarioError(f"--render: {args.render!r} must end in .png or .gif")
+        raise UsageError(f"--render: {args.render!r} must end in .png or .gif")
     rs = load_ruleset(args.ruleset)
     sc = load_scenario(args.scenario, args.n)
     rec = None
@@ -124,9 +124,9 @@ def _int_list(text: str, what: str) -> list[int]:
     try:
         values = [int(v) for v in text.split(",") if v.strip()]
     except ValueError:
-        raise ScenarioError(f"{what}: expected comma-separated integers, not {text!r}") from None
+        raise UsageError(f"{what}: expected comma-separated integers, not {text!r}") from None
     if not values or min(values) < 1:
-        raise ScenarioError(f"{what}: give at least one positive integer")
+        raise UsageError(f"{what}: give at least one positive integer")
     return values
 
 
@@ -141,7 +141,12 @@ def _bank(args: argparse.Namespace) -> int:
         print(json.dumps([r.to_dict() for r in rows]))
     else:
         print(bank.bank_markdown(rows))
-    return 0
+    # deadlocks are outcomes the theses report; a broken invariant is a failure
+    broken = [r for r in rows if r.status == "violation"]
+    if broken:
+        print(f"{len(broken)} of {len(rows)} runs broke an invariant, e.g. {broken[0].ruleset} "
+              f"on {broken[0].scenario}, n = {broken[0].n}: {broken[0].detail}", file=sys.stderr)
+    return 1 if broken else 0
 
 
 def _seed_range(text: str) -> range:
@@ -196,7 +201,7 @@ def _tables(args: argparse.Namespace) -> int:
     keys = args.only.split(",") if args.only else list(bank.THESIS)
     unknown = [k for k in keys if k not in bank.THESIS]
     if unknown:
-        raise ScenarioError(f"--only: unknown table {unknown[0]!r} (table1 ... table5)")
+        raise UsageError(f"--only: unknown table {unknown[0]!r} (table1 ... table5)")
     tabs = [bank.thesis_table(k) for k in keys]
     if args.json:
         print(json.dumps(tabs))

@@ -46,8 +46,18 @@ class Recorder:
     obstacles: set[Cell] = field(default_factory=set)
 
     def __call__(self, engine: Engine) -> None:
+        self._engine = engine  # the last round is drawn even if it falls between frames
         if engine.round % self.every:
             return
+        self._capture(engine)
+
+    def close(self) -> None:
+        """Add the run's last round if the thinning skipped it."""
+        engine = getattr(self, "_engine", None)
+        if engine is not None and (not self.rounds or self.rounds[-1] != engine.round):
+            self._capture(engine)
+
+    def _capture(self, engine: Engine) -> None:
         w = engine.world
         self.states = engine.rs.states
         frame = (w.xy().copy(), w.state.copy())
@@ -112,6 +122,7 @@ def save(path: str, rec: Recorder, obstacles: list[Cell], cell_px: int = 0) -> N
     suffix = Path(path).suffix.lower()
     if suffix not in (".png", ".gif"):
         raise ScenarioError(f"--render: {path!r} must end in .png or .gif")
+    rec.close()
     if not rec.frames:
         raise ScenarioError("nothing was recorded")
     x0, y0, x1, y1 = _bounds(rec.box)

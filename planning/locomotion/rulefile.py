@@ -80,10 +80,18 @@ def _tokenize(text: str) -> list[str]:
     return tokens
 
 
+#: How far from its module a rule may look (cells, either axis). The shipped
+#: rules look at most 3 cells away; the engine pads its grid by the reach.
+MAX_REACH = 8
+
+
 def parse_position(token: str) -> Offset:
     if token.startswith("("):
         dx, dy = token[1:-1].split(",")
-        return int(dx), int(dy)
+        off = int(dx), int(dy)
+        if max(abs(off[0]), abs(off[1])) > MAX_REACH:
+            raise _Error(f"position {token} is more than {MAX_REACH} cells from the module")
+        return off
     if token in DIRECTIONS:
         return DIRECTIONS[token]
     raise _Error(f"{token!r} is not a position (use N E S W NE NW SE SW or (dx,dy))")
@@ -333,6 +341,8 @@ def _rule_line(
         except ValueError as exc:
             raise _Error(str(exc)) from None
     elif key == "become":
+        if d.become is not None:
+            raise _Error("a rule has one 'become' line")
         words = rest.split()
         if len(words) not in (1, 4):
             raise _Error("become takes one state, or four: one per quarter turn")
@@ -342,6 +352,8 @@ def _rule_line(
         d.become = words[0]
         d.become_turns = tuple(words) if len(words) == 4 else None
     elif key == "move":
+        if d.move is not None:
+            raise _Error("a rule has one 'move' line")
         off = parse_position(rest)
         if off == (0, 0) or max(abs(off[0]), abs(off[1])) != 1:
             raise _Error(f"a move goes to one of the 8 neighbour cells, not {rest!r}")

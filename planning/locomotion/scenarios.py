@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
 
-from hexbot.errors import ScenarioError
+from hexbot.errors import ScenarioError, UsageError
 from hexbot.files import read_text
 from hexbot.planning.locomotion import rulefile
 from hexbot.planning.locomotion.engine import Engine, Goal, RunResult, World
@@ -57,10 +57,19 @@ class Scenario:
         )
 
 
+#: The longest strip a run takes: the engine keeps a grid round the strip,
+#: so a strip of 10^8 modules would need tens of GB before the first round.
+MAX_MODULES = 100_000
+
+
+def _check_n(n: int) -> None:
+    if not 1 <= n <= MAX_MODULES:
+        raise UsageError(f"--n must be 1..{MAX_MODULES:,}, got {n}")
+
+
 def flat_scenario(n: int) -> Scenario:
     """A horizontal strip of n modules on a floor, advancing east (Table 1 of 001)."""
-    if n < 1:
-        raise ScenarioError("--n must be at least 1")
+    _check_n(n)
     floor = [(x, -1) for x in range(-2, n + 3)]
     return Scenario("flat", floor, [(x, 0) for x in range(n)], title="no obstacles")
 
@@ -110,8 +119,7 @@ def parse_map(text: str, name: str, source: str, n: int | None = None) -> Scenar
     row = module_rows.pop()
     front = max(x for x, _ in modules)
     if n is not None:
-        if n < 1:
-            raise ScenarioError("--n must be at least 1")
+        _check_n(n)
         modules = [(x, row) for x in range(front - n + 1, front + 1)]
     xs = sorted(x for x, _ in modules)
     if xs != list(range(xs[0], xs[-1] + 1)):
@@ -119,7 +127,15 @@ def parse_map(text: str, name: str, source: str, n: int | None = None) -> Scenar
     lo = min(xs[0], 0) - 3
     for y in floor_rows:  # floors run on to the left, under a long strip
         obstacles.extend((x, y) for x in range(lo, 0))
+    solid = set(obstacles)
+    floating = [(x, y) for x, y in modules if (x, y - 1) not in solid]
+    if floating:
+        raise ScenarioError(f"{source}: the strip of modules must rest on the floor or on "
+                            f"obstacles; nothing holds the cell below {floating[0]}")
     raised = [x for x, y in obstacles if y not in floor_rows]
+    if raised and max(raised) <= front:
+        raise ScenarioError(f"{source}: every raised obstacle lies behind the strip's front "
+                            f"(x = {front}): the strip would have nothing to cross")
     letters = header.get("directions", "E N W S").split()
     dirs = [DIRECTION_LETTERS.get(d.upper(), "?") for d in letters]
     if "?" in dirs:
@@ -188,6 +204,8 @@ def load_scenario(name: str, n: int | None = None) -> Scenario:
             sc = parse_map(random_map(seed), base, f"random seed {seed}", n)
         elif Path(name).is_file():
             return parse_map(read_text(name), Path(name).stem, name, n)
+        elif name.endswith(".map") or "/" in name:
+            raise ScenarioError(f"{name}: no such map file")
         else:
             raise ScenarioError(
                 f"unknown scenario {name!r} (try: flat, {', '.join(sorted(maps))}; "

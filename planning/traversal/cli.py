@@ -63,6 +63,8 @@ def resolve_map(text: str) -> Surface:
             seed = int(text.split(":", 1)[1])
         except ValueError as exc:
             raise ScenarioError(f"{text}: expected random:SEED with an integer seed") from exc
+        if seed < 0:
+            raise ScenarioError(f"{text}: the seed is a whole number from 0")
         return random_surface(seed)
     path = Path(text)
     if not path.exists():
@@ -117,6 +119,8 @@ def run(args: argparse.Namespace) -> int:
     if args.plot and not args.sweep:
         raise UsageError("--plot draws the --sweep figures: give --sweep too "
                          "(--render animates one map)")
+    if args.map and (args.sweep or args.random):
+        raise UsageError("--sweep and --random run their own maps: give no MAP with them")
     if args.sweep:
         from hexbot.planning.traversal.experiments import run_sweep
 
@@ -126,7 +130,7 @@ def run(args: argparse.Namespace) -> int:
 
         return run_random(args)
     if not args.map:
-        raise ScenarioError("give a MAP (or --sweep or --random FIRST..LAST)")
+        raise UsageError("give a MAP (or --sweep or --random FIRST..LAST)")
     surface = resolve_map(args.map)
     if args.execute:
         return run_execute(args, surface)

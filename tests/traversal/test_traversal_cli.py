@@ -77,6 +77,11 @@ def test_a_binary_map_file_is_not_text(cli_status, capsys, tmp_path):
         f"hexbot traverse: error: {binary}: not a text file (UTF-8): byte 0xa9 at offset 0")
 
 
+def test_a_random_map_needs_a_seed_from_0(cli_status, capsys):
+    code, err = cli_status("traverse", "random:-1")
+    assert code == 1 and "random:-1: the seed is a whole number from 0" in err
+
+
 def test_an_unknown_map_is_neither_a_file_nor_a_shipped_map(cli_status, capsys):
     code, err = cli_status("traverse", "nosuchcase")
     assert code == 1 and "nosuchcase: neither a map file nor a shipped map" in err
@@ -88,6 +93,9 @@ def test_an_unknown_map_is_neither_a_file_nor_a_shipped_map(cli_status, capsys):
     (["--random", "x"], "--random x: expected FIRST..LAST seeds"),
     (["fig14", "--plot", "x.png"], "--plot draws the --sweep figures: give --sweep too"),
     (["hil-basic-2", "--render", "/nonexistent/x.gif"], "folder /nonexistent does not exist"),
+    ([], "give a MAP (or --sweep or --random FIRST..LAST)"),
+    (["fig14", "--random", "0..1"], "give no MAP with them"),
+    (["fig14", "--sweep"], "give no MAP with them"),
 ])
 def test_usage_errors_exit_2_before_any_run(cli_status, capsys, argv, words):
     code, err = cli_status("traverse", *argv)
