@@ -70,13 +70,15 @@ def simavr_extension() -> Extension:
     return Extension(
         "hexbot.hil_sim._avr",
         sources=sources,
-        include_dirs=include_dirs or ["/usr/include/simavr"],
+        # firmware/include: the generated protocol header (fuses of Table 3-6)
+        include_dirs=(include_dirs or ["/usr/include/simavr"]) + ["firmware/include"],
         library_dirs=library_dirs,
         libraries=libraries,
         extra_compile_args=["-std=gnu11", "-O2", "-Wall", "-Wno-unused-function",
                             "-Werror=implicit-function-declaration", "-pthread"],
         extra_link_args=["-pthread"],  # cluster_pool.c: the quantum's worker threads
-        depends=sorted(p.as_posix() for p in Path("hil_sim/core").glob("*.h")),
+        depends=sorted(p.as_posix() for p in Path("hil_sim/core").glob("*.h"))
+        + ["firmware/include/hexbot_codes.h"],
     )
 
 

@@ -32,6 +32,7 @@ from hexbot.protocol.wire import (
     TEXT_COMM_LISTENING,
     TEXT_COMM_READY,
     TEXT_CTR_READY,
+    TEXT_LOCALIZED,
 )
 
 LOCALIZE_CODE = lookup("Localize").code
@@ -137,7 +138,7 @@ class ClusterModel:
 
     def _apply_report(self, port: str, ev: Event, t: float) -> bool:
         if isinstance(ev, Text):
-            if ev.phrase == "LOCALIZED":
+            if ev.phrase == TEXT_LOCALIZED:
                 self._pending[port] = _PendingReport()
             elif ev.phrase in (TEXT_COMM_READY, TEXT_CTR_READY) and ev.tail:
                 ident = _id_from_tail(ev.tail)

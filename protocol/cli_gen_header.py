@@ -18,7 +18,12 @@ def run(args: argparse.Namespace) -> int:
         for item in stale:
             where = f" ({item.block})" if item.block else ""
             print(f"{item.path}{where} is stale: run `hexbot gen-header`")
-        return 1 if stale else 0
+        left = generated.leftovers()
+        for path in left:
+            print(f"{path} is no longer generated: run `hexbot gen-header` (it removes it)")
+        return 1 if stale or left else 0
+    for path in generated.leftovers():
+        print(f"removed {path}")
     for path in dict.fromkeys(generated.write_all()):
         print(f"wrote {path}")
     return 0

@@ -62,8 +62,12 @@ def render_timing_table() -> str:
         f"| control echo time-out | {_ticks(t.CONTROL_ACK_TIMEOUT_TICKS)} → `ACK ~` |",
         f"| handshake bytes | `{chr(wire.LINK_READY)}` id (ready), "
         f"`{chr(wire.LINK_LISTENING)}` id (listening) |",
+        f"| handshake | control sends `{chr(wire.LINK_READY)}` id every "
+        f"{_ticks(t.HANDSHAKE_RETRY_TICKS)}, at most {t.HANDSHAKE_MAX_TRIES} times; comm waits "
+        f"{_ticks(t.HANDSHAKE_TICKS)} for it, and asks after {_ticks(t.HANDSHAKE_PROBE_TICKS)} |",
+        f"| board frame inter-byte time-out | {t.BOARD_BYTE_TIMEOUT_TICKS} ticks |",
         f"| boot slot | rank (id − 1) mod {t.BOOT_SLOTS}; slot k starts "
-        f"{t.BOOT_FIRST_SLOT_TICKS} + k × {slot} ticks after reset (VERSION 0.1.0; "
+        f"{t.BOOT_FIRST_SLOT_TICKS} + k × {slot} ticks after reset (VERSION {wire.FW_VERSION}; "
         f"{t.IR_BYTE_TICKS_X10 / 10:g} ticks more per extra version character) |",
         f"| `IrSel(side)` hold | back on the centre after {_ticks(t.IRSEL_HOLD_TICKS)} "
         "without an IR byte |",

@@ -77,6 +77,7 @@ def _mavgen_outputs() -> tuple[Generated, ...]:
 
 ARTIFACTS: tuple[Generated, ...] = (
     Generated(header.HEADER_PATH, None, header.render),
+    Generated(header.MAKE_PATH, None, header.render_make),
     Generated(pins_header.PATH, None, pins_header.render),
     Generated(DOCS / "protocol.md", "function-table", docs_table.render_table),
     Generated(DOCS / "firmware.md", "pin-map", docs_table.render_pin_table),
@@ -91,5 +92,16 @@ def stale() -> list[Generated]:
     return [a for a in ARTIFACTS if a.is_stale()]
 
 
+def leftovers(folder: Path | None = None) -> list[Path]:
+    """Files in mavgen's C folder that mavgen no longer writes (a message
+    removed from the dialect): the folder is all generated, so they are stale."""
+    folder = folder or mavlink_gen.C_DIR
+    known = {a.path for a in ARTIFACTS}
+    return sorted(p for p in folder.rglob("*") if p.is_file() and p not in known)
+
+
 def write_all() -> list[Path]:
+    """Write every artifact and remove the leftovers; the paths written."""
+    for path in leftovers():
+        path.unlink()
     return [a.write() for a in ARTIFACTS]

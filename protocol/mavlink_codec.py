@@ -226,6 +226,9 @@ class FramedParser:
                 del self._buf[:1]
                 continue
             del self._buf[:size]
+            # legacy bytes still pending before a whole MAVLink frame can
+            # never complete: report them (as garbage) before the frame
+            out += self.legacy.flush()
             out.append(to_event(frame, msg, self._gap(msg)))
         return out
 

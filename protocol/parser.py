@@ -45,8 +45,6 @@ KNOWN_TEXTS = (
     wire.TEXT_CTR_LISTENING,
     wire.TEXT_COMM_LISTENING,
     wire.TEXT_LOCALIZED,
-    "NOT " + wire.TEXT_LOCALIZED,
-    "RECEIVED",
     wire.TEXT_RF12_READY,
 )
 _TAIL_CHARS = re.compile(rb"[ A-Za-z0-9=._:+\-/]*")

@@ -92,6 +92,7 @@ def render() -> str:
         *_mask("HB_LED_MASK", leds),
         f"/* DIP switches on PIN{pins.DIP_PORT}: the module id bits */",
         f"#define HB_DIP_ID_MASK 0x{pins.DIP_ID_MASK:02X}u",
+        f"#define HB_DIP_PIN PIN{pins.DIP_PORT} /* needs <avr/io.h> where it is used */",
         "",
         f"/* IR channel selector lines A, B, C on PORT{sel_port} (Table 3-5: Y = 4C + 2B + A) */",
         f"#define HB_SEL_PORT_{sel_port}",

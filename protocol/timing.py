@@ -149,12 +149,12 @@ def boot_rank(module_id: int) -> int:
     return (module_id - 1) % BOOT_SLOTS if module_id else 0
 
 
-def boot_slot_ticks(version: str = "0.1.0") -> int:
+def boot_slot_ticks(version: str = wire.FW_VERSION) -> int:
     """Length of one boot slot for firmware built with ``VERSION=version``."""
     return ir_ticks(BOOT_TEXT_FIXED_BYTES + len(version)) + BOOT_GUARD_TICKS
 
 
-def boot_seconds(ids: Iterable[int], version: str = "0.1.0") -> float:
+def boot_seconds(ids: Iterable[int], version: str = wire.FW_VERSION) -> float:
     """Simulated time from reset until every module in ``ids`` has sent its
     ``COMM. LISTENING`` boot text (both boards present): the end of the last
     boot slot any of them uses."""
@@ -183,6 +183,22 @@ LOC_SWEEP_TICKS = 6 * LOC_DWELL_TICKS
 LOC_HOPS = 4
 LOC_WINDOW_TICKS = LOC_HOPS * (LOC_SWEEP_TICKS + 6 * LOC_LISTEN_TICKS) + 20
 LOCALIZE_WINDOW_S = LOC_WINDOW_TICKS * TICK_S
+
+# --- the two boards of a module: handshake and board link ------------------------
+
+#: At boot the control board says 'R' and its id every HANDSHAKE_RETRY_TICKS
+#: (the thesis' 100 ms), at most HANDSHAKE_MAX_TRIES times; the comm board
+#: waits HANDSHAKE_TICKS for it. A control board that booted with the comm
+#: board says 'R' after its 0.7 s self-test: past HANDSHAKE_PROBE_TICKS it is
+#: already listening (only the comm board restarted), and the comm board asks.
+HANDSHAKE_TICKS = 300
+HANDSHAKE_RETRY_TICKS = 10
+HANDSHAKE_MAX_TRIES = 50
+HANDSHAKE_PROBE_TICKS = 100
+#: The id byte follows 'R' / 'L' at once; board frames drop after a gap of
+#: about six byte times at 4,800 baud.
+LINK_ID_TICKS = 3
+BOARD_BYTE_TIMEOUT_TICKS = 3
 
 # --- other firmware time-outs the PC can see -----------------------------------
 

@@ -70,4 +70,8 @@ FUSE_LOW = 0x62  # Table 3-6: internal RC 8 MHz, CKDIV8 -> 1 MHz
 FUSE_HIGH = 0xD9  # JTAG off, SPIEN on, BOOTSZ=00
 FUSE_EXTENDED = 0xFF  # BOD off
 SIGNATURE = bytes((0x1E, 0x94, 0x04))  # ATmega162
+FLASH_BYTES = 16 * 1024  # ATmega162: 16 KiB of program flash
+#: The version string the firmware is built with unless ``make VERSION=...``
+#: says otherwise; its length sets the boot slots (protocol/timing.py).
+FW_VERSION = "0.1.0"
 F_CPU = 1_000_000

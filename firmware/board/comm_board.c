@@ -40,7 +40,7 @@ void comm_board_init(void)
     DDRB = (uint8_t)~(1 << PB2);        /* PB2 = RX1 (IR receive) */
     DDRC = 0xFF;
     DDRD = (uint8_t)~(1 << PD0);        /* PD0 = RX0 (control board) */
-    DDRE = 0x07;
+    DDRE = HB_LED_MASK_E;
     ir_channel = 0xFF;
     comm_ir_select(IR_CENTRE);
 }

@@ -69,5 +69,5 @@ void control_magnets_all_off(void)
 
 uint8_t control_module_id(void)
 {
-    return PINC & HB_DIP_ID_MASK; /* all eight switches: 1..255, 0 = none on */
+    return HB_DIP_PIN & HB_DIP_ID_MASK; /* all eight switches: 1..255, 0 = none on */
 }

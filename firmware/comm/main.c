@@ -28,12 +28,9 @@
 #define IR UART1
 #define CTRL UART0
 
-#define HANDSHAKE_TICKS 300u       /* wait this long for the control board at boot */
-#define HANDSHAKE_RETRY_TICKS 10u  /* resend 'R' every 100 ms (thesis) */
-/* A control board that booted with us says 'R' after its 0.7 s self-test;
- * past this, it is already listening (only we restarted) and we ask. */
-#define HANDSHAKE_PROBE_TICKS 100u
-#define LINK_ID_TICKS 3u           /* the id byte follows 'R'/'L' at once */
+/* Handshake timing (protocol/timing.py): a control board that booted with
+ * us says 'R' after its 0.7 s self-test; past HB_HANDSHAKE_PROBE_TICKS it
+ * is already listening (only we restarted) and we ask. */
 
 /* Boot slots: every module of a cluster boots at once and the PC hears them
  * all on one IR medium, so the texts that carry the id go out in the
@@ -61,7 +58,7 @@ static void link_byte(uint8_t b)
 {
     if (b != HB_LINK_READY && b != HB_LINK_LISTENING)
         return;
-    int16_t id = uart_getc_wait(CTRL, LINK_ID_TICKS);
+    int16_t id = uart_getc_wait(CTRL, HB_LINK_ID_TICKS);
     if (id >= 0) /* any byte is an id: 8 DIP switches */
         g_state.id = (uint8_t)id;
     if (b == HB_LINK_READY) {
@@ -411,16 +408,16 @@ static uint8_t handshake(void)
 {
     uint8_t texts = BOOT_COMM_LISTENING;
     tick_t start = tick_now();
-    tick_t probe = (tick_t)(start + HANDSHAKE_PROBE_TICKS);
-    while (!control_ready && !g_state.control_up && tick_since(start) < HANDSHAKE_TICKS) {
+    tick_t probe = (tick_t)(start + HB_HANDSHAKE_PROBE_TICKS);
+    while (!control_ready && !g_state.control_up && tick_since(start) < HB_HANDSHAKE_TICKS) {
         uint8_t mark = sys_io_events;
         if ((int16_t)(tick_now() - probe) >= 0) { /* a listening board answers 'L' id */
             uart_putc(CTRL, HB_LINK_READY);
-            probe = (tick_t)(tick_now() + HANDSHAKE_RETRY_TICKS);
+            probe = (tick_t)(tick_now() + HB_HANDSHAKE_RETRY_TICKS);
         }
         poll_inputs();
         if (!control_ready && !g_state.control_up)
-            sys_idle_until(ir_due(tick_earlier((tick_t)(start + HANDSHAKE_TICKS), probe)),
+            sys_idle_until(ir_due(tick_earlier((tick_t)(start + HB_HANDSHAKE_TICKS), probe)),
                            mark);
     }
     if (control_ready) {
@@ -428,16 +425,16 @@ static uint8_t handshake(void)
         texts |= BOOT_CTR_READY;
         start = tick_now();
         tick_t last = start;
-        while (!g_state.control_up && tick_since(start) < HANDSHAKE_TICKS) {
+        while (!g_state.control_up && tick_since(start) < HB_HANDSHAKE_TICKS) {
             uint8_t mark = sys_io_events;
-            if (tick_since(last) >= HANDSHAKE_RETRY_TICKS) {
+            if (tick_since(last) >= HB_HANDSHAKE_RETRY_TICKS) {
                 uart_putc(CTRL, HB_LINK_READY);
                 last = tick_now();
             }
             poll_inputs();
             if (!g_state.control_up)
-                sys_idle_until(ir_due(tick_earlier((tick_t)(start + HANDSHAKE_TICKS),
-                                                   (tick_t)(last + HANDSHAKE_RETRY_TICKS))),
+                sys_idle_until(ir_due(tick_earlier((tick_t)(start + HB_HANDSHAKE_TICKS),
+                                                   (tick_t)(last + HB_HANDSHAKE_RETRY_TICKS))),
                                mark);
         }
     }

@@ -13,9 +13,10 @@
 
 #include <stdint.h>
 
+#include "hexbot_codes.h"
 #include "system.h"
 
-#define FRAME_MAX 11u
+#define FRAME_MAX HB_PC_FRAME_LEN /* the longest frame: the PC's */
 
 typedef struct {
     uint8_t buf[FRAME_MAX];

@@ -6,7 +6,9 @@
 
 #include <stdint.h>
 
-#define ID_TEXT_MAX 3u /* digits of the largest id, 255 */
+#include "hexbot_codes.h"
+
+#define ID_TEXT_MAX HB_ID_MAX_DIGITS /* digits of the largest id, 255 */
 
 /** Write @p id into @p buf (ID_TEXT_MAX bytes at least, no NUL); returns
  *  the number of digits written, 2 or 3. */

@@ -21,9 +21,6 @@
 #include "uart.h"
 #include "version.h"
 
-#define HANDSHAKE_RETRY_TICKS 10u
-#define HANDSHAKE_MAX_TRIES 50u
-#define BOARD_BYTE_TIMEOUT_TICKS 3u /* 6 byte times at 4800 baud */
 
 #define SRC_COMM UART0
 #define SRC_DEBUG UART1
@@ -115,16 +112,16 @@ static void run_pending(void)
 
 static uint8_t handshake(void)
 {
-    for (uint8_t tries = 0; tries < HANDSHAKE_MAX_TRIES; tries++) {
+    for (uint8_t tries = 0; tries < HB_HANDSHAKE_MAX_TRIES; tries++) {
         send_link(HB_LINK_READY);
         tick_t start = tick_now();
-        while (tick_since(start) < HANDSHAKE_RETRY_TICKS) {
+        while (tick_since(start) < HB_HANDSHAKE_RETRY_TICKS) {
             uint8_t mark = sys_io_events;
             int16_t b = uart_getc(SRC_COMM);
             if (b == HB_LINK_READY)
                 return 1;
             if (b < 0)
-                sys_idle_until(start + HANDSHAKE_RETRY_TICKS, mark);
+                sys_idle_until(start + HB_HANDSHAKE_RETRY_TICKS, mark);
         }
     }
     return 0;
@@ -144,8 +141,8 @@ int main(void)
     sys_init();
     uart_init(UART0, HB_UBRR_BOARD);
     uart_init(UART1, HB_UBRR_DEBUG);
-    frame_init(&rx[0], HB_BOARD_FRAME_LEN, BOARD_BYTE_TIMEOUT_TICKS);
-    frame_init(&rx[1], HB_BOARD_FRAME_LEN, BOARD_BYTE_TIMEOUT_TICKS);
+    frame_init(&rx[0], HB_BOARD_FRAME_LEN, HB_BOARD_BYTE_TIMEOUT_TICKS);
+    frame_init(&rx[1], HB_BOARD_FRAME_LEN, HB_BOARD_BYTE_TIMEOUT_TICKS);
     actuators_init(wait_or_abort);
 
     sys_delay(10); /* supplies settle */

@@ -4,8 +4,8 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0xc44e758eUL
-#define HB_SCHEMA_HASH_TEXT "c44e758e"
+#define HB_SCHEMA_HASH 0xa7f566bcUL
+#define HB_SCHEMA_HASH_TEXT "a7f566bc"
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */
@@ -22,6 +22,7 @@
 #define HB_UBRR_BOARD       12u
 #define HB_UBRR_DEBUG       12u
 #define HB_MAX_MODULE_ID    255
+#define HB_ID_MAX_DIGITS    3u
 #define HB_MAX_SELECT_ID    63
 #define HB_LOC_COORD_LIMIT  99
 
@@ -53,6 +54,13 @@
 #define HB_SUBSTRATE_ACK_DELAY_TICKS 100u
 #define HB_ACK_SLOT_TICKS   60u
 #define HB_PC_BYTE_TIMEOUT_TICKS 34u
+/* The boards' handshake and link */
+#define HB_HANDSHAKE_TICKS  300u
+#define HB_HANDSHAKE_RETRY_TICKS 10u
+#define HB_HANDSHAKE_MAX_TRIES 50u
+#define HB_HANDSHAKE_PROBE_TICKS 100u
+#define HB_LINK_ID_TICKS    3u
+#define HB_BOARD_BYTE_TIMEOUT_TICKS 3u
 #define HB_IRSEL_HOLD_TICKS 1000u
 #define HB_YREF_BLINK_TICKS 10u
 #define HB_REF_SHOWS        3u

@@ -43,6 +43,7 @@
 #define HB_LED_MASK_E 0x07u
 /* DIP switches on PINC: the module id bits */
 #define HB_DIP_ID_MASK 0xFFu
+#define HB_DIP_PIN PINC /* needs <avr/io.h> where it is used */
 
 /* IR channel selector lines A, B, C on PORTA (Table 3-5: Y = 4C + 2B + A) */
 #define HB_SEL_PORT_A

@@ -38,6 +38,7 @@
 #include <stddef.h>
 
 #include "m162.h"
+#include "hexbot_codes.h"
 #include "sim_elf.h"
 #include "sim_core.h"
 #include "sim_vcd_file.h"
@@ -64,10 +65,11 @@
 #define M162_UCSR1C_SHADOW 0xFB
 
 /* HexBot boards: internal RC / 8 = 1 MHz, JTAG off so PC4..PC7 are I/O
- * (thesis Table 3-6).  avr-libc's factory default high fuse is 0x99. */
-#define M162_LFUSE 0x62
-#define M162_HFUSE 0xD9
-#define M162_EFUSE 0xFF
+ * (thesis Table 3-6, from the generated protocol header).  avr-libc's
+ * factory default high fuse is 0x99. */
+#define M162_LFUSE HB_FUSE_LOW
+#define M162_HFUSE HB_FUSE_HIGH
+#define M162_EFUSE HB_FUSE_EXTENDED
 
 const uint16_t m162_port_regs[M162_NPORTS][3] = {
 	{ PINA, DDRA, PORTA }, { PINB, DDRB, PORTB }, { PINC, DDRC, PORTC },

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from hexbot.protocol import wire
 
-FLASH_SIZE = 16 * 1024
+FLASH_SIZE = wire.FLASH_BYTES
 FLASH_PAGE = 128  # bytes; 64 words
 EEPROM_SIZE = 512
 EEPROM_PAGE = 4
@@ -46,7 +46,7 @@ class Atmega162Memory:
 
     def __post_init__(self) -> None:
         if len(self.flash) != FLASH_SIZE or len(self.eeprom) != EEPROM_SIZE:
-            raise ValueError("flash must hold 16384 bytes and EEPROM 512 bytes")
+            raise ValueError(f"flash must hold {FLASH_SIZE} bytes and EEPROM {EEPROM_SIZE} bytes")
         if len(self.signature) != 3:
             raise ValueError(f"signature must be 3 bytes, got {self.signature.hex(' ')}")
         self.efuse |= EFUSE_UNUSED

@@ -22,7 +22,7 @@ from hexbot.host.flash.fuses import TABLE_3_6, FuseSet, check_fuses, fuse_notes
 from hexbot.host.flash.ihex import read_hex
 from hexbot.protocol import wire
 
-FLASH_BYTES = 16 * 1024
+FLASH_BYTES = wire.FLASH_BYTES
 BOARDS = ("comm", "control")
 REPO_ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_BUILD = REPO_ROOT / "firmware" / "build"
@@ -53,7 +53,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--bitclock", help="avrdude -B, ISP clock period/frequency")
     parser.add_argument("--avrdude", default="avrdude", help="avrdude executable")
     parser.add_argument("--fuses", action="store_true",
-                        help="also write the fuses (Table 3-6: low 0x62, high 0xD9, ext 0xFF)")
+                        help=f"also write the fuses (Table 3-6: low 0x{wire.FUSE_LOW:02X}, "
+                             f"high 0x{wire.FUSE_HIGH:02X}, ext 0x{wire.FUSE_EXTENDED:02X})")
     for name in ("lfuse", "hfuse", "efuse", "lock"):
         parser.add_argument(f"--{name}", type=_byte, metavar="BYTE",
                             help=f"{name} value to write instead of Table 3-6's (implies --fuses)")

@@ -15,7 +15,7 @@ from hexbot.errors import FlashingError
 from hexbot.host.flash.cli import DEFAULT_BUILD, REPO_ROOT, flash_board
 from hexbot.protocol import timing, wire
 
-DEFAULT_VERSION = "0.1.0"  # firmware/Makefile's VERSION ?= ...
+DEFAULT_VERSION = wire.FW_VERSION  # what `make` builds without VERSION=
 _LISTENING = re.compile(re.escape(wire.TEXT_COMM_LISTENING + wire.BOOT_ID_TAIL) + r"(\d+)"
                         + re.escape(wire.BOOT_FW_TAIL) + r"(\S+)")
 

@@ -109,8 +109,9 @@ def fuse_notes(fuses: FuseSet) -> list[str]:
     """Harmless but noteworthy differences from Table 3-6."""
     notes = []
     if fuses.lfuse != TABLE_3_6.lfuse and fuses.lfuse & 0x0F == CKSEL_INTERNAL_RC:
-        notes.append(f"low fuse 0x{fuses.lfuse:02X} is not Table 3-6's 0x62: the clock would "
-                     "not be 1 MHz, so the firmware's baud rates and 10 ms tick would be off")
+        notes.append(f"low fuse 0x{fuses.lfuse:02X} is not Table 3-6's 0x{wire.FUSE_LOW:02X}: "
+                     "the clock would not be 1 MHz, so the firmware's baud rates and 10 ms "
+                     "tick would be off")
     if not fuses.hfuse & HFUSE_WDTON:
         notes.append("WDTON is programmed: the watchdog is always on")
     return notes

@@ -30,6 +30,18 @@ def test_a_stale_copy_is_detected(tmp_path, artifact):
     assert artifact.is_stale(copy)
 
 
+def test_a_file_mavgen_no_longer_writes_is_found():
+    from hexbot.protocol import mavlink_gen
+
+    assert generated.leftovers() == []  # the checked-in folder holds only mavgen's files
+    real = mavlink_gen.C_DIR / "hexbot" / "mavlink_msg_hexbot_removed.h"
+    try:
+        real.write_text("/* a message removed from the dialect */\n")
+        assert generated.leftovers() == [real]
+    finally:
+        real.unlink(missing_ok=True)
+
+
 def test_a_document_without_markers_is_an_error(tmp_path):
     doc = next(a for a in generated.ARTIFACTS if a.block)
     copy = tmp_path / "doc.md"

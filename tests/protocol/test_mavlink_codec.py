@@ -59,6 +59,17 @@ def test_mavlink_replies_among_legacy_ones_in_the_order_they_came():
     assert [e.mav.seq for e in events[1:]] == [0, 1, 2]
 
 
+def test_half_a_legacy_text_before_a_mavlink_reply_is_garbage_reported_first():
+    # a text cut off by the next module's MAVLink reply never ends: the
+    # monitor must print it as garbage before that reply, not after
+    stream = b"\n\r\n\rCOMM. LISTENING " + b"X" * 60 + b"\n\r" + ack(module(3))
+    p = FramedParser()
+    events = [e for b in stream for e in p.feed(bytes([b]))]
+    assert [type(e) for e in events] == [parser.Garbage, MavAck]
+    assert b"COMM. LISTENING XXXX" in events[0].raw
+    assert p.flush() == []
+
+
 def test_a_sequence_gap_names_the_lost_replies():
     mav = module(5)
     first = ack(mav)
