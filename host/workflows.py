@@ -227,7 +227,9 @@ def rotate(session: Session, direction: str, joint: int, mobile: int, substrate:
             f"module {mobile} should be at {expected.cell} facing {expected.orientation} "
             f"after {d} about joint {joint}, {how.value} check finds it at {got.cell} "
             f"facing {got.orientation}")
-    if how is Verify.PLANT:
+    if how in (Verify.PLANT, Verify.STATUS):
+        # the plant saw it; a status check cannot see a place, so the next
+        # moves assume the planned one until a localization says otherwise
         session.host.model.placed(mobile, expected.cell, expected.orientation)
     return RotationResult(mobile, substrate, expected, how, got)
 

@@ -18,7 +18,7 @@ from collections.abc import Iterable, Iterator
 from typing import Any, TextIO
 
 from hexbot.cli_args import count, output_file
-from hexbot.errors import ScenarioError
+from hexbot.errors import ScenarioError, UsageError
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.workflows import Verify
 from hexbot.planning.bounds import NEVER, PlanBounds, plan_bounds
@@ -270,10 +270,26 @@ def run(args: argparse.Namespace) -> int:
 def run_execute(args: argparse.Namespace) -> int:
     """Localize the cluster behind the port, plan from it, execute the plan."""
     from hexbot.host.cli_common import session
-    from hexbot.host.workflows import localize
-    from hexbot.planning.execute import configuration_of, default_reference, execute
+    from hexbot.host.workflows import localize, reference_problem
+    from hexbot.planning.config_io import names_modules
+    from hexbot.planning.execute import (
+        check_plan_fits,
+        configuration_of,
+        default_reference,
+        execute,
+    )
 
-    wanted = load_configuration(args.initial).cells
+    if args.style != "combined":
+        raise UsageError("--execute sends each move as the console does (SetRole, Select, "
+                         "then the combined CW/CCW frame): --style single only prints")
+    if args.reference is not None and reference_problem(args.reference):
+        raise UsageError(f"--reference: {reference_problem(args.reference)}")
+    port = str(getattr(args, "port", None) or "")
+    if args.verify == "plant" and port and not port.startswith("hexbot-sim"):
+        raise UsageError("--verify plant needs the embedded simulator (--scenario or a "
+                         "hexbot-sim:// port); use localize or status on a real port")
+    given = load_configuration(args.initial)
+    wanted = given.cells
     if len(wanted) > MAX_SELECT_ID:
         raise ScenarioError(
             f"{args.initial}: {len(wanted)} modules, but the link addresses module ids "
@@ -282,19 +298,30 @@ def run_execute(args: argparse.Namespace) -> int:
         reference = args.reference if args.reference is not None else default_reference(sess)
         poses = localize(sess, reference)
         initial = configuration_of(poses)
+        where = f"scenario {args.scenario}" if args.scenario else "the cluster"
         if wanted != initial.cells:
-            where = f"scenario {args.scenario}" if args.scenario else "the cluster"
             raise ScenarioError(
                 f"{args.initial} does not describe {where}: cells "
                 f"{sorted(wanted)} vs localized {sorted(initial.cells)}")
-        if args.mode == "robust":
+        ids = {c: m.id for c, m in given.items()}
+        if names_modules(args.initial) and ids != {c: m.id for c, m in initial.items()}:
+            cell = next(c for c in sorted(ids) if ids[c] != initial[c].id)
+            raise ScenarioError(
+                f"{args.initial} does not describe {where}: module {ids[cell]} at {cell}, "
+                f"localized module {initial[cell].id} there")
+        if args.mode in ("robust", "exact"):
             args.fixed = poses[reference].cell  # localization needs the reference to stay
         plan = make_plan(args, initial)
         if not plan.reached:
-            print(plan_text(plan, args.style, steps=not args.summary))
+            if args.json:
+                write_plan_json(plan, args.style, sys.stdout, {"execution": None},
+                                steps=not args.summary)
+            else:
+                print(plan_text(plan, args.style, steps=not args.summary))
             print(f"hexbot plan: goal not reached, nothing executed: {plan.reason}",
                   file=sys.stderr)
             return 1
+        check_plan_fits(plan, sess, reference)  # before a word is printed or sent
         if not args.json:
             print(plan_text(plan, args.style, steps=not args.summary))
             print(f"executing through {sess.host.channel().settings.url}: move by move, "
@@ -305,10 +332,8 @@ def run_execute(args: argparse.Namespace) -> int:
         write_plan_json(plan, args.style, sys.stdout, {"execution": report.as_json()},
                         steps=not args.summary)
     else:
-        done = sum(m.ok for m in report.moves)
-        print(f"executed {done}/{plan.move_count} moves in {report.seconds:.1f} s; "
-              f"goal {'reached' if report.reached else 'NOT reached'} (localized)")
+        print(report.line(plan.move_count))
     if not report.reached:
         print(f"hexbot plan: execution stopped: {report.failure}", file=sys.stderr)
-        return 1
+        return report.exit_status or 1
     return 0

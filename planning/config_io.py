@@ -127,6 +127,15 @@ def parse_toml(text: str, source: str = "<toml>") -> Configuration:
     return Configuration(out)
 
 
+def names_modules(path: str | Path) -> bool:
+    """Does the file give each module's id ([[module]] tables), rather than
+    cells numbered in reading order?"""
+    path = Path(path)
+    if path.suffix.lower() != ".toml":
+        return False
+    return "module" in tomllib.loads(read_text(path))
+
+
 def load_configuration(path: str | Path) -> Configuration:
     """Read a configuration file; the format follows the suffix (``.toml`` or grid text)."""
     path = Path(path)

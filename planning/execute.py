@@ -57,6 +57,18 @@ class ExecutionReport:
     reached: bool = False
     failure: str = ""
     seconds: float = 0.0  # session time (simulated on a simulator)
+    #: the exit status of the error that stopped the run (docs/console.md:
+    #: 3 a time-out, 4 a lost port, 1 a refusal), 0 when the goal was reached
+    exit_status: int = 0
+    #: every move ran, so the last line is the final localization's verdict
+    finished: bool = False
+
+    def line(self, total: int) -> str:
+        """The CLI's last line: how far the run got, and on what evidence."""
+        done = sum(m.ok for m in self.moves)
+        verdict = ("goal reached (localized)" if self.reached else
+                   "goal NOT reached (localized)" if self.finished else "stopped early")
+        return f"executed {done}/{total} moves in {self.seconds:.1f} s; {verdict}"
 
     def outcome(self, total: int) -> str:
         """One line when the goal was reached (localized), else
@@ -160,6 +172,35 @@ def plan_from_cluster(session: Session, goal: frozenset[Cell], reference: int, *
     return plan, poses
 
 
+def pinned_modules(session: Session, reference: int) -> dict[int, str]:
+    """The modules a plan may not move, and why: the localization's origin,
+    and on the simulator the module its scenario bolts to the base."""
+    pinned = {reference: "the reference of the localization"}
+    sim = session.host.simulator
+    if sim is not None and sim.base is not None and sim.base != reference:
+        pinned[sim.base] = "bolted to the base in the scenario"
+    return pinned
+
+
+def check_plan_fits(plan: Plan, session: Session, reference: int) -> None:
+    """:class:`ExecutionError` before anything is sent when the plan moves a
+    pinned module (:func:`pinned_modules`) or names a module id the link
+    cannot address."""
+    from hexbot.protocol.wire import MAX_SELECT_ID
+
+    moved = {m.module for step in plan.steps for m in step.moves}
+    for module, why in pinned_modules(session, reference).items():
+        if module in moved:
+            raise ExecutionError(
+                f"the plan moves module {module}, {why}: nothing sent (the robust mode "
+                "keeps the reference in place; on the simulator, make the base module "
+                "the reference)")
+    far = sorted(m.id for m in plan.initial.values() if m.id > MAX_SELECT_ID)
+    if far:
+        raise ExecutionError(f"module id {far[0]} cannot be addressed: the link's Select "
+                             f"reaches ids 1..{MAX_SELECT_ID}; nothing sent")
+
+
 def execute(plan: Plan, session: Session, reference: int, *, verify: Verify = Verify.AUTO,
             log: Callable[[str], None] | None = None,
             poses: dict[int, Pose] | None = None) -> ExecutionReport:
@@ -178,6 +219,7 @@ def execute(plan: Plan, session: Session, reference: int, *, verify: Verify = Ve
             raise ExecutionError(
                 "the plan does not start from the cluster as localized: plan "
                 f"{sorted(plan.initial.items())} vs cluster {sorted(actual.items())}")
+        check_plan_fits(plan, session, reference)
         config = plan.initial
         for index, step in enumerate(plan.steps, start=1):
             for move in step.moves:
@@ -199,11 +241,15 @@ def execute(plan: Plan, session: Session, reference: int, *, verify: Verify = Ve
                 say(f"{session.now():9.3f}  step {index}: {result.describe()}")
                 config = config.moved(move.src, move.dst, orientation)
         final = workflows.localize(session, reference)
+        report.finished = True
         report.reached = frozenset(p.cell for p in final.values()) == plan.goal
         if not report.reached:
+            report.exit_status = 1
             report.failure = (f"all moves done but the localized cluster "
                               f"{sorted(p.cell for p in final.values())} is not the goal")
     except HexBotError as exc:
         report.failure = str(exc)
+        cause = exc.__cause__ if isinstance(exc.__cause__, HexBotError) else exc
+        report.exit_status = cause.exit_status
     report.seconds = session.now() - start
     return report

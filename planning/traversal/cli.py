@@ -180,11 +180,9 @@ def run_execute(args: argparse.Namespace, surface: Surface) -> int:
     if args.json:
         print(json.dumps({**result_json(bmap, result), "execution": report.as_json()}))
     else:
-        done = sum(m.ok for m in report.moves)
-        print(f"executed {done}/{plan.move_count} moves in {report.seconds:.1f} s; "
-              f"goal {'reached' if report.reached else 'NOT reached'} (localized)")
+        print(report.line(plan.move_count))
     if not report.reached:
         reason = report.failure.splitlines()[0] if report.failure else "not reached"
         print(f"hexbot traverse: execution stopped: {reason}", file=sys.stderr)
-        return 1
+        return report.exit_status or 1
     return 0

@@ -106,13 +106,15 @@ def test_execute_with_summary_reports_the_run_without_the_plans_steps(tmp_path, 
     assert lines[-1].startswith("executed 1/1 moves") and "goal reached (localized)" in lines[-1]
 
 
-def test_a_refused_move_stops_with_the_plants_reason(open_session):
+def test_a_plan_that_moves_the_base_is_refused_before_anything_is_sent(open_session):
+    # the audit's case: a reference other than the base, and a plan moving
+    # the base, ran its first moves and stopped half-way at the plant's refusal
     session = open_session("pair")
     report = execute(_fixed_base_plan(), session, reference=2)
-    assert not report.reached
-    assert "step 1: module 1" in report.failure
-    assert "the plant refused: module 1 fixed to base" in report.failure
-    assert len(report.moves) == 1 and not report.moves[0].ok
+    assert not report.reached and report.moves == [] and report.exit_status == 1
+    assert "the plan moves module 1, bolted to the base in the scenario: nothing sent" in (
+        report.failure)
+    assert session.host.simulator.verdicts() == []  # no rotation reached the plant
 
 
 def test_on_a_pty_the_refused_move_is_caught_by_localizing(open_session):
@@ -152,3 +154,79 @@ def test_a_plan_request_reads_its_goal_and_options_or_says_what_is_wrong(tmp_pat
                            (["missing.toml"], "missing.toml")):
         with pytest.raises(ScenarioError, match=re.escape(problem)):
             plan_request(words, tmp_path)
+
+
+@pytest.mark.parametrize("extra, words", [
+    (["--style", "single"], "--style single only prints"),
+    (["--reference", "0"], "--reference: the reference must be a module id 1..63, got 0"),
+    (["--port", "/dev/null", "--verify", "plant"], "--verify plant needs the embedded simulator"),
+])
+def test_execute_usage_errors_come_before_the_port_opens(tmp_path, cli_status, extra, words):
+    initial, goal = tmp_path / "initial.toml", tmp_path / "goal.toml"
+    initial.write_text(PAIR_INITIAL)
+    goal.write_text(PAIR_GOAL)
+    scenario = [] if "--port" in extra else ["--scenario", "pair"]
+    code, err = cli_status("plan", initial, goal, "--execute", "--no-log", *scenario, *extra)
+    assert code == 2 and words in err
+
+
+def test_a_faithful_plan_that_moves_the_reference_sends_no_move(capsys):
+    # the thesis planner moves module 1 at (0, 0), the base: two real moves
+    # used to run before the plant refused the third
+    status = main(["plan", str(EXAMPLES / "test_all_p01_initial.txt"),
+                   str(EXAMPLES / "test_all_p01_goal.txt"), "--execute", "--scenario",
+                   "thesis-fig5-8", "--no-log", "--mode", "faithful-serial"])
+    out, err = capsys.readouterr()
+    assert status == 1
+    assert "the plan moves module 1, the reference of the localization: nothing sent" in err
+    assert "executing through" not in out
+
+
+def test_execute_json_without_a_plan_is_still_json(tmp_path, capsys):
+    initial, goal = tmp_path / "initial.toml", tmp_path / "goal.toml"
+    initial.write_text(PAIR_INITIAL)
+    goal.write_text("cells = [[0, 0], [5, 5]]\n")  # not connected: no plan
+    status, out = _run_json(capsys, str(initial), str(goal), "--scenario", "pair")
+    assert status == 1 and out["reached"] is False and out["execution"] is None
+
+
+def test_a_module_table_must_name_the_modules_as_localized(tmp_path, capsys):
+    initial, goal = tmp_path / "initial.toml", tmp_path / "goal.toml"
+    initial.write_text("[[module]]\nid = 7\ncell = [0, 0]\n[[module]]\nid = 9\ncell = [-1, 1]\n")
+    goal.write_text(PAIR_GOAL)
+    status = main(["plan", str(initial), str(goal), "--execute", "--scenario", "pair",
+                   "--no-log"])
+    assert status == 1
+    assert "module 9 at (-1, 1), localized module 2 there" in capsys.readouterr().err
+
+
+def test_verify_status_assumes_the_planned_place_for_the_next_moves(tmp_path, capsys):
+    # module 2 moves twice: the second move needs its place after the first,
+    # which a status check cannot see (it used to refuse: "stale")
+    initial, goal = tmp_path / "initial.toml", tmp_path / "goal.toml"
+    initial.write_text(PAIR_INITIAL)
+    goal.write_text("cells = [[0, 0], [1, 0]]\n")
+    status, out = _run_json(capsys, str(initial), str(goal), "--scenario", "pair",
+                            "--verify", "status")
+    run = out["execution"]
+    assert status == 0 and run["reached"] and len(run["moves"]) >= 2
+    assert all(m["verified_by"] == "status" for m in run["moves"])
+
+
+def test_an_error_that_stops_a_run_keeps_its_exit_status(open_session, monkeypatch):
+    # a port lost (4) or a time-out (3) mid-run was reported as exit 1
+    from hexbot.errors import HexBotTimeoutError
+    from hexbot.host import workflows
+
+    def silent(*_args, **_kwargs):
+        raise HexBotTimeoutError("CW (67): no reply from modules 1, 2 within 4.9 s")
+
+    session = open_session("pair")
+    initial = Configuration({(0, 0): Module(1, 0), (-1, 1): Module(2, 0)})
+    move = Move(module=2, src=(-1, 1), dst=(0, 1), joint=4, direction="CW",
+                substrate=(0, 0), substrate_module=1)
+    plan = Plan("robust", initial, frozenset({(0, 0), (0, 1)}), [Step([move])], reached=True)
+    monkeypatch.setattr(workflows, "rotate", silent)
+    report = execute(plan, session, reference=1)
+    assert report.exit_status == 3 and "no reply" in report.failure
+    assert report.line(1) == f"executed 0/1 moves in {report.seconds:.1f} s; stopped early"

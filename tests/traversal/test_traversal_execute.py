@@ -51,7 +51,7 @@ def test_maps_are_crossed_on_the_simulator(capsys, name, modules, fills):
 
 
 def test_a_refused_move_stops_with_one_line(tmp_path, capsys):
-    # the same cluster, but mover 1 fixed to the base: the plant refuses its first move
+    # the same cluster, but mover 1 fixed to the base: refused before any move
     from hexbot.planning.traversal.execute import scenario_toml
 
     cluster = cluster_of(resolve_map("hil-flat"))
@@ -64,5 +64,5 @@ def test_a_refused_move_stops_with_one_line(tmp_path, capsys):
                    "--no-log"])
     err = capsys.readouterr().err.strip().splitlines()[-1]
     assert status == 1
-    assert err.startswith("hexbot traverse: execution stopped: step 1: module 1")
-    assert "fixed to base" in err
+    assert err.startswith("hexbot traverse: execution stopped: the plan moves module 1, "
+                          "bolted to the base in the scenario: nothing sent")
