@@ -1,5 +1,6 @@
 """Digs: the journey flow's way into a goal cell, or out of a cell, that goal
-modules wall in (used above the local method's ``LOCAL_LIMIT``).
+modules wall in (used above the local method's ``LOCAL_LIMIT``, and below it
+when no flow plans without them: shapes with holes).
 
 A *hole* is a goal cell that no order of fills can enter: entering needs three
 free sides in a row, and the goal modules around it stay. A walled-in *end*
@@ -669,6 +670,8 @@ def _fill_from(tracker, parked: list[Cell], cell: Cell, fixed: Cell | None) -> b
     """A parked module (the last parked first) journeys to ``cell``."""
     occupied = tracker.occupied
     for i in reversed(range(len(parked))):
+        if parked[i] not in occupied:  # a crossing of an earlier refill moved it on
+            continue
         if is_cut(occupied, parked[i]):
             continue
         hops = journey(occupied, parked[i], cell, fixed)

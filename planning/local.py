@@ -19,7 +19,9 @@ the opposite one over the same cells):
 Up to ``LOCAL_LIMIT`` modules all flows run forward and the shortest plan is
 kept; above it only the journey flows, with digs (:mod:`hexbot.planning.dig`),
 and the first plan is taken; backward
-only when none succeeds. None is complete (restricted pivoting
+only when none succeeds. Up to ``LOCAL_LIMIT``, when no flow plans either
+way, the journey flows with digs run last (``DUG_FLOWS``: shapes with holes
+need them at any size). None is complete (restricted pivoting
 makes that impossible for a fast planner); a failure hands over to the next
 method of :func:`hexbot.planning.robust.plan_robust`. Measured in
 docs/planning.md ("Local method").
@@ -136,6 +138,14 @@ def flows_for(count: int) -> tuple[tuple[str, Flow], ...]:
     return FLOWS if count <= LOCAL_LIMIT else LARGE_FLOWS
 
 
+#: Up to ``LOCAL_LIMIT``, when no flow plans either way: the journey flows
+#: with digs, forward, then backward. Shapes with holes need them at any size (a hole's
+#: ring walls its cell in from the start), where the flows without digs
+#: stall and the strip took 25-80 times the move bound at 100 modules.
+DUG_FLOWS: tuple[tuple[str, Flow], ...] = tuple(
+    (f"{name} with digs", flow) for name, flow in LARGE_FLOWS)
+
+
 def via_local(initial: Configuration, goal: frozenset[Cell], max_moves: int,
               fixed: Cell | None = None, deadline: Deadline = NO_DEADLINE,
               method: str = "local") -> list[Move]:
@@ -152,8 +162,11 @@ def _shortest(initial: Configuration, goal: frozenset[Cell], max_moves: int,
               fixed: Cell | None, deadline: Deadline, method: str) -> list[Move]:
     failures = []
     best: list[Move] | None = None
-    for direction in (forward, backward):
-        for name, flow in flows_for(len(initial)):
+    tries = [(forward, flows_for(len(initial))), (backward, flows_for(len(initial)))]
+    if len(initial) <= LOCAL_LIMIT:
+        tries += [(forward, DUG_FLOWS), (backward, DUG_FLOWS)]
+    for direction, flows in tries:
+        for name, flow in flows:
             try:
                 serial = direction(initial, goal, flow, max_moves, fixed, deadline, method)
             except BudgetExhausted:

@@ -97,13 +97,14 @@ def test_pair_apart_from_toml_files_goes_through_the_middle_ball(capsys, tmp_pat
 
 
 def test_a_fallback_plan_says_why_the_methods_before_it_did_not_plan(capsys, tmp_path):
-    # a disc of radius 4 whose centre must be emptied: the direct methods, the
-    # local flows and the middle ball do not plan it, the canonical strip does
+    # a disc of radius 5 whose centre must be emptied: the direct methods, the
+    # local flows (with digs too: more than 40 modules wall the centre in) and
+    # the middle ball do not plan it, the canonical strip does
     from hexbot.planning.windows import disc
 
-    cells = disc((0, 0), 4)
+    cells = disc((0, 0), 5)
     files = []
-    for name, shape in (("initial", cells - {(4, 0)}), ("goal", cells - {(0, 0)})):
+    for name, shape in (("initial", cells - {(5, 0)}), ("goal", cells - {(0, 0)})):
         path = tmp_path / f"{name}.toml"
         path.write_text("cells = [" + ", ".join(f"[{x}, {y}]" for x, y in sorted(shape)) + "]\n")
         files.append(path)
@@ -120,14 +121,29 @@ def test_a_fallback_plan_says_why_the_methods_before_it_did_not_plan(capsys, tmp
     assert len(notes) == 4 and "middle ball" in notes[-1]
 
 
-def test_the_planner_tells_each_stage_as_it_starts():
+def test_a_walled_in_centre_is_dug_out_locally_at_61_modules():
+    # the flows without digs stall on it (a ring of modules walls the centre
+    # in from the start); below LOCAL_LIMIT the flows with digs run last
+    from hexbot.planning.checker import check_plan
     from hexbot.planning.configuration import Configuration
     from hexbot.planning.robust import plan_robust
     from hexbot.planning.windows import disc
 
     cells = disc((0, 0), 4)
+    start = Configuration.from_cells(cells - {(4, 0)})
+    plan = plan_robust(start, frozenset(cells - {(0, 0)}))
+    assert plan.reached and plan.method == "local" and plan.move_count < 500  # strip: 2,388
+    assert check_plan(start, cells - {(0, 0)}, plan.steps).ok
+
+
+def test_the_planner_tells_each_stage_as_it_starts():
+    from hexbot.planning.configuration import Configuration
+    from hexbot.planning.robust import plan_robust
+    from hexbot.planning.windows import disc
+
+    cells = disc((0, 0), 5)
     told: list[str] = []
-    plan = plan_robust(Configuration.from_cells(cells - {(4, 0)}), frozenset(cells - {(0, 0)}),
+    plan = plan_robust(Configuration.from_cells(cells - {(5, 0)}), frozenset(cells - {(0, 0)}),
                        progress=told.append)
     assert plan.reached
     assert told == ["direct", "direct, backwards", "local", "middle ball", "canonical strip",

@@ -69,6 +69,22 @@ def test_a_hole_in_a_block_is_dug_and_filled_and_the_shape_stays_connected():
     assert_legal(start, tracker)
 
 
+def test_a_refill_skips_a_parked_cell_an_earlier_crossing_emptied():
+    # measured with deeper digs on a shape with holes: a refill's crossing
+    # had moved a parked module on, and the next refill rolled from its old,
+    # empty cell (KeyError in the tracker, a traceback out of plan_robust)
+    block = parallelogram(3, 3)
+    start = Configuration.from_cells(block | {(3, 0)})
+    tracker = Tracker(start, 10**6)
+    # (4, 0): where a parked module was, empty now; a journey "from" it is
+    # found all the same (journeys do not look at their start)
+    parked = [(3, 0), (4, 0)]
+    assert dig._fill_from(tracker, parked, (3, 1), None)  # by the module at (3, 0)
+    assert parked == [(4, 0)] and (3, 1) in tracker.occupied
+    assert (3, 0) not in tracker.occupied and (4, 0) not in tracker.occupied
+    assert_legal(start, tracker)
+
+
 def test_a_dig_that_walls_in_no_fewer_cells_is_taken_back():
     # a block with nothing walled in: no dig, and the moves are untouched
     goal = parallelogram(4, 4)
