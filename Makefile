@@ -38,7 +38,7 @@ deps:
 	else echo "Debian packages: all present"; fi
 
 # Reinstall when the packaging or the C sources (simulator core, crossing search) change.
-PY_BUILD_INPUTS := pyproject.toml setup.py $(wildcard hil_sim/core/*.c hil_sim/core/*.h planning/*.c)
+PY_BUILD_INPUTS := pyproject.toml setup.py $(wildcard hil_sim/core/*.c hil_sim/core/*.h planning/*.c) firmware/include/hexbot_codes.h
 
 venv: $(STAMPS)/venv
 

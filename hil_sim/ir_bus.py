@@ -17,9 +17,11 @@ by its channel selector (Table 3-5). The medium decides, byte by byte:
   AND as a second, broken byte. The PC's receiver waits until no overlapping
   byte can still come (one frame time) and gets one broken byte for the two.
 * A receiver whose baud rate differs by more than ``BAUD_TOLERANCE``
-  (protocol/timing.py, 4.5 %) from the sender's, or
-  whose frame format differs, gets a garbage byte from the seeded generator
-  with the framing error flag.
+  (protocol/timing.py, 4.5 %) from the sender's reads what its UART samples
+  of the sender's levels (``uart_line.first_byte``): a wrong byte, often
+  without a framing error, or nothing when the start bit is over before it
+  looks. One whose word format (data bits, parity) differs gets a garbage
+  byte from the seeded generator with the framing error flag.
 * Fault injection per directed link: each data bit flips with probability
   ``bit_error_rate``; the whole byte vanishes with probability ``byte_loss``.
   Besides: a framing error (``framing_error_rate``: the stop bit reads low,
@@ -47,6 +49,7 @@ from hexbot.protocol.timing import BAUD_IR, BAUD_TOLERANCE
 
 from .geometry import CENTRE, Cell, facing, neighbor
 from .scenario import PC, Faults
+from .uart_line import LineSettings, first_byte
 
 Endpoint = int | str  # module id or "pc"
 #: Length of a noise burst in bit times (start, 8 data and stop bit make a
@@ -63,11 +66,18 @@ class Frame:
     parity: str = "N"
     stop_bits: int = 1
 
+    def same_word(self, other: Frame) -> bool:
+        """Data bits and parity alike (what a receiver checks of the format)."""
+        return (self.data_bits, self.parity) == (other.data_bits, other.parity)
+
+    def line(self) -> LineSettings:
+        return LineSettings(self.baud, self.data_bits, self.parity, self.stop_bits)
+
     def matches(self, other: Frame) -> bool:
         if abs(self.baud - other.baud) > BAUD_TOLERANCE * other.baud:
             return False
         # A receiver checks only the first stop bit: 8N2 into 8N1 is fine.
-        return (self.data_bits, self.parity) == (other.data_bits, other.parity)
+        return self.same_word(other)
 
 
 PC_FRAME = Frame(float(BAUD_IR))
@@ -186,11 +196,17 @@ class IrMedium:
             value, framing_error = self._extended(byte, receiver, faults, value)
         rx = PC_FRAME if receiver == PC else self.air.rx_frame(receiver)  # type: ignore[arg-type]
         if not byte.frame.matches(rx):
-            value = self.rng.randrange(256)
-            framing_error = True
             self._event(
                 byte, receiver, "ir-garbled", reason=f"sender {byte.frame}, receiver {rx}"
             )
+            if byte.frame.same_word(rx):  # another baud rate: what its UART samples
+                read = first_byte(value, byte.frame.line(), rx.line())
+                if read is None:
+                    return  # no start bit where the receiver looked: nothing
+                value, framing_error = read
+            else:
+                value = self.rng.randrange(256)
+                framing_error = True
         if receiver == PC:
             # The PC's UART sees one broken frame where bytes overlap.
             for pending in reversed(self._pc_pending):

@@ -75,6 +75,32 @@ def _waveform(data: bytes, tx: LineSettings) -> list[tuple[float, int]]:
     return out
 
 
+def first_byte(byte: int, tx: LineSettings, rx: LineSettings) -> tuple[int, bool] | None:
+    """One byte sent as ``tx``, as a receiver set to ``rx`` (the same word
+    format, another baud rate) reads it: the sender's levels sampled in the
+    middle of each of the receiver's bit times from the start edge on.
+    (value, framing error), or None when the start bit is over before the
+    receiver samples it (a glitch: no byte). Only the first byte: the IR
+    medium delivers one byte per byte sent. For rates outside the baud
+    tolerance only: the sent byte never arrives as good (see the end). The simulator's C core
+    (``m162_usart_resample``) does the same; a test holds them together."""
+    levels = [level for _, level in _waveform(bytes([byte]), tx)]
+    sent, own = 1.0 / tx.baud, 1.0 / rx.baud
+
+    def level(t: float) -> int:
+        k = int(t / sent)
+        return levels[k] if k < len(levels) - 1 else 1  # the last entry: idle
+
+    if level(own / 2):
+        return None
+    value = sum(level(own * (1.5 + k)) << k for k in range(rx.data_bits))
+    stop = own * (1.5 + rx.data_bits + (rx.parity != "N"))
+    # used outside the datasheet's baud range, where nothing is promised: a
+    # byte that exact sampling still reads right keeps a framing error (a
+    # real receiver's edge detection and 3-sample vote may give it one)
+    return value, not level(stop) or value == byte & ((1 << rx.data_bits) - 1)
+
+
 def resample(data: bytes, tx: LineSettings, rx: LineSettings) -> bytes:
     """The bytes a receiver set to ``rx`` reads from ``data`` sent as ``tx``."""
     if tx == rx or not data:

@@ -152,11 +152,17 @@ static int boundary(cluster_t *c)
 			if (s->peer) {
 				for (; s->wire_pos < s->log_len; s->wire_pos++) {
 					m162_txrec_t *r = &s->log[s->wire_pos];
-					/* a receiver set to another baud rate or frame
-					 * format sees a framing error */
+					/* a receiver set to another baud rate reads
+					 * what its UART samples; to another frame
+					 * format, a framing error */
 					uint16_t v = r->byte;
-					if (!m162_usart_frame_ok(s->peer, r, c->baud_tolerance))
-						v |= UART_INPUT_FE;
+					if (!m162_usart_frame_ok(s->peer, r, c->baud_tolerance)) {
+						int got = (r->format & 0x3F) == (s->peer->format & 0x3F)
+							? m162_usart_resample(s->peer, r) : (r->byte | UART_INPUT_FE);
+						if (got < 0)
+							continue; /* no start bit where it looked */
+						v = (uint16_t)got;
+					}
 					m162_usart_queue_rx(s->peer, r->mid_stop, v);
 				}
 			}

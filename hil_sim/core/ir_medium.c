@@ -58,9 +58,18 @@ static void arrive(ir_port_t *p, const ir_air_t *a)
 	int fe = 0;
 	m162_txrec_t rec = { a->start, a->due, a->end, a->byte, a->format, a->bit_cycles, 0 };
 	if (!m162_usart_frame_ok(p->s, &rec, p->tolerance)) {
-		value = next_garbage(p);
-		fe = 1;
 		log_event(p, IR_EV_GARBLED, a, NULL, 0);
+		if ((rec.format & 0x3F) == (p->s->format & 0x3F)) {
+			/* another baud rate: what the receiver's UART samples */
+			int got = m162_usart_resample(p->s, &rec);
+			if (got < 0)
+				return; /* no start bit where it looked: nothing */
+			value = (uint8_t)got;
+			fe = (got & UART_INPUT_FE) != 0;
+		} else { /* another word format: garbage from the seeded generator */
+			value = next_garbage(p);
+			fe = 1;
+		}
 	}
 	if (p->last.valid && p->last.start < a->end && a->start < p->last.end &&
 			!has_sender(p, a->sender)) {

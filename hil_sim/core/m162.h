@@ -188,6 +188,7 @@ void m162_usart_compact_log(m162_usart_t *s);
 /* Would s receive this frame intact?  Same data bits and parity, bit times
  * within tolerance (a fraction: protocol/timing.py BAUD_TOLERANCE). */
 int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r, double tolerance);
+int m162_usart_resample(const m162_usart_t *s, const m162_txrec_t *r); /* -1: no byte */
 
 /* Register addresses (data space) used outside the descriptor table. */
 extern const uint16_t m162_port_regs[M162_NPORTS][3]; /* PIN, DDR, PORT */

@@ -329,6 +329,45 @@ int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r, double tol
 	return diff <= tolerance * sent;
 }
 
+/* One byte of r, sent at its rate, as a receiver set up as s reads it (the
+ * same word format, another bit time): the sender's levels -- start bit,
+ * data bits LSB first, parity, stop and idle high -- sampled at the middle
+ * of each of the receiver's bit times from the start edge on. Only the
+ * first byte: the medium delivers one byte per byte sent. Called only
+ * outside the baud tolerance, so the sent byte never arrives as good.
+ * -1: the start bit is over before the receiver samples it (a glitch, no
+ * byte); else the byte, with UART_INPUT_FE when its stop bit reads low. */
+int m162_usart_resample(const m162_usart_t *s, const m162_txrec_t *r)
+{
+	int db = r->format & 0x0F, parity = ((r->format >> 4) & 3) >= 2;
+	uint8_t levels[12];
+	int n = 0;
+	levels[n++] = 0;
+	for (int k = 0; k < db && k < 8; k++)
+		levels[n++] = (r->byte >> k) & 1;
+	if (parity) { /* even or odd over the data bits */
+		int ones = 0;
+		for (int k = 0; k < db && k < 8; k++)
+			ones += (r->byte >> k) & 1;
+		levels[n++] = (uint8_t)((ones & 1) ^ (((r->format >> 4) & 3) == 3));
+	}
+	double sent = r->bit_cycles, own = m162_to_cluster_span(s->mcu, s->bit_cycles);
+#define LEVEL_AT(t) ((int)((t) / sent) < n ? levels[(int)((t) / sent)] : 1)
+	if (LEVEL_AT(own / 2))
+		return -1;
+	int value = 0;
+	for (int k = 0; k < db && k < 8; k++)
+		value |= LEVEL_AT(own * (1.5 + k)) << k;
+	int fe = !LEVEL_AT(own * (1.5 + db + parity));
+#undef LEVEL_AT
+	/* outside the datasheet's range nothing is promised: a byte that exact
+	 * sampling still reads right keeps the framing error the edge
+	 * detection and 3-sample vote of a real receiver may give it */
+	if (value == (r->byte & ((1 << db) - 1)))
+		fe = 1;
+	return value | (fe ? UART_INPUT_FE : 0);
+}
+
 /* Forget records every consumer has seen, so logs stay small. */
 void m162_usart_compact_log(m162_usart_t *s)
 {

@@ -124,17 +124,23 @@ def test_bytes_one_after_another_do_not_collide():
     assert c.ir_events() == []
 
 
-def test_receiver_at_another_baud_rate_gets_a_garbled_byte():
+@pytest.mark.parametrize("ubrr", [103, 254, 12])  # 600, 245 and 4,800 baud
+def test_receiver_at_another_baud_rate_reads_what_its_uart_samples(ubrr):
+    # not a random byte: the sender's levels at the receiver's sampling
+    # times, as the Python medium (uart_line.first_byte) reads them
+    from hexbot.hil_sim.uart_line import LineSettings, first_byte
+
     c = Cluster(1000)
     a = node(c, 3, b"\x5a")
-    b = node(c, 5, ubrr=103)  # 600 baud
+    b = node(c, 5, ubrr=ubrr)
     route(c, a, 3, b, 5)
-    c.ir_seed(7)
     advance(c, 3 * FRAME)
-    [(_, _, fe)] = reports(c, b)
-    assert fe
+    expected = first_byte(0x5A, LineSettings(1e6 / BIT), LineSettings(1e6 / (16 * (ubrr + 1))))
+    assert [(v, fe) for _, v, fe in reports(c, b)] == ([expected] if expected else [])
     [(name, _, sender, receiver, byte, _)] = c.ir_events()
     assert (name, sender, receiver, byte) == ("ir-garbled", a, b, 0x5A)
+    if ubrr == 103:  # twice as fast: 0x5A reads 0x98, and no framing error says so
+        assert expected == (0x98, False)
 
 
 def test_centre_channel_bytes_go_to_the_pc_and_the_pcs_bytes_come_back():

@@ -103,9 +103,23 @@ def test_overlapping_bytes_at_the_pc_become_one_broken_byte():
     assert [e["event"] for e in events] == ["ir-collision"]
 
 
-def test_baud_mismatch_gives_garbage_with_framing_error():
+def test_baud_mismatch_gives_what_the_receivers_uart_samples():
     air = pair_air()
-    air.rx[2] = Frame(4800.0)
+    air.rx[2] = Frame(4800.0)  # samples the start bit's low level: 0, framing error
+    m, events = medium(air, seed=3)
+    m.transmit(AirByte(1, 0, BYTE, 0x41, IR))
+    assert [(value, fe) for _, value, fe in air.got] == [(0x00, True)]
+    assert events[0]["event"] == "ir-garbled"
+    air = pair_air()
+    air.rx[2] = Frame(600.0)  # twice as fast: a wrong byte that looks fine
+    m, events = medium(air, seed=3)
+    m.transmit(AirByte(1, 0, BYTE, 0x5A, IR))
+    assert [(value, fe) for _, value, fe in air.got] == [(0x98, False)]
+
+
+def test_a_word_format_mismatch_gives_seeded_garbage_with_framing_error():
+    air = pair_air()
+    air.rx[2] = Frame(300.0, data_bits=7)
     m, events = medium(air, seed=3)
     m.transmit(AirByte(1, 0, BYTE, 0x41, IR))
     assert len(air.got) == 1 and air.got[0][2] is True
