@@ -8,8 +8,9 @@ Installed with the ``hexbot`` distribution (entry point ``pytest11``:
 
     @pytest.mark.hexbot_scenario("pair", seed=3)
     def test_ack(hexbot_sim):
-        hexbot_sim.pc_write(b"*FNNNNNNNN#")
-        hexbot_sim.expect(b"ACKF", timeout=5)
+        hexbot_sim.expect(b"COMM. LISTENING ID=02", timeout=30)  # booted
+        hexbot_sim.pc_write(b"*E\x01NNNNNNN#")  # Select(1)
+        hexbot_sim.expect(b"M01: ACKE", timeout=5)
 
 A test that talks to the modules the way a PC does asks for
 ``hexbot_session`` instead: a :class:`~hexbot.host.session.Session` on a

@@ -36,7 +36,9 @@ def declared_scenario(path: Path) -> str | None:
     for line in read_text(path, "script").splitlines():
         m = _SCENARIO_PRAGMA.match(line.strip())
         if m:
-            return m.group(1)
+            name = m.group(1)
+            beside = path.parent / name  # a scenario file is the script's neighbour
+            return str(beside) if name.endswith(".toml") and beside.is_file() else name
     return None
 
 
@@ -58,7 +60,7 @@ def run(args: argparse.Namespace) -> int:
         except ScriptFailed as exc:
             print(f"FAILED {exc}", file=sys.stderr)
             print(f"{runner.steps_done} of {len(steps)} steps passed", file=sys.stderr)
-            return 1
+            return exc.exit_status
         finally:  # a lost port too: CI shows which step could not be judged
             if args.junit:
                 write_junit(args.junit, str(args.script), runner.results)

@@ -255,6 +255,10 @@ class Host:
         self._notify(SimVerdict(verdict))
 
     def link_state(self, port: str, state: LinkState, detail: str) -> None:
+        if state is LinkState.CONNECTED:
+            # a simulated port's clock from its first event on: its log must
+            # not carry wall-clock times, or two runs of a seed differ
+            self._choose_clock()
         text = f"{state.value} {detail}".strip()
         t = self.log.state(port, text) if self.log else self.elapsed()
         with self.changed:

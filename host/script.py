@@ -66,7 +66,12 @@ DEFAULT_TIMEOUT = 5.0
 
 
 class ScriptFailed(HexBotError):
-    """A step of a script did not get what it expected."""
+    """A step of a script did not get what it expected. ``exit_status``: 1,
+    or its cause's (3 a command no module answered in time)."""
+
+    def __init__(self, message: str, exit_status: int = 1) -> None:
+        super().__init__(message)
+        self.exit_status = exit_status
 
 
 @dataclass(frozen=True)
@@ -95,6 +100,22 @@ def _float(word: str, what: str, where: str) -> float:
     return value
 
 
+def _count(word: str, what: str, where: str) -> int:
+    """A count an expectation waits for: at least 1 (0 would pass at once)."""
+    value = _int(word, what, where)
+    if value < 1:
+        raise ScenarioError(f"{where}: {what} must be at least 1, got {word!r}")
+    return value
+
+
+def _seconds(word: str, what: str, where: str) -> float:
+    """A time an expectation waits: more than 0 (0 would judge nothing)."""
+    value = _float(word, what, where)
+    if value <= 0:
+        raise ScenarioError(f"{where}: {what} must be more than 0, got {word!r}")
+    return value
+
+
 def _options(words: list[str], where: str, known: dict[str, int]) -> dict[str, list[str]]:
     """Split ``from 3 4 within 2`` style keyword options; known maps each
     keyword to its number of values (-1 = all numbers that follow)."""
@@ -116,6 +137,8 @@ def _options(words: list[str], where: str, known: dict[str, int]) -> dict[str, l
             j = i + 1 + n
         if (n == -1 and not vals) or len(vals) < max(n, 0):
             raise ScenarioError(f"{where}: {key!r} needs a value")
+        if key == "within":
+            _seconds(vals[0], "within", where)
         out[key] = vals
         i = j
     return out
@@ -244,12 +267,12 @@ def _parse_expect(rest: list[str], where: str) -> None:  # noqa: C901
     elif kind == "placements":
         if not args:
             raise ScenarioError(f"{where}: expect placements needs a count")
-        _int(args[0], "count", where)
+        _count(args[0], "count", where)
         _options(args[1:], where, _EXPECT_OPTIONS["placements"])
     elif kind == "quiet":
         if len(args) != 1:
             raise ScenarioError(f"{where}: expect quiet takes one number of seconds")
-        _float(args[0], "seconds", where)
+        _seconds(args[0], "seconds", where)
     else:
         raise ScenarioError(f"{where}: unknown expectation {kind!r} "
                             "(ack, err, text, status, placements, quiet)")
@@ -277,9 +300,9 @@ def _split_text(args: list[str], where: str) -> tuple[str, int, float | None]:
     words = list(args)
     while len(words) >= 2 and words[-2] in ("count", "within"):
         if words[-2] == "count":
-            count = _int(words[-1], "count", where)
+            count = _count(words[-1], "count", where)
         else:
-            within = _float(words[-1], "seconds", where)
+            within = _seconds(words[-1], "within", where)
         words = words[:-2]
     if not words:
         raise ScenarioError(f"{where}: expect text needs a phrase")
@@ -362,6 +385,10 @@ class ScriptRunner:
             except HexBotError:
                 self.results.extend(StepResult(s, StepStatus.NOT_RUN) for s in steps[index + 1:])
                 raise
+            except KeyboardInterrupt:  # the report must not read as a pass
+                self.results.append(StepResult(step, StepStatus.ERROR, 0.0, "interrupted"))
+                self.results.extend(StepResult(s, StepStatus.NOT_RUN) for s in steps[index + 1:])
+                raise
 
     def run_step(self, step: Step) -> StepResult:
         """One step; its result is appended to ``results`` and returned,
@@ -385,7 +412,8 @@ class ScriptRunner:
             record(StepStatus.ERROR, str(exc))
             raise
         except HexBotError as exc:
-            failure = ScriptFailed(f"{self.name}:{step.line}: {step.text}: {exc}")
+            failure = ScriptFailed(f"{self.name}:{step.line}: {step.text}: {exc}",
+                                   exc.exit_status)
             record(StepStatus.FAILED, str(failure))
             raise failure from exc
         self.out(f"{step.line:4d} ok    {step.text}" + (f"  -> {text}" if text else ""))
@@ -401,7 +429,7 @@ class ScriptRunner:
             self.timeout = self.reply_timeout = float(w[0])
             return ""
         if step.verb == "wait":
-            self.session.sleep(float(w[0]))
+            self._sleep(float(w[0]))
             return ""
         if step.verb == "echo":
             return " ".join(w)
@@ -446,8 +474,20 @@ class ScriptRunner:
         if outcome.kind is OutcomeKind.PORT_LOST:
             outcome.raise_for_status()
         if not outcome.ok:
-            raise self._fail(step, outcome.reason)
+            failure = self._fail(step, outcome.reason)
+            if outcome.kind is OutcomeKind.TIMED_OUT:
+                failure.exit_status = 3
+            raise failure
         return ", ".join(outcome.lines())
+
+    def _sleep(self, seconds: float) -> None:
+        """Wait ``seconds`` of session time; a port lost before or during it
+        ends the wait (a dead port is not a quiet one)."""
+        self.session.host.clock.wait(lambda: self.session.port_lost() is not None
+                                     or self.session.cancel.is_set(), seconds)
+        lost = self.session.port_lost()
+        if lost is not None:
+            raise LinkUnavailableError(f"{self.name}: port lost ({lost})")
 
     def _wait(self, pred: Callable[[Observed], bool], within: float | None) -> Observed | None:
         found = self.session.wait_for(pred, self.mark,
@@ -540,7 +580,7 @@ class ScriptRunner:
             return f"{have} placed"
         if kind == "quiet":
             start = self.host.mark()
-            self.session.sleep(float(args[0]))
+            self._sleep(float(args[0]))
             bad = [o for o in self.host.since(start)
                    if isinstance(o.event, (ErrorReply, Garbage))]
             if bad:

@@ -1,5 +1,6 @@
 """A script names the scenario it was written for; `hexbot run` uses it."""
 
+import re
 from pathlib import Path
 
 from hexbot.host.cli_run import declared_scenario
@@ -74,3 +75,101 @@ def test_a_plan_step_whose_goal_cannot_be_read_fails_the_check(tmp_path, capsys)
     err = capsys.readouterr().err
     assert "p.hbs:2: " in err and "nowhere.toml" in err
     assert "p.hbs:3: verify must be one of auto, plant, localize, status" in err
+
+
+def test_values_that_would_pass_vacuously_or_crash_fail_the_check(tmp_path, cli_status):
+    # (audit) 'within abc' passed --check and crashed the run with a green
+    # JUnit file; 'count 0' and negative times passed whatever arrived
+    lines = ["expect ack Select within abc", "expect text ERROR count 0",
+             "expect placements -1 within 5", "expect ack Select within -1",
+             "expect quiet 0", "expect text X within 0"]
+    script = tmp_path / "bad.hbs"
+    script.write_text("\n".join(lines) + "\n")
+    code, err = cli_status("run", script, "--check")
+    assert code == 1
+    for number in range(1, len(lines) + 1):
+        assert f"bad.hbs:{number}:" in err, (number, err)
+
+
+def test_a_command_no_module_answers_is_a_time_out_exit_3(tmp_path, log_dir, cli_status):
+    script = tmp_path / "nine.hbs"
+    script.write_text("select 9\n")
+    code, err = cli_status("run", script, "--scenario", "pair")
+    assert code == 3 and "no reply from module 9" in err
+
+
+def test_a_module_that_never_boots_is_named_before_the_steps(tmp_path, log_dir, cli_status):
+    # (audit) "1 of 2 modules booted" and "all steps passed" read as a pass
+    # of the whole cluster; the run now names the silent module. It is not a
+    # failure: ids 8 apart share a boot slot, and fault scenarios garble texts
+    firmware = Path(__file__).resolve().parents[2] / "firmware" / "build"
+    scenario = tmp_path / "deadcomm.toml"
+    scenario.write_text(
+        'name = "deadcomm"\nbase = 1\n[[module]]\nid = 1\nposition = [0, 0]\n'
+        '[[module]]\nid = 2\nposition = [-1, 1]\n'
+        f'firmware = {{ comm = "{firmware / "rf12.elf"}" }}\n')
+    script = tmp_path / "s.hbs"
+    script.write_text("select 1\nselect 2\n")
+    code, err = cli_status("run", script, "--scenario", scenario)
+    assert "warning: module(s) 2 sent no COMM. LISTENING text" in err
+    assert code == 3 and "s.hbs:2: select 2" in err  # a step to it fails
+
+
+def test_a_scenario_pragma_names_a_file_beside_the_script(tmp_path):
+    (tmp_path / "rig.toml").write_text("name = 'rig'\n")
+    script = tmp_path / "s.hbs"
+    script.write_text("# scenario: rig.toml\nselect 1\n")
+    assert declared_scenario(script) == str(tmp_path / "rig.toml")
+
+
+def test_a_lost_port_is_no_quiet_and_ctrl_c_is_no_pass(log_dir, monkeypatch):
+    import argparse
+
+    import pytest
+
+    from hexbot.errors import LinkUnavailableError
+    from hexbot.host import script as script_module
+    from hexbot.host.cli_common import session
+    from hexbot.host.endpoints import add_port_arguments
+    from hexbot.host.script import ScriptRunner, StepStatus, parse_script
+    parser = argparse.ArgumentParser()
+    add_port_arguments(parser)
+    args = parser.parse_args(["--scenario", "pair", "--no-log"])
+    with session(args) as sess:
+        runner = ScriptRunner(sess, "q.hbs", out=lambda _line: None)
+        monkeypatch.setattr(sess, "port_lost", lambda: "read failed")  # the port died
+        with pytest.raises(LinkUnavailableError, match="port lost"):
+            runner.run(parse_script("expect quiet 15\n", "q.hbs"))
+        monkeypatch.undo()
+
+        runner = ScriptRunner(sess, "c.hbs", out=lambda _line: None)
+        real = script_module.ScriptRunner._step
+
+        def interrupted(self, step):
+            if step.line == 2:
+                raise KeyboardInterrupt
+            return real(self, step)
+
+        monkeypatch.setattr(script_module.ScriptRunner, "_step", interrupted)
+        with pytest.raises(KeyboardInterrupt):
+            runner.run(parse_script("echo one\necho two\necho three\n", "c.hbs"))
+    assert [r.status for r in runner.results] == [StepStatus.PASSED, StepStatus.ERROR,
+                                                  StepStatus.NOT_RUN]
+
+
+def test_two_runs_of_a_seed_write_the_same_capture(tmp_path, monkeypatch):
+    # (audit) the port's "connected" line carried wall-clock time (0.007 s,
+    # 0.014 s, ...): the captures of one seed differed between runs
+    from hexbot.cli import main
+
+    captures = []
+    for run in range(2):
+        folder = tmp_path / f"run{run}"
+        assert main(["run", str(EXAMPLES / "actuators_smoke.hbs"), "--seed", "4",
+                     "--log-dir", str(folder)]) == 0
+        (capture,) = folder.rglob("capture.hbcap")
+        # (@N: the simulator's number within this process, 1 in a fresh one)
+        captures.append([re.sub(r"hexbot-sim://@\d+", "hexbot-sim://@", line)
+                         for line in capture.read_text().splitlines()
+                         if not line.startswith("#")])
+    assert captures[0] == captures[1]
