@@ -15,7 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 from hexbot.host.describe import error_name
-from hexbot.protocol.codes import Role, lookup
+from hexbot.protocol.codes import Role, lookup, moves_the_module
 from hexbot.protocol.parser import (
     Ack,
     ErrorReply,
@@ -107,6 +107,10 @@ class ClusterModel:
             if row is None:
                 return True
             row.last_ack, row.last_seen = ev.code, t
+            if moves_the_module(ev.code, ev.role):
+                # however the rotation was sent (a workflow, the composer, a
+                # script's post): its place and Yref are stale from here on
+                row.localized = False
             # The firmware sends its localization report just before its
             # ACK 66: the ACK names the module that placed itself.
             unnamed = self._unnamed.pop(port, None)

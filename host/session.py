@@ -464,6 +464,8 @@ class Session:
         legacy_all = (ids is None and count is None and not roll_call and code is not None
                       and len(self.cluster) != 1)
         restarted = self._restarted(port)
+        if self.reference in restarted:  # it forgot its Ref: no origin any more
+            self.reference = None
         if restarted and code not in (None, SELECT) and self.selection is not LEGACY:
             # a module that restarted forgot the Select: it would run (and
             # answer) everything; say the selection again first

@@ -34,7 +34,7 @@ from hexbot.protocol.codes import ErrorCode, Role
 from hexbot.protocol.parser import StatusReport
 from hexbot.protocol.rotation import combined_rotation, direction_of
 from hexbot.protocol.rotation_geometry import Rotation
-from hexbot.protocol.simulation import Moved, Refused
+from hexbot.protocol.simulation import Moved, Placement, Refused
 
 Cell = tuple[int, int]
 #: The plant resolves a rotation once both halves' magnets are off:
@@ -99,6 +99,12 @@ def localize(session: Session, reference: int) -> dict[int, Pose]:
     why = reference_problem(reference)
     if why:
         raise CommandRefusedError(why)
+    if session.reference is not None and session.reference != reference:
+        # the firmware keeps a reference localized at (0, 0): a second one
+        # would give the cluster two origins, and nothing sent can undo it
+        raise CommandRefusedError(
+            f"module {session.reference} is this cluster's origin (its Ref): localize from "
+            f"it, or restart the modules to choose another (ctrl+r on the simulator)")
     session.request(select(reference))
     session.request(frames.make("Ref"))
     session.reference = reference  # the origin of every pose from here on
@@ -154,9 +160,18 @@ def all_off(session: Session) -> None:
     (docs/firmware.md). Then ``Select(0)`` and ``TurnOffAll`` again, for the
     modules the first one did not address."""
     turn_off_all = frames.make("TurnOffAll")
-    session.request(turn_off_all)
-    session.request(select(0))
-    session.request(turn_off_all)
+    problems = []
+    for command in (turn_off_all, select(0), turn_off_all):
+        # every frame goes out whatever the replies to the one before: a
+        # rotation's garbled or missing answer must not keep magnets on
+        outcome = session.exchange(command)
+        if outcome.kind in (OutcomeKind.PORT_LOST, OutcomeKind.CANCELLED):
+            outcome.raise_for_status()
+        if not outcome.ok:
+            problems.append(f"{command}: {outcome.reason}")
+    if problems:
+        raise CommandRefusedError("all frames sent, but not every module confirmed: "
+                                  + "; ".join(problems))
 
 
 def set_role(session: Session, module: int, role: Role) -> None:
@@ -207,8 +222,10 @@ def rotate(session: Session, direction: str, joint: int, mobile: int, substrate:
     set_role(session, substrate, Role.SUBSTRATE)
     session.request(select(substrate, mobile))
     verdicts_before = len(simulator.verdicts()) if simulator is not None else 0
+    # stale before the frame goes out: a wait abandoned (Escape, a time-out)
+    # must not leave the old place and Yref to aim the next rotation from
+    session.host.model.moved(mobile)
     session.request(command)
-    session.host.model.moved(mobile)  # its orientation is stale until checked
     if how is Verify.PLANT:
         got = _plant_verdict(session, mobile, verdicts_before)
     elif how is Verify.LOCALIZE:
@@ -234,6 +251,30 @@ def rotate(session: Session, direction: str, joint: int, mobile: int, substrate:
     return RotationResult(mobile, substrate, expected, how, got)
 
 
+def in_localization_frame(pose: Pose, origin: Placement | None) -> Pose:
+    """A pose of the plant's frame (the scenario's) in the localization's,
+    whose origin is the reference module's cell, facing 0 (``origin``: the
+    plant's placement of the reference; None: no localization yet)."""
+    if origin is None:
+        return pose
+    (ox, oy), oo = origin.cell, origin.orientation
+    cell = lattice.turn((pose.cell[0] - ox, pose.cell[1] - oy), -oo)
+    return Pose(cell, (pose.orientation - oo) % 6)
+
+
+def plant_placements(session: Session) -> dict[int, Placement]:
+    """The simulator's truth in the localization's frame (empty on hardware):
+    what the console draws beside the replies' placements."""
+    simulator = session.host.simulator
+    if simulator is None:
+        return {}
+    truth = simulator.placements()
+    origin = truth.get(session.reference) if session.reference is not None else None
+    return {ident: Placement(pose.cell, pose.orientation)
+            for ident, p in truth.items()
+            for pose in (in_localization_frame(Pose(p.cell, p.orientation), origin),)}
+
+
 def _plant_verdict(session: Session, mobile: int, since: int) -> Pose:
     simulator = session.host.simulator
     assert simulator is not None
@@ -254,13 +295,7 @@ def _plant_verdict(session: Session, mobile: int, since: int) -> Pose:
                                   f"{verdict.reason.value} ({verdict.detail})")
     if verdict.split:  # it moved, and the cluster is in pieces: not a success
         raise CommandRefusedError(f"the cluster split: {verdict.describe()}")
-    if origin is None:
-        return Pose(verdict.dst, verdict.orientation)
-    # the plant's frame is the scenario's; the poses are the localization's,
-    # whose origin is the reference, facing 0
-    (ox, oy), oo = origin.cell, origin.orientation
-    cell = lattice.turn((verdict.dst[0] - ox, verdict.dst[1] - oy), -oo)
-    return Pose(cell, (verdict.orientation - oo) % 6)
+    return in_localization_frame(Pose(verdict.dst, verdict.orientation), origin)
 
 
 def _status_after_move(session: Session, mobile: int) -> None:

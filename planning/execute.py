@@ -144,7 +144,10 @@ def plan_request(words: list[str], relative_to: Path | None = None) -> PlanReque
 
 def default_reference(session: Session) -> int:
     """The module that becomes (0, 0) and never moves when the user names
-    none: the simulator's base module, else the lowest id heard so far."""
+    none: the session's origin if a Ref made one, else the simulator's base
+    module, else the lowest id heard so far."""
+    if session.reference is not None:
+        return session.reference
     sim = session.host.simulator
     if sim is not None and sim.base is not None:
         return sim.base

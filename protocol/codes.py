@@ -206,6 +206,18 @@ def lookup(key: int | str) -> FunctionCode:
     return BY_NAME[text.lower()]
 
 
+#: After an ACK of one of these the module that acknowledged stands elsewhere:
+#: the mobile halves of a rotation (21, 22), and the combined rotations (67,
+#: 68) for the module whose role is mobile.
+MOBILE_HALF_CODES = frozenset(lookup(name).code for name in ("MCW", "MCCW"))
+COMBINED_ROTATION_CODES = frozenset(lookup(name).code for name in ("CW", "CCW"))
+
+
+def moves_the_module(code: int, role: str | None) -> bool:
+    """Does an ACK of ``code`` from a module of ``role`` (its letter) mean it moved?"""
+    return code in MOBILE_HALF_CODES or (code in COMBINED_ROTATION_CODES and role == "M")
+
+
 def executable_codes() -> list[FunctionCode]:
     return [fn for fn in CODES.values() if fn.executable]
 

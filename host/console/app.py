@@ -117,15 +117,18 @@ class HexBotConsole(App[None]):
         ("help", "Help", "keys and workflows"),
     )
 
+    # The footer shows them in this order and cuts at the terminal's edge:
+    # help, the emergency stop and quit come first (80 columns show them).
     BINDINGS = [
         Binding("f1,question_mark", "help", "Help"),
-        Binding("s", "select", "Select"),
-        Binding("r", "ref", "Ref"),
+        Binding("o", "all_off", "All off"),
+        Binding("q", "quit", "Quit"),
         Binding("l", "localize", "Localize"),
-        Binding("t", "status", "Status"),
         Binding("w", "rotate", "Rotate"),
         Binding("g", "plan", "Plan"),
-        Binding("o", "all_off", "All off"),
+        Binding("s", "select", "Select"),
+        Binding("r", "ref", "Ref"),
+        Binding("t", "status", "Status"),
         Binding("escape", "cancel", "Cancel", show=False),
         Binding("m", "cycle_mode", "View", show=False),
         Binding("c", "cycle_stamps", "Time stamps", show=False),
@@ -144,7 +147,6 @@ class HexBotConsole(App[None]):
         Binding("4", "show_tab('lattice')", "Lattice", show=False),
         Binding("5", "show_tab('ports')", "Ports", show=False),
         Binding("6", "show_tab('boards')", "Boards", show=False),
-        Binding("q", "quit", "Quit"),
     ]
 
     def __init__(self, host: Host | None = None, *, opener: Opener | None = None,
@@ -195,19 +197,19 @@ class HexBotConsole(App[None]):
                 with ScrollableContainer(id="lattice-box"):  # big clusters scroll
                     yield LatticeView(id="lattice-view")
                 yield LatticeLegend(id="lattice-legend")
-            with TabPane("Boards", id="boards"):
-                yield BoardsView(id="boards-view")
-            with TabPane("Ports", id="ports"):
+            with TabPane("Ports", id="ports"):  # keys 5 and 6: the tabs in this order
                 with Vertical(id="ports-box"):
                     yield PortPanel(IR, "IR transceiver (all modules)", None, wire.BAUD_IR)
                     yield PortPanel(DEBUG, "UART1 debug port (one control board)", None,
                                     wire.BAUD_DEBUG)
                     yield Static("", id="session-info")
+            with TabPane("Boards", id="boards"):
+                yield BoardsView(id="boards-view")
         yield Static("", id="alert")
         with Horizontal(id="status-bar"):
             yield Static("", id="status")
             yield ProgressBar(id="progress", show_eta=False)
-        yield Footer()
+        yield Footer(compact=True)
 
     def on_mount(self) -> None:
         self.main_query("#progress", ProgressBar).display = False
@@ -393,8 +395,8 @@ class HexBotConsole(App[None]):
         self._refresh_pending = False
         if self.host is None or not self.screen_stack:
             return
-        sim = self.host.simulator
-        truth = sim.placements() if sim is not None else {}  # none on hardware
+        # the plant's truth in the localization's frame (none on hardware)
+        truth = workflows.plant_placements(self.session) if self.session is not None else {}
         with self.host.lock:  # a copy: readers must not wait for the drawing
             model = copy.deepcopy(self.host.model)
         self.main_query(ModulesView).refresh_from(model)
@@ -416,7 +418,8 @@ class HexBotConsole(App[None]):
         with self.host.lock:
             model = copy.deepcopy(self.host.model)
         try:
-            view.refresh_from(self.host.simulator, model)
+            view.refresh_from(self.host.simulator, model,
+                              workflows.plant_placements(self.session) if self.session else None)
         except NoMatches:  # its table is gone already: the app is being torn down
             return
 
@@ -431,6 +434,7 @@ class HexBotConsole(App[None]):
             parts.append(f"[b]{escape(self.busy)}[/]{self.wait_text()} (esc cancels)")
         elif self.last_result:
             parts.append(self.last_result)
+        parts.append(f"sel {self.selection_text()}")  # before the ports: 80 columns keep it
         for name, label in ((IR, "IR"), (DEBUG, "UART1")):
             state = self.port_states.get(name)
             if state is None:
@@ -442,7 +446,6 @@ class HexBotConsole(App[None]):
         if self.host is not None:
             parts.append(f"{len(self.host.model.modules)} modules, "
                          f"{len(self.host.model.placements)} placed")
-        parts.append(f"sel {self.selection_text()}")
         self.main_query("#status", Static).update(" | ".join(parts))
 
     # --- ports ---------------------------------------------------------------
@@ -451,16 +454,17 @@ class HexBotConsole(App[None]):
     def _apply_port(self, msg: PortPanel.Apply) -> None:
         if self.host is None:
             return
+        if self.host.simulator is not None:
+            # its ports belong to the cluster it runs: closing one closes the
+            # whole cluster, opening one again boots a new cluster behind the
+            # session's back
+            self.notify("the embedded simulator's ports open and close with it: ctrl+r "
+                        "restarts it", title="Not changed", severity="warning")
+            return
         if msg.settings is None:
             ch = self.host.channels.get(msg.port)
             if ch is not None:
                 ch.link.close()
-            return
-        if self.host.simulator is not None:
-            # its ports belong to the cluster it runs: opening one again
-            # boots a new cluster behind the session's back
-            self.notify("the embedded simulator's ports open and close with it: ctrl+r "
-                        "restarts it", title="Not connected", severity="warning")
             return
         ch = self.host.add_port(msg.port, msg.settings)
         ch.link.start()
@@ -641,7 +645,7 @@ class HexBotConsole(App[None]):
         try:
             cmd = select(*ids)
         except HexBotError as exc:
-            self.notify(str(exc), severity="error")
+            self.notify(escape(str(exc)), severity="error")
             return
         self.start_operation(f"Select {' '.join(map(str, ids))}", [self._exchange(cmd)])
 
@@ -655,6 +659,13 @@ class HexBotConsole(App[None]):
         self.start_operation("Ref", [self._exchange(frames.make("Ref"))])
 
     def action_status(self) -> None:
+        s = self.session
+        if s is not None and s.selection is None and len(s.cluster) > 1:
+            # without a Select every module of a known cluster answers at once:
+            # the replies collide (one module alone, or an unknown cluster: fine)
+            self.notify("Status asks the selected modules: select first (s; 0 = all)",
+                        severity="warning")
+            return
         self.start_operation("Status", [self._exchange(frames.make("Status"))])
 
     def action_all_off(self) -> None:
@@ -682,7 +693,7 @@ class HexBotConsole(App[None]):
             try:
                 cmd = frames.make("SetRole", ids[0])
             except HexBotError as exc:
-                self.notify(str(exc), severity="error")
+                self.notify(escape(str(exc)), severity="error")
                 return
             self.start_operation("SetRole", [self._exchange(cmd)])
         self._ask("Role for the selected modules: 1 mobile (M), 2 substrate (S)", "1", chosen)
@@ -755,7 +766,6 @@ class HexBotConsole(App[None]):
         from the reference, plan from the cluster as it stands to the goal
         (robust mode, the reference fixed), show the plan; :meth:`execute_plan`
         runs it when confirmed."""
-        from hexbot.planning.cli_plan import plan_summary
         from hexbot.planning.execute import plan_from_cluster, plan_request
 
         if self.session is None:
@@ -764,7 +774,7 @@ class HexBotConsole(App[None]):
         try:
             request = plan_request(text.split())
         except HexBotError as exc:  # file:line: problem, or a bad option
-            self.notify(str(exc), title="Goal not loaded", severity="error")
+            self.notify(escape(str(exc)), title="Goal not loaded", severity="error")
             return
         self.goal_file, goal = text, request.goal
         session, made = self.session, {}
@@ -774,14 +784,21 @@ class HexBotConsole(App[None]):
         def step() -> str:
             plan, poses = plan_from_cluster(session, goal, reference)
             made.update(plan=plan, poses=poses)
-            return plan_summary(plan)
+            # planned, not done: nothing has moved yet (e executes it)
+            return (f"{plan.move_count} move(s) in {plan.time_steps} time step(s) planned, "
+                    f"not executed ({plan.method or plan.mode})")
         step.__name__ = f"localize from module {reference}, then plan to {Path(path).name}"
+
+        def discard() -> None:
+            self.show_goal(frozenset())
+            self.last_result = "Plan: discarded, nothing executed"
+            self._update_status()
 
         def show() -> None:
             self.show_goal(made["plan"].goal)
             self.push_screen(PlanScreen(made["plan"]), lambda go: self.execute_plan(
                 made["plan"], reference, made["poses"], request.verify)
-                if go else self.show_goal(frozenset()))
+                if go else discard())
         self.start_operation("Plan", [step], then=show)
 
     def show_goal(self, goal: frozenset[tuple[int, int]]) -> None:

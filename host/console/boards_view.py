@@ -8,12 +8,14 @@ empty rows."""
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 from textual.app import ComposeResult
 from textual.containers import Vertical
 from textual.widgets import DataTable, Static
 
 from hexbot.host.cluster import ClusterModel
-from hexbot.protocol.simulation import SimulatorAccess
+from hexbot.protocol.simulation import Placement, SimulatorAccess
 
 COLUMNS = ("id", "cell", "facing", "role", "joints open", "magnets", "joint LEDs",
            "side LEDs")
@@ -37,8 +39,11 @@ def side_leds(pos: list[int], neg: list[int]) -> str:
                    for p, n in zip(pos, neg, strict=True))
 
 
-def board_rows(sim: SimulatorAccess, model: ClusterModel | None) -> list[tuple[str, ...]]:
-    placements = sim.placements()
+def board_rows(sim: SimulatorAccess, model: ClusterModel | None,
+               placements: Mapping[int, Placement] | None = None) -> list[tuple[str, ...]]:
+    """One row per module; ``placements``: where the plant has them, in the
+    localization's frame (default: the plant's own, the scenario's)."""
+    placements = sim.placements() if placements is None else placements
     rows = []
     for ident in sim.module_ids():
         out = sim.actuators(ident)
@@ -75,14 +80,15 @@ class BoardsView(Vertical):
         table = self.query_one(DataTable)
         return [tuple(str(c) for c in table.get_row_at(i)) for i in range(table.row_count)]
 
-    def refresh_from(self, sim: SimulatorAccess | None, model: ClusterModel | None) -> None:
+    def refresh_from(self, sim: SimulatorAccess | None, model: ClusterModel | None,
+                     placements: Mapping[int, Placement] | None = None) -> None:
         table = self.query_one(DataTable)
         note = self.query_one("#boards-note", Static)
         if sim is None:
             table.display = False
             note.update(UNAVAILABLE)
             return
-        rows = board_rows(sim, model)
+        rows = board_rows(sim, model, placements)
         table.display = True
         note.update(LEGEND)
         if rows == self.rows():

@@ -4,6 +4,7 @@ the exact frame previewed in hex, and a history to re-send from."""
 
 from __future__ import annotations
 
+from rich.markup import escape
 from textual import on
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical, VerticalScroll
@@ -197,7 +198,7 @@ class Composer(Vertical):
         try:
             data = parse_raw(event.value, "raw bytes")
         except FrameError as exc:
-            self.app.notify(str(exc), title="Not sent", severity="error")
+            self.app.notify(escape(str(exc)), title="Not sent", severity="error")
             return
         event.input.value = ""
         self.post_message(self.Send(data))

@@ -3,6 +3,7 @@ baud, parity, data bits, stop bits) with connect/disconnect and live state."""
 
 from __future__ import annotations
 
+from rich.markup import escape
 from textual import on
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical
@@ -76,7 +77,7 @@ class PortPanel(Vertical):
         try:
             settings = self.read_settings()
         except LinkUnavailableError as exc:  # the port stays as it is
-            self.app.notify(str(exc), title="Not connected", severity="error")
+            self.app.notify(escape(str(exc)), title="Not connected", severity="error")
             return
         self.post_message(self.Apply(self.port, settings))
 

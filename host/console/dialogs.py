@@ -3,6 +3,7 @@ a plan to confirm."""
 
 from __future__ import annotations
 
+from rich.markup import escape
 from textual import on
 from textual.app import ComposeResult
 from textual.binding import Binding
@@ -73,7 +74,7 @@ class PromptScreen(ModalScreen[str | None]):
 
     def compose(self) -> ComposeResult:
         with Vertical(classes="dialog"):
-            yield Label(self.question)
+            yield Label(escape(self.question))
             yield Input(self.default, id="prompt-input")
             yield Label("enter confirms, escape cancels", classes="hint")
 

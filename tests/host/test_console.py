@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import pytest
 from pilot_sync import sync
+from textual.widgets import Label
 
 from hexbot.host import cli_console
 from hexbot.host.console.app import HexBotConsole
@@ -629,6 +630,9 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
 
         await plan_to(goal)
         assert await until(pilot, lambda: isinstance(app.screen, PlanScreen), timeout=120)
+        # planned is not done: the operation's result says nothing moved yet
+        assert "1 move(s) in 1 time step(s) planned, not executed" in app.last_result
+        assert "goal reached" not in app.last_result
         summary = str(app.screen.query_one("#plan-summary").render())
         assert "goal reached, 1 time step(s), 1 move(s)" in summary, summary
         assert "lower bounds: 1 move(s), 1 time step(s)" in summary, summary
@@ -642,6 +646,7 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
         await pilot.pause()
         assert "goal:" not in str(legend.render())
         assert not isinstance(app.screen, PlanScreen) and not app.busy
+        assert app.last_result == "Plan: discarded, nothing executed"
         assert "> CW(" not in ir_text(app)
         assert app.host.simulator.placements()[2] == Placement((-1, 1), 0)
 
@@ -711,7 +716,7 @@ async def test_the_console_refuses_what_would_mislead_and_survives_a_bug(pair_ar
 
         settings = app.host.channels[IR].link.settings
         app.post_message(PortPanel.Apply(IR, settings))
-        assert await until(pilot, lambda: any(n.title == "Not connected"
+        assert await until(pilot, lambda: any(n.title == "Not changed"
                                               for n in app._notifications))
 
         def broken() -> str:
@@ -730,3 +735,38 @@ async def test_the_console_refuses_what_would_mislead_and_survives_a_bug(pair_ar
                     if str(n.message).startswith("Localize")]
         assert await until(pilot, lambda: localize_toasts(), timeout=60)
         assert localize_toasts() == ["Localize: cancelled"]
+
+
+@sync
+async def test_the_console_refuses_more_that_would_mislead(pair_args):
+    """Session 28's audit: a Status with no Select (every module answers at
+    once: a garbled failure), the plan prompt's "[reference ID]" eaten as
+    markup, Disconnect on the simulator's port (it closed the cluster), and
+    a module drawn twice after localizing from a module that is not the
+    scenario's base (the plant's cells were not in the localization's frame)."""
+    app = HexBotConsole(opener=cli_console.make_opener(pair_args))
+    async with app.run_test(size=(120, 36)) as pilot:
+        assert await until(pilot, lambda: app.host is not None, timeout=60)
+        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        await pilot.press("t")
+        await pilot.pause()
+        assert any("select first" in str(n.message) for n in app._notifications)
+        assert "> Status()" not in ir_text(app)
+
+        await pilot.press("g")
+        await pilot.pause()
+        assert "[reference ID]" in str(app.screen.query_one(Label).render())
+        await pilot.press("escape")
+        await pilot.pause()
+
+        app.post_message(PortPanel.Apply(IR, None))  # Disconnect
+        assert await until(pilot, lambda: any(n.title == "Not changed"
+                                              for n in app._notifications))
+        assert app.host.channels[IR].link.state is LinkState.CONNECTED
+
+        app.localize(2)  # module 2 becomes (0, 0); the base module 1 is at (1, -1)
+        assert await until(pilot, lambda: not app.busy and "Localize" in app.last_result,
+                           timeout=120)
+        assert not app.last_result.startswith("[red]"), app.last_result
+        drawn = str(app.query_one("#lattice-view").render())
+        assert drawn.count("02") == 1 and drawn.count("01") == 1, drawn

@@ -1,0 +1,83 @@
+"""Session 28's console audit, below the console: what the workflows may
+trust after a rotation was abandoned or sent by hand, one origin per
+cluster, All off that sends every frame, the plant seen in the
+localization's frame."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from hexbot.errors import CancelledError, CommandRefusedError
+from hexbot.host import workflows
+from hexbot.host.cluster import ClusterModel
+from hexbot.protocol import frames, parser
+
+pytest.importorskip("hexbot.hil_sim._avr")
+FIRMWARE = Path(__file__).resolve().parents[2] / "firmware" / "build"
+pytestmark = pytest.mark.skipif(not (FIRMWARE / "comm.elf").exists(),
+                                reason="firmware not built (make -C firmware)")
+
+
+def test_a_mobile_modules_rotation_ack_makes_its_place_stale_however_it_was_sent():
+    model = ClusterModel()
+    model.apply("ir", parser.StatusReport(raw=b"", module_id=2, role="M", localized=True,
+                                          x=-1, y=1, yref=0, error=0))
+    assert model.module(2).localized
+    model.apply("ir", parser.Ack(raw=b"", code=67, role="S", module=1))  # the substrate
+    assert model.module(2).localized
+    model.apply("ir", parser.Ack(raw=b"", code=67, role="M", module=2))  # e.g. the composer
+    assert not model.module(2).localized
+
+
+def test_an_abandoned_rotation_leaves_no_place_to_aim_the_next_one_from(open_session,
+                                                                        monkeypatch):
+    session = open_session("pair")
+    workflows.localize(session, 1)
+    real = session.request
+
+    def escape_at_the_rotation(command, *args, **kwargs):
+        if getattr(command, "code", None) in (67, 68):
+            real(command, *args, **kwargs)  # it goes out, then the wait is abandoned
+            raise CancelledError("cancelled")
+        return real(command, *args, **kwargs)
+
+    monkeypatch.setattr(session, "request", escape_at_the_rotation)
+    with pytest.raises(CancelledError):
+        workflows.rotate(session, "CW", 4, 2, 1, verify=workflows.Verify.PLANT)
+    monkeypatch.undo()
+    with pytest.raises(CommandRefusedError, match="orientation of module 2 is stale"):
+        workflows.rotate(session, "CW", 4, 2, 1)
+
+
+def test_a_cluster_has_one_origin_and_plans_default_to_it(open_session):
+    from hexbot.planning.execute import default_reference
+
+    session = open_session("pair")
+    poses = workflows.localize(session, 2)
+    assert poses[2].cell == (0, 0) and default_reference(session) == 2
+    with pytest.raises(CommandRefusedError, match="module 2 is this cluster's origin"):
+        workflows.localize(session, 1)  # refused before anything is sent
+    # the plant, seen from the localization: module 2 at (0, 0), as the replies say
+    truth = workflows.plant_placements(session)
+    assert {i: p.cell for i, p in truth.items()} == {i: p.cell for i, p in poses.items()}
+
+
+def test_all_off_sends_every_frame_whatever_the_replies(open_session, monkeypatch):
+    session = open_session("pair")
+    sent = []
+    real = session.exchange
+
+    def first_unanswered(command, *args, **kwargs):
+        sent.append(str(command))
+        outcome = real(command, *args, **kwargs)
+        if len(sent) == 1:  # as during a rotation: a garbled or missing answer
+            return type(outcome)(command, type(outcome.kind).TIMED_OUT, (), (),
+                                 missing=(1,), waited=1.0)
+        return outcome
+
+    monkeypatch.setattr(session, "exchange", first_unanswered)
+    with pytest.raises(CommandRefusedError, match="all frames sent"):
+        workflows.all_off(session)
+    assert sent == [str(frames.make("TurnOffAll")), "Select(0)", str(frames.make("TurnOffAll"))]
