@@ -17,6 +17,7 @@ from hexbot.errors import UsageError
 from hexbot.host.cli_progress import meter
 from hexbot.planning.locomotion import render
 from hexbot.planning.locomotion.scenarios import (
+    MAX_MODULES,
     load_ruleset,
     load_scenario,
     ruleset_names,
@@ -25,12 +26,20 @@ from hexbot.planning.locomotion.scenarios import (
 )
 
 
+def _strip_size(text: str) -> int:
+    n = count(text)
+    if n > MAX_MODULES:
+        raise argparse.ArgumentTypeError(f"must be 1..{MAX_MODULES:,}, got {n}")
+    return n
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     sub = parser.add_subparsers(dest="action", metavar="ACTION", required=True)
     run = sub.add_parser("run", help="run RULESET on SCENARIO and report the outcome")
     run.add_argument("ruleset", help="salvador-free, salvador-pyramids, salvador, otero, or a file")
     run.add_argument("scenario", help="flat, a shipped map (see 'list'), or a .map file")
-    run.add_argument("--n", type=count, default=None, help="modules in the strip")
+    run.add_argument("--n", type=_strip_size, default=None,
+                     help=f"modules in the strip (1..{MAX_MODULES:,})")
     run.add_argument("--rounds", type=count, default=10_000, help="round limit (10000)")
     run.add_argument(
         "--until-advance", type=count, default=None, metavar="K",
@@ -127,6 +136,8 @@ def _int_list(text: str, what: str) -> list[int]:
         raise UsageError(f"{what}: expected comma-separated integers, not {text!r}") from None
     if not values or min(values) < 1:
         raise UsageError(f"{what}: give at least one positive integer")
+    if max(values) > MAX_MODULES:
+        raise UsageError(f"{what}: at most {MAX_MODULES:,}, got {max(values)}")
     return values
 
 

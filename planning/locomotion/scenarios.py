@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from importlib import resources
 from pathlib import Path
 
-from hexbot.errors import ScenarioError, UsageError
+from hexbot.errors import ScenarioError
 from hexbot.files import read_text
 from hexbot.planning.locomotion import rulefile
 from hexbot.planning.locomotion.engine import Engine, Goal, RunResult, World
@@ -64,7 +64,7 @@ MAX_MODULES = 100_000
 
 def _check_n(n: int) -> None:
     if not 1 <= n <= MAX_MODULES:
-        raise UsageError(f"--n must be 1..{MAX_MODULES:,}, got {n}")
+        raise ScenarioError(f"--n must be 1..{MAX_MODULES:,}, got {n}")
 
 
 def flat_scenario(n: int) -> Scenario:

@@ -139,8 +139,9 @@ def test_a_binary_map_or_rule_file_is_not_text(cli_status, capsys, tmp_path):
     (["run", "salvador", "flat", "--until-advance", "-1"], "argument --until-advance"),
     (["run", "salvador", "flat", "--render", "/nonexistent/x.gif"], "/nonexistent does not exist"),
     (["random", "salvador", "--seeds", "20:0"], "--seeds: '20:0' is empty"),
-    (["run", "salvador-free", "flat", "--n", "100000000"], "--n must be 1..100,000"),
-    (["run", "salvador", "maze", "--n", "100001"], "--n must be 1..100,000"),
+    (["run", "salvador-free", "flat", "--n", "100000000"], "--n: must be 1..100,000"),
+    (["run", "salvador", "maze", "--n", "100001"], "--n: must be 1..100,000"),
+    (["bank", "--n", "5,100001"], "--n: at most 100,000"),
     (["bank", "--n", "0"], "--n: give at least one positive integer"),
     (["random", "salvador", "--n", "5,x"], "--n: expected comma-separated integers"),
 ])
