@@ -8,7 +8,10 @@ a missing one.
 
 from __future__ import annotations
 
+import re
+import tomllib
 from pathlib import Path
+from typing import Any
 
 from hexbot.errors import ScenarioError
 
@@ -27,3 +30,19 @@ def read_text(path: str | Path, what: str = "") -> str:
     except OSError as exc:
         kind = f" {what}" if what else ""
         raise ScenarioError(f"{path}: cannot read{kind}: {exc.strerror or exc}") from None
+
+
+#: where tomllib says the error is: a line and column, or the end
+_TOML_WHERE = re.compile(r"\((?:at line (\d+), column \d+|at end of document)\)")
+
+
+def load_toml(text: str, source: str | Path) -> dict[str, Any]:
+    """``text`` parsed as TOML; a syntax error is ScenarioError
+    ``SOURCE:LINE: problem``, the last line for one at the end of the text."""
+    try:
+        return tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        m = _TOML_WHERE.search(str(exc))
+        line = (m.group(1) or max(1, len(text.splitlines()))) if m else None
+        where = f"{source}:{line}" if line else str(source)
+        raise ScenarioError(f"{where}: {_TOML_WHERE.sub('', str(exc)).strip()}") from None

@@ -43,14 +43,13 @@ from __future__ import annotations
 
 import math
 import random
-import tomllib
 from dataclasses import dataclass, field, replace
 from importlib import resources
 from pathlib import Path
 from typing import Any
 
 from hexbot.errors import ScenarioError
-from hexbot.files import read_text
+from hexbot.files import load_toml, read_text
 from hexbot.protocol.timing import CLOCK_TOLERANCE
 from hexbot.protocol.wire import LOC_COORD_LIMIT, MAX_MODULE_ID
 from hexbot.toml_lines import TomlLines as _Lines
@@ -189,10 +188,7 @@ def load_scenario(source: str | Path) -> Scenario:
 
 
 def parse_scenario(text: str, path: Path) -> Scenario:
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ScenarioError(f"{path}: {exc}") from exc
+    data = load_toml(text, path)
     lines = _Lines(text)
 
     def fail(line: int, problem: str) -> ScenarioError:

@@ -325,7 +325,9 @@ def _parse_status_expect(args: list[str], where: str) -> dict:
         elif w == "yref" and len(args) >= i + 2:
             want["yref"] = _int(args[i + 1], "yref", where)
             i += 2
-        elif w == "role" and len(args) >= i + 2 and args[i + 1] in ("M", "S", "-"):
+        elif w == "role" and len(args) >= i + 2:
+            if args[i + 1] not in ("M", "S", "-"):
+                raise ScenarioError(f"{where}: role must be M, S or -, got {args[i + 1]!r}")
             want["role"] = args[i + 1]
             i += 2
         else:

@@ -18,12 +18,11 @@ Every error names the file, the line and the problem.
 from __future__ import annotations
 
 import re
-import tomllib
 from collections import Counter
 from pathlib import Path
 
 from hexbot.errors import ScenarioError
-from hexbot.files import read_text
+from hexbot.files import load_toml, read_text
 from hexbot.planning.configuration import Configuration, Module
 from hexbot.planning.hexlattice import COORD_LIMIT, Cell
 
@@ -87,10 +86,7 @@ def _as_cell(value: object, where: str) -> Cell:
 
 def parse_toml(text: str, source: str = "<toml>") -> Configuration:
     """Parse a TOML cell list (see the module docstring)."""
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        raise ScenarioError(f"{source}: {exc}") from exc
+    data = load_toml(text, source)
     if "cells" in data and "module" in data:
         raise ScenarioError(f"{source}: give either 'cells' or [[module]] tables, not both")
     if "cells" in data:
@@ -133,7 +129,7 @@ def names_modules(path: str | Path) -> bool:
     path = Path(path)
     if path.suffix.lower() != ".toml":
         return False
-    return "module" in tomllib.loads(read_text(path))
+    return "module" in load_toml(read_text(path), path)
 
 
 def load_configuration(path: str | Path) -> Configuration:

@@ -29,7 +29,7 @@ from hexbot.host import workflows
 from hexbot.host.session import Session
 from hexbot.host.workflows import Pose, Verify
 from hexbot.planning.budget import DEFAULT_BUDGET
-from hexbot.planning.configuration import Configuration, Module
+from hexbot.planning.configuration import Configuration, Module, is_connected
 from hexbot.planning.hexlattice import Cell
 from hexbot.planning.moves import orientation_after
 from hexbot.planning.plan import Plan
@@ -139,7 +139,10 @@ def plan_request(words: list[str], relative_to: Path | None = None) -> PlanReque
     goal = Path(words[0])
     if relative_to is not None and not goal.is_absolute():
         goal = relative_to / goal
-    return PlanRequest(load_configuration(goal).cells, reference, verify)
+    cells = load_configuration(goal).cells
+    if not is_connected(cells):  # no plan can end in it: say so before localizing
+        raise ScenarioError(f"{goal}: the goal is not connected: modules must stay in one piece")
+    return PlanRequest(cells, reference, verify)
 
 
 def default_reference(session: Session) -> int:
@@ -254,5 +257,8 @@ def execute(plan: Plan, session: Session, reference: int, *, verify: Verify = Ve
         report.failure = str(exc)
         cause = exc.__cause__ if isinstance(exc.__cause__, HexBotError) else exc
         report.exit_status = cause.exit_status
+    except KeyboardInterrupt:  # the report still says how far the run got
+        report.failure = "interrupted (Ctrl-C)"
+        report.exit_status = 130
     report.seconds = session.now() - start
     return report

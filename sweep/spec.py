@@ -30,14 +30,12 @@ import hashlib
 import itertools
 import json
 import math
-import re
-import tomllib
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from hexbot.errors import HexBotError, ScenarioError
-from hexbot.files import read_text
+from hexbot.files import load_toml, read_text
 from hexbot.sweep.kinds import Kind, Param, load_kind
 from hexbot.toml_lines import TomlLines
 
@@ -96,21 +94,11 @@ def _resolve(spec_path: Path, param: Param, value: Any) -> Any:
     return value
 
 
-_TOML_LINE = re.compile(r"\((?:at line (\d+), column \d+|at end of document)\)")
-
-
 def load_spec(path: str | Path) -> Spec:
     """Read and check a sweep file; ScenarioError ``file:line: problem``."""
     path = Path(path)
     text = read_text(path, "the sweep file")
-    try:
-        data = tomllib.loads(text)
-    except tomllib.TOMLDecodeError as exc:
-        m = _TOML_LINE.search(str(exc))
-        line = (m.group(1) or len(text.splitlines())) if m else None
-        where = f"{path}:{line}" if line else str(path)
-        raise ScenarioError(f"{where}: {_TOML_LINE.sub('', str(exc)).strip()}") from exc
-    return parse_spec(data, text, path)
+    return parse_spec(load_toml(text, path), text, path)
 
 
 def parse_spec(data: dict[str, Any], text: str, path: Path) -> Spec:

@@ -86,8 +86,9 @@ class HexBotConsole(App[None]):
     TITLE = "HexBot console"
     COMMANDS = App.COMMANDS | {ConsoleCommands}
 
+    #: every tab, in the order of their keys 1..6 (the palette lists them all)
     TABS = (("terminals", "Terminals"), ("compose", "Composer"), ("modules", "Modules"),
-            ("lattice", "Lattice"), ("ports", "Ports"))
+            ("lattice", "Lattice"), ("ports", "Ports"), ("boards", "Boards"))
     #: (action, palette title, help) of the thesis workflows
     WORKFLOWS = (
         ("select", f"Select modules ({_code('Select')})",
@@ -704,8 +705,12 @@ class HexBotConsole(App[None]):
     def action_localize(self) -> None:
         sel = self.selection_text()
         default = sel.split(",")[0] if sel not in ("all", "none") else "1"
-        self._ask("Reference module id (becomes (0,0))", default,
-                  lambda ids: self.localize(ids[0]))
+        def chosen(ids: list[int]) -> None:
+            if len(ids) != 1:  # it used to take the first and drop the rest
+                self.notify("one reference module: it becomes (0,0)", severity="warning")
+                return
+            self.localize(ids[0])
+        self._ask("Reference module id (becomes (0,0))", default, chosen)
 
     def localize(self, ref_id: int) -> None:
         """The localization workflow: ``ref_id`` becomes (0,0), one code 66

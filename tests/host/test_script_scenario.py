@@ -173,3 +173,10 @@ def test_two_runs_of_a_seed_write_the_same_capture(tmp_path, monkeypatch):
                          for line in capture.read_text().splitlines()
                          if not line.startswith("#")])
     assert captures[0] == captures[1]
+
+
+def test_a_bad_role_in_expect_status_is_named(tmp_path, cli_status):
+    script = tmp_path / "r.hbs"
+    script.write_text("expect status 2 role m\n")
+    code, err = cli_status("run", script, "--check")
+    assert code == 1 and "r.hbs:1: role must be M, S or -, got 'm'" in err

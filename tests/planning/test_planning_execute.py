@@ -230,3 +230,30 @@ def test_an_error_that_stops_a_run_keeps_its_exit_status(open_session, monkeypat
     report = execute(plan, session, reference=1)
     assert report.exit_status == 3 and "no reply" in report.failure
     assert report.line(1) == f"executed 0/1 moves in {report.seconds:.1f} s; stopped early"
+
+
+def test_a_goal_in_pieces_is_refused_before_anything_is_sent(tmp_path):
+    from hexbot.errors import ScenarioError
+    from hexbot.planning.execute import plan_request
+
+    goal = tmp_path / "apart.toml"
+    goal.write_text("cells = [[0, 0], [5, 5]]\n")
+    with pytest.raises(ScenarioError, match="the goal is not connected"):
+        plan_request([str(goal)])
+
+
+def test_ctrl_c_in_a_run_is_reported_with_the_moves_done(open_session, monkeypatch):
+    from hexbot.host import workflows
+
+    def interrupted(*_args, **_kwargs):
+        raise KeyboardInterrupt
+
+    session = open_session("pair")
+    initial = Configuration({(0, 0): Module(1, 0), (-1, 1): Module(2, 0)})
+    move = Move(module=2, src=(-1, 1), dst=(0, 1), joint=4, direction="CW",
+                substrate=(0, 0), substrate_module=1)
+    plan = Plan("robust", initial, frozenset({(0, 0), (0, 1)}), [Step([move])], reached=True)
+    monkeypatch.setattr(workflows, "rotate", interrupted)
+    report = execute(plan, session, reference=1)
+    assert report.exit_status == 130 and report.failure == "interrupted (Ctrl-C)"
+    assert report.line(1) == f"executed 0/1 moves in {report.seconds:.1f} s; stopped early"
