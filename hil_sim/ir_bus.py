@@ -73,6 +73,19 @@ class Frame:
     def line(self) -> LineSettings:
         return LineSettings(self.baud, self.data_bits, self.parity, self.stop_bits)
 
+    def read_by(self, receiver: Frame, value: int,
+                rng: random.Random) -> tuple[int, bool] | None:
+        """A byte sent with these settings, as ``receiver`` reads it: (value,
+        framing error), or None when it finds no start bit. Alike within the
+        baud tolerance: the byte. Another rate: what its UART samples
+        (:func:`~hexbot.hil_sim.uart_line.first_byte`). Another word format:
+        a garbage byte from ``rng`` with a framing error."""
+        if self.matches(receiver):
+            return value, False
+        if self.same_word(receiver):
+            return first_byte(value, self.line(), receiver.line())
+        return rng.randrange(256), True
+
     def matches(self, other: Frame) -> bool:
         if abs(self.baud - other.baud) > BAUD_TOLERANCE * other.baud:
             return False
@@ -199,14 +212,10 @@ class IrMedium:
             self._event(
                 byte, receiver, "ir-garbled", reason=f"sender {byte.frame}, receiver {rx}"
             )
-            if byte.frame.same_word(rx):  # another baud rate: what its UART samples
-                read = first_byte(value, byte.frame.line(), rx.line())
-                if read is None:
-                    return  # no start bit where the receiver looked: nothing
-                value, framing_error = read
-            else:
-                value = self.rng.randrange(256)
-                framing_error = True
+            read = byte.frame.read_by(rx, value, self.rng)
+            if read is None:
+                return  # no start bit where the receiver looked: nothing
+            value, framing_error = read
         if receiver == PC:
             # The PC's UART sees one broken frame where bytes overlap.
             for pending in reversed(self._pc_pending):

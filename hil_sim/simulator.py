@@ -510,7 +510,7 @@ class Simulator:
         """The wire between the wireless board's USART0 and the comm board's
         IR multiplexer (protocol/pins.py RF12_LINK_*): it carries bytes only
         while the selector is on the centre. A byte sent at another rate or
-        format arrives with a framing error, as garbage."""
+        format arrives as the receiver reads it (``Frame.read_by``)."""
         rf12 = module.rf12
         assert rf12 is not None
         target, uart = (module.comm, 1) if to_comm else (rf12, RF12_LINK_UART)
@@ -518,10 +518,9 @@ class Simulator:
         for _start, end, value in taken:
             if module.channel_at(end) != CENTRE:
                 continue
-            framing_error = not frame.matches(receiver)
-            if framing_error:
-                value = self._garbage.randrange(256)
-            self.cluster.uart_put(target.index, uart, value, framing_error)
+            read = frame.read_by(receiver, value, self._garbage)
+            if read is not None:
+                self.cluster.uart_put(target.index, uart, *read)
 
     def _ir_events(self) -> None:
         """The core medium's events, as the Python medium words them."""
@@ -546,18 +545,19 @@ class Simulator:
         frame = frame_of(mcu.uart_config(1))
         rx = self._debug_rx[module.id if board == "control" else (module.id, board)]
         for _start, end, value in taken:
-            if frame.matches(DEBUG_FRAME):
-                rx.append(value)
-            else:
-                rx.append(self._garbage.randrange(256))
+            if not frame.matches(DEBUG_FRAME):
                 self._emit(end, {"event": "debug-garbled", "module": module.id,
                                  "reason": f"control UART1 at {frame}, port at {DEBUG_FRAME}"})
+            read = frame.read_by(DEBUG_FRAME, value, self._garbage)
+            if read is not None:
+                rx.append(read[0])
 
     def _debug_send(self, module: Module, value: int) -> None:
         frame = frame_of(module.control.uart_config(1))
-        framing_error = not frame.matches(DEBUG_FRAME)
-        if framing_error:
-            value = self._garbage.randrange(256)
+        read = DEBUG_FRAME.read_by(frame, value, self._garbage)
+        if read is None:
+            return  # the board's UART found no start bit in it
+        value, framing_error = read
         if not self.cluster.uart_put(module.control.index, 1, value, framing_error):
             self._emit(self._cycle, {"event": "debug-dropped", "module": module.id,
                                      "byte": value, "reason": "receiver off (RXEN) or overrun"})

@@ -19,6 +19,7 @@ writes are bursts: the time between them is not modelled).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 #: parity bit for a data word, by pyserial's parity letters
@@ -77,35 +78,34 @@ def _waveform(data: bytes, tx: LineSettings) -> list[tuple[float, int]]:
 
 def first_byte(byte: int, tx: LineSettings, rx: LineSettings) -> tuple[int, bool] | None:
     """One byte sent as ``tx``, as a receiver set to ``rx`` (the same word
-    format, another baud rate) reads it: the sender's levels sampled in the
-    middle of each of the receiver's bit times from the start edge on.
-    (value, framing error), or None when the start bit is over before the
-    receiver samples it (a glitch: no byte). Only the first byte: the IR
-    medium delivers one byte per byte sent. For rates outside the baud
-    tolerance only: the sent byte never arrives as good (see the end). The simulator's C core
-    (``m162_usart_resample``) does the same; a test holds them together."""
-    levels = [level for _, level in _waveform(bytes([byte]), tx)]
-    sent, own = 1.0 / tx.baud, 1.0 / rx.baud
-
-    def level(t: float) -> int:
-        k = int(t / sent)
-        return levels[k] if k < len(levels) - 1 else 1  # the last entry: idle
-
-    if level(own / 2):
+    format, another baud rate) reads it: :func:`resample`'s reading, its
+    first byte only (the IR medium delivers one byte per byte sent), with
+    its framing error; None when the receiver finds no start bit in it. For
+    rates outside the baud tolerance only: the sent byte never arrives as
+    good (see the end). The simulator's C core (``m162_usart_resample``)
+    reads the same; a test holds them together."""
+    read = next(_read(_waveform(bytes([byte]), tx), rx), None)
+    if read is None:
         return None
-    value = sum(level(own * (1.5 + k)) << k for k in range(rx.data_bits))
-    stop = own * (1.5 + rx.data_bits + (rx.parity != "N"))
+    value, framing_error = read
     # used outside the datasheet's baud range, where nothing is promised: a
     # byte that exact sampling still reads right keeps a framing error (a
     # real receiver's edge detection and 3-sample vote may give it one)
-    return value, not level(stop) or value == byte & ((1 << rx.data_bits) - 1)
+    return value, framing_error or value == byte & ((1 << rx.data_bits) - 1)
 
 
 def resample(data: bytes, tx: LineSettings, rx: LineSettings) -> bytes:
     """The bytes a receiver set to ``rx`` reads from ``data`` sent as ``tx``."""
     if tx == rx or not data:
         return bytes(data)
-    wave = _waveform(data, tx)
+    return bytes(value for value, _ in _read(_waveform(data, tx), rx))
+
+
+def _read(wave: list[tuple[float, int]], rx: LineSettings) -> Iterator[tuple[int, bool]]:
+    """(byte, framing error) for each start bit a receiver set to ``rx``
+    finds in ``wave``: wait for the line low, check the start bit in its
+    middle (a glitch re-arms there), sample each data bit in its middle,
+    the stop bit too, re-arm after the middle of the (first) stop bit."""
     end = wave[-1][0]
     starts = [t for t, _ in wave]
 
@@ -120,7 +120,6 @@ def resample(data: bytes, tx: LineSettings, rx: LineSettings) -> bytes:
         return wave[lo][1] if t < end else 1
 
     bit = 1.0 / rx.baud
-    out = bytearray()
     i, t = 0, 0.0
     while True:
         # the line low at or after t: the first low bit that has not ended by t
@@ -128,7 +127,7 @@ def resample(data: bytes, tx: LineSettings, rx: LineSettings) -> bytes:
         while i < len(wave) - 1 and (wave[i][1] != 0 or wave[i + 1][0] <= t):
             i += 1
         if i >= len(wave) - 1:
-            break
+            return
         edge = max(t, wave[i][0])
         if level(edge + bit / 2) != 0:  # a glitch, not a start bit
             t = edge + bit / 2
@@ -136,7 +135,6 @@ def resample(data: bytes, tx: LineSettings, rx: LineSettings) -> bytes:
         word = 0
         for k in range(rx.data_bits):
             word |= level(edge + bit * (1.5 + k)) << k
-        out.append(word)
-        # re-arm after the middle of the (first) stop bit
-        t = edge + bit * (rx.frame_bits - rx.stop_bits + 0.5)
-    return bytes(out)
+        stop = edge + bit * (rx.frame_bits - rx.stop_bits + 0.5)
+        yield word, level(stop) == 0
+        t = stop  # re-arm after the middle of the (first) stop bit

@@ -44,6 +44,9 @@ class ModuleState:
     module_id: int | None = None
     role: str = "-"
     localized: bool = False
+    #: ``position`` is the place a plan put it, taken as given: a status check
+    #: of a rotation cannot see a place (not shown as localized)
+    assumed: bool = False
     position: tuple[int, int] | None = None
     orientation: int | None = None  # Yref 0..5
     last_ack: int | None = None
@@ -110,7 +113,7 @@ class ClusterModel:
             if moves_the_module(ev.code, ev.role):
                 # however the rotation was sent (a workflow, the composer, a
                 # script's post): its place and Yref are stale from here on
-                row.localized = False
+                row.localized = row.assumed = False
             # The firmware sends its localization report just before its
             # ACK 66: the ACK names the module that placed itself.
             unnamed = self._unnamed.pop(port, None)
@@ -132,6 +135,8 @@ class ClusterModel:
                 return True
             row.role = ev.role
             row.localized = ev.localized
+            if ev.localized:
+                row.assumed = False
             row.last_seen = t
             row.last_error = "" if ev.error == 0 else error_name(ev.error)
             if ev.localized:
@@ -189,7 +194,14 @@ class ClusterModel:
         it reports again (the firmware forgets its position too)."""
         row = self.module(module_id)
         if row is not None:
-            row.localized = False
+            row.localized = row.assumed = False
+
+    def assume(self, module_id: int, cell: tuple[int, int], orientation: int) -> None:
+        """Take the plan's place of the module as given (it stays not
+        localized): the next rotations aim from it, a localization judges it."""
+        row = self.module(module_id)
+        if row is not None:
+            row.position, row.orientation, row.assumed = cell, orientation, True
 
     def placed(self, module_id: int, cell: tuple[int, int], orientation: int) -> None:
         """A check (the simulator's plant, or a localization) put the module here."""

@@ -189,7 +189,7 @@ def known_pose(session: Session, module: int) -> Pose:
     row = session.host.model.module(module)
     if row is None or row.position is None or row.orientation is None:
         raise CommandRefusedError(f"orientation of module {module} unknown: localize first")
-    if not row.localized:
+    if not row.localized and not row.assumed:
         raise CommandRefusedError(f"orientation of module {module} is stale (it moved since "
                                   "it was localized): localize again first")
     return Pose(row.position, row.orientation)
@@ -224,7 +224,8 @@ def rotate(session: Session, direction: str, joint: int, mobile: int, substrate:
     verdicts_before = len(simulator.verdicts()) if simulator is not None else 0
     # stale before the frame goes out: a wait abandoned (Escape, a time-out)
     # must not leave the old place and Yref to aim the next rotation from
-    session.host.model.moved(mobile)
+    with session.host.lock:  # the reader thread and the views use the model too
+        session.host.model.moved(mobile)
     session.request(command)
     if how is Verify.PLANT:
         got = _plant_verdict(session, mobile, verdicts_before)
@@ -244,10 +245,13 @@ def rotate(session: Session, direction: str, joint: int, mobile: int, substrate:
             f"module {mobile} should be at {expected.cell} facing {expected.orientation} "
             f"after {d} about joint {joint}, {how.value} check finds it at {got.cell} "
             f"facing {got.orientation}")
-    if how in (Verify.PLANT, Verify.STATUS):
-        # the plant saw it; a status check cannot see a place, so the next
-        # moves assume the planned one until a localization says otherwise
-        session.host.model.placed(mobile, expected.cell, expected.orientation)
+    with session.host.lock:
+        if how is Verify.PLANT:  # the plant saw it
+            session.host.model.placed(mobile, expected.cell, expected.orientation)
+        elif how is Verify.STATUS:
+            # a status check cannot see a place: the next moves take the
+            # planned one as given, not as localized, until a localization
+            session.host.model.assume(mobile, expected.cell, expected.orientation)
     return RotationResult(mobile, substrate, expected, how, got)
 
 

@@ -24,7 +24,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from hexbot.errors import HexBotError, ScenarioError
+from hexbot.errors import CancelledError, HexBotError, ScenarioError
 from hexbot.host import workflows
 from hexbot.host.session import Session
 from hexbot.host.workflows import Pose, Verify
@@ -75,7 +75,12 @@ class ExecutionReport:
         :class:`HexBotError` saying how far the run got and why it stopped."""
         done = sum(m.ok for m in self.moves)
         if not self.reached:
-            raise HexBotError(f"after {done} of {total} moves: {self.failure}")
+            message = f"after {done} of {total} moves: {self.failure}"
+            if self.exit_status == CancelledError.exit_status:  # Ctrl-C
+                raise CancelledError(message)
+            error = HexBotError(message)
+            error.exit_status = self.exit_status or 1  # a time-out 3, a lost port 4
+            raise error
         return f"goal reached (localized): {done} of {total} moves in {self.seconds:.1f} s"
 
     def as_json(self) -> dict[str, Any]:

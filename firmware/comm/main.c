@@ -235,7 +235,9 @@ static uint8_t forward(uint8_t code, const uint8_t *a)
  * goes out, and its late echo is dropped (forward(), poll_inputs()). */
 static void control_off(uint8_t wait_echo)
 {
-    static const uint8_t none[HB_BOARD_ARGS];
+    /* the filler, as every board frame has it: the control board refuses
+     * other bytes where a function takes no argument */
+    static const uint8_t none[HB_BOARD_ARGS] = {HB_UNUSED, HB_UNUSED, HB_UNUSED, HB_UNUSED};
     if (wait_echo) {
         forward(HB_FN_TURN_OFF_ALL, none);
     } else {

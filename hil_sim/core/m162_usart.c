@@ -336,7 +336,8 @@ int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r, double tol
  * first byte: the medium delivers one byte per byte sent. Called only
  * outside the baud tolerance, so the sent byte never arrives as good.
  * -1: the start bit is over before the receiver samples it (a glitch, no
- * byte); else the byte, with UART_INPUT_FE when its stop bit reads low. */
+ * byte); else the byte, with UART_INPUT_FE when its stop bit reads low.
+ * The same reading as hil_sim/uart_line.py's _read (a test compares them). */
 int m162_usart_resample(const m162_usart_t *s, const m162_txrec_t *r)
 {
 	int db = r->format & 0x0F, parity = ((r->format >> 4) & 3) >= 2;
@@ -353,12 +354,25 @@ int m162_usart_resample(const m162_usart_t *s, const m162_txrec_t *r)
 	}
 	double sent = r->bit_cycles, own = m162_to_cluster_span(s->mcu, s->bit_cycles);
 #define LEVEL_AT(t) ((int)((t) / sent) < n ? levels[(int)((t) / sent)] : 1)
-	if (LEVEL_AT(own / 2))
+	/* as uart_line._read: the line low at or after t (the first low bit not
+	 * over by then), its middle low or a glitch that re-arms there */
+	double t = 0, edge = -1;
+	for (int k = 0; k < n && edge < 0; k++) {
+		if (levels[k] || (k + 1) * sent <= t)
+			continue;
+		double e = k * sent > t ? k * sent : t;
+		if (LEVEL_AT(e + own / 2)) {
+			t = e + own / 2; /* a glitch: look again from there */
+			continue;
+		}
+		edge = e;
+	}
+	if (edge < 0)
 		return -1;
 	int value = 0;
 	for (int k = 0; k < db && k < 8; k++)
-		value |= LEVEL_AT(own * (1.5 + k)) << k;
-	int fe = !LEVEL_AT(own * (1.5 + db + parity));
+		value |= LEVEL_AT(edge + own * (1.5 + k)) << k;
+	int fe = !LEVEL_AT(edge + own * (1.5 + db + parity));
 #undef LEVEL_AT
 	/* outside the datasheet's range nothing is promised: a byte that exact
 	 * sampling still reads right keeps the framing error the edge

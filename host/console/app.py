@@ -365,7 +365,7 @@ class HexBotConsole(App[None]):
         self.sim_log = [*self.sim_log, verdict][-SIM_LOG_LINES:]
         if isinstance(verdict, Refused):
             who = f"module {verdict.module}" if verdict.module is not None else "no module"
-            self.notify(f"{who}: {verdict.reason.value} ({verdict.detail})",
+            self.notify(escape(f"{who}: {verdict.reason.value} ({verdict.detail})"),
                         title="Simulator: rotation refused", severity="warning")
         self.refresh_soon()
 
@@ -381,7 +381,7 @@ class HexBotConsole(App[None]):
             restart = "; ctrl+r restarts it" if self._opener is not None else ""
             self.show_alert(f"{msg.port}: {msg.detail}{restart}", LinkUnavailableError.exit_status)
         elif msg.state is LinkState.LOST:
-            self.notify(f"{msg.port}: {msg.detail}; retrying", title="Port lost",
+            self.notify(escape(f"{msg.port}: {msg.detail}; retrying"), title="Port lost",
                         severity="warning")
         self._update_status()
 
@@ -630,7 +630,7 @@ class HexBotConsole(App[None]):
             try:
                 ids = [int(w) for w in text.replace(",", " ").split()]
             except ValueError:
-                self.notify(f"not module ids: {text!r}", severity="error")
+                self.notify(escape(f"not module ids: {text!r}"), severity="error")
                 return
             if not ids:
                 return
@@ -763,7 +763,8 @@ class HexBotConsole(App[None]):
 
         self.push_screen(PromptScreen(
             f"Plan to a goal: {PLAN_USAGE} (GOAL: a 0/1 grid or .toml cells file; the "
-            "reference, by default the simulator's base module, stays where it is)",
+            "reference, by default the cluster's origin if a Ref made one, else the "
+            "simulator's base module, stays where it is)",
             self.goal_file), lambda text: self.plan_to(text) if text else None)
 
     def plan_to(self, text: str) -> None:
@@ -918,9 +919,10 @@ class HexBotConsole(App[None]):
             paths = [self.terminal(p).save(folder / f"terminal-{p}-{stamp}.txt")
                      for p in (IR, DEBUG)]
         except OSError as exc:
-            self.notify(f"{folder}: {exc.strerror or exc}", title="Not saved", severity="error")
+            self.notify(escape(f"{folder}: {exc.strerror or exc}"), title="Not saved",
+                        severity="error")
             return
-        self.notify("saved " + ", ".join(str(p) for p in paths))
+        self.notify(escape("saved " + ", ".join(str(p) for p in paths)))
 
     def action_help(self) -> None:
         keys = [(key_names(self, b), b.description) for b in self.BINDINGS

@@ -152,12 +152,15 @@ def _bank(args: argparse.Namespace) -> int:
         print(json.dumps([r.to_dict() for r in rows]))
     else:
         print(bank.bank_markdown(rows))
-    # deadlocks are outcomes the theses report; a broken invariant is a failure
+    # the bank reproduces the theses' tables: deadlocks and broken invariants
+    # are results in the table (the pyramid rules break some by design), so
+    # the run succeeds; stderr names them, where a reader of the exit
+    # status alone would miss them
     broken = [r for r in rows if r.status == "violation"]
     if broken:
         print(f"{len(broken)} of {len(rows)} runs broke an invariant, e.g. {broken[0].ruleset} "
               f"on {broken[0].scenario}, n = {broken[0].n}: {broken[0].detail}", file=sys.stderr)
-    return 1 if broken else 0
+    return 0
 
 
 def _seed_range(text: str) -> range:

@@ -65,6 +65,10 @@ def test_a_new_command_stops_a_long_actuator_sequence(single: Bench):
     assert [r.code for r in replies] == [5, 20] and replies[0].reason == ErrorCode.STOPPED
     ports = {p: single.sim.modules[1].control.port(p)[1] for p in "ABD"}
     assert ports["A"] & 0x3F == 0
+    # the comm board's own TurnOffAll carries the 'N' filler: the control
+    # board runs it (ACK 20 on its debug port), it does not refuse it (ACK N)
+    debug = single.debug_read(1)
+    assert b"ACK\x14" in debug and b"ACKN" not in debug, debug
 
 
 def random_strings(seed: int, count: int) -> list[bytes]:

@@ -81,3 +81,18 @@ def test_all_off_sends_every_frame_whatever_the_replies(open_session, monkeypatc
     with pytest.raises(CommandRefusedError, match="all frames sent"):
         workflows.all_off(session)
     assert sent == [str(frames.make("TurnOffAll")), "Select(0)", str(frames.make("TurnOffAll"))]
+
+
+def test_a_status_check_assumes_the_place_but_does_not_call_it_localized(open_session):
+    # (review) the status path marked the module localized at the planned
+    # cell right after its own Status said it was not
+    session = open_session("pair")
+    workflows.localize(session, 1)
+    result = workflows.rotate(session, "CW", 4, 2, 1, verify=workflows.Verify.STATUS)
+    row = session.host.model.module(2)
+    assert result.got is None  # nothing saw the place
+    assert (row.localized, row.assumed, row.position) == (False, True, (0, 1))
+    assert workflows.known_pose(session, 2).cell == (0, 1)  # the next move may aim from it
+    poses = workflows.localize(session, 1)  # a localization judges it
+    assert poses[2].cell == (0, 1) and session.host.model.module(2).localized
+    assert not session.host.model.module(2).assumed

@@ -101,15 +101,16 @@ def test_unknown_names_are_user_errors(capsys):
 
 
 def test_bank_json(capsys):
-    code, out, _ = run_cli(capsys, "bank", "--rulesets", "salvador-pyramids", "--n", "5",
-                           "--rounds", "400", "--json")
+    code, out, err = run_cli(capsys, "bank", "--rulesets", "salvador-pyramids", "--n", "5",
+                             "--rounds", "400", "--json")
     rows = json.loads(out)
     assert {r["scenario"] for r in rows} >= {"pyramid", "maze", "histogram-1"}
     assert all(r["status"] in ("reached", "deadlock", "violation", "rounds-exhausted")
                for r in rows)
-    # the pyramid rules break an invariant on some maps (documented): the run fails
+    # the pyramid rules break an invariant on some maps (documented): a result
+    # of the table, named on stderr
     broken = [r for r in rows if r["status"] == "violation"]
-    assert broken and code == 1
+    assert broken and code == 0 and f"{len(broken)} of {len(rows)} runs broke an invariant" in err
     code, out, err = run_cli(capsys, "bank", "--rulesets", "salvador", "--n", "5", "--json")
     assert code == 0 and all(r["status"] != "violation" for r in json.loads(out))
 

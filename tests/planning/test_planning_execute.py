@@ -257,3 +257,16 @@ def test_ctrl_c_in_a_run_is_reported_with_the_moves_done(open_session, monkeypat
     report = execute(plan, session, reference=1)
     assert report.exit_status == 130 and report.failure == "interrupted (Ctrl-C)"
     assert report.line(1) == f"executed 0/1 moves in {report.seconds:.1f} s; stopped early"
+
+
+@pytest.mark.parametrize("status", [3, 4, 130])
+def test_a_reports_outcome_keeps_the_exit_status_of_what_stopped_it(status):
+    # a script's plan step raises outcome(): its exit status was always 1
+    from hexbot.errors import CancelledError, HexBotError
+    from hexbot.planning.execute import ExecutionReport
+
+    report = ExecutionReport(failure="stopped", exit_status=status)
+    with pytest.raises(HexBotError) as info:
+        report.outcome(5)
+    assert info.value.exit_status == status
+    assert isinstance(info.value, CancelledError) == (status == 130)
