@@ -34,6 +34,12 @@ async def until(pilot, pred, timeout=20.0, step=0.05):
     return pred()
 
 
+async def booted(pilot, app: HexBotConsole) -> None:
+    """Wait until the console's simulated cluster has booted."""
+    assert await until(pilot, lambda: app.host is not None, timeout=60)
+    assert await until(pilot, lambda: not app.busy, timeout=60)
+
+
 def ir_text(app: HexBotConsole) -> str:
     return "\n".join(line.plain for line in app.query_one("#ir-term", Terminal).lines())
 
@@ -318,8 +324,7 @@ async def test_refused_and_unlocalized_rotations_fail_on_simulator(pair_args):
     ever "done"."""
     app = HexBotConsole(opener=cli_console.make_opener(pair_args))
     async with app.run_test(size=(100, 30)) as pilot:
-        assert await until(pilot, lambda: app.host is not None, timeout=60)
-        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        await booted(pilot, app)
         assert "Simulator: done" in app.last_result, app.last_result
         app.rotate("cw", 4, 2, 1)
         assert await until(pilot, lambda: not app.busy and "Rotate" in app.last_result)
@@ -432,8 +437,7 @@ async def test_a_stopped_simulator_is_said_and_restarted(pair_args):
     making the cluster's ``run`` raise (a test double on the real path)."""
     app = HexBotConsole(opener=cli_console.make_opener(pair_args))
     async with app.run_test(size=(100, 30)) as pilot:
-        assert await until(pilot, lambda: app.host is not None, timeout=60)
-        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        await booted(pilot, app)
         cluster = app.host.simulator
         first_host = app.host
 
@@ -604,8 +608,7 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
     goal.write_text("cells = [[0, 0], [0, 1]]\n")
     app = HexBotConsole(opener=cli_console.make_opener(pair_args))
     async with app.run_test(size=(120, 36)) as pilot:
-        assert await until(pilot, lambda: app.host is not None, timeout=60)
-        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        await booted(pilot, app)
 
         async def plan_to(path) -> None:
             await pilot.press("g")
@@ -673,8 +676,7 @@ async def test_escape_cancels_a_running_plan_and_claims_nothing(pair_args, tmp_p
     goal.write_text("cells = [[0, 0], [0, 1]]\n")
     app = HexBotConsole(opener=cli_console.make_opener(pair_args))
     async with app.run_test(size=(120, 36)) as pilot:
-        assert await until(pilot, lambda: app.host is not None, timeout=60)
-        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        await booted(pilot, app)
         await pilot.press("g")
         await pilot.pause()
         app.screen.query_one("#prompt-input").value = str(goal)
@@ -706,8 +708,7 @@ async def test_the_console_refuses_what_would_mislead_and_survives_a_bug(pair_ar
     (it was reported done)."""
     app = HexBotConsole(opener=cli_console.make_opener(pair_args))
     async with app.run_test(size=(120, 36)) as pilot:
-        assert await until(pilot, lambda: app.host is not None, timeout=60)
-        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        await booted(pilot, app)
         assert app.selection_text() == "none"  # no Select has been sent
         await pilot.press("r")
         await pilot.pause()
@@ -746,8 +747,7 @@ async def test_the_console_refuses_more_that_would_mislead(pair_args):
     scenario's base (the plant's cells were not in the localization's frame)."""
     app = HexBotConsole(opener=cli_console.make_opener(pair_args))
     async with app.run_test(size=(120, 36)) as pilot:
-        assert await until(pilot, lambda: app.host is not None, timeout=60)
-        assert await until(pilot, lambda: not app.busy, timeout=60)  # booted
+        await booted(pilot, app)
         await pilot.press("t")
         await pilot.pause()
         assert any("select first" in str(n.message) for n in app._notifications)

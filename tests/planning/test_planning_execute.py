@@ -11,6 +11,7 @@ from pathlib import Path
 import pytest
 
 from hexbot.cli import main
+from hexbot.errors import HexBotTimeoutError
 from hexbot.host.host import IR, Host
 from hexbot.host.link import PortSettings
 from hexbot.host.session import Session
@@ -213,22 +214,32 @@ def test_verify_status_assumes_the_planned_place_for_the_next_moves(tmp_path, ca
     assert all(m["verified_by"] == "status" for m in run["moves"])
 
 
-def test_an_error_that_stops_a_run_keeps_its_exit_status(open_session, monkeypatch):
-    # a port lost (4) or a time-out (3) mid-run was reported as exit 1
-    from hexbot.errors import HexBotTimeoutError
-    from hexbot.host import workflows
-
-    def silent(*_args, **_kwargs):
-        raise HexBotTimeoutError("CW (67): no reply from modules 1, 2 within 4.9 s")
-
-    session = open_session("pair")
+def _move_2_on_1() -> Plan:
+    """The pair rig's one-move plan: module 2 CW about joint 4 onto (0, 1)."""
     initial = Configuration({(0, 0): Module(1, 0), (-1, 1): Module(2, 0)})
     move = Move(module=2, src=(-1, 1), dst=(0, 1), joint=4, direction="CW",
                 substrate=(0, 0), substrate_module=1)
-    plan = Plan("robust", initial, frozenset({(0, 0), (0, 1)}), [Step([move])], reached=True)
-    monkeypatch.setattr(workflows, "rotate", silent)
-    report = execute(plan, session, reference=1)
-    assert report.exit_status == 3 and "no reply" in report.failure
+    return Plan("robust", initial, frozenset({(0, 0), (0, 1)}), [Step([move])], reached=True)
+
+
+@pytest.mark.parametrize("error, status, failure", [
+    (lambda: HexBotTimeoutError("CW (67): no reply from modules 1, 2 within 4.9 s"), 3,
+     "CW (67): no reply"),
+    (lambda: KeyboardInterrupt(), 130, "interrupted (Ctrl-C)"),
+])
+def test_what_stops_a_run_gives_its_exit_status_and_the_moves_done(open_session, monkeypatch,
+                                                                    error, status, failure):
+    # a port lost (4) or a time-out (3) mid-run was reported as exit 1, and
+    # Ctrl-C left no line saying how far the run got
+    from hexbot.host import workflows
+
+    def stopped(*_args, **_kwargs):
+        raise error()
+
+    session = open_session("pair")
+    monkeypatch.setattr(workflows, "rotate", stopped)
+    report = execute(_move_2_on_1(), session, reference=1)
+    assert report.exit_status == status and failure in report.failure
     assert report.line(1) == f"executed 0/1 moves in {report.seconds:.1f} s; stopped early"
 
 
@@ -242,21 +253,7 @@ def test_a_goal_in_pieces_is_refused_before_anything_is_sent(tmp_path):
         plan_request([str(goal)])
 
 
-def test_ctrl_c_in_a_run_is_reported_with_the_moves_done(open_session, monkeypatch):
-    from hexbot.host import workflows
 
-    def interrupted(*_args, **_kwargs):
-        raise KeyboardInterrupt
-
-    session = open_session("pair")
-    initial = Configuration({(0, 0): Module(1, 0), (-1, 1): Module(2, 0)})
-    move = Move(module=2, src=(-1, 1), dst=(0, 1), joint=4, direction="CW",
-                substrate=(0, 0), substrate_module=1)
-    plan = Plan("robust", initial, frozenset({(0, 0), (0, 1)}), [Step([move])], reached=True)
-    monkeypatch.setattr(workflows, "rotate", interrupted)
-    report = execute(plan, session, reference=1)
-    assert report.exit_status == 130 and report.failure == "interrupted (Ctrl-C)"
-    assert report.line(1) == f"executed 0/1 moves in {report.seconds:.1f} s; stopped early"
 
 
 @pytest.mark.parametrize("status", [3, 4, 130])
