@@ -116,6 +116,12 @@ class RotateScreen(ModalScreen[tuple[str, int, int, int] | None]):
             yield Label("", id="rot-error", classes="error")
             yield Button("Rotate", id="rot-go", variant="primary")
 
+    @on(Input.Changed, "#rot-joint")
+    @on(Select.Changed)
+    def _clear_error(self) -> None:
+        """A value changed: the last complaint may no longer hold."""
+        self.query_one("#rot-error", Label).update("")
+
     @on(Button.Pressed, "#rot-go")
     def _go(self) -> None:
         joint = self.query_one("#rot-joint", Input).value.strip()
