@@ -21,6 +21,8 @@ BENCHMARKS: dict[str, tuple[str, str]] = {
     "planning": ("hexbot.bench.planning", "hex reconfiguration planners: time and moves"),
     "surface": ("hexbot.bench.surface",
                 "where a module can roll: surface segments of the planning bench's shapes"),
+    "pockets": ("hexbot.bench.pockets",
+                "how much of a holes pair its holes' digs move (goal-peel closures)"),
     "locomotion": ("hexbot.bench.locomotion", "square-lattice locomotion engine (JSON)"),
     "ir-noise": ("hexbot.bench.ir_noise",
                  "wrong and lost commands on a noisy IR link, legacy vs MAVLink"),

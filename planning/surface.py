@@ -100,3 +100,26 @@ def surface_segments(occupied: set[Cell] | frozenset[Cell]) -> list[set[Cell]]:
         segments.append(segment)
     segments.sort(key=lambda s: (-len(s), min(s)))
     return segments
+
+
+def enclosed(occupied: set[Cell] | frozenset[Cell]) -> set[Cell]:
+    """The empty cells the configuration walls in (its holes): those not joined
+    to the outside through empty cells, side to side."""
+    if not occupied:
+        return set()
+    xs = [x for x, _ in occupied]
+    ys = [y for _, y in occupied]
+    low, high = (min(xs) - 1, min(ys) - 1), (max(xs) + 1, max(ys) + 1)
+
+    def inside(cell: Cell) -> bool:
+        return low[0] <= cell[0] <= high[0] and low[1] <= cell[1] <= high[1]
+
+    outside = {low}  # a corner of the bounding box grown by one is outside
+    queue = deque(outside)
+    while queue:
+        for n in neighbors(queue.popleft()):
+            if n not in outside and n not in occupied and inside(n):
+                outside.add(n)
+                queue.append(n)
+    return {(x, y) for x in range(low[0], high[0] + 1) for y in range(low[1], high[1] + 1)
+            if (x, y) not in occupied and (x, y) not in outside}

@@ -87,3 +87,17 @@ def test_surface_benchmark_counts_segments(capsys):
     assert sum(r["modules"] == 100 for r in rows) == 6
     with pytest.raises(SystemExit):
         main(["bench", "surface", "--seeds", "0"])
+
+
+def test_pockets_benchmark_measures_how_much_the_holes_digs_move(capsys):
+    assert main(["bench", "pockets", "--families", "holes,blob", "--sizes", "300",
+                 "--seeds", "1", "--json"]) == 0
+    rows = {r["family"]: r for r in map(json.loads, capsys.readouterr().out.splitlines())}
+    holes, blob = rows["holes"], rows["blob"]
+    assert holes["to_fill"] >= 5 and holes["to_empty"] >= 5  # about 4 % of 300, both ways
+    assert holes["closure_max"] > 40  # deeper than a dig moves (dig.DIG_LIMIT)
+    assert holes["fill_union_share"] > 0.3 > blob["fill_union_share"]
+    with pytest.raises(SystemExit):
+        main(["bench", "pockets", "--families", "cubes"])
+    with pytest.raises(SystemExit):
+        main(["bench", "pockets", "--sizes", "5"])

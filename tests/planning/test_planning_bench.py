@@ -46,40 +46,24 @@ def test_a_failed_pair_is_listed_and_the_run_fails(monkeypatch, capsys):
     assert "no plan found: test" in capsys.readouterr().out
 
 
-def _enclosed(cells):
-    """Empty cells that ``cells`` encloses (not reachable from outside its box)."""
-    from hexbot.planning.hexlattice import neighbors
-
-    xs, ys = [c[0] for c in cells], [c[1] for c in cells]
-    lo, hi = (min(xs) - 1, min(ys) - 1), (max(xs) + 1, max(ys) + 1)
-    outside, todo = {lo}, [lo]
-    while todo:
-        for n in neighbors(todo.pop()):
-            if (lo[0] <= n[0] <= hi[0] and lo[1] <= n[1] <= hi[1]
-                    and n not in cells and n not in outside):
-                outside.add(n)
-                todo.append(n)
-    return {(x, y) for x in range(lo[0], hi[0] + 1) for y in range(lo[1], hi[1] + 1)
-            if (x, y) not in cells and (x, y) not in outside}
-
-
 def test_the_holes_family_has_holes_in_both_shapes_and_is_reproducible():
     import pytest
 
     from hexbot.planning.checker import pieces
     from hexbot.planning.generate import blob_pair, holey_blob
+    from hexbot.planning.surface import enclosed
 
     for n, seed in ((7, 0), (10, 3), (30, 1), (300, 2)):
         a, b = make_pair("holes", n, seed)
         assert (a, b) == make_pair("holes", n, seed)
         for shape in (a, b):
             assert len(shape) == n and (0, 0) in shape and pieces(set(shape)) == 1
-            holes = _enclosed(shape)
+            holes = enclosed(shape)
             assert holes, (n, seed)
             if n >= 300:  # about 4 % of the cells, carved out of the interior
                 assert 0.03 * n <= len(holes) <= 0.06 * n
     plain = blob_pair(300, 2)[0]
-    assert len(_enclosed(plain)) < 0.01 * 300  # the blob family's shapes have next to none
+    assert len(enclosed(plain)) < 0.01 * 300  # the blob family's shapes have next to none
     with pytest.raises(ValueError, match="at least 7"):
         holey_blob(6, 0)
 
@@ -118,3 +102,14 @@ def test_an_unknown_family_is_a_usage_error_and_a_missed_pair_fails_the_run(caps
     assert args.families == ["holes"]
     assert bench.run_families(args) == 1  # no time to plan: the pair is not planned
     assert "1 of 1 pairs not planned" in capsys.readouterr().err
+
+
+def test_enclosed_finds_the_cells_a_shape_walls_in():
+    from hexbot.planning.hexlattice import neighbors
+    from hexbot.planning.surface import enclosed
+
+    ring = set(neighbors((0, 0)))
+    assert enclosed(ring) == {(0, 0)}
+    assert enclosed(ring - {(1, 0)}) == set()  # an open side: an inlet, not a hole
+    assert enclosed(set()) == set()
+    assert enclosed({(0, 0)}) == set()
