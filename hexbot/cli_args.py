@@ -40,6 +40,16 @@ def count(text: str) -> int:
     return value
 
 
+def port_name(text: str) -> str:
+    """A serial device or pyserial URL. An empty one (``--port "$PORT"`` with
+    the variable unset) is a usage error: taking it as "no port given" would
+    run the command on the embedded simulator and report its success."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError("empty port name (is the variable that should "
+                                         "hold it set?)")
+    return text
+
+
 def tcp_port(text: str) -> int:
     """A TCP port to listen on; 0 lets the system pick a free one."""
     value = _whole(text)

@@ -8,6 +8,7 @@ import queue
 import sys
 
 from hexbot.cli_args import seconds
+from hexbot.errors import LinkUnavailableError
 from hexbot.host.cli_common import session
 from hexbot.host.describe import describe_event, describe_tx, event_json
 from hexbot.host.endpoints import add_port_arguments
@@ -50,7 +51,7 @@ def run(args: argparse.Namespace) -> int:
         return False
 
     # Ports must open at the start (exit 4 otherwise, as send); one lost
-    # later is retried while monitoring.
+    # later is retried while monitoring, and exit 4 if it is still lost at the end.
     with session(args, listener=listener, wait_boot=False, default_speed=1.0) as sess:
         # The session's clock keeps time (virtual with --sim-speed 0); print
         # as events come, at most a tenth of a second late.
@@ -60,5 +61,10 @@ def run(args: argparse.Namespace) -> int:
                                  0.1 if end is None else max(0.0, min(0.1, end - sess.now())))
             flush()
         flush()
+        lost = [name for name, ch in sess.host.channels.items() if not ch.link.connected]
     sys.stdout.flush()
+    if lost:  # retried to the end: the monitor saw nothing there, which is not a pass
+        print(f"error: port lost and not back when the monitor ended: {', '.join(lost)}",
+              file=sys.stderr)
+        return LinkUnavailableError.exit_status
     return 0

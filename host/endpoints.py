@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import quote
 
-from hexbot.cli_args import count, rate, seconds
+from hexbot.cli_args import count, port_name, rate, seconds
 from hexbot.errors import UsageError
 from hexbot.host.events import Listener
 from hexbot.host.host import DEBUG, IR, Host
@@ -29,14 +29,14 @@ DEFAULT_SCENARIO = "flower7"
 
 def add_port_arguments(parser: argparse.ArgumentParser, *, debug: bool = True) -> None:
     g = parser.add_argument_group("ports (default: the embedded simulator)")
-    g.add_argument("--port", metavar="DEVICE_OR_URL",
+    g.add_argument("--port", metavar="DEVICE_OR_URL", type=port_name,
                    help="IR transceiver: /dev/ttyUSB0, socket://host:port, rfc2217://, loop://")
     g.add_argument("--baud", type=count, default=wire.BAUD_IR, help="IR baud rate (default 300)")
     g.add_argument("--parity", default="N", choices=list("NEOMS"))
     g.add_argument("--data-bits", type=int, default=8, choices=[5, 6, 7, 8])
     g.add_argument("--stop-bits", type=float, default=1, choices=[1, 1.5, 2])
     if debug:
-        g.add_argument("--debug-port", metavar="DEVICE_OR_URL",
+        g.add_argument("--debug-port", metavar="DEVICE_OR_URL", type=port_name,
                        help="a control board's UART1 debug port")
         g.add_argument("--debug-baud", type=count, default=wire.BAUD_DEBUG,
                        help="debug port baud rate (default 4800)")

@@ -15,7 +15,7 @@ import argparse
 import shlex
 from pathlib import Path
 
-from hexbot.cli_args import count
+from hexbot.cli_args import count, port_name
 from hexbot.errors import FlashingError, UsageError
 from hexbot.host.flash.avrdude import Avrdude
 from hexbot.host.flash.fuses import TABLE_3_6, FuseSet, check_fuses, fuse_notes
@@ -46,7 +46,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--board", choices=BOARDS, help="which board of the module")
     parser.add_argument("--image", type=Path,
                         help="Intel HEX image (default: firmware/build/<board>.hex)")
-    parser.add_argument("--port", help="programmer port, e.g. /dev/ttyUSB0 or /dev/pts/7")
+    parser.add_argument("--port", type=port_name,
+                        help="programmer port, e.g. /dev/ttyUSB0 or /dev/pts/7")
     parser.add_argument("--programmer", help=f"avrdude -c (default {PROGRAMMER})")
     parser.add_argument("--baud", type=count,
                         help="avrdude -b, serial speed to the programmer (at least 1)")

@@ -191,3 +191,26 @@ def test_parse_raw_reads_hex_and_quoted_text():
     for bad in ("2A 4", '""', "", '"\\x4"'):
         with pytest.raises(FrameError):
             parse_raw(bad)
+
+
+def test_monitor_exits_4_when_its_port_is_lost_and_not_back_at_the_end(log_dir, capsys):
+    import socket
+
+    server = socket.create_server(("127.0.0.1", 0))
+    port = server.getsockname()[1]
+
+    def serve_once():
+        conn, _ = server.accept()
+        conn.sendall(b"M01: ACKE\n\r")
+        time.sleep(0.3)
+        conn.close()
+        server.close()  # reconnections are refused from now on
+
+    threading.Thread(target=serve_once, daemon=True).start()
+    rc = main(["monitor", "--duration", "2", "--retry", "0.2", "--port",
+               f"socket://127.0.0.1:{port}"])
+    out = capsys.readouterr()
+    assert "ACK 69" in out.out  # what came before the loss is still printed
+    assert rc == 4, out.err
+    assert out.err.strip().splitlines()[-1] == (
+        "error: port lost and not back when the monitor ended: ir")

@@ -101,6 +101,10 @@ def test_an_unusable_default_log_dir_warns_and_runs_without_a_log(capsys, tmp_pa
     (["replay", CAPTURE, "--port", "nosuch"], "'ir', 'debug'"),
     (["bench", "sim", "--seconds", "-1"], "--seconds"),
     (["monitor", "--port", "loop://", "--debug-module", "2"], "--debug-port"),
+    # ``--port "$PORT"`` with the variable unset: not the embedded simulator
+    (["send", "Status", "--port", ""], "--port: empty port name"),
+    (["monitor", "--port", "loop://", "--debug-port", " "], "--debug-port: empty port name"),
+    (["flash", "--board", "control", "--port", ""], "--port: empty port name"),
 ])
 def test_bad_option_values_are_usage_errors(capsys, log_dir, argv, words):
     code, err = status(capsys, *argv)
