@@ -20,6 +20,7 @@ the original session is kept. Lines starting ``#`` are comments.
 from __future__ import annotations
 
 import datetime as dt
+import math
 import threading
 import time
 from collections.abc import Iterator
@@ -104,11 +105,19 @@ def read_capture(path: Path) -> Iterator[Record]:
     mid-write) is skipped, since everything before it is intact."""
     path = Path(path)
     try:
-        lines = path.read_text(encoding="utf-8").split("\n")
+        raw_lines = path.read_bytes().split(b"\n")
     except OSError as exc:
         raise ScenarioError(f"{path}: cannot read capture: {exc}") from exc
-    except UnicodeDecodeError as exc:
-        raise ScenarioError(f"{path}: not a hexbot capture (not UTF-8 text)") from exc
+    # line by line: a writer killed in the middle of a character (a note
+    # naming a non-ASCII path) leaves a half last line, not a broken file
+    lines = []
+    for number, raw in enumerate(raw_lines, start=1):
+        try:
+            lines.append(raw.decode("utf-8"))
+        except UnicodeDecodeError as exc:
+            if number != len(raw_lines) or number == 1:
+                raise ScenarioError(f"{path}: not a hexbot capture (not UTF-8 text)") from exc
+            lines.append("")  # the half last line, skipped as any other
     if not lines or lines[0].strip() != MAGIC:
         raise ScenarioError(f"{path}:1: not a hexbot capture (first line must be {MAGIC!r})")
     last = len(lines) - 1  # text after the final newline: possibly half-written
@@ -134,6 +143,8 @@ def _parse(line: str, where: str, number: int) -> Record:
         t = float(t_text)
     except ValueError as exc:
         raise ScenarioError(f"{where}: bad time stamp {t_text!r}") from exc
+    if not math.isfinite(t) or t < 0:  # a paced replay would wait for ever on nan
+        raise ScenarioError(f"{where}: bad time stamp {t_text!r}")
     if kind not in KINDS:
         raise ScenarioError(f"{where}: unknown record kind {kind!r} (expected {KINDS})")
     if kind in ("tx", "rx"):

@@ -11,10 +11,9 @@ from pathlib import Path
 from hexbot.cli_args import positive, seconds_or_zero
 from hexbot.host.capture import read_capture
 from hexbot.host.describe import describe_event, describe_tx, event_json
-from hexbot.host.host import DEBUG, IR
+from hexbot.host.host import DEBUG, IR, PortDecoder
 from hexbot.host.replay_control import ReplayControl
 from hexbot.host.session_log import CAPTURE_NAME
-from hexbot.protocol.mavlink_codec import FramedParser
 
 #: What a capture's records name: the two ports and the sources of notes
 #: (Host.warn and framing: host; plant verdicts: sim). A name outside these
@@ -48,10 +47,9 @@ def run(args: argparse.Namespace) -> int:
         print(f"hexbot replay: error: --to {args.stop:g} is before --from {args.start:g}",
               file=sys.stderr)
         return 2  # a usage error, as argparse's own
-    parsers: dict[str, FramedParser] = {}
+    decoders: dict[str, PortDecoder] = {}  # both framings, held text flushed as live
     control = ReplayControl(args.speed, args.start) if args.speed else None
     never = threading.Event()
-    last_t = 0.0
 
     def emit(t: float, port: str, kind: str, text: str, obj: dict) -> None:
         if t < args.start:
@@ -68,18 +66,16 @@ def run(args: argparse.Namespace) -> int:
             return 0  # a reply cut by the window is not garbage: no flush
         if control is not None:
             control.wait_until(rec.t, never)
-        last_t = rec.t
         if rec.kind == "rx":
-            parser = parsers.setdefault(rec.port, FramedParser())  # both framings
-            for ev in parser.feed(rec.data):
-                emit(rec.t, rec.port, "<", describe_event(ev), event_json(ev))
+            for t, ev in decoders.setdefault(rec.port, PortDecoder()).feed(rec.t, rec.data):
+                emit(t, rec.port, "<", describe_event(ev), event_json(ev))
         elif rec.kind == "tx" and not args.no_tx:
             emit(rec.t, rec.port, ">", describe_tx(rec.data),
                  {"kind": "tx", "decoded": describe_tx(rec.data), "raw": rec.data.hex()})
         elif rec.kind in ("state", "note"):
             emit(rec.t, rec.port, "!" if rec.kind == "state" else "#", rec.text,
                  {"kind": rec.kind, "text": rec.text})
-    for port, parser in parsers.items():
-        for ev in parser.flush():
-            emit(last_t, port, "<", describe_event(ev), event_json(ev))
+    for port, decoder in decoders.items():
+        for t, ev in decoder.flush():
+            emit(t, port, "<", describe_event(ev), event_json(ev))
     return 0

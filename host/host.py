@@ -60,13 +60,46 @@ _RESTARTS = {
 __all__ = ["DEBUG", "IR", "Host", "Listener", "Observed"]
 
 
+class PortDecoder:
+    """One port's received bytes to events, live and in a replay alike. The
+    parser holds a half reply (and garbage, until the next reply) back:
+    after ``QUIET_FLUSH_S`` of quiet nothing more is coming to complete it,
+    and what it held comes out stamped at the end of that quiet second (so
+    a replay, which knows when the next bytes came, shows what the live
+    session showed, at the same time)."""
+
+    def __init__(self) -> None:
+        self.parser = FramedParser()  # legacy replies and MAVLink frames alike
+        self._last_rx = 0.0
+        self._unflushed = False
+
+    def feed(self, t: float, data: bytes) -> list[tuple[float, Event]]:
+        """Bytes received at ``t``: what was held back and went quiet before
+        them, then the events they complete."""
+        held = self.quiet(t)
+        self._last_rx = t
+        self._unflushed = True
+        return held + [(t, ev) for ev in self.parser.feed(data)]
+
+    def quiet(self, now: float) -> list[tuple[float, Event]]:
+        """What the parser held, when nothing came for ``QUIET_FLUSH_S`` before ``now``."""
+        if not self._unflushed or now - self._last_rx <= QUIET_FLUSH_S:
+            return []
+        self._unflushed = False
+        stamp = self._last_rx + QUIET_FLUSH_S
+        return [(stamp, ev) for ev in self.parser.flush()]
+
+    def flush(self) -> list[tuple[float, Event]]:
+        """Everything held, now (the end of a replay), stamped with the last bytes' time."""
+        self._unflushed = False
+        return [(self._last_rx, ev) for ev in self.parser.flush()]
+
+
 class Channel:
     def __init__(self, host: Host, name: str, settings: PortSettings, retry_s: float) -> None:
         self.host = host
         self.name = name
-        self.parser = FramedParser()  # legacy replies and MAVLink frames alike
-        self._last_rx = 0.0
-        self._unflushed = False
+        self.decoder = PortDecoder()
         self.link = Link(settings, self._on_data, self._on_state, self._on_idle, retry_s=retry_s)
 
     @property
@@ -74,20 +107,12 @@ class Channel:
         return self.link.settings
 
     def _on_data(self, data: bytes) -> None:
-        t = self.host.received(self.name, data)
-        self._last_rx = t
-        self._unflushed = True
-        for ev in self.parser.feed(data):
+        for t, ev in self.decoder.feed(self.host.received(self.name, data), data):
             self.host.observe(t, self.name, ev)
 
     def _on_idle(self) -> None:
-        # The parser holds a half reply (and garbage, until the next reply)
-        # back: after a quiet second, nothing more is coming to complete it.
-        t = self.host.elapsed()
-        if self._unflushed and t - self._last_rx > QUIET_FLUSH_S:
-            self._unflushed = False
-            for ev in self.parser.flush():
-                self.host.observe(t, self.name, ev)
+        for t, ev in self.decoder.quiet(self.host.elapsed()):
+            self.host.observe(t, self.name, ev)
 
     def _on_state(self, state: LinkState, detail: str) -> None:
         self.host.link_state(self.name, state, detail)
@@ -279,20 +304,19 @@ class Host:
         listeners. Nothing is written to a port. ``control`` paces it
         (speed, pause, seek); without, as fast as it goes. Returns records
         played."""
-        parsers: dict[str, FramedParser] = {}
-        n, last = 0, 0.0
+        decoders: dict[str, PortDecoder] = {}
+        n = 0
         stop = cancel or threading.Event()
         for rec in records:
             if stop.is_set():
                 break
             if control is not None and not control.wait_until(rec.t, stop):
                 break
-            last = rec.t
             n += 1
             if rec.kind == "rx":
                 self._notify(Traffic(rec.port, TrafficDirection.RX, rec.t, rec.data))
-                for ev in parsers.setdefault(rec.port, FramedParser()).feed(rec.data):
-                    self.observe(rec.t, rec.port, ev)
+                for t, ev in decoders.setdefault(rec.port, PortDecoder()).feed(rec.t, rec.data):
+                    self.observe(t, rec.port, ev)
             elif rec.kind == "tx":
                 self._notify(Traffic(rec.port, TrafficDirection.TX, rec.t, rec.data))
             elif rec.kind == "state":
@@ -302,9 +326,9 @@ class Host:
                 except ValueError:
                     continue
                 self._notify(PortChanged(rec.port, state, detail, rec.t))
-        for port, parser in parsers.items():
-            for ev in parser.flush():
-                self.observe(last, port, ev)
+        for port, decoder in decoders.items():
+            for t, ev in decoder.flush():
+                self.observe(t, port, ev)
         return n
 
     # --- sending ------------------------------------------------------------

@@ -80,6 +80,24 @@ def test_capture_round_trip_and_errors(tmp_path):
     (tmp_path / "x.hbcap").write_text("hello\n")
     with pytest.raises(ScenarioError, match="not a hexbot capture"):
         list(read_capture(tmp_path / "x.hbcap"))
+    # a paced replay would wait for ever on a time that is not a number
+    for stamp in ("nan", "inf", "-1.0"):
+        (tmp_path / "t.hbcap").write_text(f"# hexbot-capture 1\n{stamp} ir rx 41\n1.0 ir rx 42\n")
+        with pytest.raises(ScenarioError, match=rf"t.hbcap:2: bad time stamp '{stamp}'"):
+            list(read_capture(tmp_path / "t.hbcap"))
+
+
+def test_a_capture_cut_in_the_middle_of_a_character_keeps_its_records(tmp_path):
+    note = "0.000 host note simulator scenario /home/u/r\u00e9glage.toml\n".encode()
+    good = b"# hexbot-capture 1\n" + note + b"0.100 ir rx 4d30313a2041434b450a0d\n"
+    cut = tmp_path / "cut.hbcap"
+    cut.write_bytes(good + note[:45])  # the writer killed inside the two bytes of the e-acute
+    assert note[:45].endswith(b"\xc3")
+    records = list(read_capture(cut))
+    assert [r.kind for r in records] == ["note", "rx"]
+    cut.write_bytes(good.replace(b"0.100", b"0.1\xc3"))  # not the last line: still refused
+    with pytest.raises(ScenarioError, match="not UTF-8"):
+        list(read_capture(cut))
 
 
 def test_ack_after_report_names_the_placement():

@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import json
 import threading
 from pathlib import Path
 
@@ -82,3 +83,30 @@ def test_cli_paced_replay_prints_the_same_records(capsys):
 def test_cli_rejects_a_window_that_ends_before_it_starts(capsys):
     assert main(["replay", str(CAPTURE), "--from", "7", "--to", "6"]) == 2
     assert "--to 6 is before --from 7" in capsys.readouterr().err
+
+
+def test_a_reply_split_by_a_quiet_second_is_garbage_in_replays_as_it_was_live(tmp_path, capsys):
+    """Live, the parser gives up a half reply after a quiet second; the two
+    replays (the CLI's and the console's) must not join it to the next bytes
+    and invent an acknowledgement from module 2."""
+    from hexbot.host.capture import read_capture
+    from hexbot.host.host import Host
+    from hexbot.protocol.parser import Ack, Garbage
+
+    capture = tmp_path / "split.hbcap"
+    capture.write_text("# hexbot-capture 1\n"
+                       f"1.000 ir rx {b'M01: ACKE'.hex()}0a0d\n"
+                       f"2.500 ir rx {b'M0'.hex()}\n"
+                       f"4.500 ir rx {b'2: ACKE'.hex()}0a0d\n")
+    assert main(["replay", str(capture), "--json"]) == 0
+    rows = [json.loads(line) for line in capsys.readouterr().out.splitlines()]
+    assert [(r["t"], r["kind"]) for r in rows] == [
+        (1.0, "ack"), (3.5, "garbage"), (4.5, "garbage"), (4.5, "ack")]
+    assert rows[0]["module"] == 1 and rows[3].get("module") is None
+
+    seen = []
+    host = Host()
+    host.add_listener(lambda ev: seen.append(ev))
+    host.replay(read_capture(capture))
+    events = [(o.t, type(o.event)) for o in seen if hasattr(o, "event")]
+    assert events == [(1.0, Ack), (3.5, Garbage), (4.5, Garbage), (4.5, Ack)]
