@@ -694,10 +694,12 @@ async def test_escape_cancels_a_running_plan_and_claims_nothing(pair_args, tmp_p
         runs = [str(n.message) for n in app._notifications
                 if str(n.message).startswith("Execute plan")]
         assert runs == ["Execute plan: cancelled"], runs
-        # the last localization was cut short: its Localize went out, its Status never did
+        # the last localization was cut short (at its Localize, or at its Ref when a
+        # loaded machine reaches Escape sooner): its Status never went out
         await pilot.pause(1.0)
         sent = [line.split("> ", 1)[1] for line in ir_text(app).splitlines() if "> " in line]
-        assert sent[-2:] == ["Select(0)", "Localize()"] and sent.count("Status()") == 1, sent
+        assert sent[-2:] in (["Select(0)", "Localize()"], ["Select(1)", "Ref()"]), sent
+        assert sent.count("Status()") == 1, sent
 
 
 @sync
