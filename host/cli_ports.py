@@ -34,7 +34,8 @@ def running_simulators() -> list[dict]:
             continue  # gone, or not ours to look at
         if "sim" not in words or "--pty" not in words or not any("hexbot" in w for w in words):
             continue
-        ptys = [target for _, target in fds if target.startswith("/dev/pts/")]
+        # fds 0-2 are the terminal it runs in (`hexbot sim pair --pty &`), not its ports
+        ptys = [target for fd, target in fds if fd > 2 and target.startswith("/dev/pts/")]
         found.append({"pid": int(proc.name), "command": " ".join(words), "ptys": ptys})
     return sorted(found, key=lambda s: s["pid"])
 

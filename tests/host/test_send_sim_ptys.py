@@ -108,3 +108,30 @@ def test_monitor_on_the_embedded_simulator_starts_with_the_boot_texts():
     ir = [r for r in rows if r["port"] == "ir"]
     assert ir[0]["kind"] == "text" and ir[0]["phrase"] == "COMM. BOARD READY"
     assert not any(r["kind"] == "garbage" for r in rows[:3])
+
+
+def test_ports_does_not_take_the_terminal_of_a_sim_run_in_it_for_its_ir_port():
+    """``hexbot sim pair --pty &`` in a terminal holds that terminal's pty as
+    its stdin, stdout and stderr; ``ports`` listed it first, as the IR port."""
+    import os
+    import select
+
+    master, terminal = os.openpty()
+    proc = subprocess.Popen([sys.executable, "-m", "hexbot.cli", "sim", "single", "--pty",
+                             "--speed", "0"], stdin=terminal, stdout=terminal, stderr=terminal)
+    os.close(terminal)
+    try:
+        text = b""
+        while b'"ir"' not in text or not text.rstrip().endswith(b"}"):
+            ready, _, _ = select.select([master], [], [], 60)
+            assert ready, text
+            text += os.read(master, 4096)
+        line = next(line for line in text.decode().splitlines() if '"ir"' in line)
+        ir = json.loads(line[line.index("{"):])["ir"]
+        listed = json.loads(hexbot("ports", "--json").stdout)
+        (mine,) = [s for s in listed["running"] if s["pid"] == proc.pid]
+        assert mine["ptys"][0] == ir, (mine, ir)
+    finally:
+        proc.terminate()
+        proc.wait(30)
+        os.close(master)
