@@ -38,6 +38,9 @@ _PORT_LOST = ("input/output error", "ser_send(): write error", "ser_recv(): read
 
 _WRITTEN = re.compile(r"(\d+) bytes? of (\w+) written")
 _VERIFIED = re.compile(r"(\d+) bytes? of (\w+) verified")
+_VERIFYING = re.compile(r"verifying (\w+) memory")
+_MISMATCH = re.compile(r"device (0x[0-9a-fA-F]+) != input (0x[0-9a-fA-F]+)")
+_PREFIX = re.compile(r"^avrdude(?: OS)?(?: \S+\(\))?(?: (?:error|warning))?: ")
 _PROBABLY = re.compile(r"device signature = 0x([0-9a-fA-F]{6})(?: \(probably (\S+)\))?")
 
 
@@ -62,14 +65,14 @@ class WriteReport:
 def explain(stderr: str, port: str, programmer: str) -> str:
     """avrdude's error lines, cleaned up, plus the likely cause."""
     lines = [ln.strip() for ln in stderr.splitlines()]
-    errors = [re.sub(r"^avrdude(?: OS)?(?: \S+\(\))? error: ", "", ln)
-              for ln in lines if re.match(r"^avrdude.* error:", ln)]
-    errors += [ln for ln in lines if "verification error" in ln or "mismatch" in ln]
+    errors = [_PREFIX.sub("", ln) for ln in lines if re.match(r"^avrdude.* (?:error|warning):", ln)]
+    errors += [_PREFIX.sub("", ln) for ln in lines if "verification error" in ln]
     # avrdude 6.x has no "error:" prefix and ends with a blank line: take
     # the last line that says something
     said = [re.sub(r"^avrdude(?: OS)?: ", "", ln) for ln in lines if ln and ln != _DONE]
     text = "; ".join(dict.fromkeys(errors)) or (said[-1] if said else "no output")
     low = stderr.lower()
+    mismatch = _MISMATCH.search(stderr)
     if port_missing(stderr):
         hint = (f"is the programmer plugged in at {port}, and may you open it "
                 "(group dialout)?")
@@ -79,11 +82,26 @@ def explain(stderr: str, port: str, programmer: str) -> str:
                 "programmer powers the module (thesis 3.4.6)")
     elif "timeout" in low or "getsync" in low or "not in sync" in low:
         hint = f"no {programmer} programmer answered on {port}"
-    elif "verification error" in low or "mismatch" in low:
-        hint = "the chip does not hold what was written (lock bits set? worn flash?)"
+    elif mismatch or "verification error" in low:
+        memory = verifying(stderr) or "flash"
+        found = (f"the {memory} reads back {mismatch.group(1)}, not {mismatch.group(2)}"
+                 if mismatch else f"the {memory} does not hold what was written")
+        hint = found + (" (lock bits set? worn flash?)" if memory == "flash" else
+                        ": some fuse bits cannot be changed over ISP (SPIEN), or lock bits "
+                        "block the write")
     else:
         hint = ""
     return f"avrdude failed: {text}" + (f" ({hint})" if hint else "")
+
+
+def verifying(stderr: str) -> str | None:
+    """The memory avrdude was verifying last (``verifying hfuse memory against ...``)."""
+    found = _VERIFYING.findall(stderr)
+    return found[-1] if found else None
+
+
+def _flash_verified(stderr: str) -> bool:
+    return any(m.group(2) == "flash" for m in _VERIFIED.finditer(stderr))
 
 
 def port_missing(stderr: str) -> bool:
@@ -175,6 +193,8 @@ class Avrdude:
                 f"programmer answered on {self.port}?{note}")
         proc = subprocess.CompletedProcess(cmd, popen.returncode, stdout, stderr)
         if proc.returncode != 0:
+            if verifying(stderr) not in (None, "flash") and _flash_verified(stderr):
+                note = "; the flash was written and verified before"  # a fuse failed
             text = explain(stderr, self.port, self.programmer) + note
             if port_missing(stderr) or port_lost(stderr):
                 raise LinkUnavailableError(text)
@@ -190,7 +210,12 @@ class Avrdude:
             for name in names:
                 ops += ["-U", f"{name}:r:{Path(tmp, name)}:r"]
             proc = self.run(["-F", *ops], PROBE_TIMEOUT_S)
-            values = {name: Path(tmp, name).read_bytes() for name in names}
+            try:
+                values = {name: Path(tmp, name).read_bytes() for name in names}
+            except OSError as exc:
+                raise FlashingError(
+                    f"avrdude ({self.executable}) ended without reading the device: "
+                    f"no {Path(exc.filename or '?').name} came back") from exc
         if len(values["signature"]) != 3 or any(len(values[n]) != 1 for n in names[1:]):
             raise FlashingError(f"avrdude returned incomplete device data: {values}")
         match = _PROBABLY.search(proc.stderr)

@@ -12,6 +12,7 @@ verify flash, and the fuses when asked.
 from __future__ import annotations
 
 import argparse
+import re
 import shlex
 from pathlib import Path
 
@@ -29,7 +30,9 @@ DEFAULT_BUILD = REPO_ROOT / "firmware" / "build"
 PROGRAMMER = "stk500v2"
 #: options of one board that --all sets itself (every simulated board has an
 #: STK500v2 pty and its image is <build dir>/<board>.hex)
-NOT_WITH_ALL = ("image", "programmer", "baud", "bitclock")
+NOT_WITH_ALL = ("image", "programmer", "baud", "bitclock", "port", "board")
+#: options that only --all reads
+ONLY_WITH_ALL = ("scenario", "firmware_version")
 
 
 def _byte(text: str) -> int:
@@ -40,6 +43,15 @@ def _byte(text: str) -> int:
     if not 0 <= value <= 0xFF:
         raise argparse.ArgumentTypeError(f"{text} does not fit in one byte")
     return value
+
+
+def firmware_version(text: str) -> str:
+    """A version for ``make VERSION=``: it goes into a C string and the boot
+    text (`` FW=...``), which the flasher reads back up to the first space."""
+    if not re.fullmatch(r"[0-9A-Za-z._+~-]+", text):
+        raise argparse.ArgumentTypeError(
+            f"{text!r}: use letters, digits and . _ + ~ - (no spaces or quotes)")
+    return text
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -66,7 +78,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--all", action="store_true",
                         help="rebuild the firmware and reflash every board of a simulated cluster")
     parser.add_argument("--scenario", help="simulator scenario for --all")
-    parser.add_argument("--firmware-version", help="with --all: make -C firmware VERSION=...")
+    parser.add_argument("--firmware-version", type=firmware_version,
+                        help="with --all: make -C firmware VERSION=...")
     parser.add_argument("--build-dir", type=Path, default=DEFAULT_BUILD,
                         help="where the images are (and, with --all, are built); "
                         "default firmware/build")
@@ -107,22 +120,23 @@ def check_device(signature: bytes, part_guess: str | None, port: str) -> None:
             "the programming jumper and the module's power")
     what = f" ({part_guess})" if part_guess else ""
     raise FlashingError(
-        f"the device on {port} has signature {sig}{what}, not an ATmega162 (1E 94 04); "
+        f"the device on {port} has signature {sig}{what}, not an ATmega162 "
+        f"({wire.SIGNATURE.hex(' ').upper()}); "
         "refusing to flash it, nothing was written")
 
 
 def flash_board(args: argparse.Namespace, say=print) -> int:
     if not args.board and not args.image:
-        raise FlashingError("give --board comm|control (or --image FILE), or --all --scenario")
+        raise UsageError("give --board comm|control (or --image FILE), or --all --scenario")
     if not args.port:
-        raise FlashingError("give --port: the programmer's serial port")
+        raise UsageError("give --port: the programmer's serial port")
     image = args.image or Path(getattr(args, "build_dir", DEFAULT_BUILD)) / f"{args.board}.hex"
     if not image.exists():
         raise FlashingError(f"{image}: no such image (build it: make -C firmware)")
     hexfile = read_hex(image, limit=FLASH_BYTES)
     label = f"{args.board} board" if args.board else "board"
     say(f"image {image}: {hexfile.used} bytes "
-        f"({100 * hexfile.size / FLASH_BYTES:.0f} % of the 16 KiB flash)")
+        f"({100 * hexfile.size / FLASH_BYTES:.0f} % of the {FLASH_BYTES // 1024} KiB flash)")
     fuses = requested_fuses(args)
     if fuses is not None:
         guard_fuses(fuses, args.force, say)  # before touching the device at all
@@ -161,6 +175,11 @@ def run(args: argparse.Namespace) -> int:
                              "simulated board with <build dir>/<board>.hex through its "
                              "STK500v2 pty)")
         if not args.scenario:
-            raise FlashingError("--all needs --scenario NAME (a simulated cluster)")
+            raise UsageError("--all needs --scenario NAME (a simulated cluster)")
         return flash_all(args)
+    given = [f"--{name.replace('_', '-')}" for name in ONLY_WITH_ALL
+             if getattr(args, name, None) is not None]
+    if given:
+        raise UsageError(f"{', '.join(given)} only go with --all (one board is flashed "
+                         "with the image given, as it is)")
     return flash_board(args)

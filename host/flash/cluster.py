@@ -11,7 +11,7 @@ import re
 import subprocess
 from pathlib import Path
 
-from hexbot.errors import FlashingError
+from hexbot.errors import FlashingError, LinkUnavailableError, ScenarioError
 from hexbot.host.flash.cli import DEFAULT_BUILD, REPO_ROOT, flash_board
 from hexbot.protocol import timing, wire
 
@@ -59,7 +59,11 @@ def build_firmware(version: str | None, build_dir: Path, say=print) -> None:
     if version:
         cmd.append(f"VERSION={version}")
     say("building: " + " ".join(cmd))
-    proc = subprocess.run(cmd, capture_output=True, text=True)
+    try:
+        proc = subprocess.run(cmd, capture_output=True, text=True)
+    except OSError as exc:
+        raise FlashingError(f"cannot run make: {exc.strerror or exc} (sudo apt-get install "
+                            "make gcc-avr avr-libc)") from exc
     if proc.returncode != 0:
         tail = "\n".join((proc.stdout + proc.stderr).strip().splitlines()[-15:])
         raise FlashingError(f"firmware build failed (make exit {proc.returncode}):\n{tail}")
@@ -68,11 +72,16 @@ def build_firmware(version: str | None, build_dir: Path, say=print) -> None:
 def flash_all(args: argparse.Namespace, say=print) -> int:
     from hexbot.hil_sim import Simulator
     from hexbot.hil_sim.isp.cluster import open_simulator_isp
+    from hexbot.hil_sim.scenario import load_scenario
 
+    try:  # before the build: a bad name costs no rebuild
+        scenario = load_scenario(args.scenario)
+    except (ScenarioError, OSError) as exc:
+        raise LinkUnavailableError(f"cannot start scenario {args.scenario!r}: {exc}") from exc
     if not args.dry_run:
         build_firmware(args.firmware_version, args.build_dir, say)
     try:
-        sim = Simulator.from_name(args.scenario)
+        sim = Simulator(scenario)
     except OSError as exc:  # a scenario image missing or unreadable
         raise FlashingError(f"cannot start scenario {args.scenario!r}: {exc}") from exc
     isp = open_simulator_isp(sim)

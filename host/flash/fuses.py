@@ -17,13 +17,16 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from hexbot.protocol import wire
+from hexbot.protocol import pins, wire
 
 HFUSE_JTAGEN = 0x40
 HFUSE_SPIEN = 0x20
 HFUSE_WDTON = 0x10
 EFUSE_M161C = 0x10
 CKSEL_INTERNAL_RC = 0b0010
+LFUSE_CKDIV8 = 0x80  # programmed (0): the 8 MHz RC clock divided by 8, Table 3-6's 1 MHz
+LFUSE_CKOUT = 0x40  # programmed (0): the system clock drives CLOCK_OUT_PIN
+CLOCK_OUT_PIN = ("B", 0)  # ATmega162 datasheet, "Clock Output Buffer"
 
 CLOCK_SOURCES = {
     0b0000: "an external clock on XTAL1",
@@ -105,13 +108,27 @@ def check_fuses(fuses: FuseSet) -> list[FuseProblem]:
     return problems
 
 
+def _clock_out_warning() -> str:
+    port, bit = CLOCK_OUT_PIN
+    used = [f"the control board's electromagnet {i + 1} ({sign}) pin"
+            for sign, pins_ in (("+", pins.MAGNET_POS_PINS), ("-", pins.MAGNET_NEG_PINS))
+            for i, pin in enumerate(pins_) if pin == CLOCK_OUT_PIN]
+    return (f"CKOUT puts the clock on P{port}{bit}" + (f", {used[0]}" if used else ""))
+
+
 def fuse_notes(fuses: FuseSet) -> list[str]:
     """Harmless but noteworthy differences from Table 3-6."""
     notes = []
-    if fuses.lfuse != TABLE_3_6.lfuse and fuses.lfuse & 0x0F == CKSEL_INTERNAL_RC:
+    changed = fuses.lfuse ^ TABLE_3_6.lfuse
+    if fuses.lfuse & 0x0F == CKSEL_INTERNAL_RC and changed & LFUSE_CKDIV8:
         notes.append(f"low fuse 0x{fuses.lfuse:02X} is not Table 3-6's 0x{wire.FUSE_LOW:02X}: "
-                     "the clock would not be 1 MHz, so the firmware's baud rates and 10 ms "
-                     "tick would be off")
+                     "its CKDIV8 bit differs, so the clock would not be 1 MHz and the "
+                     "firmware's baud rates and 10 ms tick would be off")
+    elif fuses.lfuse & 0x0F == CKSEL_INTERNAL_RC and changed:
+        notes.append(f"low fuse 0x{fuses.lfuse:02X} is not Table 3-6's 0x{wire.FUSE_LOW:02X} "
+                     "in its start-up time (SUT) or clock output (CKOUT) bits only: the "
+                     "clock stays 1 MHz"
+                     + (f"; {_clock_out_warning()}" if not fuses.lfuse & LFUSE_CKOUT else ""))
     if not fuses.hfuse & HFUSE_WDTON:
         notes.append("WDTON is programmed: the watchdog is always on")
     return notes

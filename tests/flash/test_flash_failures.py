@@ -96,7 +96,8 @@ def test_a_baud_rate_must_be_a_positive_whole_number(hexbot_flash, baud, capsys)
 
 
 @pytest.mark.parametrize(("option", "value"), [("--image", "x.hex"), ("--programmer", "avrisp2"),
-                                               ("--baud", "115200"), ("--bitclock", "10")])
+                                               ("--baud", "115200"), ("--bitclock", "10"),
+                                               ("--port", "/dev/ttyUSB0"), ("--board", "comm")])
 def test_all_refuses_options_it_would_ignore(hexbot_flash, option, value):
     result = hexbot_flash("--all", "--scenario", "pair", "--dry-run", option, value)
     assert result.code == 2
@@ -111,3 +112,69 @@ def test_boards_that_do_not_boot_the_flashed_version_are_named():
         "1 (no COMM. LISTENING with its id)", "3 (booted FW=old)"]
     assert not_booted([1, 2], "COMM. LISTENING ID=01 FW=v COMM. LISTENING ID=02 FW=v",
                       "v") == []
+
+
+@pytest.mark.parametrize(("argv", "words"), [
+    ((), "give --board comm|control"),
+    (("--board", "control"), "give --port"),
+    (("--all",), "--all needs --scenario"),
+    (("--board", "control", "--port", "/dev/pts/0", "--scenario", "pair", "--dry-run"),
+     "--scenario only go with --all"),
+    (("--board", "control", "--port", "/dev/pts/0", "--firmware-version", "9.9.9",
+      "--dry-run"), "--firmware-version only go with --all"),
+])
+def test_missing_or_misplaced_options_are_usage_errors(hexbot_flash, argv, words):
+    """Exit 2 before any work, as docs/console.md says; options a board flash
+    does not read are refused, not dropped (the user would think 9.9.9 went on)."""
+    result = hexbot_flash(*argv)
+    assert result.code == 2, result.err
+    assert words in result.err
+
+
+def test_a_version_the_boot_text_cannot_carry_is_a_usage_error(hexbot_flash, capsys):
+    with pytest.raises(SystemExit) as exit_:
+        hexbot_flash("--all", "--scenario", "single", "--firmware-version", "1.0 beta")
+    assert exit_.value.code == 2
+    assert "no spaces or quotes" in capsys.readouterr().err
+
+
+def test_an_unknown_scenario_is_refused_before_the_firmware_is_rebuilt(hexbot_flash):
+    result = hexbot_flash("--all", "--scenario", "nosuch")
+    assert result.code == 4 and "unknown scenario 'nosuch'" in result.err
+    assert "building:" not in result.out
+
+
+def test_a_missing_make_is_named_not_a_traceback(hexbot_flash, monkeypatch, tmp_path):
+    monkeypatch.setenv("PATH", str(tmp_path))  # nothing to run here
+    result = hexbot_flash("--all", "--scenario", "single")
+    assert result.code == 1
+    assert "cannot run make" in result.err and "apt-get install make" in result.err
+
+
+def test_an_avrdude_that_reads_nothing_back_is_a_reason_not_a_traceback(hexbot_flash, images,
+                                                                        tmp_path):
+    _, hexfile = images("1.2.3")
+    result = hexbot_flash("--image", str(hexfile), "--port", "/dev/ttyUSB0",
+                          "--avrdude", str(fake_avrdude(tmp_path, "", status=0)))
+    assert result.code == 1
+    assert "ended without reading the device: no signature came back" in result.err
+
+
+AVRDUDE_71_FUSE_MISMATCH = (
+    "avrdude: verifying hfuse memory against 0xF9\n"
+    "avrdude warning: verification mismatch\n"
+    "        device 0xd9 != input 0xf9 at addr 0x0000 (error)\n"
+    "avrdude error: verification mismatch\n\navrdude done.  Thank you.\n")
+
+
+def test_a_fuse_that_does_not_read_back_is_named_with_both_values():
+    text = explain("avrdude: 4118 bytes of flash verified\n" + AVRDUDE_71_FUSE_MISMATCH,
+                   "/dev/pts/0", "stk500v2")
+    assert text == ("avrdude failed: verification mismatch (the hfuse reads back 0xd9, not "
+                    "0xf9: some fuse bits cannot be changed over ISP (SPIEN), or lock bits "
+                    "block the write)")
+    flash = explain("avrdude: verifying flash memory against x.hex\n"
+                    "avrdude error: verification mismatch\n"
+                    "        device 0xff != input 0x0c at addr 0x0000 (error)\n",
+                    "/dev/pts/0", "stk500v2")
+    assert "the flash reads back 0xff, not 0x0c (lock bits set? worn flash?)" in flash

@@ -35,7 +35,15 @@ def test_each_danger_is_named(fuses, words, lockout):
 
 def test_other_internal_rc_speed_is_only_a_note():
     assert check_fuses(FuseSet(lfuse=0xE2)) == []
-    assert "1 MHz" in fuse_notes(FuseSet(lfuse=0xE2))[0]
+    assert "the clock would not be 1 MHz" in fuse_notes(FuseSet(lfuse=0xE2))[0]  # CKDIV8
+
+
+def test_start_up_time_and_clock_output_keep_the_clock():
+    (sut,) = fuse_notes(FuseSet(lfuse=0x42))
+    assert "the clock stays 1 MHz" in sut and "PB0" not in sut
+    (ckout,) = fuse_notes(FuseSet(lfuse=0x22))
+    assert ckout.endswith("CKOUT puts the clock on PB0, the control board's electromagnet 1 "
+                          "(+) pin")
 
 
 def write(tmp_path, text: str):
