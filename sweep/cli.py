@@ -25,6 +25,24 @@ REPORT = "report"
 RUN_OPTIONS = ("out", "resume", "scheduler", "workers", "check", "no_progress")
 
 
+def scheduler_address(text: str) -> str:
+    """A Dask scheduler's address (``tcp://HOST:PORT``), checked before anything
+    runs: a scheme Dask has no transport for or a missing port is a usage error."""
+    from distributed.comm.addressing import parse_address, parse_host_port
+    from distributed.comm.registry import backends
+
+    try:
+        scheme, location = parse_address(text)
+        if scheme not in backends:
+            known = ", ".join(sorted(backends))
+            raise ValueError(f"unknown scheme {scheme!r} (Dask knows {known})")
+        if scheme != "inproc":
+            parse_host_port(location)
+    except ValueError as exc:
+        raise argparse.ArgumentTypeError(f"{text!r}: {exc}") from None
+    return text
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.formatter_class = argparse.RawDescriptionHelpFormatter
     parser.epilog = __doc__.split("\n\n", 1)[1]
@@ -37,7 +55,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                      "else SPEC-NAME.results in the current folder)")
     run.add_argument("--resume", action="store_true",
                      help="keep the folder's rows and run only the missing tasks")
-    run.add_argument("--scheduler", metavar="tcp://HOST:8786",
+    run.add_argument("--scheduler", metavar="tcp://HOST:8786", type=scheduler_address,
                      help="a running Dask scheduler (default: an embedded local cluster)")
     run.add_argument("--workers", type=count, metavar="N",
                      help="embedded cluster: worker processes (default: one per core)")
@@ -96,16 +114,18 @@ def _run(args: argparse.Namespace) -> int:
                             on_start=bar.on_start, on_result=bar.on_result)
     _write_junit(spec.kind.name, out)
     done = outcome.skipped + outcome.stored
+    failed = outcome.failed + outcome.failed_before  # a --resume does not wash them out
+    before = f" ({outcome.failed_before} stored before this run)" if outcome.failed_before else ""
     print(f"{out}: {done} of {outcome.total} tasks stored ({outcome.stored} by this run, "
-          f"{outcome.seconds:.1f} s), {outcome.failed} failed", file=sys.stderr)
+          f"{outcome.seconds:.1f} s), {failed} failed{before}", file=sys.stderr)
     if outcome.interrupted:
         raise CancelledError(f"interrupted: {outcome.missing} tasks not run; "
                              f"add --resume to run only them")
     if outcome.lost:
         raise HexBotError(f"{outcome.lost} tasks lost ({outcome.lost_reason}); "
                           "--resume runs them again")
-    if outcome.failed:
-        print(f"{outcome.failed} tasks failed: hexbot sweep report {out}", file=sys.stderr)
+    if failed:
+        print(f"{failed} tasks failed: hexbot sweep report {out}", file=sys.stderr)
         return 1
     return 0
 

@@ -53,6 +53,7 @@ class SweepOutcome:
     interrupted: bool
     seconds: float
     lost_reason: str = ""
+    failed_before: int = 0  # rows already stored (--resume) whose outcome was not ok
 
     @property
     def missing(self) -> int:
@@ -99,9 +100,9 @@ def connect(scheduler: str | None = None, workers: int | None = None) -> Iterato
     if scheduler:
         try:
             client = Client(scheduler, timeout="10s")
-        except (OSError, TimeoutError) as exc:
-            raise LinkUnavailableError(f"cannot reach the Dask scheduler {scheduler}: {exc}") \
-                from exc
+        except Exception as exc:  # noqa: BLE001 - a port that is not a scheduler fails oddly
+            raise LinkUnavailableError(f"cannot reach the Dask scheduler {scheduler}: "
+                                       f"{type(exc).__name__}: {exc}") from exc
         with client:
             yield client
         return
@@ -127,6 +128,11 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
     store.order = {t.id: i for i, t in enumerate(tasks)}
     existing = store.existing()
     done = set(existing.column("task").to_pylist()) if existing is not None else set()
+    ids = {t.id for t in tasks}
+    failed_before = 0 if existing is None else sum(
+        task in ids and result != "ok" for task, result in
+        zip(existing.column("task").to_pylist(), existing.column("outcome").to_pylist(),
+            strict=True))
     if done and not resume:
         raise HexBotError(f"{store.folder} already holds {len(done)} rows: --resume runs "
                           "only what is missing (or choose another --out)")
@@ -136,7 +142,8 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
         on_start(len(tasks), skipped)
     if window is None:
         window = max(32, 8 * sum(client.nthreads().values()))
-    outcome = SweepOutcome(len(tasks), skipped, 0, 0, 0, False, 0.0)
+    outcome = SweepOutcome(len(tasks), skipped, 0, 0, 0, False, 0.0,
+                           failed_before=failed_before)
     in_flight: dict[str, tuple[Task, Any]] = {}
     finished = as_completed()
     # Keys unique to this run: the scheduler forgets a cancelled key

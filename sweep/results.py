@@ -181,13 +181,16 @@ class ResultStore:
         os.replace(tmp, final)
 
 
+_UNFIT = (pa.ArrowInvalid, pa.ArrowTypeError, pa.ArrowNotImplementedError)
+
+
 def rows_table(rows: list[dict[str, Any]]) -> pa.Table:
     """The rows as an Arrow table; a column whose values Arrow cannot hold in
     one type (a figure that is a number for some tasks, text for others) is
     stored as text rather than losing every row."""
     try:
         return pa.Table.from_pylist(rows)
-    except (pa.ArrowInvalid, pa.ArrowTypeError, pa.ArrowNotImplementedError):
+    except (*_UNFIT, OverflowError):
         pass
     names = list(dict.fromkeys(name for row in rows for name in row))
     columns = {}
@@ -195,7 +198,7 @@ def rows_table(rows: list[dict[str, Any]]) -> pa.Table:
         values = [row.get(name) for row in rows]
         try:
             columns[name] = pa.array(values)
-        except (pa.ArrowInvalid, pa.ArrowTypeError, pa.ArrowNotImplementedError):
+        except (*_UNFIT, OverflowError):  # OverflowError: an int beyond 64 bits
             columns[name] = pa.array([_as_text(v) for v in values], pa.string())
     return pa.table(columns)
 

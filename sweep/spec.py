@@ -176,7 +176,8 @@ def _size(raw: Any) -> int:
     if isinstance(raw, dict):
         bounds = [raw.get("start", 0), raw.get("stop"), raw.get("step", 1)]
         if all(isinstance(b, int) and not isinstance(b, bool) for b in bounds) and bounds[2] > 0:
-            return len(range(*bounds))
+            start, stop, step = bounds
+            return max(0, -(-(stop - start) // step))  # len(range()) overflows past 2**63
         return 0
     return 1
 

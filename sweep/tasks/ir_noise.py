@@ -15,11 +15,29 @@ from hexbot.sweep.kinds import Param
 
 TRIAL = "hexbot.bench.ir_noise"
 
+
+
+def _check_framing(value: str) -> None:
+    known = getattr(importlib.import_module(TRIAL), "FRAMINGS", None)
+    if known is not None and value not in known:
+        raise HexBotError(f"framing {value!r} is not one of {', '.join(known)}")
+
+
+def _check_ber(value: float) -> None:
+    if not 0.0 <= value <= 1.0:
+        raise HexBotError(f"a bit error rate is 0..1, got {value:g}")
+
+
+def _check_commands(value: int) -> None:
+    if value < 1:
+        raise HexBotError(f"a trial sends at least 1 command, got {value}")
+
+
 PARAMS = [
-    Param("framing", str, help="the link framing to test"),
-    Param("ber", float, help="bit error rate on the IR link"),
+    Param("framing", str, help="the link framing to test", check=_check_framing),
+    Param("ber", float, help="bit error rate on the IR link", check=_check_ber),
     Param("seed", int, 0, "noise seed"),
-    Param("commands", int, 100, "commands sent per trial"),
+    Param("commands", int, 100, "commands sent per trial", check=_check_commands),
 ]
 COUNT_BY = (("framing", "ber"), "outcome")
 
@@ -42,4 +60,7 @@ def ready() -> None:
 
 
 def run(framing: str, ber: float, seed: int, commands: int) -> dict:
-    return dict(_trial()(framing=framing, ber=ber, seed=seed, commands=commands))
+    figures = _trial()(framing=framing, ber=ber, seed=seed, commands=commands)
+    # the trial echoes its inputs; the table has them as the task's columns
+    return {key: value for key, value in figures.items()
+            if key not in {p.name for p in PARAMS}}

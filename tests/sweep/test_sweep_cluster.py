@@ -97,3 +97,15 @@ def test_an_existing_results_folder_needs_resume(write_spec, tmp_path, embedded_
 
             with pytest.raises(HexBotError, match="already holds 8 rows: --resume"):
                 run_sweep(spec, embedded_client, store)
+
+
+@pytest.mark.parametrize(("address", "words"), [
+    ("foo://x", "unknown scheme 'foo'"), ("tcp://127.0.0.1", "missing port number")])
+def test_a_malformed_scheduler_address_is_a_usage_error(write_spec, tmp_path, capsys,
+                                                        address, words):
+    with pytest.raises(SystemExit) as exit_:
+        main(["sweep", str(write_spec(SWEEP)), "--out", str(tmp_path / "o"),
+              "--scheduler", address])
+    assert exit_.value.code == 2
+    assert words in capsys.readouterr().err
+    assert not (tmp_path / "o").exists()

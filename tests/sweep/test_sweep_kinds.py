@@ -103,7 +103,7 @@ def _fake_trial_module(monkeypatch, trial=None) -> None:
     monkeypatch.setitem(sys.modules, "hexbot.bench.ir_noise", module)
 
 
-IR_NOISE = 'kind = "ir-noise"\n[grid]\nframing = ["plain", "crc"]\nber = [0, 0.01]\n' \
+IR_NOISE = 'kind = "ir-noise"\n[grid]\nframing = ["legacy", "mavlink"]\nber = [0, 0.01]\n' \
            'seed = [1, 2]\n'
 
 
@@ -117,6 +117,26 @@ def test_ir_noise_without_its_trial_stops_before_anything_runs(write_spec, monke
         load_spec(path)
 
 
+def test_ir_noise_runs_the_real_trial_and_checks_its_values_first(write_spec, tmp_path):
+    from distributed import Client
+
+    spec = ('kind = "ir-noise"\n[grid]\nframing = ["legacy", "mavlink"]\nber = 0.001\n'
+            'seed = 1\ncommands = 3\n')
+    with Client(processes=False, n_workers=1, threads_per_worker=1,
+                dashboard_address="127.0.0.1:0") as client:
+        rows = run_here(write_spec(spec), client, tmp_path / "out")
+    assert [(r["framing"], r["outcome"]) for r in rows] == [("legacy", "ok"), ("mavlink", "ok")]
+    assert all(r["executed"] + r["lost"] == 3 for r in rows)
+    for bad, words in ((("framing", '"bogus"'), "framing 'bogus' is not one of legacy, mavlink"),
+                       (("ber", "1.5"), "a bit error rate is 0..1, got 1.5"),
+                       (("commands", "0"), "a trial sends at least 1 command, got 0")):
+        values = {"framing": '"legacy"', "ber": "0.0", "commands": "3", **dict([bad])}
+        path = write_spec('kind = "ir-noise"\n[grid]\n'
+                          + "".join(f"{k} = {v}\n" for k, v in values.items()))
+        with pytest.raises(ScenarioError, match=words):
+            load_spec(path)
+
+
 def test_ir_noise_puts_the_trial_on_the_grid(write_spec, tmp_path, monkeypatch):
     from distributed import Client
 
@@ -124,21 +144,23 @@ def test_ir_noise_puts_the_trial_on_the_grid(write_spec, tmp_path, monkeypatch):
 
     def trial(framing: str, ber: float, seed: int, commands: int) -> dict:  # unit-test double
         calls.append((framing, ber, seed, commands))
-        return {"delivered": commands - int(ber * 100) * seed, "framing_ok": framing == "crc"}
+        return {"delivered": commands - int(ber * 100) * seed, "framing_ok": framing == "mavlink",
+                "framing": framing, "ber": ber}  # echoed inputs, as the real trial does
 
     _fake_trial_module(monkeypatch, trial)
     # threads in this process: the double is visible to the tasks
     with Client(processes=False, n_workers=1, threads_per_worker=2,
                 dashboard_address="127.0.0.1:0") as client:
         rows = run_here(write_spec(IR_NOISE), client, tmp_path / "out")
-    assert sorted(calls) == sorted((f, float(b), s, 100) for f in ("plain", "crc")
+    assert sorted(calls) == sorted((f, float(b), s, 100) for f in ("legacy", "mavlink")
                                    for b in (0, 0.01) for s in (1, 2))
+    assert {r["outcome"] for r in rows} == {"ok"}
     assert {(r["framing"], r["ber"], r["seed"]): r["delivered"] for r in rows}[
-        ("plain", 0.01, 2)] == 98
+        ("legacy", 0.01, 2)] == 98
     text = report(tmp_path / "out")
     assert ("| framing | ber | runs | ok | failed | error | mean delivered | mean seconds |"
             in text)
-    assert "| plain | 0.01 | 2 | 2 | 0 | 0 | 98.5 |" in text
+    assert "| legacy | 0.01 | 2 | 2 | 0 | 0 | 98.5 |" in text
 
 
 def test_a_dotted_path_kind_runs_any_pure_function(write_spec, tmp_path, embedded_client):

@@ -170,6 +170,36 @@ def test_a_column_of_mixed_types_is_stored_as_text_not_lost(tmp_path):
     assert table.column("note").to_pylist() == ["0", "1", "2", "s3", "4"]
 
 
+def test_an_integer_beyond_64_bits_is_stored_as_text_not_lost(tmp_path):
+    out = tmp_path / "out"
+    with ResultStore(out, "k", ["seed"], flush_rows=10) as store:
+        for s in range(4):
+            store.add({**_rows([s])[0], "v": 2 ** 70 if s == 2 else s})
+    assert read_table(out).column("v").to_pylist() == ["0", "1", str(2 ** 70), "3"]
+
+
+def test_a_resume_counts_the_failures_stored_before_it(write_spec, tmp_path):
+    """A CI job that always runs with --resume must not go green on a table of failures."""
+    spec = write_spec('kind = "hexbot.bench.sweep:noop"\n[grid]\nseed = [1, 2]\n')
+    out = tmp_path / "out"
+    argv = [str(HEXBOT), "sweep", str(spec), "--out", str(out), "--workers", "1",
+            "--no-progress"]
+    first = subprocess.run(argv, capture_output=True, text=True, timeout=300)
+    assert first.returncode == 0, first.stderr
+    table = read_table(out)  # make one stored row a failure, as a failed task leaves it
+    rows = table.to_pylist()
+    rows[0]["outcome"], rows[0]["error"] = "error", "RuntimeError: boom"
+    for part in part_files(out):
+        part.unlink()
+    with ResultStore(out, "hexbot.bench.sweep:noop", ["seed"], flush_rows=10) as store:
+        for row in rows:
+            store.add(row)
+    again = subprocess.run([*argv, "--resume"], capture_output=True, text=True, timeout=300)
+    assert again.returncode == 1, again.stderr
+    assert "2 of 2 tasks stored (0 by this run" in again.stderr
+    assert "1 failed (1 stored before this run)" in again.stderr
+
+
 def test_a_repeated_task_runs_once(write_spec, tmp_path, embedded_client):
     spec = load_spec(write_spec('kind = "hexbot.bench.sweep:noop"\n[grid]\n'
                                 'seed = [1, 2]\n'))

@@ -62,6 +62,9 @@ def test_task_ids_depend_on_the_parameters_only(write_spec):
      "seed: values of one type, please (this list mixes float, int, str"),
     ('kind = "locomotion"\n[grid]\nruleset = "salvador"\n'
      'seed = { start = 0, stop = 1000000000 }\n', 4, "seed: 1,000,000,000 values"),
+    ('kind = "locomotion"\n[grid]\nruleset = "salvador"\n'  # len(range()) overflowed
+     'seed = { start = -9000000000000000000, stop = 9000000000000000000 }\n', 4,
+     "seed: 18,000,000,000,000,000,000 values"),
     ('kind = "locomotion"\n[grid]\nruleset = "salvador"\nn = { start = 1, stop = 3000 }\n'
      'seed = { start = 0, stop = 3000 }\nround_limit = { start = 1, stop = 3000 }\n', 2,
      "the grid has 26,982,003,000 tasks (2,999 n x 3,000 seed x 2,999 round_limit)"),
