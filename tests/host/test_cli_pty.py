@@ -201,7 +201,6 @@ def test_monitor_exits_4_when_its_port_is_lost_and_not_back_at_the_end(log_dir, 
 
     def serve_once():
         conn, _ = server.accept()
-        conn.sendall(b"M01: ACKE\n\r")
         time.sleep(0.3)
         conn.close()
         server.close()  # reconnections are refused from now on
@@ -210,7 +209,6 @@ def test_monitor_exits_4_when_its_port_is_lost_and_not_back_at_the_end(log_dir, 
     rc = main(["monitor", "--duration", "2", "--retry", "0.2", "--port",
                f"socket://127.0.0.1:{port}"])
     out = capsys.readouterr()
-    assert "ACK 69" in out.out  # what came before the loss is still printed
     assert rc == 4, out.err
     assert out.err.strip().splitlines()[-1] == (
         "error: port lost and not back when the monitor ended: ir")
