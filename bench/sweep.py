@@ -22,6 +22,7 @@ import tempfile
 import time
 from pathlib import Path
 
+from hexbot.cli_args import count
 from hexbot.errors import HexBotError
 from hexbot.sweep.engine import connect, run_sweep
 from hexbot.sweep.results import ResultStore, read_table
@@ -45,8 +46,8 @@ def noop(seed: int) -> dict:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--tasks", type=int, default=40, help="locomotion tasks (40)")
-    parser.add_argument("--noop", type=int, default=200, help="empty tasks (200)")
+    parser.add_argument("--tasks", type=count, default=40, help="locomotion tasks (40)")
+    parser.add_argument("--noop", type=count, default=200, help="empty tasks (200)")
 
 
 def timed_sweep(folder: Path, text: str, workers: int) -> dict:

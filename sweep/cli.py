@@ -94,10 +94,10 @@ def _report(args: argparse.Namespace) -> int:
 def _run(args: argparse.Namespace) -> int:
     from hexbot.sweep.spec import load_spec
 
+    if args.workers is not None and args.scheduler:  # the command line before the file
+        raise UsageError("--workers is for the embedded cluster, not with --scheduler")
     spec = load_spec(args.target)  # every error of the file, before anything runs
     tasks = spec.tasks()
-    if args.workers is not None and args.scheduler:
-        raise UsageError("--workers is for the embedded cluster, not with --scheduler")
     out = args.out or spec.output or Path(f"{spec.path.stem}.results")
     _check_out(out, create=not args.check)
     if args.check:
@@ -108,7 +108,8 @@ def _run(args: argparse.Namespace) -> int:
     from hexbot.sweep.results import ResultStore
 
     with ResultStore(out, spec.kind.name, spec.param_names) as store, \
-            connect(args.scheduler, args.workers) as client, \
+            connect(args.scheduler, args.workers,
+                    on_wait=lambda note: print(note, file=sys.stderr)) as client, \
             SweepProgress(spec.path.name, not args.no_progress) as bar:
         outcome = run_sweep(spec, client, store, resume=args.resume,
                             on_start=bar.on_start, on_result=bar.on_result)

@@ -23,8 +23,11 @@ taken back.
 
 from __future__ import annotations
 
+import asyncio
 import logging
 import os
+import signal
+import threading
 import time
 import uuid
 from collections.abc import Callable, Iterator
@@ -41,6 +44,8 @@ from hexbot.sweep.summary import ENGINE_COLUMNS
 FAILURE = "failure"  # the figure a kind sets to fail its task, with the reason
 LOST = "lost"  # what the progress callback hears for a task that left no row
 RETRIES = 1  # a task lost with its worker runs again, alone, this many times
+CONNECT_SECONDS = 10.0  # to reach a --scheduler and hear its handshake
+WORKER_WAIT_SECONDS = 60.0  # for a first worker to join a --scheduler that has none
 
 
 @dataclass
@@ -92,26 +97,125 @@ def lost_reason(fut: Any, task: Task) -> str:
 
 
 @contextmanager
-def connect(scheduler: str | None = None, workers: int | None = None) -> Iterator[Any]:
+def connect(scheduler: str | None = None, workers: int | None = None,
+            worker_wait: float | None = None,
+            on_wait: Callable[[str], None] | None = None) -> Iterator[Any]:
     """A Dask client: on ``scheduler`` (``tcp://HOST:8786``), or on an embedded
-    LocalCluster of ``workers`` single-threaded processes (default: one per core)."""
+    LocalCluster of ``workers`` single-threaded processes (default: one per core).
+    A scheduler with no worker gets ``worker_wait`` seconds for a first one to
+    join (default :data:`WORKER_WAIT_SECONDS`; ``on_wait`` hears that it
+    waits), then the sweep gives up."""
     from distributed import Client, LocalCluster
 
     if scheduler:
+        _hear_handshake(scheduler)
         try:
-            client = Client(scheduler, timeout="10s")
+            client = Client(scheduler, timeout=f"{CONNECT_SECONDS}s")
         except Exception as exc:  # noqa: BLE001 - a port that is not a scheduler fails oddly
             raise LinkUnavailableError(f"cannot reach the Dask scheduler {scheduler}: "
                                        f"{type(exc).__name__}: {exc}") from exc
-        with client:
+        try:
+            _wait_for_a_worker(client, scheduler, worker_wait or WORKER_WAIT_SECONDS, on_wait)
             yield client
+        finally:
+            _close(client)
         return
-    # loopback only; the scheduler's HTTP server (dashboard) on a free port, never 8787
-    with LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
-                      processes=True, host="127.0.0.1", dashboard_address="127.0.0.1:0",
-                      preload=["hexbot.sweep.worker_setup"],
-                      silence_logs=logging.ERROR) as cluster, Client(cluster) as client:
-        yield client
+    # A terminal's Ctrl-C reaches the whole process group, also worker processes
+    # still importing Dask, which then die with a traceback each. A spawned
+    # process keeps an ignored SIGINT (not a blocked one, nor a handler), so the
+    # workers start while this process ignores it: a Ctrl-C in that second is
+    # not seen, the next one stops the sweep as usual.
+    restore = _ignore_sigint()
+    try:
+        # loopback only; the scheduler's HTTP server (dashboard) on a free port, never 8787
+        cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                               processes=True, host="127.0.0.1",
+                               dashboard_address="127.0.0.1:0",
+                               preload=["hexbot.sweep.worker_setup"],
+                               silence_logs=logging.ERROR)
+    except BaseException:
+        restore()
+        raise
+    with cluster:
+        restore()  # from here a Ctrl-C closes the cluster on its way out
+        with Client(cluster) as client:
+            yield client
+
+
+def _ignore_sigint() -> Callable[[], None]:
+    """Ignore SIGINT (in the main thread, where handlers live); returns the undo."""
+    if threading.current_thread() is not threading.main_thread():
+        return lambda: None
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN)
+    return lambda: signal.signal(signal.SIGINT, previous)
+
+
+def _hear_handshake(scheduler: str) -> None:
+    """Open one comm to ``scheduler`` and read its handshake, under a deadline.
+    Dask's own connect waits for the handshake without one, so a port that
+    accepts and stays silent (a dashboard's 8787, a stuck process) would hang
+    the sweep for ever."""
+    from distributed.comm import connect as open_comm
+
+    async def handshake() -> None:
+        comm = await open_comm(scheduler, timeout=CONNECT_SECONDS)
+        await comm.close()
+
+    try:
+        asyncio.run(asyncio.wait_for(handshake(), CONNECT_SECONDS))
+    except TimeoutError:
+        raise LinkUnavailableError(
+            f"cannot reach the Dask scheduler {scheduler}: it accepts connections but did "
+            f"not answer as a scheduler in {CONNECT_SECONDS:g} s") from None
+    except Exception as exc:  # noqa: BLE001 - refused, unreachable, or not Dask's protocol
+        raise LinkUnavailableError(f"cannot reach the Dask scheduler {scheduler}: "
+                                   f"{type(exc).__name__}: {exc}") from exc
+
+
+def _wait_for_a_worker(client: Any, scheduler: str, seconds: float,
+                       on_wait: Callable[[str], None] | None) -> None:
+    if client.nthreads():
+        return
+    if on_wait:
+        on_wait(f"the Dask scheduler {scheduler} has no worker yet: waiting up to "
+                f"{seconds:g} s for one (dask worker {scheduler})")
+    try:
+        client.wait_for_workers(1, timeout=seconds)
+    except Exception as exc:  # noqa: BLE001 - WorkerStartTimeoutError, or the scheduler went
+        raise LinkUnavailableError(f"no worker joined the Dask scheduler {scheduler} in "
+                                   f"{seconds:g} s: start some with "
+                                   f"'dask worker {scheduler}'") from exc
+
+
+def _close(client: Any) -> None:
+    """Close the client; after a lost scheduler quietly (closing cancels its
+    reconnect loop, which Dask logs as an error with a traceback)."""
+    logs = [logging.getLogger(name) for name in ("distributed", "distributed.client",
+                                                 "distributed.utils")]
+    levels = [log.level for log in logs]
+    if _scheduler_lost(client):
+        for log in logs:
+            log.setLevel(logging.CRITICAL + 1)
+    try:
+        client.close()
+    finally:
+        for log, level in zip(logs, levels, strict=True):
+            log.setLevel(level)
+
+
+def _scheduler_lost(client: Any) -> LinkUnavailableError | None:
+    """The error to end the sweep with when the client lost its scheduler
+    (Dask then cancels every future; the rows already taken back are kept)."""
+    if client.status in ("running", "newly-created"):
+        return None
+    return _lost_error(client)
+
+
+def _lost_error(client: Any) -> LinkUnavailableError:
+    address = client.scheduler.address if client.scheduler else "?"
+    return LinkUnavailableError(
+        f"lost the Dask scheduler {address} mid-sweep (client {client.status}): the rows "
+        "taken back are stored, --resume runs the rest")
 
 
 def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = False,
@@ -154,6 +258,8 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
     suspects: list[Task] = []  # lost with a worker: run again, one at a time
 
     def submit(task: Task) -> None:
+        if lost := _scheduler_lost(client):
+            raise lost  # a future of a client that is reconnecting would never finish
         again = tries.get(task.id, 0)
         fut = client.submit(execute, spec.kind.target, task.call, pure=False,
                             key=f"hexbot-sweep-{spec.kind.name}-{task.id}-{run_token}"
@@ -168,12 +274,18 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
 
     def take(fut: Any, retry: bool = True) -> None:
         task, _ = in_flight.pop(fut.key)
+        if fut.status == "cancelled" and (lost := _scheduler_lost(client)):
+            raise lost  # not this task's doing: no retry, no row
         if fut.status != "finished" and retry and tries.get(task.id, 0) < RETRIES:
             tries[task.id] = tries.get(task.id, 0) + 1
             suspects.append(task)  # its worker died: maybe not its fault
             return
         if fut.status == "finished":
-            row = {"task": task.id, "kind": spec.kind.name, **task.params, **fut.result()}
+            try:
+                figures = fut.result()  # fetched through the scheduler
+            except OSError as exc:  # CommClosedError too; the client notices a moment later
+                raise _lost_error(client) from exc
+            row = {"task": task.id, "kind": spec.kind.name, **task.params, **figures}
             store.add(row)
             outcome.stored += 1
             outcome.failed += row["outcome"] != "ok"

@@ -101,3 +101,12 @@ def test_pockets_benchmark_measures_how_much_the_holes_digs_move(capsys):
         main(["bench", "pockets", "--families", "cubes"])
     with pytest.raises(SystemExit):
         main(["bench", "pockets", "--sizes", "5"])
+
+
+@pytest.mark.parametrize("option", ["--tasks", "--noop"])
+def test_a_sweep_benchmark_of_no_tasks_is_a_usage_error(capsys, option):
+    """It used to write a sweep file of an empty range and name that temporary file."""
+    with pytest.raises(SystemExit) as exit_:
+        main(["bench", "sweep", option, "0"])
+    assert exit_.value.code == 2
+    assert f"argument {option}: must be at least 1, got 0" in capsys.readouterr().err

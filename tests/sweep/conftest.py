@@ -9,7 +9,9 @@ import signal
 import subprocess
 import sys
 import time
+from collections.abc import Iterator
 from pathlib import Path
+from typing import NamedTuple
 
 import pytest
 
@@ -26,9 +28,14 @@ def embedded_client():
         yield client
 
 
+ROOT = Path(__file__).resolve().parents[2]
+
+
 def _start(argv: list[str], log: Path) -> subprocess.Popen:
+    # the repository on the path, so workers import the tests' own task functions
+    path = os.pathsep.join(filter(None, [str(ROOT), os.environ.get("PYTHONPATH")]))
     return subprocess.Popen(argv, stdout=log.open("w"), stderr=subprocess.STDOUT,
-                            start_new_session=True)
+                            start_new_session=True, env={**os.environ, "PYTHONPATH": path})
 
 
 def kill_group(proc: subprocess.Popen, sig: int = signal.SIGKILL) -> None:
@@ -49,10 +56,13 @@ def _stop(proc: subprocess.Popen) -> None:
     kill_group(proc)  # a child the leader left behind
 
 
-@pytest.fixture
-def dask_processes(tmp_path):
-    """``dask scheduler`` and two ``dask worker`` processes on 127.0.0.1 (ports
-    chosen by the OS); yields (scheduler address, worker processes); all killed after."""
+class DaskProcesses(NamedTuple):
+    address: str
+    workers: list[subprocess.Popen]
+    scheduler: subprocess.Popen
+
+
+def _dask_processes(tmp_path: Path, n_workers: int) -> Iterator[DaskProcesses]:
     info = tmp_path / "scheduler.json"
     procs = [_start([str(DASK), "scheduler", "--host", "127.0.0.1", "--port", "0",
                      "--no-dashboard", "--scheduler-file", str(info)],
@@ -67,16 +77,31 @@ def dask_processes(tmp_path):
         workers = [_start([str(DASK), "worker", address, "--nthreads", "1", "--no-dashboard",
                            "--host", "127.0.0.1", "--local-directory", str(tmp_path / f"w{i}"),
                            "--name", f"w{i}"], tmp_path / f"worker{i}.log")
-                   for i in range(2)]
+                   for i in range(n_workers)]
         procs += workers
-        from distributed import Client
+        if workers:
+            from distributed import Client
 
-        with Client(address, timeout="30s") as client:
-            client.wait_for_workers(2, timeout=60)
-        yield address, workers
+            with Client(address, timeout="30s") as client:
+                client.wait_for_workers(n_workers, timeout=60)
+        yield DaskProcesses(address, workers, procs[0])
     finally:
         for proc in reversed(procs):
             _stop(proc)
+
+
+@pytest.fixture
+def dask_processes(tmp_path):
+    """``dask scheduler`` and two ``dask worker`` processes on 127.0.0.1 (ports
+    chosen by the OS); yields (scheduler address, worker processes, scheduler
+    process); all killed after."""
+    yield from _dask_processes(tmp_path, 2)
+
+
+@pytest.fixture
+def dask_scheduler_alone(tmp_path):
+    """A ``dask scheduler`` process that no worker joins."""
+    yield from _dask_processes(tmp_path, 0)
 
 
 @pytest.fixture

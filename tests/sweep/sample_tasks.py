@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import sys
+import time
 
 
 def misbehave(seed: int, how: str = "ok") -> dict:
@@ -21,3 +22,9 @@ def misbehave(seed: int, how: str = "ok") -> dict:
 def mixed_figure(seed: int) -> dict:
     """A figure that is a number for some tasks and text for others."""
     return {"note": seed if seed % 2 else f"s{seed}"}
+
+
+def slow_echo(seed: int) -> dict:
+    """A task that takes a while, so a sweep is still running when a test breaks it."""
+    time.sleep(0.5)
+    return {"echo": seed}

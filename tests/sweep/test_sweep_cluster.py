@@ -32,7 +32,7 @@ def rows_of(folder) -> dict[str, dict]:
 def test_embedded_and_separate_processes_give_the_same_rows(write_spec, tmp_path,
                                                             dask_processes, capsys):
     spec_path = write_spec(SWEEP)
-    address, _ = dask_processes
+    address = dask_processes.address
     assert main(["sweep", str(spec_path), "--out", str(tmp_path / "local"),
                  "--workers", "2", "--no-progress"]) == 0
     assert main(["sweep", str(spec_path), "--out", str(tmp_path / "remote"),
@@ -54,7 +54,7 @@ def test_a_lost_worker_keeps_every_row_and_the_sweep_completes(write_spec, tmp_p
                                                                dask_processes):
     from distributed import Client
 
-    address, workers = dask_processes
+    address, workers, _ = dask_processes
     spec = load_spec(write_spec(SWEEP))
     seen = []
 
@@ -109,3 +109,59 @@ def test_a_malformed_scheduler_address_is_a_usage_error(write_spec, tmp_path, ca
     assert exit_.value.code == 2
     assert words in capsys.readouterr().err
     assert not (tmp_path / "o").exists()
+
+
+def test_a_scheduler_lost_mid_sweep_is_exit_4_and_keeps_the_rows_taken_back(
+        write_spec, tmp_path, dask_processes):
+    """Dask cancels every future when its scheduler goes; the sweep used to wait
+    for them for ever."""
+    from distributed import Client
+
+    from hexbot.errors import LinkUnavailableError
+
+    spec = load_spec(write_spec('kind = "tests.sweep.sample_tasks:slow_echo"\n'
+                                '[grid]\nseed = { start = 0, stop = 12 }\n'))
+    seen = []
+
+    def kill_the_scheduler_after_the_first_row(outcome: str) -> None:
+        seen.append(outcome)
+        if len(seen) == 1:
+            kill_group(dask_processes.scheduler)
+
+    with ResultStore(tmp_path / "out", spec.kind.name, spec.param_names) as store, \
+            Client(dask_processes.address, timeout="5s") as client, \
+            pytest.raises(LinkUnavailableError, match="lost the Dask scheduler .* mid-sweep"):
+        run_sweep(spec, client, store, on_result=kill_the_scheduler_after_the_first_row)
+    assert 1 <= len(rows_of(tmp_path / "out")) < 12
+    assert seen[0] == "ok" and "lost" not in seen  # no task counted lost or retried
+
+
+def test_a_port_that_never_answers_is_exit_4_not_a_hang(write_spec, tmp_path, capsys,
+                                                        monkeypatch):
+    import socket
+
+    from hexbot.sweep import engine
+
+    monkeypatch.setattr(engine, "CONNECT_SECONDS", 1.0)
+    with socket.socket() as silent:  # accepts (the kernel's backlog) and never writes
+        silent.bind(("127.0.0.1", 0))
+        silent.listen()
+        code = main(["sweep", str(write_spec(SWEEP)), "--out", str(tmp_path / "o"),
+                     "--scheduler", f"tcp://127.0.0.1:{silent.getsockname()[1]}",
+                     "--no-progress"])
+    assert code == 4
+    assert "did not answer as a scheduler in 1 s" in capsys.readouterr().err
+
+
+def test_a_scheduler_without_workers_says_so_and_gives_up(write_spec, tmp_path, capsys,
+                                                          monkeypatch, dask_scheduler_alone):
+    from hexbot.sweep import engine
+
+    monkeypatch.setattr(engine, "WORKER_WAIT_SECONDS", 1.0)
+    address = dask_scheduler_alone.address
+    code = main(["sweep", str(write_spec(SWEEP)), "--out", str(tmp_path / "o"),
+                 "--scheduler", address, "--no-progress"])
+    err = capsys.readouterr().err
+    assert code == 4
+    assert f"{address} has no worker yet: waiting up to 1 s" in err
+    assert f"no worker joined the Dask scheduler {address} in 1 s" in err

@@ -62,6 +62,11 @@ def test_usage_errors_of_a_run_are_exit_2_before_anything_runs(write_spec, tmp_p
     assert not (tmp_path / "sweep.results").exists()
 
 
+def test_a_usage_error_is_exit_2_also_when_the_file_is_wrong_too(write_spec, capsys):
+    spec = write_spec('kind = "no-such-kind"\n')
+    assert main(["sweep", str(spec), "--workers", "2", "--scheduler", "tcp://127.0.0.1:1"]) == 2
+    assert "not with --scheduler" in capsys.readouterr().err
+
 
 def test_workers_0_is_an_argparse_usage_error(write_spec, capsys):
     with pytest.raises(SystemExit) as exit_:

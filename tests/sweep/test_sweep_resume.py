@@ -208,3 +208,40 @@ def test_a_repeated_task_runs_once(write_spec, tmp_path, embedded_client):
         outcome = run_sweep(spec, embedded_client, store)
     assert (outcome.total, outcome.stored) == (2, 2)
     assert read_table(tmp_path / "out").column("seed").to_pylist() == [1, 2]
+
+
+def worker_started(parent: int) -> bool:
+    """A process that ``parent`` spawned runs multiprocessing's spawn (Linux /proc)."""
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            ppid = int(stat.read_text().rsplit(")", 1)[1].split()[1])
+            if ppid == parent and b"spawn_main" in stat.with_name("cmdline").read_bytes():
+                return True
+        except (OSError, IndexError, ValueError):
+            continue  # gone meanwhile
+    return False
+
+
+def test_ctrl_c_while_the_workers_start_prints_no_traceback(write_spec, tmp_path):
+    """Workers still importing Dask used to die of the terminal's SIGINT, each
+    with a traceback."""
+    argv = [str(HEXBOT), "sweep", str(write_spec(sweep_text(20))), "--out", str(tmp_path / "o"),
+            "--workers", "2", "--no-progress"]
+    proc = subprocess.Popen(argv, stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    try:
+        deadline = time.monotonic() + 120
+        while not worker_started(proc.pid):
+            assert proc.poll() is None, proc.stderr.read()
+            assert time.monotonic() < deadline
+            time.sleep(0.01)
+        time.sleep(0.2)  # the workers are importing Dask
+        os.killpg(proc.pid, signal.SIGINT)  # a terminal's Ctrl-C reaches the whole group
+        err = proc.communicate(timeout=60)[1]
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    # ignored while the workers start (the sweep then runs to its end), or it stops
+    assert proc.returncode in (0, 130), err
+    assert "Traceback" not in err and "KeyboardInterrupt" not in err
