@@ -179,29 +179,31 @@ def check_ends(occupied: set[Cell], goal: frozenset[Cell], method: str) -> None:
 
 
 def dig_ends(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
-             failed: set | None = None) -> bool:
-    """Dig one walled-in end out. True when one left."""
+             failed: set | None = None, beside: bool = False) -> bool:
+    """Dig one walled-in end out. True when one left. ``beside``: the last
+    resort of a flow that is otherwise stuck, parks beside the dig's set too."""
     occupied = tracker.occupied
     for end in sorted(fillable(frozenset(occupied), occupied - goal) - {fixed}):
         if deadline.expired():
             return False
-        if _tried(tracker, goal, fixed, end, failed):
+        if _tried(tracker, goal, fixed, end, failed, beside):
             return True
     return False
 
 
 def _tried(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
-           failed: set | None) -> bool:
+           failed: set | None, beside: bool = False) -> bool:
     """:func:`_kept`, skipped when it failed before with the same modules
     within ``SAME_RADIUS`` (a stuck flow asks again after every change
     elsewhere)."""
     if failed is None:
-        return _kept(tracker, goal, fixed, target)
+        return _kept(tracker, goal, fixed, target, beside)
     occupied = tracker.occupied
-    question = ("dig", target, frozenset(c for c in disc(target, SAME_RADIUS) if c in occupied))
+    question = ("dig", target, beside,
+                frozenset(c for c in disc(target, SAME_RADIUS) if c in occupied))
     if question in failed:
         return False
-    if _kept(tracker, goal, fixed, target):
+    if _kept(tracker, goal, fixed, target, beside):
         return True
     failed.add(question)
     return False
@@ -367,8 +369,10 @@ def _trios(cell: Cell) -> list[tuple[Cell, ...]]:
     return [(ring[i], ring[(i + 1) % 6], ring[(i + 2) % 6]) for i in range(6)]
 
 
-def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> bool:
-    """Dig at ``target``; kept when fewer cells are walled in afterwards."""
+def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
+          beside: bool = False) -> bool:
+    """Dig at ``target``; kept when fewer cells are walled in afterwards. With
+    ``beside`` only the digs of an end that may park beside its set."""
     def walled_in() -> tuple[set[Cell], set[Cell]]:
         """The goal cells and the ends walled in."""
         occupied = tracker.occupied
@@ -397,7 +401,7 @@ def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> b
         # the end takes an emptied goal cell (a parked module stays out), else
         # it leaves to a park itself: the module that stays out was parked
         # first, deepest, and the refill can wall it in (blob 2,000 seed 0)
-        single = [partial(_dig_end, depth=depth, shift=shift)
+        single = [partial(_dig_end, depth=depth, shift=shift, beside=beside)
                   for shift in (True, False) for depth in PARK_DEPTHS]
         # a cavity of the goal full of ends is dug out at once when that takes
         # fewer steps per cell freed than digging them one by one (blob 1,000
@@ -405,7 +409,8 @@ def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> b
         cavity = _walled_cluster(ends - {fixed}, target)
         if len(cavity) < 2:
             return first(single) is not None
-        cavity = [partial(_dig_cavity, depth=depth, cluster=cavity) for depth in PARK_DEPTHS]
+        cavity = [partial(_dig_cavity, depth=depth, cluster=cavity, beside=beside)
+                  for depth in PARK_DEPTHS]
         at_once = first(cavity)
         if at_once is None:
             return first(single) is not None
@@ -415,6 +420,8 @@ def _kept(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell) -> b
             return True
         tracker.undo_to(start)
         return first(cavity) is not None
+    if beside:
+        return False  # holes are dug with parks beside their sets already
     # a hole: the goal's peel, then the peel around the modules standing now
     # (only when it parks fewer modules: on blob 300 seed 0 digs by it as
     # a fallback made the plan 30 % longer; tried first, it cost two of
@@ -465,7 +472,7 @@ def _dig_hole(tracker, goal: frozenset[Cell], fixed: Cell | None, hole: Cell,
 
 
 def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
-             depth: int, shift: bool = True) -> bool:
+             depth: int, shift: bool = True, beside: bool = False) -> bool:
     occupied = tracker.occupied
     gone, close = _peeled(frozenset(occupied), end, fixed)
     sets = [frozenset().union(*(close(n) for n in trio if n in occupied))
@@ -476,7 +483,7 @@ def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
         start = len(tracker.moves)
         order: list[Cell] = []
         parked = _empty(tracker, goal, fixed, end, set(removed), set(removed) | {end}, depth,
-                        order=order)
+                        order=order, beside=beside)
         if parked is not None and not is_cut(occupied, end):
             refill = [c for c in reversed(order) if c in goal]
             parent = _rolls(occupied, end)[0]
@@ -496,7 +503,7 @@ def _dig_end(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
 
 
 def _dig_cavity(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
-                depth: int, cluster: set[Cell]) -> bool:
+                depth: int, cluster: set[Cell], beside: bool = False) -> bool:
     """Dig out ``end`` and the walled-in ends packed with it (``cluster``) at once."""
     occupied = tracker.occupied
     gone, close = _peeled(frozenset(occupied), end, fixed, keep_target=False)
@@ -508,7 +515,8 @@ def _dig_cavity(tracker, goal: frozenset[Cell], fixed: Cell | None, end: Cell,
         return False
     start = len(tracker.moves)
     order: list[Cell] = []
-    parked = _empty(tracker, goal, fixed, end, set(removed), set(removed), depth, order=order)
+    parked = _empty(tracker, goal, fixed, end, set(removed), set(removed), depth, order=order,
+                    beside=beside)
     if parked is None:
         tracker.undo_to(start)
         return False
@@ -568,13 +576,14 @@ def _peeled(occupied: frozenset[Cell], target: Cell, fixed: Cell | None,
 def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
            removed: set[Cell], kept_free: set[Cell], depth: int,
            order: list[Cell] | None = None, margin: bool = True,
-           to_voids: bool = False) -> list[Cell] | None:
+           to_voids: bool = False, beside: bool = False) -> list[Cell] | None:
     """Park the modules of ``removed``, farthest from ``target`` first, off
     ``kept_free``: the parked cells (last parked last), or None when stuck."""
     occupied = tracker.occupied
     left = set(removed)
     parked: list[Cell] = []
     spare = HANGING  # modules hanging on the set that may leave first
+    anchor = _anchor(occupied, left)
     while left:
         ready = sorted((c for c in left if _free_run(occupied, c) and not is_cut(occupied, c)),
                        key=lambda c: (-distance(c, target), c))
@@ -584,27 +593,70 @@ def _empty(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
             ready = sorted(c for c in hanging if _free_run(occupied, c)
                            and not is_cut(occupied, c))
             spare -= 1
-        for cell in ready[:3]:
+        if not _leave_one(tracker, goal, fixed, target, ready[:3], left, kept_free, depth,
+                          order, parked, anchor, margin, to_voids, beside):
+            return None
+    return parked
+
+
+def _leave_one(tracker, goal: frozenset[Cell], fixed: Cell | None, target: Cell,
+               ready: list[Cell], left: set[Cell], kept_free: set[Cell], depth: int,
+               order: list[Cell] | None, parked: list[Cell], anchor: set[Cell],
+               margin: bool, to_voids: bool, beside: bool) -> bool:
+    """One of ``ready`` leaves the set: to a void, else to a park off the set's
+    sides, else (with ``beside``) to a park beside the set."""
+    occupied = tracker.occupied
+    for next_to in (False, True) if beside else (False,):
+        for cell in ready:
             found = None
-            if to_voids and len(left) > 1:
+            if to_voids and len(left) > 1 and not next_to:
                 found = _to_void(occupied, goal, cell, kept_free)
             if found:
                 tracker.roll(found[0])
                 left.discard(cell)
-                break
+                _anchored(anchor, cell, found[1])
+                return True
             # (a hanging module parks off the set's sides, not to hang on it again)
             found = _park(occupied, goal, cell, fixed, kept_free, depth,
-                          margin or cell not in left)
+                          (margin or cell not in left) and not next_to, anchor)
             if found:
                 tracker.roll(found[0])
                 parked.append(found[1])
+                _anchored(anchor, cell, found[1])
                 if order is not None and cell in left:
                     order.append(cell)
                 left.discard(cell)
-                break
-        else:
-            return None
-    return parked
+                return True
+    return False
+
+
+def _anchor(occupied: set[Cell], left: set[Cell]) -> set[Cell]:
+    """The largest piece of the modules a dig keeps (``occupied`` without ``left``):
+    a park must touch it, not hang on the structure through the set's cells,
+    which would make the set's last modules cut vertices that cannot leave
+    (holes 100 seed 5: parks rolled out along a module that hung on the set
+    and the dig stalled with 4 of 24 to go)."""
+    rest = occupied - left
+    best: set[Cell] = set()
+    while rest:
+        piece, queue = set(), [rest.pop()]
+        while queue:
+            cell = queue.pop()
+            piece.add(cell)
+            for n in neighbors(cell):
+                if n in rest:
+                    rest.discard(n)
+                    queue.append(n)
+        if len(piece) > len(best):
+            best = piece
+    return best
+
+
+def _anchored(anchor: set[Cell], left_cell: Cell, park: Cell) -> None:
+    """The anchor after a module rolled from ``left_cell`` to ``park``."""
+    anchor.discard(left_cell)
+    if any(n in anchor for n in neighbors(park)):
+        anchor.add(park)
 
 
 def _hanging(occupied: set[Cell], cell: Cell) -> set[Cell]:
@@ -626,11 +678,14 @@ def _hanging(occupied: set[Cell], cell: Cell) -> set[Cell]:
 
 
 def _park(occupied: set[Cell], goal: frozenset[Cell], cell: Cell, fixed: Cell | None,
-          avoid: set[Cell], depth_limit: int, margin: bool = True):
+          avoid: set[Cell], depth_limit: int, margin: bool = True,
+          anchor: set[Cell] | None = None):
     """(hops, park) taking the module at ``cell`` off ``avoid`` (and, with
-    ``margin``, off its neighbours), or None."""
+    ``margin``, off its neighbours), onto a cell touching ``anchor`` when
+    given, or None."""
     def allowed(p: Cell) -> bool:
-        return p not in avoid and not (margin and any(n in avoid for n in neighbors(p)))
+        return (p not in avoid and not (margin and any(n in avoid for n in neighbors(p)))
+                and (anchor is None or any(n in anchor and n != cell for n in neighbors(p))))
 
     parent, depth = _rolls(occupied, cell)
     rolled = [p for p in parent if p != cell and allowed(p)]

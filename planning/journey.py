@@ -440,6 +440,10 @@ def journey_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
                     tracker.roll(hops)
                     fills.clear()  # a take-back must not undo them
                     continue
+            if digs_left and dig.dig_ends(tracker, goal, fixed, deadline, failed, beside=True):
+                digs_left -= 1  # the last resort: an end dug out with parks beside its set
+                fills.clear()
+                continue
             raise PlanningFailure(
                 f"{method}: journeys stuck with {len(voids)} goal cells to fill "
                 f"(none of {len(candidates)} journeys found a crossing within "

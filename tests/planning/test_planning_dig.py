@@ -12,7 +12,7 @@ from hexbot.planning.budget import Deadline, PlanningFailure
 from hexbot.planning.checker import check_plan
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.generate import parallelogram
-from hexbot.planning.hexlattice import distance
+from hexbot.planning.hexlattice import distance, neighbors
 from hexbot.planning.journey import journey_flow
 from hexbot.planning.local import forward
 from hexbot.planning.robust import fillable, pack_consecutive, plan_robust
@@ -213,9 +213,9 @@ def test_an_end_dig_takes_the_way_with_fewer_steps_per_cell_freed(monkeypatch):
     chosen = []
     kept = dig._kept
 
-    def compared(tracker, goal, fixed, target):
-        if target not in tracker.occupied:
-            return kept(tracker, goal, fixed, target)
+    def compared(tracker, goal, fixed, target, beside=False):
+        if target not in tracker.occupied or beside:
+            return kept(tracker, goal, fixed, target, beside)
         start, before = len(tracker.moves), walled_cells(tracker, goal)
         per_cell = {}
         cavity = dig._walled_cluster(walled_ends(tracker, goal), target)
@@ -229,7 +229,7 @@ def test_an_end_dig_takes_the_way_with_fewer_steps_per_cell_freed(monkeypatch):
                 tracker.undo_to(start)
                 if way in per_cell:
                     break
-        done = kept(tracker, goal, fixed, target)
+        done = kept(tracker, goal, fixed, target, beside)
         if done and len(per_cell) == 2:
             freed = before - walled_cells(tracker, goal)
             chosen.append((critical_chain(tracker.moves[start:])[0] / freed, per_cell))
@@ -374,3 +374,35 @@ def test_an_end_walled_in_deeper_than_a_dig_reaches_fails_at_once_with_the_reaso
                     "local")
     report = check_plan(start, goal, pack_consecutive(start, moves))
     assert report.ok, report.problem
+
+
+def test_a_dig_parks_no_module_where_it_hangs_on_the_set_it_empties(monkeypatch):
+    # holes 100 seed 5: parks rolled out along a module that hung on the dig's
+    # set only, so the set's last modules became cut vertices and the dig
+    # stalled; every flow stalled with one goal cell left and the strip took
+    # 6,213 moves (40.9 times the bound). Every park must stay joined to the
+    # largest piece of the modules the dig keeps.
+    hanging = []
+    empty = dig._empty
+
+    def checked(tracker, goal, fixed, target, removed, *args, **kwargs):
+        parked = empty(tracker, goal, fixed, target, removed, *args, **kwargs)
+        occupied = set(tracker.occupied)
+        kept = occupied - set(removed)
+        pieces = []
+        while kept:
+            piece, queue = set(), [kept.pop()]
+            while queue:
+                cell = queue.pop()
+                piece.add(cell)
+                joined = {n for n in neighbors(cell) if n in kept}
+                kept -= joined
+                queue += joined
+            pieces.append(piece)
+        largest = max(pieces, key=len, default=set())
+        hanging.extend(p for p in parked or () if p in occupied and p not in largest)
+        return parked
+
+    monkeypatch.setattr(dig, "_empty", checked)
+    assert_planned_locally("holes", 100, 5, 10)
+    assert not hanging
