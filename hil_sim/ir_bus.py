@@ -4,18 +4,36 @@ Each communication board's UART1 drives one of seven IR transceivers, chosen
 by its channel selector (Table 3-5). The medium decides, byte by byte:
 
 * A byte sent on side ``s`` (selector at the byte's *start*) reaches the module
-  in the neighbouring cell only if that module's selector is on the facing
-  side ``s + 3`` when the byte *ends* (its stop bit). Nobody there, or a
-  neighbour looking elsewhere: the byte is lost in the air.
+  in the neighbouring cell if that module's selector is on the facing side
+  ``s + 3`` while the byte is on the air. Nobody there, or a neighbour
+  looking elsewhere all along: the byte is lost in the air.
 * A byte sent on the centre channel reaches the PC. The PC's bytes reach every
-  module whose selector is on the centre when the byte ends.
+  module whose selector is on the centre while the byte is on the air.
+* **Cut bytes.** The communication board multiplexes one UART over its seven
+  transceivers: when the sender's selector leaves the byte's channel before
+  the byte ended (firmware that switches the mux after writing UDR, before
+  TXC), the rest of the byte leaves by another transceiver; when the sender
+  resets, its USART stops. A receiver whose selector is elsewhere for part
+  of the byte sees only the rest. Where it does not see the byte its line
+  idles high, and it gets what its UART samples (``ir_line.py``, the
+  sampler of ``uart_line.py``): bits after the cut read 1 and so does the
+  stop bit, a wrong byte *without* framing error (0x00 cut in data bit 4:
+  0xF0); a cut in the start bit is a glitch: nothing. A byte seen whole
+  arrives as before. Selector moves and resets after the byte (from its
+  stop bit's end) change nothing.
 * Two bytes from different senders that overlap in time at one receiver
-  collide. The receiver gets the bitwise AND of the two (the IR line idles
-  high and a lit LED pulls it low, so the low bits dominate) with the framing
-  error flag set. A module receiver learns of the collision when the second
-  byte ends, after the first was handed over: it gets the first intact and the
-  AND as a second, broken byte. The PC's receiver waits until no overlapping
-  byte can still come (one frame time) and gets one broken byte for the two.
+  collide: the IR line idles high and a lit LED pulls it low, so the line is
+  the AND of the two lines, each at its real start. The receiver gets what
+  its UART samples of it, from the first start bit on (0xF0 and 0x3C three
+  bits later read 0xE0), with the framing error flag set: a broken frame as
+  before (the flag stays even where the stop bit samples high, as a real
+  receiver's edge detection and 3-sample vote may see the second start
+  edge). Bytes that started on the same cycle, whole, give the bitwise AND
+  of the two as before (the sampling reads the same). A module receiver
+  learns of the collision when the second byte ends, after the first was
+  handed over: it gets the first as read alone and the collision as a
+  second, broken byte. The PC's receiver waits until no overlapping byte
+  can still come (one frame time) and gets one broken byte for the two.
 * A receiver whose baud rate differs by more than ``BAUD_TOLERANCE``
   (protocol/timing.py, 4.5 %) from the sender's reads what its UART samples
   of the sender's levels (``uart_line.first_byte``): a wrong byte, often
@@ -47,7 +65,9 @@ from typing import Protocol
 
 from hexbot.protocol.timing import BAUD_IR, BAUD_TOLERANCE
 
+from . import ir_line
 from .geometry import CENTRE, Cell, facing, neighbor
+from .ir_line import Part, Span, intersect, spans_where
 from .scenario import PC, Faults
 from .uart_line import LineSettings, first_byte
 
@@ -104,12 +124,23 @@ class AirByte:
     value: int
     frame: Frame
 
+    @property
+    def bit(self) -> float:
+        """The sender's bit time, in cycles."""
+        return (self.end - self.start) / self.frame.line().frame_bits
+
 
 class Air(Protocol):
     """What the medium needs from the simulator."""
 
     def channel_at(self, module: int, cycle: int) -> int | None:
         """Side 1..6, CENTRE (0), or None (Y7) the selector chose at ``cycle``."""
+
+    def channel_changes(self, module: int, after: int, until: int) -> list[tuple[int, int | None]]:
+        """(cycle, channel) of each selector change in (after, until], in order."""
+
+    def resets(self, module: int, after: int, until: int) -> list[int]:
+        """Cycles in (after, until] at which the module's comm board reset."""
 
     def position(self, module: int) -> Cell: ...
 
@@ -134,14 +165,27 @@ class _Arrival:
     senders: set[Endpoint]
     value: int
     framing_error: bool
+    parts: list[Part] = field(default_factory=list)  # their levels, for a collision
 
     def overlaps(self, byte: AirByte) -> bool:
         return self.start < byte.end and byte.start < self.end and byte.sender not in self.senders
 
-    def absorb(self, byte: AirByte, value: int) -> None:
+    def absorb(self, byte: AirByte, value: int, part: Part, rx: LineSettings,
+               bit: float) -> None:
+        """A byte of another sender overlapped: the receiver reads the AND of
+        the lines. Bytes that started together and went out whole: the AND
+        of the values (what sampling reads, and what the receiver read of
+        each on its own). Else what its UART (``rx``, ``bit`` cycles) samples
+        of the AND of their levels, each at its real start. Flagged broken
+        either way."""
         self.start, self.end = min(self.start, byte.start), max(self.end, byte.end)
         self.senders.add(byte.sender)
-        self.value &= value
+        self.parts.append(part)
+        if all(p.start == part.start and p.whole for p in self.parts):
+            self.value &= value
+        else:
+            read = ir_line.read(self.parts, rx, bit)
+            self.value = self.value if read is None else read[0]
         self.framing_error = True
 
 
@@ -151,6 +195,7 @@ class IrMedium:
     seed: int = 0
     faults_for: Callable[[Endpoint, Endpoint], Faults] = lambda s, r: Faults()
     emit: Callable[[int, dict], None] = lambda cycle, event: None
+    hz: float = 1e6  # cluster cycles per second: a receiver's bit time in cycles
     rng: random.Random = field(init=False)
     _last: dict[Endpoint, _Arrival] = field(default_factory=dict)
     _pc_pending: list[_Arrival] = field(default_factory=list)
@@ -164,32 +209,53 @@ class IrMedium:
     def transmit(self, byte: AirByte) -> None:
         """A byte finished on the air (simulation time >= byte.end); route it now."""
         self._longest_frame = max(self._longest_frame, byte.end - byte.start)
-        for receiver in self._receivers(byte):
-            self._arrive(byte, receiver)
+        for receiver, spans in self._receivers(byte):
+            self._arrive(byte, receiver, spans)
 
     def transmit_to(self, byte: AirByte, receiver: Endpoint) -> None:
         """A byte whose receiver the core's medium chose (hil_sim/core/ir_medium.c:
         bytes for the PC); the same rules from here on."""
         self._longest_frame = max(self._longest_frame, byte.end - byte.start)
-        self._arrive(byte, receiver)
+        spans = [(byte.start, byte.end)]
+        if isinstance(byte.sender, int):
+            channel = self.air.channel_at(byte.sender, byte.start)
+            spans = self._sent_spans(byte, byte.sender, channel)
+        self._arrive(byte, receiver, spans)
 
-    def _receivers(self, byte: AirByte) -> list[Endpoint]:
+    def _receivers(self, byte: AirByte) -> list[tuple[Endpoint, list[Span]]]:
+        """Who sees the byte, and when (spans of cycles; outside: idle high)."""
         if byte.sender == PC:
-            return [
-                m for m in self.air.listeners() if self.air.channel_at(m, byte.end) == CENTRE
-            ]
+            heard = ((m, self._listening(byte, m, CENTRE)) for m in self.air.listeners())
+            return [(m, spans) for m, spans in heard if spans]
         assert isinstance(byte.sender, int)
         channel = self.air.channel_at(byte.sender, byte.start)
         if channel is None:
             return []
+        sent = self._sent_spans(byte, byte.sender, channel)
         if channel == CENTRE:
-            return [PC]
+            return [(PC, sent)]
         other = self.air.module_at(neighbor(self.air.position(byte.sender), channel))
-        if other is None or self.air.channel_at(other, byte.end) != facing(channel):
+        if other is None:
             return []
-        return [other]
+        spans = intersect(sent, self._listening(byte, other, facing(channel)))
+        return [(other, spans)] if spans else []
 
-    def _arrive(self, byte: AirByte, receiver: Endpoint) -> None:
+    def _sent_spans(self, byte: AirByte, sender: int, channel: int | None) -> list[Span]:
+        """While the byte leaves by ``channel``'s transceiver: until the
+        selector moves (the tail goes out elsewhere; back again, it goes on
+        here), and never after the sender's reset (the USART stops)."""
+        resets = self.air.resets(sender, byte.start, byte.end)
+        end = min(resets, default=byte.end)
+        changes = self.air.channel_changes(sender, byte.start, end)
+        return spans_where(byte.start, end, channel, changes, channel)
+
+    def _listening(self, byte: AirByte, module: int, channel: int) -> list[Span]:
+        """While ``module``'s selector is on ``channel`` during the byte."""
+        changes = self.air.channel_changes(module, byte.start, byte.end)
+        return spans_where(byte.start, byte.end, self.air.channel_at(module, byte.start),
+                           changes, channel)
+
+    def _arrive(self, byte: AirByte, receiver: Endpoint, spans: list[Span]) -> None:
         faults = self.faults_for(byte.sender, receiver)
         value = byte.value
         if faults.active:
@@ -208,10 +274,19 @@ class IrMedium:
         if faults.extended:
             value, framing_error = self._extended(byte, receiver, faults, value)
         rx = PC_FRAME if receiver == PC else self.air.rx_frame(receiver)  # type: ignore[arg-type]
+        part = Part(byte.start, byte.end, byte.bit, value, byte.frame.line(), tuple(spans))
+        rx_bit = self.hz / rx.baud
         if not byte.frame.matches(rx):
             self._event(
                 byte, receiver, "ir-garbled", reason=f"sender {byte.frame}, receiver {rx}"
             )
+        if not part.whole and byte.frame.same_word(rx):
+            # cut: what the receiver's UART samples of the part it saw
+            read = ir_line.read([part], rx.line(), rx_bit)
+            if read is None:
+                return  # no start bit where the receiver looked: nothing
+            value, framing_error = read[0], framing_error or read[1]
+        elif not byte.frame.matches(rx):
             read = byte.frame.read_by(rx, value, self.rng)
             if read is None:
                 return  # no start bit where the receiver looked: nothing
@@ -222,17 +297,17 @@ class IrMedium:
                 if pending.overlaps(byte):
                     self._event(byte, receiver, "ir-collision", other=sorted(
                         pending.senders, key=str))
-                    pending.absorb(byte, value)
+                    pending.absorb(byte, value, part, rx.line(), rx_bit)
                     return
             self._pc_pending.append(_Arrival(byte.start, byte.end, {byte.sender}, value,
-                                             framing_error))
+                                             framing_error, [part]))
             return
         assert isinstance(receiver, int)
-        arrival = _Arrival(byte.start, byte.end, {byte.sender}, value, framing_error)
+        arrival = _Arrival(byte.start, byte.end, {byte.sender}, value, framing_error, [part])
         previous = self._last.get(receiver)
         if previous is not None and previous.overlaps(byte):
             self._event(byte, receiver, "ir-collision", other=sorted(previous.senders, key=str))
-            previous.absorb(byte, value)
+            previous.absorb(byte, value, part, rx.line(), rx_bit)
             arrival = previous
         else:
             self._last[receiver] = arrival

@@ -93,6 +93,7 @@ class Module:
     # Selector history: parallel lists of change cycles and channel (side/0/None).
     _sel_cycles: list[int] = field(default_factory=lambda: [0])
     _sel_channels: list[int | None] = field(default_factory=lambda: [CHANNEL_SIDE[0]])
+    _resets: list[int] = field(default_factory=list)  # comm board resets, recent ones
 
     @property
     def position(self) -> Cell:
@@ -125,3 +126,16 @@ class Module:
     def channel_at(self, cycle: int) -> int | None:
         at = bisect.bisect_right(self._sel_cycles, cycle) - 1
         return self._sel_channels[max(at, 0)]
+
+    def channel_changes(self, after: int, until: int) -> list[tuple[int, int | None]]:
+        """(cycle, channel) of each selector change in (after, until]."""
+        lo = bisect.bisect_right(self._sel_cycles, after)
+        hi = bisect.bisect_right(self._sel_cycles, until)
+        return list(zip(self._sel_cycles[lo:hi], self._sel_channels[lo:hi], strict=True))
+
+    def record_resets(self, cycles: list[int], keep_from: int) -> None:
+        """The comm board reset at ``cycles`` (its IR byte on the air stops)."""
+        self._resets = [c for c in self._resets if c >= keep_from] + cycles
+
+    def resets(self, after: int, until: int) -> list[int]:
+        return [c for c in self._resets if after < c <= until]

@@ -178,7 +178,7 @@ class Simulator:
             if spec.firmware.rf12 is not None:
                 self._add_rf12(module, spec.firmware.rf12, scenario.where(spec.line))
         self.medium = IrMedium(
-            self, self.seed, faults_for=scenario.faults_for, emit=self._emit
+            self, self.seed, faults_for=scenario.faults_for, emit=self._emit, hz=self.hz
         )
         self._ir_frame_cycles = round(BYTE_BITS * hz / BAUD_IR)
         self._debug_frame_cycles = round(BYTE_BITS * hz / BAUD_DEBUG)
@@ -410,6 +410,15 @@ class Simulator:
             return channel
         return to_global(channel, mod.orientation)
 
+    def channel_changes(self, module: int, after: int, until: int) -> list[tuple[int, int | None]]:
+        mod = self.modules[module]
+        return [(cycle, channel if channel is None or channel == CENTRE
+                 else to_global(channel, mod.orientation))
+                for cycle, channel in mod.channel_changes(after, until)]
+
+    def resets(self, module: int, after: int, until: int) -> list[int]:
+        return self.modules[module].resets(after, until)
+
     def position(self, module: int) -> Cell:
         return self.modules[module].position
 
@@ -443,6 +452,9 @@ class Simulator:
                     module.comm_ports[port] = value
                     if port == SELECTOR_PORT:
                         module.record_selector(cycle, value, keep_from)
+        for module, board in changed:
+            if board == "comm" and hasattr(self.cluster, "resets"):
+                module.record_resets(self.cluster.resets(module.comm.index), keep_from)
         changes.sort(key=lambda c: (c[0], c[1], c[2]))
         for cycle, module_id, board, port, value in changes:
             if board != "control":

@@ -56,11 +56,12 @@ class LineSettings:
         return f"{self.baud} {self.data_bits}{self.parity}{self.stop_bits:g}"
 
 
-def _waveform(data: bytes, tx: LineSettings) -> list[tuple[float, int]]:
-    """(start time, level) of every bit, in seconds from the burst's start."""
-    bit = 1.0 / tx.baud
+def _waveform(data: bytes, tx: LineSettings, bit: float | None = None,
+              t: float = 0.0) -> list[tuple[float, int]]:
+    """(start time, level) of every bit, from ``t`` on, in seconds (or in
+    the unit of ``bit``, the bit time: the IR medium draws in cycles)."""
+    bit = 1.0 / tx.baud if bit is None else bit
     out: list[tuple[float, int]] = []
-    t = 0.0
     parity = _PARITY[tx.parity]
     for byte in data:
         word = byte & ((1 << tx.data_bits) - 1)
@@ -101,11 +102,31 @@ def resample(data: bytes, tx: LineSettings, rx: LineSettings) -> bytes:
     return bytes(value for value, _ in _read(_waveform(data, tx), rx))
 
 
-def _read(wave: list[tuple[float, int]], rx: LineSettings) -> Iterator[tuple[int, bool]]:
+def levels(byte: int, tx: LineSettings, start: float, bit: float) -> list[tuple[float, int]]:
+    """The line of one byte sent as ``tx`` from ``start`` on: (time a level
+    begins, level), idle high from the last entry on; times in the unit of
+    ``bit`` (the IR medium: cycles)."""
+    return _waveform(bytes([byte]), tx, bit, start)
+
+
+def read_first(wave: list[tuple[float, int]], rx: LineSettings,
+               bit: float) -> tuple[int, bool] | None:
+    """The first byte (value, framing error) a receiver set to ``rx``, with
+    a bit time of ``bit`` in the unit of ``wave``'s times, reads of the line
+    ``wave`` (as :func:`levels` gives); None if it finds no start bit. The
+    IR medium's reading of cut and colliding bytes (hil_sim/ir_line.py);
+    the C core's twin is ``uart_line_read`` (hil_sim/core/uart_line.c)."""
+    return next(_read(wave, rx, bit), None)
+
+
+def _read(wave: list[tuple[float, int]], rx: LineSettings,
+          bit: float | None = None) -> Iterator[tuple[int, bool]]:
     """(byte, framing error) for each start bit a receiver set to ``rx``
     finds in ``wave``: wait for the line low, check the start bit in its
     middle (a glitch re-arms there), sample each data bit in its middle,
-    the stop bit too, re-arm after the middle of the (first) stop bit."""
+    the stop bit too, re-arm after the middle of the (first) stop bit.
+    ``bit``: the receiver's bit time in the unit of the wave (default
+    seconds, 1 / baud)."""
     end = wave[-1][0]
     starts = [t for t, _ in wave]
 
@@ -119,8 +140,8 @@ def _read(wave: list[tuple[float, int]], rx: LineSettings) -> Iterator[tuple[int
                 hi = mid - 1
         return wave[lo][1] if t < end else 1
 
-    bit = 1.0 / rx.baud
-    i, t = 0, 0.0
+    bit = 1.0 / rx.baud if bit is None else bit
+    i, t = 0, wave[0][0]
     while True:
         # the line low at or after t: the first low bit that has not ended by t
         # (the waveform ends idle high, so a low bit always has a successor)

@@ -41,6 +41,120 @@ static void log_event(ir_port_t *p, int kind, const ir_air_t *a, const int *othe
 	memcpy(e->others, others, (size_t)n * sizeof *others);
 }
 
+/* ---------------------------------------------------------------- */
+/* selector history: who saw which part of a byte */
+
+static void note(ir_port_t *p, uint64_t cycle, int y)
+{
+	if (GROW(p->fresh, p->n_fresh, p->cap_fresh, 16) == 0)
+		p->fresh[p->n_fresh++] = (ir_mark_t){ cycle, y };
+}
+
+void ir_note_port(ir_port_t *p, int port, uint8_t value, uint64_t cycle)
+{
+	if (port != p->sel_port)
+		return;
+	int y = selector_y_of(p, value);
+	if (y != p->y_now) {
+		p->y_now = y;
+		note(p, cycle, y);
+	}
+}
+
+void ir_note_reset(ir_port_t *p, uint64_t cycle)
+{
+	note(p, cycle, IR_MARK_RESET);
+}
+
+/* At a boundary: fresh marks become readable by every MCU; marks older than
+ * any byte on the air can reach back to are folded into y_before. */
+static void publish(ir_port_t *p, uint64_t now, uint64_t quantum)
+{
+	if (!p->n_fresh && !p->n_marks)
+		return; /* the usual boundary: a selector moves a few times a second */
+	uint64_t keep = 2 * p->longest + quantum;
+	size_t drop = 0;
+	while (drop < p->n_marks && p->marks[drop].cycle + keep < now) {
+		if (p->marks[drop].y != IR_MARK_RESET)
+			p->y_before = p->marks[drop].y;
+		drop++;
+	}
+	memmove(p->marks, p->marks + drop, (p->n_marks - drop) * sizeof *p->marks);
+	p->n_marks -= drop;
+	for (size_t k = 0; k < p->n_fresh; k++)
+		if (GROW(p->marks, p->n_marks, p->cap_marks, 16) == 0)
+			p->marks[p->n_marks++] = p->fresh[k];
+	p->n_fresh = 0;
+}
+
+/* the port's selector index at cycle t, by its own history (its own run) */
+static int y_at(const ir_port_t *p, uint64_t t)
+{
+	int y = p->y_before;
+	for (size_t k = 0; k < p->n_marks + p->n_fresh; k++) {
+		const ir_mark_t *m = k < p->n_marks ? &p->marks[k] : &p->fresh[k - p->n_marks];
+		if (m->cycle > t)
+			break;
+		if (m->y != IR_MARK_RESET)
+			y = m->y;
+	}
+	return y;
+}
+
+/* Parts of [start, end) where a selector that was on y at start, and moved
+ * at marks a then b, is on keep (ir_line.py spans_where). */
+static int spans_where(ir_span_t *out, uint64_t start, uint64_t end, int y, int keep,
+		const ir_mark_t *a, size_t na, const ir_mark_t *b, size_t nb)
+{
+	int n = 0, on = y == keep;
+	uint64_t since = start;
+	for (size_t k = 0; k < na + nb; k++) {
+		const ir_mark_t *m = k < na ? &a[k] : &b[k - na];
+		if (m->y == IR_MARK_RESET || m->cycle <= start || m->cycle >= end)
+			continue;
+		if (on && m->y != keep) {
+			out[n++] = (ir_span_t){ (double)since, (double)m->cycle };
+			on = 0;
+			if (n == IR_MAX_SPANS)
+				return n;
+		} else if (!on && m->y == keep) {
+			since = m->cycle;
+			on = 1;
+		}
+	}
+	if (on && n < IR_MAX_SPANS)
+		out[n++] = (ir_span_t){ (double)since, (double)end };
+	return n;
+}
+
+/* The spans in which the receiver p sees byte a: the sender still on the
+ * byte's channel and not reset since (its published marks), p on the
+ * facing index (its own marks).  0: it saw nothing of it. */
+static int seen_spans(const ir_port_t *p, const ir_air_t *a, ir_span_t *out)
+{
+	ir_span_t sent[IR_MAX_SPANS], heard[IR_MAX_SPANS];
+	int ns = 1;
+	sent[0] = (ir_span_t){ (double)a->start, (double)a->end };
+	const ir_port_t *f = a->from;
+	if (f) {
+		uint64_t stop = a->end; /* the first reset in (start, end] */
+		for (size_t k = 0; k < f->n_marks; k++)
+			if (f->marks[k].y == IR_MARK_RESET && f->marks[k].cycle > a->start &&
+					f->marks[k].cycle <= stop) {
+				stop = f->marks[k].cycle;
+				break;
+			}
+		ns = spans_where(sent, a->start, stop, a->sent_y, a->sent_y, f->marks, f->n_marks,
+				NULL, 0);
+	}
+	int nh = spans_where(heard, a->start, a->end, y_at(p, a->start), a->need_y, p->marks,
+			p->n_marks, p->fresh, p->n_fresh);
+	return ir_spans_intersect(out, sent, ns, heard, nh);
+}
+
+/* ---------------------------------------------------------------- */
+/* receiving */
+
 static int has_sender(const ir_port_t *p, int sender)
 {
 	for (int i = 0; i < p->last.n; i++)
@@ -52,14 +166,28 @@ static int has_sender(const ir_port_t *p, int sender)
 /* The byte reaches the receiver's antenna now (middle of its stop bit). */
 static void arrive(ir_port_t *p, const ir_air_t *a)
 {
-	if (selector_y(p) != a->need_y)
+	ir_part_t part = { (double)a->start, (double)a->end, (double)a->bit_cycles, a->byte,
+		a->format, 0, { { 0, 0 } } };
+	part.n_spans = seen_spans(p, a, part.spans);
+	if (!part.n_spans)
 		return; /* looking elsewhere: lost in the air, as in ir_bus.py */
 	uint8_t value = a->byte;
 	int fe = 0;
+	double own = m162_to_cluster_span(p->m, p->s->bit_cycles);
 	m162_txrec_t rec = { a->start, a->due, a->end, a->byte, a->format, a->bit_cycles, 0 };
-	if (!m162_usart_frame_ok(p->s, &rec, p->tolerance)) {
+	int same_word = (rec.format & 0x3F) == (p->s->format & 0x3F);
+	int frame_ok = m162_usart_frame_ok(p->s, &rec, p->tolerance);
+	if (!frame_ok)
 		log_event(p, IR_EV_GARBLED, a, NULL, 0);
-		if ((rec.format & 0x3F) == (p->s->format & 0x3F)) {
+	if (!ir_part_whole(&part) && same_word) {
+		/* cut: what the receiver's UART samples of the part it saw */
+		int got = ir_line_read(&part, 1, own, p->s->format);
+		if (got < 0)
+			return; /* no start bit where it looked: nothing */
+		value = (uint8_t)got;
+		fe = (got & UART_INPUT_FE) != 0;
+	} else if (!frame_ok) {
+		if (same_word) {
 			/* another baud rate: what the receiver's UART samples */
 			int got = m162_usart_resample(p->s, &rec);
 			if (got < 0)
@@ -74,21 +202,34 @@ static void arrive(ir_port_t *p, const ir_air_t *a)
 	if (p->last.valid && p->last.start < a->end && a->start < p->last.end &&
 			!has_sender(p, a->sender)) {
 		/* the receiver learns of the collision as the second byte ends:
-		 * the AND of both, broken */
+		 * what it samples of the AND of both lines, broken */
 		log_event(p, IR_EV_COLLISION, a, p->last.senders, p->last.n);
 		if (a->start < p->last.start)
 			p->last.start = a->start;
 		if (a->end > p->last.end)
 			p->last.end = a->end;
-		if (p->last.n < IR_MAX_SENDERS)
+		if (p->last.n < IR_MAX_SENDERS) {
+			p->last.parts[p->last.n] = part;
 			p->last.senders[p->last.n++] = a->sender;
-		p->last.value &= value;
+		}
+		int together = 1; /* started together, whole: the AND of the values */
+		for (int k = 0; k < p->last.n; k++)
+			together &= p->last.parts[k].start == part.start &&
+				ir_part_whole(&p->last.parts[k]);
+		if (together) {
+			p->last.value &= value;
+		} else {
+			int got = ir_line_read(p->last.parts, p->last.n, own, p->s->format);
+			if (got >= 0)
+				p->last.value = (uint8_t)got;
+		}
 		p->last.fe = 1;
 	} else {
 		p->last.valid = 1;
 		p->last.start = a->start;
 		p->last.end = a->end;
 		p->last.senders[0] = a->sender;
+		p->last.parts[0] = part;
 		p->last.n = 1;
 		p->last.value = value;
 		p->last.fe = fe;
@@ -138,6 +279,8 @@ static int alive(const ir_port_t *p)
 static void enqueue(ir_port_t *p, ir_air_t a)
 {
 	avr_t *avr = p->m->avr;
+	if (a.end - a.start > p->longest)
+		p->longest = a.end - a.start;
 	a.due_local = m162_to_local(p->m, a.due);
 	if (a.due_local <= avr->cycle && p->inbox_len == 0) {
 		arrive(p, &a); /* the quantum was longer than the byte: at once */
@@ -168,14 +311,18 @@ static void push_pc(ir_port_t *p, const m162_txrec_t *r)
 
 static void route(cluster_t *c, ir_port_t *p, const m162_txrec_t *r)
 {
-	const ir_route_t *rt = &p->routes[selector_y_of(p, r->sel)];
+	int y = selector_y_of(p, r->sel);
+	const ir_route_t *rt = &p->routes[y];
+	if (r->end - r->start > p->longest)
+		p->longest = r->end - r->start;
 	if (rt->kind == IR_ROUTE_PC) {
 		push_pc(p, r);
 	} else if (rt->kind == IR_ROUTE_MODULE && rt->target >= 0 && rt->target < c->n &&
 			c->mcu[rt->target]->ir) {
 		enqueue(c->mcu[rt->target]->ir, (ir_air_t){ .start = r->start, .due = r->mid_stop,
-			.end = r->end, .sender = p->index, .byte = r->byte, .format = r->format,
-			.need_y = (uint8_t)rt->need_y, .bit_cycles = r->bit_cycles });
+			.end = r->end, .sender = p->index, .from = p, .byte = r->byte,
+			.format = r->format, .need_y = (uint8_t)rt->need_y, .sent_y = (int8_t)y,
+			.bit_cycles = r->bit_cycles });
 	}
 }
 
@@ -209,6 +356,8 @@ int ir_attach(cluster_t *c, int mcu, int uart, int sel_port, const uint8_t sel_b
 	p->tolerance = c->baud_tolerance;
 	p->centre_y = -1;
 	p->rng = 0x9E3779B97F4A7C15ULL ^ (uint64_t)(mcu + 1);
+	p->y_before = p->y_now = selector_y(p);
+	p->n_fresh = p->n_marks = 0;
 	p->s->ir_sel_port = sel_port;
 	p->s->ir_pos = p->s->log_len;
 	m162_usart_set_keep_log(p->s, 1);
@@ -257,6 +406,8 @@ void ir_send_from_pc(cluster_t *c, uint64_t start, uint64_t end, uint8_t byte,
 int ir_boundary(cluster_t *c)
 {
 	int news = 0;
+	for (int i = 0; i < c->n_ir; i++)
+		publish(c->ir[i], c->cycle, c->quantum);
 	for (int i = 0; i < c->n_ir; i++) {
 		ir_port_t *p = c->ir[i];
 		m162_usart_t *s = p->s;
@@ -299,5 +450,7 @@ void ir_free(ir_port_t *p)
 		return;
 	free(p->events);
 	free(p->to_pc);
+	free(p->fresh);
+	free(p->marks);
 	free(p);
 }

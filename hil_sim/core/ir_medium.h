@@ -13,11 +13,23 @@
  *  - the sender's side is its selector at the byte's start bit (the port's
  *    value is logged with the byte, m162_txrec_t.sel);
  *  - a receiver gets the byte in the middle of its stop bit, where the part
- *    samples it and raises RXC, if its selector is on the facing side at
- *    that cycle (read in the receiver's own run, from its port register);
+ *    samples it and raises RXC, if its selector was on the facing side from
+ *    the start bit on (its own selector history, read in its own run);
+ *  - a byte is cut where the sender's selector left the byte's channel or
+ *    the sender reset, and where the receiver's selector was elsewhere: the
+ *    receiver reads what its UART samples of the part it saw, idle high
+ *    around it (ir_line.c).  Selector changes and resets are noted by the
+ *    MCU's own run (ir_note_port, ir_note_reset) and published to the other
+ *    MCUs at the next boundary, so a receiver reads the sender's history as
+ *    of the boundary before its own quantum: every change that can alter a
+ *    sample at the sender's rate (up to the middle of the last data bit)
+ *    is known if the quantum is shorter than a bit (1,881 cycles against
+ *    3,328 at 300 baud);
  *  - two bytes from different senders that overlap in time at one receiver
- *    collide: the second is handed over as the bitwise AND of both with the
- *    framing error flag (as hil_sim/ir_bus.py);
+ *    collide: the second is handed over, with the framing error flag, as
+ *    what the receiver's UART samples of the AND of both lines, each at its
+ *    real start (the bitwise AND when both started together, whole; as
+ *    hil_sim/ir_bus.py);
  *  - a receiver whose frame format differs, or whose bit time is more than
  *    the cluster's baud tolerance away, gets a byte of its own seeded
  *    generator with the framing error flag.
@@ -36,6 +48,7 @@
 #include <stdint.h>
 
 #include "cluster.h"
+#include "ir_line.h"
 
 enum { IR_ROUTE_NONE = 0, IR_ROUTE_PC = 1, IR_ROUTE_MODULE = 2 };
 enum { IR_EV_COLLISION = 1, IR_EV_DROPPED = 2, IR_EV_GARBLED = 3 };
@@ -43,6 +56,14 @@ enum { IR_EV_COLLISION = 1, IR_EV_DROPPED = 2, IR_EV_GARBLED = 3 };
 #define IR_PC (-1)          /* the PC as a sender */
 #define IR_MAX_SENDERS 8    /* six neighbours, the PC, one spare */
 #define IR_INBOX 64         /* bytes in flight towards one receiver */
+
+/* A change of a board's selector index (0..7), or its reset (IR_MARK_RESET:
+ * the USART stops shifting), at a cluster cycle. */
+enum { IR_MARK_RESET = -1 };
+typedef struct ir_mark_t {
+	uint64_t cycle;
+	int y;
+} ir_mark_t;
 
 typedef struct ir_route_t {
 	int kind;   /* IR_ROUTE_* */
@@ -55,7 +76,9 @@ typedef struct ir_air_t {
 	uint64_t start, due, end; /* cluster cycles; due = middle of the stop bit */
 	uint64_t due_local;       /* due in the receiver's own cycles */
 	int sender;               /* MCU index or IR_PC */
+	const struct ir_port_t *from; /* the sender's port, NULL for the PC */
 	uint8_t byte, format, need_y;
+	int8_t sent_y;            /* the sender's selector index at the start bit */
 	uint32_t bit_cycles;
 } ir_air_t;
 
@@ -80,6 +103,7 @@ typedef struct ir_port_t {
 	int inbox_len;
 	int sel_port;         /* 0..4 = A..E */
 	size_t n_pc, pc_notified;
+	size_t n_fresh, n_marks; /* selector history (below), read by publish() */
 	m162_t *m;
 	int index;            /* MCU index in the cluster */
 	int centre_y;         /* selector index that routes to the PC, -1 none */
@@ -92,6 +116,7 @@ typedef struct ir_port_t {
 		int valid, fe, n;
 		uint64_t start, end;
 		int senders[IR_MAX_SENDERS];
+		ir_part_t parts[IR_MAX_SENDERS]; /* their lines, for a collision */
 		uint8_t value;
 	} last;               /* what the receiver made of the last byte(s) */
 	uint64_t rng;         /* garbage for mismatched frames */
@@ -101,6 +126,14 @@ typedef struct ir_port_t {
 	/* sender: bytes on the centre channel, for the PC */
 	ir_pcbyte_t *to_pc;
 	size_t cap_pc;
+	/* selector history: the MCU's own run appends to fresh; the boundary
+	 * moves fresh to marks, which other MCUs' runs read (never the other
+	 * way: no MCU reads what another is writing in the same quantum) */
+	ir_mark_t *fresh, *marks;
+	size_t cap_fresh, cap_marks;
+	int y_before;         /* the selector index before the first mark */
+	int y_now;            /* the last index noted */
+	uint64_t longest;     /* longest frame sent or heard: how long marks are kept */
 	ir_air_t inbox[IR_INBOX]; /* sorted by due */
 } ir_port_t;
 

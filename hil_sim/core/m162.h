@@ -144,6 +144,8 @@ typedef struct m162_t {
 	struct m162_porthook_t { struct m162_t *m; int idx; } porthook[M162_NPORTS];
 	struct rf12_t *rf12; /* an RF12 radio on its pins (rf12_part.c), or NULL */
 	struct ir_port_t *ir; /* its IR transceiver in the C medium (ir_medium.c), or NULL */
+	uint64_t *resets;     /* cluster cycles of its resets, until taken (pyavr resets()) */
+	size_t n_resets, cap_resets;
 	uint8_t wake_ports;  /* ports (bit per A..E) whose changes end a run() early */
 	int woke;            /* such a change happened since the last boundary */
 	char last_error[256];
@@ -174,6 +176,12 @@ void m162_set_clock(m162_t *m, uint32_t hz, uint64_t now);
 void m162_drive_input(m162_t *m, int port, uint8_t mask, uint8_t value);
 const char *m162_state_name(int state); /* "running", "sleeping", "crashed", "done", "stopped" */
 static inline m162_t *m162_of(avr_t *avr) { return (m162_t *)avr->custom.data; }
+
+/* The IR medium's view of the MCU (ir_medium.c): a port changed, the MCU
+ * reset; called from the MCU's own run. */
+struct ir_port_t;
+void ir_note_port(struct ir_port_t *p, int port, uint8_t value, uint64_t cycle);
+void ir_note_reset(struct ir_port_t *p, uint64_t cycle);
 
 /* USART (m162_usart.c) */
 void m162_usart_init(m162_t *m);

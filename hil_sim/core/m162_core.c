@@ -37,6 +37,7 @@
 #include <stdarg.h>
 #include <stddef.h>
 
+#include "grow.h"
 #include "m162.h"
 #include "hexbot_codes.h"
 #include "sim_elf.h"
@@ -651,6 +652,8 @@ static void m162_pinlog_add(m162_t *m, int idx, uint8_t value)
 	if (value == m->last_port[idx])
 		return;
 	m->last_port[idx] = value;
+	if (m->ir) /* the IR selector's history: cut bytes (ir_medium.c) */
+		ir_note_port(m->ir, idx, value, m162_to_cluster(m, m->avr->cycle));
 	if (m->wake_ports & (1u << idx))
 		m->woke = 1;
 	if (m->pinlog_len >= M162_PINLOG_MAX) {
@@ -683,8 +686,17 @@ static void m162_port_change(struct avr_irq_t *irq, uint32_t value, void *param)
  * pin log's reader sees outputs drop (a watchdog reset releases magnets). */
 static void m162_log_reset_ports(m162_t *m)
 {
-	for (int i = 0; i < M162_NPORTS; i++)
+	for (int i = 0; i < M162_NPORTS; i++) {
 		m162_pinlog_add(m, i, 0);
+		/* simavr keeps the PORTx IRQ's last value through the reset and
+		 * filters a write of it: the firmware setting the same outputs
+		 * again after the reset would go unseen (the IR selector's history
+		 * stuck at 0, ir_medium.c) */
+		avr_irq_t *irq = m->is_m162 ? avr_io_getirq(m->avr, AVR_IOCTL_IOPORT_GETIRQ('A' + i),
+				IOPORT_IRQ_REG_PORT) : NULL;
+		if (irq)
+			irq->value = 0;
+	}
 }
 
 /* Level-triggered INT0/INT1 (ISC = 00, the reset default).  simavr polls a
@@ -873,6 +885,22 @@ void m162_drive_input(m162_t *m, int port, uint8_t mask, uint8_t value)
 			avr_raise_irq(io->io.irq + b, (value >> b) & 1);
 }
 
+/* A reset stops the USARTs mid-byte: the IR medium cuts the byte on the air
+ * there, and Python's medium learns of it through resets(). */
+static void m162_note_reset(m162_t *m)
+{
+	uint64_t now = m162_to_cluster(m, m->avr->cycle);
+	if (m->ir)
+		ir_note_reset(m->ir, now);
+	if (m->n_resets == 64) { /* nobody takes them: keep the latest */
+		memmove(m->resets, m->resets + 1, 63 * sizeof *m->resets);
+		m->n_resets--;
+	}
+	if (GROW(m->resets, m->n_resets, m->cap_resets, 4) == 0)
+		m->resets[m->n_resets++] = now;
+	m->changed = 1;
+}
+
 static void m162_fixup_reset(avr_io_t *io)
 {
 	m162_t *m = (m162_t *)((char *)io - offsetof(m162_t, fixup_io));
@@ -885,6 +913,7 @@ static void m162_fixup_reset(avr_io_t *io)
 	m->prescaler_base[M162_PRESCALER_T0] = m->prescaler_base[M162_PRESCALER_T2] =
 		m->avr->cycle;
 	m162_watchdog_reset(m);
+	m162_note_reset(m);
 	m162_log_reset_ports(m);
 	m162_usart_reset(m);
 	m162_reapply_external(m);
@@ -1089,6 +1118,7 @@ void m162_free(m162_t *m)
 	for (int i = 0; i < M162_NUARTS; i++)
 		free(m->usart[i].log);
 	free(m->pinlog);
+	free(m->resets);
 	if (!m->is_m162)
 		free(avr);
 	free(m);

@@ -27,6 +27,7 @@
 
 #include "grow.h"
 #include "m162.h"
+#include "uart_line.h"
 
 #define IO(a) AVR_DATA_TO_IO(a)
 #define URSEL 0x80
@@ -330,56 +331,27 @@ int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r, double tol
 }
 
 /* One byte of r, sent at its rate, as a receiver set up as s reads it (the
- * same word format, another bit time): the sender's levels -- start bit,
- * data bits LSB first, parity, stop and idle high -- sampled at the middle
- * of each of the receiver's bit times from the start edge on. Only the
- * first byte: the medium delivers one byte per byte sent. Called only
- * outside the baud tolerance, so the sent byte never arrives as good.
- * -1: the start bit is over before the receiver samples it (a glitch, no
- * byte); else the byte, with UART_INPUT_FE when its stop bit reads low.
- * The same reading as hil_sim/uart_line.py's _read (a test compares them). */
+ * same word format, another bit time): uart_line_read of the sender's
+ * levels.  Only the first byte: the medium delivers one byte per byte sent.
+ * Called only outside the baud tolerance, so the sent byte never arrives
+ * as good.  -1: the start bit is over before the receiver samples it (a
+ * glitch, no byte); else the byte, with UART_INPUT_FE when its stop bit
+ * reads low.  The same reading as hil_sim/uart_line.py's first_byte (a test
+ * compares them). */
 int m162_usart_resample(const m162_usart_t *s, const m162_txrec_t *r)
 {
-	int db = r->format & 0x0F, parity = ((r->format >> 4) & 3) >= 2;
-	uint8_t levels[12];
-	int n = 0;
-	levels[n++] = 0;
-	for (int k = 0; k < db && k < 8; k++)
-		levels[n++] = (r->byte >> k) & 1;
-	if (parity) { /* even or odd over the data bits */
-		int ones = 0;
-		for (int k = 0; k < db && k < 8; k++)
-			ones += (r->byte >> k) & 1;
-		levels[n++] = (uint8_t)((ones & 1) ^ (((r->format >> 4) & 3) == 3));
-	}
-	double sent = r->bit_cycles, own = m162_to_cluster_span(s->mcu, s->bit_cycles);
-#define LEVEL_AT(t) ((int)((t) / sent) < n ? levels[(int)((t) / sent)] : 1)
-	/* as uart_line._read: the line low at or after t (the first low bit not
-	 * over by then), its middle low or a glitch that re-arms there */
-	double t = 0, edge = -1;
-	for (int k = 0; k < n && edge < 0; k++) {
-		if (levels[k] || (k + 1) * sent <= t)
-			continue;
-		double e = k * sent > t ? k * sent : t;
-		if (LEVEL_AT(e + own / 2)) {
-			t = e + own / 2; /* a glitch: look again from there */
-			continue;
-		}
-		edge = e;
-	}
-	if (edge < 0)
+	uart_edge_t wave[UART_LINE_BYTE_MAX];
+	int n = uart_line_levels(wave, r->byte, r->format, 0, r->bit_cycles);
+	int got = uart_line_read(wave, n, m162_to_cluster_span(s->mcu, s->bit_cycles), r->format);
+	if (got < 0)
 		return -1;
-	int value = 0;
-	for (int k = 0; k < db && k < 8; k++)
-		value |= LEVEL_AT(edge + own * (1.5 + k)) << k;
-	int fe = !LEVEL_AT(edge + own * (1.5 + db + parity));
-#undef LEVEL_AT
 	/* outside the datasheet's range nothing is promised: a byte that exact
 	 * sampling still reads right keeps the framing error the edge
 	 * detection and 3-sample vote of a real receiver may give it */
-	if (value == (r->byte & ((1 << db) - 1)))
-		fe = 1;
-	return value | (fe ? UART_INPUT_FE : 0);
+	int db = r->format & 0x0F;
+	if ((got & 0xFF) == (r->byte & ((1 << (db < 8 ? db : 8)) - 1)))
+		got |= UART_INPUT_FE;
+	return got;
 }
 
 /* Forget records every consumer has seen, so logs stay small. */

@@ -503,6 +503,26 @@ static PyObject *Cluster_pin_log(ClusterObject *self, PyObject *args)
 	return list;
 }
 
+static PyObject *Cluster_resets(ClusterObject *self, PyObject *args)
+{
+	m162_t *mc = mcu_arg(self, args);
+	if (!mc)
+		return NULL;
+	PyObject *list = PyList_New((Py_ssize_t)mc->n_resets);
+	if (!list)
+		return NULL;
+	for (size_t i = 0; i < mc->n_resets; i++) {
+		PyObject *v = PyLong_FromUnsignedLongLong((unsigned long long)mc->resets[i]);
+		if (!v) {
+			Py_DECREF(list);
+			return NULL;
+		}
+		PyList_SET_ITEM(list, (Py_ssize_t)i, v);
+	}
+	mc->n_resets = 0;
+	return list;
+}
+
 static PyObject *Cluster_state(ClusterObject *self, PyObject *args)
 {
 	m162_t *mc = mcu_arg(self, args);
@@ -1125,6 +1145,8 @@ static PyMethodDef Cluster_methods[] = {
 		"wake_on_pins(mcu, 'ABD'): run() returns at the boundary after these ports change" },
 	{ "set_input", (PyCFunction)Cluster_set_input, METH_VARARGS,
 		"set_input(mcu, port, mask, value): drive external levels on pins" },
+	{ "resets", (PyCFunction)Cluster_resets, METH_VARARGS,
+		"resets(mcu) -> [cycle] of the MCU's resets since the last call (at most the last 64)" },
 	{ "pin_log", (PyCFunction)Cluster_pin_log, METH_VARARGS,
 		"pin_log(mcu) -> [(cycle, port, PORT value)] since the last call" },
 	{ "state", (PyCFunction)Cluster_state, METH_VARARGS,

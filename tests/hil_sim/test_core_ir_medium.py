@@ -1,6 +1,7 @@
 """The IR medium routed in the core (hil_sim/core/ir_medium.c), on small AVR
 programs (tests/hil_sim/avr/irnode.c): selector routes, delivery in the
-middle of the stop bit, collisions, frame mismatch, bytes to and from the PC."""
+middle of the stop bit, cut bytes (selector moved, reset), collisions at once
+and bits apart, frame mismatch, bytes to and from the PC."""
 
 from __future__ import annotations
 
@@ -87,15 +88,99 @@ def test_receiver_looking_elsewhere_hears_nothing():
     assert reports(c2, b2) == []
 
 
-def test_selector_turned_away_before_mid_stop_loses_the_byte():
+def test_receiver_turned_away_mid_byte_reads_idle_ones_from_then_on():
     c = Cluster(1000)
     a = node(c, 3, b"\x5a")
     b = node(c, 5)
     route(c, a, 3, b, 5)
-    advance(c, 8 * BIT)  # the byte is on the air, its stop bit still to come
+    c.watch_uart(a, 1)
+    advance(c, 8 * BIT)  # data bit 7 on the air, its middle still to come
     c.set_input(b, "C", 0x07, selector_pins(6))
     advance(c, 3 * FRAME)
-    assert reports(c, b) == []
+    # the UART had the start bit: it reads on, bit 7 and the stop bit high
+    assert [(v, fe) for _, v, fe in reports(c, b)] == [(0xDA, False)]
+    assert [(v, fe) for _, v, fe in python_medium(c, a, b)] == [(0xDA, False)]
+
+
+# The same bytes through the Python medium (hil_sim/ir_bus.py), on the
+# cycles the core logged: the twins must read the same. Sender on "3",
+# receiver facing it on "6" (test_ir_bus.pair_air); any other index is away.
+
+def python_medium(c: Cluster, a: int, b: int, others: tuple[int, ...] = ()) -> list:
+    from test_ir_bus import Air, medium
+
+    from hexbot.hil_sim.ir_bus import AirByte, Frame
+
+    line = Frame(1e6 / BIT)
+    cells = {a: (0, 0), b: (1, 0), **{o: (0, 0) for o in others}}
+
+    def history(m: int, on: int, y_on: int) -> list[tuple[int, int]]:
+        (_, pin_a), (_, pin_b), (_, pin_c) = SELECTOR_PINS
+        out = [(0, on)]
+        for cycle, port, value in c.pin_log(m):
+            if port == SELECTOR_PINS[0][0]:
+                y = (value >> pin_a & 1) | (value >> pin_b & 1) << 1 | (value >> pin_c & 1) << 2
+                out.append((cycle, on if y == y_on else 0))
+        return out
+
+    air = Air(cells, {m: history(m, 3, 3) for m in (a, *others)} | {b: history(b, 6, 5)},
+              rx={b: line}, reset_at={m: c.resets(m)[1:] for m in (a, *others)})
+    m, _ = medium(air)
+    sent = sorted((start, end, value, m) for m in (a, *others) for start, end, value in
+                  c.uart_take(m, 1))
+    for start, end, value, sender in sent:  # one sender per cell: route each alone
+        air.cells = {sender: (0, 0), b: (1, 0)}
+        m.transmit(AirByte(sender, start, end, value, line))
+    return air.got
+
+
+def test_sender_switching_its_selector_mid_byte_delivers_a_cut_byte():
+    # UDR written, then the mux switched before TXC: the tail leaves by
+    # another transceiver; the receiver reads idle ones for data bits 4..7
+    c = Cluster(1000)
+    a = node(c, 3, b"\x00")
+    b = node(c, 5)
+    route(c, a, 3, b, 5)
+    c.watch_uart(a, 1)
+    advance(c, 94 + 5 * BIT)  # the byte started at cycle 94: data bit 4 goes out
+    c.set_input(a, "C", 0x07, selector_pins(1))
+    advance(c, 3 * FRAME)
+    assert [(v, fe) for _, v, fe in reports(c, b)] == [(0xF0, False)]
+    assert [(v, fe) for _, v, fe in python_medium(c, a, b)] == [(0xF0, False)]
+
+
+def test_sender_reset_mid_byte_cuts_its_byte():
+    c = Cluster(1000)
+    a = node(c, 3, b"\x00")
+    b = node(c, 5)
+    route(c, a, 3, b, 5)
+    c.watch_uart(a, 1)
+    advance(c, 94 + 5 * BIT)
+    c.reset(a)  # its USART stops; after boot it sends its byte again, whole
+    advance(c, 4 * FRAME)
+    assert [(v, fe) for _, v, fe in reports(c, b)] == [(0xF0, False), (0x00, False)]
+    assert [(v, fe) for _, v, fe in python_medium(c, a, b)] == [(0xF0, False), (0x00, False)]
+
+
+def test_bytes_colliding_three_bits_apart_read_the_and_of_the_shifted_lines():
+    c = Cluster(1000)
+    a = node(c, 3, b"\xf0")
+    d = node(c, 3)  # sends nothing at boot
+    b = node(c, 5)
+    route(c, a, 3, b, 5)
+    route(c, d, 3, b, 5)
+    c.watch_uart(a, 1)
+    c.watch_uart(d, 1)
+    advance(c, 3 * BIT)
+    c.write_eeprom(d, 0, b"\x3c\xff")
+    c.reset(d)  # boots in 94 cycles, as a did: its byte starts 3 bits after a's
+    advance(c, 3 * FRAME)
+    # 0x3C's start bit and bits 0, 1 fall on 0xF0's bits 2..4, its bits 2..5
+    # (high) on 5..7 and the stop bit: 0xE0, not 0xF0 & 0x3C = 0x30
+    got = [(v, fe) for _, v, fe in reports(c, b)]
+    assert got == [(0xF0, False), (0xE0, True)]
+    assert [(v, fe) for _, v, fe in python_medium(c, a, b, others=(d,))] == got
+    assert [e[0] for e in c.ir_events()] == ["ir-collision"]
 
 
 def test_overlapping_bytes_of_two_senders_collide_as_and_with_framing_error():

@@ -19,6 +19,7 @@ class Air:
     rx: dict[int, Frame] = field(default_factory=dict)
     rxen: dict[int, bool] = field(default_factory=dict)
     got: list[tuple[int, int, bool]] = field(default_factory=list)
+    reset_at: dict[int, list[int]] = field(default_factory=dict)  # module -> reset cycles
 
     def channel_at(self, module, cycle):
         current = None
@@ -26,6 +27,13 @@ class Air:
             if since <= cycle:
                 current = channel
         return current
+
+    def channel_changes(self, module, after, until):
+        return [(since, channel) for since, channel in self.channels[module]
+                if after < since <= until]
+
+    def resets(self, module, after, until):
+        return [c for c in self.reset_at.get(module, []) if after < c <= until]
 
     def position(self, module):
         return self.cells[module]
@@ -72,13 +80,62 @@ def test_neighbour_listening_elsewhere_hears_nothing():
     assert air.got == []
 
 
-def test_sender_channel_taken_at_start_receiver_channel_at_end():
+def test_sender_channel_taken_at_start_and_selector_moves_after_the_byte_do_not_matter():
     air = pair_air()
-    air.channels[1] = [(0, 3), (10, 5)]  # sender switches away mid-byte: too late, byte goes out
-    air.channels[2] = [(0, 1), (BYTE - 5, 6)]  # receiver switches in before the stop bit ends
+    air.channels[1] = [(0, 3), (BYTE, 5)]  # the sender moves on as the stop bit ends
+    air.channels[2] = [(0, 6), (BYTE + 1, 1)]  # the receiver right after
     m, _ = medium(air)
     m.transmit(AirByte(1, 0, BYTE, 0x55, IR))
     assert air.got == [(2, 0x55, False)]
+
+
+BIT = BYTE / 10  # one bit time of IR
+
+
+def test_a_sender_that_switches_its_selector_mid_byte_delivers_a_cut_byte():
+    # UDR written, then the mux switched before TXC: data bits 4..7 leave by
+    # side 5, the receiver on side 6 reads them as the idle line's ones
+    air = pair_air()
+    air.channels[1] = [(0, 3), (round(5 * BIT), 5)]  # while data bit 4 goes out
+    m, events = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, 0x00, IR))
+    assert air.got == [(2, 0xF0, False)]  # not 0x00: a wrong byte, stop bit high
+    assert events == []
+
+
+def test_a_sender_that_resets_mid_byte_stops_the_byte():
+    air = pair_air()
+    air.reset_at[1] = [round(5 * BIT)]
+    m, _ = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, 0x00, IR))
+    assert air.got == [(2, 0xF0, False)]
+
+
+def test_a_byte_cut_in_its_start_bit_is_a_glitch_and_reaches_nobody():
+    air = pair_air()
+    air.channels[1] = [(0, 3), (10, 5)]  # the start bit's first 10 cycles only
+    air.channels[2] = [(0, 1), (BYTE - 5, 6)]  # switched in as the stop bit ends: sees nothing
+    m, events = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, 0x55, IR))
+    m.transmit(AirByte(1, 2 * BYTE, 3 * BYTE, 0x55, IR))
+    assert air.got == []
+    assert events == []
+
+
+def test_a_receiver_that_looks_away_mid_byte_reads_idle_ones_from_then_on():
+    air = pair_air()
+    air.channels[2] = [(0, 6), (round(8 * BIT), 1)]  # as data bit 7 begins
+    m, _ = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, 0x5A, IR))
+    assert air.got == [(2, 0xDA, False)]  # bit 7 reads 1, the stop bit too
+
+
+def test_a_sender_that_switches_back_sends_the_rest_of_its_byte():
+    air = pair_air()
+    air.channels[1] = [(0, 3), (round(3 * BIT), 5), (round(5 * BIT), 3)]  # away for bits 2, 3
+    m, _ = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, 0x00, IR))
+    assert air.got == [(2, 0x0C, False)]
 
 
 def test_centre_goes_to_pc_and_pc_goes_to_every_centre_listener():
@@ -99,8 +156,28 @@ def test_overlapping_bytes_at_the_pc_become_one_broken_byte():
     m.settle(BYTE + BYTE // 2)
     assert m.pc_take() == b""  # not settled: a third byte could still overlap
     m.settle(4 * BYTE)
-    assert m.pc_take() == bytes([0x30])
+    # 0x3C starts 5 bits later: its start bit and bits 0, 1 (low) land on
+    # 0xF0's bits 4..6, its bit 2 (high) on bit 7: 0x80, not 0xF0 & 0x3C
+    assert m.pc_take() == bytes([0x80])
     assert [e["event"] for e in events] == ["ir-collision"]
+
+
+def test_a_collision_reads_the_and_of_the_lines_at_their_real_offset():
+    # 0xFF is a lone start bit: shifted by k bits it clears data bit k - 1
+    for k in (1, 3, 8):
+        air = Air({1: (0, 0), 2: (9, 9)}, {1: [(0, CENTRE)], 2: [(0, CENTRE)]})
+        m, _ = medium(air)
+        m.transmit(AirByte(1, 0, BYTE, 0xFF, IR))
+        m.transmit(AirByte(2, round(k * BIT), round(k * BIT) + BYTE, 0xFF, IR))
+        m.settle(5 * BYTE)
+        assert m.pc_take() == bytes([0xFF & ~(1 << (k - 1))])
+    # started together: the AND of the values, as before
+    air = Air({1: (0, 0), 2: (9, 9)}, {1: [(0, CENTRE)], 2: [(0, CENTRE)]})
+    m, _ = medium(air)
+    m.transmit(AirByte(1, 0, BYTE, 0xF0, IR))
+    m.transmit(AirByte(2, 0, BYTE, 0x3C, IR))
+    m.settle(5 * BYTE)
+    assert m.pc_take() == bytes([0x30])
 
 
 def test_baud_mismatch_gives_what_the_receivers_uart_samples():
