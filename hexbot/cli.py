@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 from types import ModuleType
 
@@ -78,16 +79,38 @@ def main(argv: list[str] | None = None) -> int:
     name = argv[0]
     module_name, help_text = COMMANDS[name]
     module, args = load_command(f"hexbot {name}", module_name, help_text, argv[1:])
+    status = 0  # until the command has one
     try:
-        return int(module.run(args) or 0)
-    except HexBotError as exc:
-        print(f"hexbot {name}: error: {exc}", file=sys.stderr)
-        return exc.exit_status
-    except KeyboardInterrupt:
-        return 130
+        try:
+            status = int(module.run(args) or 0)
+        except HexBotError as exc:
+            status = exc.exit_status
+            print(f"hexbot {name}: error: {exc}", file=sys.stderr)
+        except KeyboardInterrupt:
+            status = 130
+        sys.stdout.flush()  # a reader gone shows here, not as a traceback at exit
     except BrokenPipeError:  # output piped into `head` and the like
-        sys.stderr.close()
-        return 0
+        return closed_pipe(status)
+    return status
+
+
+#: The status of a command whose output pipe closed before it finished (128 + SIGPIPE,
+#: what a shell reports for a program that signal stopped).
+BROKEN_PIPE = 141
+
+
+def closed_pipe(status: int) -> int:
+    """Quiet end of a command whose reader went away (``hexbot ... | head``):
+    no traceback, and no second error when Python flushes stdout at exit. The
+    status is the command's own when it had failed before the pipe broke,
+    else ``BROKEN_PIPE``: the output was cut short, so never 0."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        os.close(devnull)
+    except (OSError, ValueError):  # no real stdout (tests): nothing to silence
+        pass
+    return status or BROKEN_PIPE
 
 
 if __name__ == "__main__":

@@ -5,6 +5,7 @@ starts, not a surprise after the boot or at the end of a long run."""
 from __future__ import annotations
 
 import argparse
+import os
 from collections.abc import Callable
 from pathlib import Path
 
@@ -59,8 +60,11 @@ def tcp_port(text: str) -> int:
 
 
 def output_file(text: str) -> str:
-    """argparse type of a file to write: its folder must exist now (usage
-    error, exit 2), so the work is not done for a result that cannot be saved."""
+    """argparse type of a file to write: its folder must exist and the file
+    must be writable now (usage error, exit 2), so the work is not done for a
+    result that cannot be saved. Writable is tried, not guessed from the mode
+    bits (root passes those, and /proc refuses anyway): a new file is created
+    and removed at once, an existing regular file opened for appending."""
     path = Path(text)
     if not path.parent.exists():
         raise argparse.ArgumentTypeError(f"{text}: folder {path.parent} does not exist")
@@ -68,7 +72,32 @@ def output_file(text: str) -> str:
         raise argparse.ArgumentTypeError(f"{text}: {path.parent} is not a folder")
     if path.is_dir():
         raise argparse.ArgumentTypeError(f"{text}: is a folder, give a file name")
+    try:
+        if not path.exists():
+            os.close(os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644))
+            path.unlink()
+        elif path.is_file():  # not a FIFO or a device: opening those may block
+            with open(path, "ab"):
+                pass
+    except OSError as exc:
+        raise argparse.ArgumentTypeError(
+            f"{text}: cannot write: {exc.strerror or exc}") from None
     return text
+
+
+def image_file(suffixes: tuple[str, ...]) -> Callable[[str], str]:
+    """argparse type of a drawing to write (``--plot``, ``--render``): an
+    :func:`output_file` whose name ends in one of ``suffixes`` (``(".png",
+    ".gif")``, any case), since the suffix picks the format: a name without
+    one, or with another, is a usage error before any work."""
+    names = " or ".join(suffixes)
+
+    def check(text: str) -> str:
+        output_file(text)
+        if not text.lower().endswith(tuple(s.lower() for s in suffixes)):
+            raise argparse.ArgumentTypeError(f"{text}: the name must end in {names}")
+        return text
+    return check
 
 
 def _whole(text: str) -> int:

@@ -3,7 +3,8 @@ and "not text" into a one-line ``file: reason`` error instead of a traceback.
 
 Every input format (configurations, scenarios, maps, rule files, scripts,
 sweep files) is UTF-8 text; a binary file passed by mistake must fail like
-a missing one.
+a missing one. A leading byte-order mark (Windows editors write one) is
+dropped here, so no reader sees it.
 """
 
 from __future__ import annotations
@@ -19,10 +20,11 @@ from hexbot.errors import ScenarioError
 def read_text(path: str | Path, what: str = "") -> str:
     """The file's text; ScenarioError ``PATH: cannot read[ WHAT]: reason`` or
     ``PATH: not a text file (UTF-8)``. ``what`` names the kind of file
-    (``"rule file"``) where the path alone does not say it."""
+    (``"rule file"``) where the path alone does not say it. A UTF-8
+    byte-order mark at the start is not part of the text."""
     path = Path(path)
     try:
-        return path.read_text(encoding="utf-8")
+        return path.read_text(encoding="utf-8").removeprefix("\ufeff")
     except UnicodeDecodeError as exc:
         raise ScenarioError(
             f"{path}: not a text file (UTF-8): byte 0x{exc.object[exc.start]:02x} "

@@ -116,7 +116,10 @@ def _bottleneck(cost: np.ndarray) -> int:
 
 
 #: Leave time of a module that can never rotate (the bolted one, or one only it frees).
-NEVER = 1 << 20
+#: Above any real bound: a pair's distances stay below 4 x ``COORD_LIMIT`` and a
+#: leave time below the module count (it was 2^20, and pairs farther apart than
+#: that lost their bounds as if no plan could exist); int64 sums of two stay exact.
+NEVER = 1 << 40
 
 
 def leave_times(cells: frozenset[Cell], fixed: Cell | None = None) -> dict[Cell, int]:

@@ -36,17 +36,19 @@ class Deadline:
 
     def __init__(self, seconds: float | None = DEFAULT_BUDGET,
                  cpu_seconds: float | None = None) -> None:
-        self.seconds = seconds if cpu_seconds is None else cpu_seconds
+        self.seconds = seconds  # of wall time (None: no limit)
+        self.cpu_seconds = cpu_seconds
         self._end = None if seconds is None else time.monotonic() + seconds
         self._cpu_end = None if cpu_seconds is None else time.process_time() + cpu_seconds
 
     def remaining(self) -> float:
         return float("inf") if self._end is None else self._end - time.monotonic()
 
+    def _cpu_spent(self) -> bool:
+        return self._cpu_end is not None and time.process_time() >= self._cpu_end
+
     def expired(self) -> bool:
-        if self._cpu_end is not None and time.process_time() >= self._cpu_end:
-            return True
-        return self.remaining() <= 0
+        return self._cpu_spent() or self.remaining() <= 0
 
     def share(self, fraction: float, at_least: float = 0.0) -> Deadline:
         """A deadline for one method: ``fraction`` of what is left (at least
@@ -64,11 +66,15 @@ class Deadline:
         plan to the strip's, 218 -> 6,396 moves, in a bench run beside other
         jobs when the caps were wall time)."""
         left = self.remaining()
-        return Deadline(None if left == float("inf") else left, cpu_seconds=seconds)
+        return Deadline(None if left == float("inf") else max(0.0, left), cpu_seconds=seconds)
 
     def check(self, what: str) -> None:
-        """Raise :class:`PlanningFailure` when the budget is used up."""
-        if self.expired():
+        """Raise :class:`PlanningFailure` when the budget is used up; the
+        message names the limit that ran out, the CPU cap or the wall time."""
+        if self._cpu_spent():
+            raise BudgetExhausted(f"{what}: gave up, its cap of {self.cpu_seconds:.3g} s "
+                                  "of CPU time is used up")
+        if self.remaining() <= 0:
             raise BudgetExhausted(f"{what}: gave up, its time budget of "
                                   f"{self.seconds:.3g} s is used up")
 

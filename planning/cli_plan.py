@@ -1,7 +1,9 @@
 """``hexbot plan INITIAL GOAL``: plan a reconfiguration and print its moves and commands.
 
 Exit status 0 when the plan reaches the goal; 1 (reason on stderr) when it
-does not, or when an input file is invalid.
+does not, when the independent checker rejects a faithful plan (the thesis'
+loops check nothing across the moves of a step), or when an input file is
+invalid; 2 for a usage error, found before any planning.
 
 Plans have no size or id limit. Firmware commands address modules by their
 DIP-switch id through the legacy Select frame (1..``MAX_SELECT_ID``): for a
@@ -17,21 +19,23 @@ import sys
 from collections.abc import Iterable, Iterator
 from typing import Any, TextIO
 
-from hexbot.cli_args import count, output_file
-from hexbot.errors import ScenarioError, UsageError
+from hexbot.cli_args import count, image_file
+from hexbot.errors import HexBotError, ScenarioError, UsageError
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.workflows import Verify
 from hexbot.planning.bounds import NEVER, PlanBounds, plan_bounds
 from hexbot.planning.budget import DEFAULT_BUDGET
 from hexbot.planning.commands import MoveCommands, command_json, plan_to_commands
 from hexbot.planning.config_io import load_configuration
-from hexbot.planning.configuration import Configuration
+from hexbot.planning.configuration import Configuration, is_connected
 from hexbot.planning.hexlattice import Cell
 from hexbot.planning.moves import Move
 from hexbot.planning.plan import Plan
 from hexbot.protocol.wire import MAX_SELECT_ID
 
 MODES = ("faithful-serial", "faithful-parallel", "robust", "exact")
+#: What ``--plot`` and ``--render`` write (matplotlib picks the format by the suffix).
+PLOT_SUFFIXES, RENDER_SUFFIXES = (".png",), (".gif",)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -44,9 +48,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="leave the steps out: the summary line, the notes and warnings "
                              "(--json: the object without \"steps\"); a plan of 10,000 "
                              "modules has millions of moves")
-    parser.add_argument("--plot", metavar="FILE.png", type=output_file,
-                        help="draw one panel per time step")
-    parser.add_argument("--render", metavar="FILE.gif", type=output_file,
+    parser.add_argument("--plot", metavar="FILE.png", type=image_file(PLOT_SUFFIXES),
+                        help="draw one panel per time step (plot extra)")
+    parser.add_argument("--render", metavar="FILE.gif", type=image_file(RENDER_SUFFIXES),
                         help="animate the plan: a frame per time step, grid, counter, legend "
                              "(plot extra)")
     parser.add_argument("--style", choices=("combined", "single"), default="combined",
@@ -122,10 +126,39 @@ def make_plan(args: argparse.Namespace, initial: Configuration | None = None) ->
 
         return plan_exact(initial, goal, fixed=args.fixed, budget=args.budget,
                           parallel=not args.serial)
+    from hexbot.planning.checker import check_plan
     from hexbot.planning.thesis.planner import FaithfulOptions, plan_faithful
 
-    return plan_faithful(initial, goal, parallel=args.mode == "faithful-parallel",
+    plan = plan_faithful(initial, goal, parallel=args.mode == "faithful-parallel",
                          options=FaithfulOptions(max_steps=args.max_steps))
+    if plan.reached:  # the thesis' loops check no constraint across the moves of a step
+        report = check_plan(initial, plan.goal, plan.steps)
+        plan.rejected = "" if report.ok else report.problem
+    return plan
+
+
+def plan_failure(plan: Plan) -> tuple[str, str] | None:
+    """Why the plan is no success (what, why), or None: its goal is not
+    reached, or the independent checker rejects it (exit status 1 either way)."""
+    if not plan.reached:
+        return "goal not reached", plan.reason
+    if plan.rejected:
+        return "the independent checker rejects the plan", plan.rejected
+    return None
+
+
+def draw(plan: Plan, args: argparse.Namespace) -> None:
+    """``--plot`` and ``--render`` (their names were checked before planning;
+    a write that fails now, a full disk say, is a one-line error)."""
+    for option, path in (("--plot", args.plot), ("--render", args.render)):
+        if not path:
+            continue
+        from hexbot.planning import plot
+
+        try:
+            (plot.plot_plan if option == "--plot" else plot.render_plan)(plan, path)
+        except OSError as exc:
+            raise HexBotError(f"{option}: cannot write {path}: {exc.strerror or exc}") from None
 
 
 def plan_json(plan: Plan, style: str = "combined") -> dict[str, Any]:
@@ -158,6 +191,8 @@ def _json_head(plan: Plan, omitted: str) -> dict[str, Any]:
         extra["reason"] = plan.reason
     if plan.warnings:
         extra["warnings"] = plan.warnings
+    if plan.rejected:
+        extra["rejected"] = plan.rejected
     bounds = pair_bounds(plan)
     if bounds is not None:
         extra["bounds"] = bounds.as_json()
@@ -167,11 +202,13 @@ def _json_head(plan: Plan, omitted: str) -> dict[str, Any]:
 
 def pair_bounds(plan: Plan) -> PlanBounds | None:
     """The lower bounds of the plan's pair (None when the pair is not one: the
-    module counts differ, the goal is empty, the fixed module is not in both;
-    or when no plan can exist: a module must leave that never can)."""
+    module counts differ, the goal is empty, the fixed module is not in both,
+    a configuration is not one piece; or when no plan can exist: a module
+    must leave that never can)."""
     fixed, cells = plan.fixed, plan.initial.cells
     if (not plan.goal or len(cells) != len(plan.goal)
-            or (fixed is not None and (fixed not in cells or fixed not in plan.goal))):
+            or (fixed is not None and (fixed not in cells or fixed not in plan.goal))
+            or not is_connected(cells) or not is_connected(plan.goal)):
         return None
     bounds = plan_bounds(cells, plan.goal, fixed)
     return bounds if bounds.time_steps.value < NEVER else None
@@ -180,8 +217,10 @@ def pair_bounds(plan: Plan) -> PlanBounds | None:
 def plan_summary(plan: Plan) -> str:
     """One line: the method, whether the goal is reached, the plan's size and
     what no plan of this pair can beat (docs/planning.md, *Bounds*)."""
+    outcome = "NOT reached" if not plan.reached else (
+        "reached by an ILLEGAL plan" if plan.rejected else "reached")
     line = (f"mode {plan.mode}{f' ({plan.method})' if plan.method else ''}: "
-            f"goal {'reached' if plan.reached else 'NOT reached'}, "
+            f"goal {outcome}, "
             f"{plan.time_steps} time step(s), {plan.move_count} move(s)")
     bounds = pair_bounds(plan)
     if bounds is None:
@@ -227,6 +266,8 @@ def _text_lines(plan: Plan, style: str, steps: bool = True) -> Iterator[str]:
     """The lines of the text report, one at a time (a plan may have millions of
     moves); without ``steps``, all but the steps."""
     yield plan_summary(plan)
+    if plan.rejected:
+        yield f"note: the independent checker rejects the plan: {plan.rejected}"
     for reason in plan.tried:
         yield f"note: tried first, no plan: {reason}"
     omitted = unaddressable(plan)
@@ -245,6 +286,11 @@ def _text_lines(plan: Plan, style: str, steps: bool = True) -> Iterator[str]:
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.fixed is not None and args.mode not in ("robust", "exact"):
+        raise UsageError(f"--fixed is for the robust and exact modes: the thesis' planner "
+                         f"({args.mode}) bolts no module")
+    if args.plot or args.render:
+        from hexbot.planning import plot  # noqa: F401  (no plot extra: say so before planning)
     if args.execute:
         return run_execute(args)
     plan = make_plan(args)
@@ -253,16 +299,10 @@ def run(args: argparse.Namespace) -> int:
     else:
         for line in _text_lines(plan, args.style, steps=not args.summary):
             print(line)
-    if args.plot:
-        from hexbot.planning.plot import plot_plan
-
-        plot_plan(plan, args.plot)
-    if args.render:
-        from hexbot.planning.plot import render_plan
-
-        render_plan(plan, args.render)
-    if not plan.reached:
-        print(f"hexbot plan: goal not reached: {plan.reason}", file=sys.stderr)
+    draw(plan, args)
+    failure = plan_failure(plan)
+    if failure:
+        print(f"hexbot plan: {failure[0]}: {failure[1]}", file=sys.stderr)
         return 1
     return 0
 
@@ -312,13 +352,15 @@ def run_execute(args: argparse.Namespace) -> int:
         if args.mode in ("robust", "exact"):
             args.fixed = poses[reference].cell  # localization needs the reference to stay
         plan = make_plan(args, initial)
-        if not plan.reached:
+        failure = plan_failure(plan)
+        if failure:
             if args.json:
                 write_plan_json(plan, args.style, sys.stdout, {"execution": None},
                                 steps=not args.summary)
             else:
                 print(plan_text(plan, args.style, steps=not args.summary))
-            print(f"hexbot plan: goal not reached, nothing executed: {plan.reason}",
+            draw(plan, args)
+            print(f"hexbot plan: {failure[0]}, nothing executed: {failure[1]}",
                   file=sys.stderr)
             return 1
         check_plan_fits(plan, sess, reference)  # before a word is printed or sent
@@ -333,6 +375,7 @@ def run_execute(args: argparse.Namespace) -> int:
                         steps=not args.summary)
     else:
         print(report.line(plan.move_count))
+    draw(plan, args)  # the plan that was executed (whole, even if the run stopped early)
     if not report.reached:
         print(f"hexbot plan: execution stopped: {report.failure}", file=sys.stderr)
         return report.exit_status or 1

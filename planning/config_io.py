@@ -5,13 +5,17 @@ Two formats:
 * **grid text** (``*.txt`` and anything not ``*.toml``): rows of 0/1 exactly
   as the thesis writes its matrices, row 1 on top; the cell in row ``r``,
   column ``c`` of an ``R``-row grid is the axial cell ``(c - 1, R - r)``.
-  MATLAB decorations are tolerated (``I = [``, ``]``, ``;``, ``...``), and
-  ``#`` or ``%`` start a comment. Modules are numbered 1..n in reading order.
+  MATLAB decorations are tolerated (one ``I = [`` before the first row,
+  ``]``, ``;``, ``,``, ``...``), and ``#`` or ``%`` start a comment; any
+  other token is an error, a bracket inside a bracket too (a TOML
+  configuration in a file not named ``.toml`` fails there instead of being
+  read as a grid). Modules are numbered 1..n in reading order.
 * **TOML**: ``cells = [[x, y], ...]`` (numbered in reading order), or
   ``[[module]]`` tables with ``id``, ``cell = [x, y]`` and optional
-  ``orientation`` (0..5, the module's Yref); coordinates within
-  ``hexlattice.COORD_LIMIT``.
+  ``orientation`` (0..5, the module's Yref).
 
+The format follows the suffix, never the content. Both formats keep their
+cells within ``hexlattice.COORD_LIMIT`` (one check, :func:`_check_cell`).
 Every error names the file, the line and the problem.
 """
 
@@ -26,16 +30,25 @@ from hexbot.files import load_toml, read_text
 from hexbot.planning.configuration import Configuration, Module
 from hexbot.planning.hexlattice import COORD_LIMIT, Cell
 
-_ASSIGN = re.compile(r"^\s*[A-Za-z_]\w*\s*=")
+_ASSIGN = re.compile(r"^\s*[A-Za-z_]\w*\s*=(?=\s*\[)")
 
 
 def parse_grid(text: str, source: str = "<grid>") -> Configuration:
     """Parse 0/1 grid rows (see the module docstring)."""
     rows: list[list[int]] = []
     lines: list[int] = []
+    depth = 0  # brackets open
     for lineno, raw in enumerate(text.splitlines(), start=1):
         line = re.split(r"[#%]", raw, maxsplit=1)[0]
-        line = _ASSIGN.sub("", line)
+        if not rows and not depth:
+            line = _ASSIGN.sub("", line, count=1)  # MATLAB's `I = [`, before the first row
+        for bracket in re.findall(r"[][]", line):
+            depth += 1 if bracket == "[" else -1
+            if depth > 1:
+                raise ScenarioError(f"{source}:{lineno}: a bracket inside a bracket: not a "
+                                    "0/1 grid (a TOML configuration must be named .toml)")
+            if depth < 0:
+                raise ScenarioError(f"{source}:{lineno}: ']' closes no bracket")
         line = line.replace("[", " ").replace("]", " ").replace("...", " ")
         for chunk in line.split(";"):
             tokens = chunk.replace(",", " ").split()
@@ -58,10 +71,25 @@ def parse_grid(text: str, source: str = "<grid>") -> Configuration:
     if not rows:
         raise ScenarioError(f"{source}: no grid rows found")
     height = len(rows)
-    cells = {(c, height - 1 - r) for r, row in enumerate(rows) for c, v in enumerate(row) if v}
-    if not cells:
+    filled = [r for r, row in enumerate(rows) if 1 in row]
+    if not filled:
         raise ScenarioError(f"{source}: the grid holds no module (all zeros)")
+    # the farthest cells: the top row's first module, the last column's
+    top = filled[0]
+    _check_cell((rows[top].index(1), height - 1 - top), f"{source}:{lines[top]}")
+    right = max(filled, key=lambda r: len(rows[r]) - rows[r][::-1].index(1))
+    _check_cell((len(rows[right]) - 1 - rows[right][::-1].index(1), height - 1 - right),
+                f"{source}:{lines[right]}")
+    cells = {(c, height - 1 - r) for r, row in enumerate(rows) for c, v in enumerate(row) if v}
     return Configuration.from_cells(cells)
+
+
+def _check_cell(cell: Cell, where: str) -> Cell:
+    """``cell`` if it is within the planner's coordinate range (both formats)."""
+    if max(abs(cell[0]), abs(cell[1])) > COORD_LIMIT:  # keeps the int32 arithmetic exact
+        raise ScenarioError(f"{where}: cell {list(cell)} is outside the planner's coordinate "
+                            f"range (-{COORD_LIMIT:,}..{COORD_LIMIT:,})")
+    return cell
 
 
 def _toml_line(text: str, needle: str) -> int:
@@ -75,13 +103,15 @@ def _as_cell(value: object, where: str) -> Cell:
     if (
         not isinstance(value, list)
         or len(value) != 2
-        or not all(isinstance(v, int) and not isinstance(v, bool) for v in value)
+        or not all(_is_int(v) for v in value)
     ):
         raise ScenarioError(f"{where}: a cell must be [x, y] with two integers, got {value!r}")
-    if max(abs(value[0]), abs(value[1])) > COORD_LIMIT:  # keeps the int32 arithmetic exact
-        raise ScenarioError(f"{where}: cell {value} is outside the planner's coordinate range "
-                            f"(-{COORD_LIMIT:,}..{COORD_LIMIT:,})")
-    return (value[0], value[1])
+    return _check_cell((value[0], value[1]), where)
+
+
+def _is_int(value: object) -> bool:
+    """A TOML integer (``true`` is an int to Python, not to a configuration)."""
+    return isinstance(value, int) and not isinstance(value, bool)
 
 
 def parse_toml(text: str, source: str = "<toml>") -> Configuration:
@@ -109,9 +139,9 @@ def parse_toml(text: str, source: str = "<toml>") -> Configuration:
         if not isinstance(entry, dict) or "id" not in entry or "cell" not in entry:
             raise ScenarioError(f"{where}: needs 'id' and 'cell'")
         mid, orientation = entry["id"], entry.get("orientation", 0)
-        if not isinstance(mid, int) or not 1 <= mid <= 63:
+        if not _is_int(mid) or not 1 <= mid <= 63:
             raise ScenarioError(f"{where}: id must be an integer 1..63 (DIP switches), got {mid!r}")
-        if not isinstance(orientation, int) or not 0 <= orientation <= 5:
+        if not _is_int(orientation) or not 0 <= orientation <= 5:
             raise ScenarioError(f"{where}: orientation must be 0..5, got {orientation!r}")
         cell = _as_cell(entry["cell"], where)
         if mid in ids:

@@ -117,7 +117,8 @@ def _across(occupied: set[Cell], goal: frozenset[Cell], end: Cell, void: Cell,
             fixed: Cell | None) -> tuple[list[Hop], Cell] | None:
     """The last leg on the hex line from ``end`` to ``void`` (``corridor``)."""
     for radius in CORRIDORS:
-        found = _leave_for(occupied, goal, corridor(end, void, radius), end, void, fixed)
+        area = corridor(end, void, radius)
+        found = area and _leave_for(occupied, goal, area, end, void, fixed)
         if found:
             return found
     return None

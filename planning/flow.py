@@ -226,8 +226,10 @@ class KernelFlow:
     def _window_fix(self, ends: set[Cell], voids: set[Cell]) -> bool:
         for radius in FIX_RADII:
             for _, end, void in assigned_pairs(ends, voids)[:PAIRS_TRIED]:
-                hops = fix_in_window(self.t.occupied, self.goal, corridor(end, void, radius),
-                                     self.fixed, FIX_STATES)
+                self.deadline.check(self.method)  # a search can take a while
+                window = corridor(end, void, radius)
+                hops = window and fix_in_window(self.t.occupied, self.goal, window,
+                                                self.fixed, FIX_STATES)
                 if hops:
                     self.t.roll(hops)
                     for src, _, _, _ in hops:

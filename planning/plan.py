@@ -31,6 +31,7 @@ class Plan:
     fixed: Cell | None = None  # the module bolted to the base (robust and exact modes)
     method: str = ""  # robust mode: which method planned (direct, backwards, canonical)
     tried: list[str] = field(default_factory=list)  # robust mode: why the methods before it did not
+    rejected: str = ""  # faithful modes: why the independent checker rejects the plan ("" if legal)
 
     @property
     def move_count(self) -> int:

@@ -12,9 +12,10 @@ propagation) and open the inlets that cut the surface into segments
 
 The window is a corridor: the cells within ``radius`` of the hex line from
 the end to the void. Its state space is bounded by ``max_states``, its size
-by 128 cells (the search runs in C, ``planning/_regroup.c``; on the bench's
-pairs of 30 and 100 modules the largest window searched had 121 cells, the
-largest that held a fix 72).
+by 128 cells (``AREA``: the search runs in C, ``planning/_regroup.c``; on
+the bench's pairs of 30 and 100 modules the largest window searched had 121
+cells, the largest that held a fix 72). A longer corridor is not built: for
+a pair a million cells apart it took 16 s and 900 MB, to be refused.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from __future__ import annotations
 import numpy as np
 from scipy.optimize import linear_sum_assignment
 
+from hexbot.planning._regroup import AREA
 from hexbot.planning.hexlattice import Cell, distance, neighbors
 
 #: One rotation: (from, to, Table 4-3 row, substrate cell).
@@ -42,13 +44,19 @@ def disc(center: Cell, radius: int) -> set[Cell]:
     return {(x0 + dx, y0 + dy) for dx, dy in offsets}
 
 
-def corridor(a: Cell, b: Cell, radius: int) -> set[Cell]:
-    """The cells within ``radius`` of the hex line from ``a`` to ``b``."""
+def corridor(a: Cell, b: Cell, radius: int) -> set[Cell] | None:
+    """The cells within ``radius`` of the hex line from ``a`` to ``b``, or None
+    when they are more than the ``AREA`` cells an area search takes (the
+    line alone has one cell per step: a far pair's corridor is never built)."""
     steps = max(1, distance(a, b))
+    if steps >= AREA:
+        return None
     cells: set[Cell] = set()
     for k in range(steps + 1):
         point = (round(a[0] + (b[0] - a[0]) * k / steps), round(a[1] + (b[1] - a[1]) * k / steps))
         cells |= disc(point, radius)
+        if len(cells) > AREA:
+            return None
     return cells
 
 
@@ -124,8 +132,9 @@ def window_flow(tracker, goal: frozenset[Cell], fixed: Cell | None, deadline,
         hops = None
         for radius in RADII:
             for _, end, void in pairs[:PAIRS_TRIED]:
-                hops = fix_in_window(tracker.occupied, goal, corridor(end, void, radius), fixed,
-                                     MAX_STATES)
+                window = corridor(end, void, radius)
+                hops = window and fix_in_window(tracker.occupied, goal, window, fixed,
+                                                MAX_STATES)
                 if hops:
                     break
             if hops:

@@ -110,3 +110,9 @@ def test_a_sweep_benchmark_of_no_tasks_is_a_usage_error(capsys, option):
         main(["bench", "sweep", option, "0"])
     assert exit_.value.code == 2
     assert f"argument {option}: must be at least 1, got 0" in capsys.readouterr().err
+
+
+def test_the_readme_names_every_benchmark():
+    readme = (BENCH.parent / "README.md").read_text()
+    row = next(line for line in readme.splitlines() if line.startswith("| `bench/` |"))
+    assert {name for name in BENCHMARKS if f"`{name}`" not in row} == set()

@@ -12,7 +12,7 @@ import argparse
 import json
 import sys
 
-from hexbot.cli_args import count, output_file
+from hexbot.cli_args import count, image_file
 from hexbot.errors import UsageError
 from hexbot.host.cli_progress import meter
 from hexbot.planning.locomotion import render
@@ -46,7 +46,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="stop when K modules have come to rest past the strip's initial cells",
     )
     run.add_argument("--json", action="store_true", help="print one JSON object")
-    run.add_argument("--render", metavar="OUT", type=output_file,
+    run.add_argument("--render", metavar="OUT", type=image_file((".png", ".gif")),
                      help="draw the run: .png (final) or .gif")
     run.add_argument(
         "--no-connectivity-check", action="store_true",
@@ -84,8 +84,6 @@ def run(args: argparse.Namespace) -> int:
         return _tables(args)
     if args.action == "random":
         return _random(args)
-    if args.render and not args.render.lower().endswith((".png", ".gif")):
-        raise UsageError(f"--render: {args.render!r} must end in .png or .gif")
     rs = load_ruleset(args.ruleset)
     sc = load_scenario(args.scenario, args.n)
     rec = None
@@ -144,7 +142,9 @@ def _int_list(text: str, what: str) -> list[int]:
 def _bank(args: argparse.Namespace) -> int:
     from hexbot.planning.locomotion import bank
 
-    rulesets = [r for r in args.rulesets.split(",") if r]
+    rulesets = [r.strip() for r in args.rulesets.split(",") if r.strip()]
+    if not rulesets:
+        raise UsageError(f"--rulesets: give at least one rule set, not {args.rulesets!r}")
     for r in rulesets:
         load_ruleset(r)  # fail early on a misspelt name
     rows = bank.run_bank(rulesets, _int_list(args.n, "--n"), args.rounds, args.directions)

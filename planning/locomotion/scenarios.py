@@ -1,7 +1,8 @@
 """Scenarios (text maps of obstacles and modules) and the rule sets shipped as data.
 
 Map format (``.map``): optional header lines ``key: value`` and ``;`` comments,
-then the grid, top row first. ``#`` obstacle, ``o`` module, ``.`` empty.
+then the grid, top row first, every row as wide as the first. ``#`` obstacle,
+``o`` module, ``.`` empty.
 Rows made only of ``#`` are floor: they continue without end to both sides.
 Header keys: ``title``, ``figure`` (the thesis figure it reconstructs),
 ``directions`` (which of E N W S to offer; default all four).
@@ -91,20 +92,21 @@ def parse_map(text: str, name: str, source: str, n: int | None = None) -> Scenar
                 f"{source}:{lineno}: unknown map character {sorted(bad)[0]!r} "
                 "(use # obstacle, o module, . empty)"
             )
+        if rows and len(line) != len(rows[0][1]):
+            raise ScenarioError(f"{source}:{lineno}: row has {len(line)} cells, row 1 "
+                                f"(line {rows[0][0]}) has {len(rows[0][1])}")
         rows.append((lineno, line))
     if not rows:
         raise ScenarioError(f"{source}: the map has no rows")
     height = len(rows)
-    width = max(len(r) for _, r in rows)
     obstacles: list[Cell] = []
     modules: list[Cell] = []
     floor_rows: set[int] = set()
     for i, (_, line) in enumerate(rows):
         y = height - 1 - i
-        padded = line.ljust(width, ".")
-        if set(padded) == {"#"}:
+        if set(line) == {"#"}:
             floor_rows.add(y)
-        for x, ch in enumerate(padded):
+        for x, ch in enumerate(line):
             if ch == "#":
                 obstacles.append((x, y))
             elif ch == "o":
@@ -133,7 +135,11 @@ def parse_map(text: str, name: str, source: str, n: int | None = None) -> Scenar
         raise ScenarioError(f"{source}: the strip of modules must rest on the floor or on "
                             f"obstacles; nothing holds the cell below {floating[0]}")
     raised = [x for x, y in obstacles if y not in floor_rows]
-    if raised and max(raised) <= front:
+    if not raised:
+        raise ScenarioError(f"{source}: the map has no raised obstacle (a '#' off the floor "
+                            "rows): the strip would have nothing to cross (the scenario "
+                            "'flat' is a plain floor)")
+    if max(raised) <= front:
         raise ScenarioError(f"{source}: every raised obstacle lies behind the strip's front "
                             f"(x = {front}): the strip would have nothing to cross")
     letters = header.get("directions", "E N W S").split()
@@ -144,7 +150,7 @@ def parse_map(text: str, name: str, source: str, n: int | None = None) -> Scenar
         name=name,
         obstacles=obstacles,
         modules=modules,
-        threshold=max(raised) if raised else None,
+        threshold=max(raised),
         title=header.get("title", ""),
         figure=header.get("figure", ""),
         directions=dirs,

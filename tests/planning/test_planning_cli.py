@@ -1,6 +1,7 @@
 """``hexbot plan``: JSON format, exit status, reasons on stderr, plots, input errors."""
 
 import json
+import re
 
 import pytest
 
@@ -332,3 +333,176 @@ def test_max_steps_below_one_is_a_usage_error(cli_status, capsys, examples_dir):
     code, err = cli_status("plan", examples_dir / P01[1], examples_dir / P01[0],
                         "--mode", "faithful-serial", "--max-steps", "0")
     assert code == 2 and "argument --max-steps: must be at least 1, got 0" in err
+
+
+# -- the audit of `hexbot plan` (each test failed before its fix) -----------------
+
+
+def test_a_toml_configuration_not_named_toml_is_refused_not_read_as_a_grid(cli_status, capsys,
+                                                                           tmp_path):
+    """The format follows the suffix: `cells = [[1, 1], [1, 0]]` in a .cfg file
+    was read as the grid `1 1 1 0` and "planned" (goal reached, 0 moves)."""
+    cfg = tmp_path / "pair_cells.cfg"
+    cfg.write_text("cells = [[1, 1], [1, 0]]\n")
+    three = tmp_path / "three.txt"
+    three.write_text("1 1 1\n")
+    code, err = cli_status("plan", cfg, three)
+    assert code == 1 and err.strip() == (
+        f"hexbot plan: error: {cfg}:1: a bracket inside a bracket: not a 0/1 grid "
+        "(a TOML configuration must be named .toml)")
+    with pytest.raises(ScenarioError, match=r"m.cfg:1: a bracket inside a bracket"):
+        parse_grid("[[module]]\nid = 1\ncell = [0, 0]\n", "m.cfg")
+    with pytest.raises(ScenarioError, match=r"g:2: expected 0 or 1, found 'G'"):
+        parse_grid("I = [1 1]\nG = [1 1]\n", "g")  # MATLAB's `I = [` once, before the rows
+    with pytest.raises(ScenarioError, match=r"g:1: expected 0 or 1, found 'cells'"):
+        parse_grid("cells 1 1\n", "g")
+
+
+def test_drawing_names_are_checked_before_planning_and_a_failed_write_is_one_line(
+        cli_status, capsys, tmp_path, examples_dir, monkeypatch):
+    """--plot out.txt was a matplotlib ValueError, --plot /proc/x.png an OSError,
+    both tracebacks after the planning; --plot noext wrote noext.png."""
+    pair = (examples_dir / P01[1], examples_dir / P01[0])
+    for option, name, words in (
+            ("--plot", tmp_path / "out.txt", "the name must end in .png"),
+            ("--plot", tmp_path / "noext", "the name must end in .png"),
+            ("--render", tmp_path / "out.txt", "the name must end in .gif"),
+            ("--render", tmp_path / "out.png", "the name must end in .gif"),
+            ("--plot", "/proc/x.png", "/proc/x.png: cannot write"),
+            ("--render", "/proc/x.gif", "/proc/x.gif: cannot write")):
+        code, err = cli_status("plan", *pair, option, name)
+        assert code == 2 and f"argument {option}: " in err and words in err, (name, err)
+        assert "Traceback" not in err
+    assert not list(tmp_path.iterdir())  # nothing written, no probe left behind
+    from hexbot.planning import plot
+
+    def full_disk(plan, path):
+        raise OSError(28, "No space left on device")
+    monkeypatch.setattr(plot, "plot_plan", full_disk)
+    code, err = cli_status("plan", *pair, "--plot", tmp_path / "p.png")
+    assert code == 1 and err.strip() == (
+        f"hexbot plan: error: --plot: cannot write {tmp_path / 'p.png'}: No space left on device")
+
+
+def test_a_grid_file_keeps_to_the_coordinate_limit(cli_status, capsys, tmp_path):
+    """A grid of 1,100,000 rows crashed the C scheduler ("a cell is out of
+    range"): grids pass through the TOML lists' one check."""
+    from hexbot.planning.hexlattice import COORD_LIMIT
+
+    tall = tmp_path / "tall.txt"
+    tall.write_text("0\n1\n" + "0\n" * COORD_LIMIT + "1\n")  # (0, COORD_LIMIT + 1) on line 2
+    code, err = cli_status("plan", tall, tall)
+    assert code == 1 and err.strip() == (
+        f"hexbot plan: error: {tall}:2: cell [0, {COORD_LIMIT + 1}] is outside the planner's "
+        f"coordinate range (-{COORD_LIMIT:,}..{COORD_LIMIT:,})")
+    wide = "0 " * (COORD_LIMIT + 1) + "1\n"
+    with pytest.raises(ScenarioError, match=rf"w:2: cell \[{COORD_LIMIT + 1}, 0\] is outside"):
+        parse_grid("% wide\n" + wide, "w")
+    assert parse_grid("1\n" + "0\n" * (COORD_LIMIT - 1) + "1\n").cells == {(0, 0), (0, COORD_LIMIT)}
+
+
+def test_booleans_are_not_integers_in_toml(tmp_path):
+    """`id = true` passed isinstance(True, int): "goal reached", then the JSON failed."""
+    for entry, words in (("id = true\ncell = [0, 0]", "id must be an integer 1..63"),
+                         ("id = 1\ncell = [0, 0]\norientation = true", "orientation must be 0..5"),
+                         ("id = 1\ncell = [true, 0]", "a cell must be [x, y] with two integers")):
+        with pytest.raises(ScenarioError, match=re.escape(f"m.toml: [[module]] #1: {words}")):
+            parse_toml(f"[[module]]\n{entry}\n", "m.toml")
+
+
+def test_a_far_pair_keeps_to_its_time_budget(capsys, tmp_path):
+    """Two modules a million cells from their goal: a window fix built a corridor
+    of millions of cells (16 s of CPU and 910 MB with --budget 1)."""
+    import time
+
+    from hexbot.planning.windows import corridor
+
+    started = time.process_time()
+    assert corridor((1_000_000, 0), (1_000_000, -1_000_000), 1) is None
+    assert time.process_time() - started < 0.1
+    assert len(corridor((0, 0), (3, 0), 1)) == 16  # a short one is built as before
+    a = _toml(tmp_path / "f1.toml", [(1_000_000, 0), (999_999, 0)])
+    b = _toml(tmp_path / "f2.toml", [(1_000_000, -1_000_000), (999_999, -1_000_000)])
+    started = time.process_time()
+    code, _, err = run_plan(capsys, a, b, "--budget", "1", "--summary")
+    assert code == 1 and "goal not reached" in err
+    assert time.process_time() - started < 8
+
+
+def test_a_budget_message_names_the_limit_that_ran_out():
+    """A method's wall share ran out while its CPU cap did not, and the message
+    gave the cap: `--budget 3` said "its time budget of 2 s is used up"."""
+    from hexbot.planning.budget import BudgetExhausted, Deadline
+
+    with pytest.raises(BudgetExhausted,
+                       match=r"^local: gave up, its time budget of 0 s is used up$"):
+        Deadline(0.0).capped(100.0).check("local")
+    with pytest.raises(BudgetExhausted,
+                       match=r"^direct: gave up, its cap of 0 s of CPU time is used up$"):
+        Deadline(100.0).capped(0.0).check("direct")
+
+
+def test_fixed_is_a_usage_error_in_the_faithful_modes(cli_status, capsys, examples_dir):
+    for mode in ("faithful-serial", "faithful-parallel"):
+        code, err = cli_status("plan", *(examples_dir / f for f in P01), "--mode", mode,
+                               "--fixed", "0,0")
+        assert code == 2 and err.strip() == (
+            f"hexbot plan: error: --fixed is for the robust and exact modes: the thesis' "
+            f"planner ({mode}) bolts no module")
+
+
+def test_a_faithful_plan_the_checker_rejects_is_no_success(capsys, examples_dir):
+    """S02 in faithful-parallel: two moves of step 5 need one cell. The plan is
+    the thesis' (unchanged); it exited 0 with "goal reached" and a warning."""
+    from hexbot.planning.config_io import load_configuration
+    from hexbot.planning.thesis.planner import plan_faithful
+
+    s02 = (examples_dir / "test_all_s02_initial.txt", examples_dir / "test_all_s02_goal.txt")
+    code, out, err = run_plan(capsys, *s02, "--mode", "faithful-parallel", "--summary")
+    problem = "step 5: modules 2 and 3 both need cell (1, 5)"
+    assert code == 1
+    assert err == f"hexbot plan: the independent checker rejects the plan: {problem}\n"
+    assert out.startswith(
+        "mode faithful-parallel: goal reached by an ILLEGAL plan, 10 time step(s)")
+    code, out, err = run_plan(capsys, *s02, "--mode", "faithful-parallel", "--json")
+    data = json.loads(out)
+    assert code == 1 and data["rejected"] == problem and data["reached"] is True
+    same = plan_faithful(load_configuration(s02[0]), load_configuration(s02[1]).cells, True)
+    assert [[(m["module"], tuple(m["to"])) for m in s["moves"]] for s in data["steps"]] == [
+        [(m.module, m.dst) for m in step.moves] for step in same.steps]
+    code, out, err = run_plan(capsys, *s02, "--mode", "faithful-serial", "--summary")
+    assert code == 0 and err == "" and "ILLEGAL" not in out  # the serial plan is legal
+
+
+def test_a_pair_farther_apart_than_two_to_the_20_keeps_its_bounds():
+    """The bounds' "never" sentinel (2^20) was also the cut-off for "no plan can
+    exist": a pair 2,000,000 cells apart lost its bounds."""
+    from hexbot.planning.cli_plan import pair_bounds
+    from hexbot.planning.configuration import Configuration
+    from hexbot.planning.plan import Plan
+
+    start = Configuration.from_cells([(-1_000_000, 0), (-999_999, 0)])
+    plan = Plan("robust", start, frozenset({(1_000_000, 0), (999_999, 0)}))
+    bounds = pair_bounds(plan)
+    assert bounds is not None and bounds.moves.value == 2 * 1_999_999
+    assert bounds.bottleneck.value == 1_999_999 and bounds.time_steps.value >= 1_999_999
+
+
+def test_a_byte_order_mark_is_read_past_in_grid_and_toml_files(capsys, tmp_path):
+    grid, toml = tmp_path / "bom.txt", tmp_path / "bom.toml"
+    grid.write_text("\ufeff1 1\n", encoding="utf-8")
+    toml.write_text("\ufeffcells = [[0, 0], [1, 0]]\n", encoding="utf-8")
+    code, out, err = run_plan(capsys, grid, toml)
+    assert code == 0 and err == "" and "goal reached, 0 time step(s)" in out
+
+
+def test_a_disconnected_configuration_gets_no_lower_bounds(capsys, tmp_path):
+    apart = tmp_path / "apart.txt"
+    apart.write_text("1 0 1\n0 0 0\n")
+    two = tmp_path / "two.txt"
+    two.write_text("1 1\n")
+    for first, second in ((apart, two), (two, apart)):
+        code, out, err = run_plan(capsys, first, second, "--summary")
+        assert code == 1 and "lower bounds" not in out and "not connected" in err
+        code, out, _ = run_plan(capsys, first, second, "--json", "--summary")
+        assert code == 1 and "bounds" not in json.loads(out)

@@ -267,3 +267,16 @@ def test_a_reports_outcome_keeps_the_exit_status_of_what_stopped_it(status):
         report.outcome(5)
     assert info.value.exit_status == status
     assert isinstance(info.value, CancelledError) == (status == 130)
+
+
+def test_plot_and_render_draw_the_executed_plan(tmp_path, capsys):
+    """--plot and --render were ignored with --execute (exit 0, no file)."""
+    initial, goal = tmp_path / "initial.toml", tmp_path / "goal.toml"
+    initial.write_text(PAIR_INITIAL)
+    goal.write_text(PAIR_GOAL)
+    png, gif = tmp_path / "plan.png", tmp_path / "plan.gif"
+    status, out = _run_json(capsys, str(initial), str(goal), "--scenario", "pair",
+                            "--plot", str(png), "--render", str(gif))
+    assert status == 0 and out["execution"]["reached"]
+    assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    assert gif.read_bytes()[:6] == b"GIF89a"
