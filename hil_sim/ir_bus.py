@@ -166,6 +166,14 @@ class _Arrival:
     value: int
     framing_error: bool
     parts: list[Part] = field(default_factory=list)  # their levels, for a collision
+    #: the receiver's settings (line, bit time) while the collision's value is
+    #: still to be read: read once, when asked for (:meth:`read_value`), not
+    #: again for every byte that joins (at boot the PC hears some 20 at once)
+    unread: tuple[LineSettings, float] | None = None
+    together: bool = field(init=False)  # every part whole and started with the first
+
+    def __post_init__(self) -> None:
+        self.together = all(p.whole and p.start == self.parts[0].start for p in self.parts)
 
     def overlaps(self, byte: AirByte) -> bool:
         return self.start < byte.end and byte.start < self.end and byte.sender not in self.senders
@@ -181,12 +189,21 @@ class _Arrival:
         self.start, self.end = min(self.start, byte.start), max(self.end, byte.end)
         self.senders.add(byte.sender)
         self.parts.append(part)
-        if all(p.start == part.start and p.whole for p in self.parts):
+        self.together = (self.together and part.whole
+                         and part.start == self.parts[0].start)
+        if self.together:
             self.value &= value
         else:
-            read = ir_line.read(self.parts, rx, bit)
-            self.value = self.value if read is None else read[0]
+            self.unread = (rx, bit)
         self.framing_error = True
+
+    def read_value(self) -> int:
+        """The byte the receiver reads (a collision's, read now if not yet)."""
+        if self.unread is not None:
+            read = ir_line.read(self.parts, *self.unread)
+            self.value = self.value if read is None else read[0]
+            self.unread = None
+        return self.value
 
 
 @dataclass
@@ -311,7 +328,7 @@ class IrMedium:
             arrival = previous
         else:
             self._last[receiver] = arrival
-        if not self.air.deliver(receiver, arrival.value, arrival.framing_error):
+        if not self.air.deliver(receiver, arrival.read_value(), arrival.framing_error):
             self._event(byte, receiver, "ir-dropped", reason="receiver off (RXEN) or overrun")
         self._spurious(byte, receiver, faults)
 
@@ -355,7 +372,7 @@ class IrMedium:
         while self._pc_pending and self._pc_pending[0].end <= horizon:
             arrival = self._pc_pending.pop(0)
             # A real RS232 converter passes a garbled byte on; so do we.
-            self._pc_ready.append(arrival.value)
+            self._pc_ready.append(arrival.read_value())
 
     def pc_take(self) -> bytes:
         data = bytes(self._pc_ready)

@@ -90,17 +90,29 @@ def intersect(a: list[Span], b: list[Span]) -> list[Span]:
 
 
 def line(parts: list[Part]) -> list[tuple[float, int]]:
-    """The receiver's line: (time a level begins, level), idle high after."""
+    """The receiver's line: (time a level begins, level), idle high after.
+    Low wherever some part is low where the receiver sees it: a sweep over
+    the parts' low intervals (at boot the PC hears some 20 bytes at once)."""
     waves = [levels(p.value, p.tx, p.start, p.bit) for p in parts]
     times = sorted({t for wave in waves for t, _ in wave}
                    | {t for p in parts for span in p.spans for t in span})
+    edges: dict[float, int] = {}  # time -> change of the count of low parts
+    for part, wave in zip(parts, waves, strict=True):
+        for (since, level), (until, _) in zip(wave, wave[1:]):
+            if level:
+                continue
+            for a, b in part.spans:
+                lo, hi = max(since, a), min(until, b)
+                if lo < hi:
+                    edges[lo] = edges.get(lo, 0) + 1
+                    edges[hi] = edges.get(hi, 0) - 1
     out: list[tuple[float, int]] = []
+    low = 0
     for t in times:
-        level = min(p.level(t, wave) for p, wave in zip(parts, waves, strict=True))
+        low += edges.get(t, 0)
+        level = 0 if low else 1
         if not out or out[-1][1] != level:
             out.append((t, level))
-    if out[-1][1] != 1:
-        out.append((times[-1], 1))  # never: every part is high after its last time
     return out
 
 
