@@ -548,7 +548,17 @@ def _can_form(surface: frozenset[Cell], layer: Layer, group: Group, model: str) 
 def find_bridge_cells(surface: Surface, model: str = "deformable", *, bridges: bool = True,
                       three: bool = True) -> BridgeMap:
     """FINDBRIDGECELLS (Fig. 7) on a map; under the hexbot model on the
-    surface with its Fill cells held (:mod:`.fill`)."""
+    surface with its Fill cells held (:mod:`.fill`). A map the perimeter
+    refuses is a ScenarioError naming its file, as parsing errors do."""
+    try:
+        return _find_bridge_cells(surface, model, bridges, three)
+    except ScenarioError as exc:
+        if not surface.source:
+            raise
+        raise ScenarioError(f"{surface.source}: {exc}") from None
+
+
+def _find_bridge_cells(surface: Surface, model: str, bridges: bool, three: bool) -> BridgeMap:
     fills = fill_cells(surface.surface, surface.modules, surface.goals, model) \
         if model == "hexbot" else ()
     s = surface.surface | frozenset(fills)

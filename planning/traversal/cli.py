@@ -16,7 +16,7 @@ import sys
 from pathlib import Path
 from typing import Any
 
-from hexbot.cli_args import output_file
+from hexbot.cli_args import image_file
 from hexbot.errors import ScenarioError, UsageError
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.workflows import Verify
@@ -25,22 +25,26 @@ from hexbot.planning.traversal.engine import Result, traverse
 from hexbot.planning.traversal.motion import MODELS
 from hexbot.planning.traversal.surface import Surface, load_map
 
+#: What matplotlib writes for ``--plot`` (the suffix picks the format).
+PLOT_SUFFIXES = (".png", ".svg", ".pdf")
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("map", nargs="?", help="text map, bank name or random:SEED")
     parser.add_argument("--motion", choices=MODELS, default=None,
                         help="motion model: the paper's deformable modules (default) or "
-                             "HexBot's rotations of Table 4-3 (the default with --execute)")
+                             "HexBot's rotations of Table 4-3 (the only one with --execute: "
+                             "the modules are rigid)")
     parser.add_argument("--no-bridges", action="store_true", help="form no bridge at all")
     parser.add_argument("--no-3-bridges", action="store_true", help="only 1- and 2-cell bridges")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
-    parser.add_argument("--render", metavar="OUT.gif", type=output_file,
+    parser.add_argument("--render", metavar="OUT.gif", type=image_file((".gif",)),
                         help="animate the rounds (plot extra)")
     parser.add_argument("--sweep", action="store_true",
                         help="instead of a map: the paper's Figs. 12-13 experiment (and the "
                              "SINGLE-bridge one), a table or --json")
-    parser.add_argument("--plot", metavar="OUT.png", type=output_file,
-                        help="with --sweep: draw the figures")
+    parser.add_argument("--plot", metavar="OUT.png", type=image_file(PLOT_SUFFIXES),
+                        help="with --sweep: draw the figures (.png, .svg or .pdf)")
     parser.add_argument("--random", metavar="FIRST..LAST",
                         help="instead of a map: run random:SEED for every seed in the range "
                              "and count reached/deadlock/violation (exit 1 unless all reached)")
@@ -115,12 +119,35 @@ def summary(bmap: BridgeMap, result: Result) -> str:
     return "\n".join(lines)
 
 
-def run(args: argparse.Namespace) -> int:
+def refuse_ignored_options(args: argparse.Namespace) -> None:
+    """Options that do not fit together stop here (exit 2), before any work,
+    instead of being silently ignored."""
     if args.plot and not args.sweep:
         raise UsageError("--plot draws the --sweep figures: give --sweep too "
                          "(--render animates one map)")
     if args.map and (args.sweep or args.random):
         raise UsageError("--sweep and --random run their own maps: give no MAP with them")
+    if args.sweep or args.random:
+        given = "--sweep" if args.sweep else "--random"
+        if args.execute:
+            raise UsageError(f"--execute runs one map on a cluster: not with {given}")
+        if args.render:
+            raise UsageError(f"--render animates one map: not with {given}"
+                             + (" (--plot draws its figures)" if args.sweep else ""))
+    if args.sweep:
+        if args.no_bridges or args.no_3_bridges:
+            raise UsageError("--sweep compares the runs with and without bridges itself: "
+                             "no --no-bridges or --no-3-bridges")
+        if args.motion == "hexbot":
+            raise UsageError("--sweep reproduces the paper's figures, deformable motion only "
+                             "(rigid modules form no 3-bridge)")
+    if args.execute and args.motion == "deformable":
+        raise UsageError("--execute runs rigid modules, which cannot make deformable moves: "
+                         "--motion hexbot (the default with --execute)")
+
+
+def run(args: argparse.Namespace) -> int:
+    refuse_ignored_options(args)
     if args.sweep:
         from hexbot.planning.traversal.experiments import run_sweep
 
@@ -137,11 +164,11 @@ def run(args: argparse.Namespace) -> int:
     bmap = find_bridge_cells(surface, args.motion or "deformable", bridges=not args.no_bridges,
                              three=not args.no_3_bridges)
     result = traverse(bmap)
-    if args.render:
+    print(json.dumps(result_json(bmap, result)) if args.json else summary(bmap, result))
+    if args.render:  # after the result: a drawing that fails does not lose it
         from hexbot.planning.traversal.render import render_gif
 
         render_gif(bmap, result, args.render)
-    print(json.dumps(result_json(bmap, result)) if args.json else summary(bmap, result))
     if result.status != "reached":
         print(f"hexbot traverse: {result.status}: {result.reason}", file=sys.stderr)
         return 1
@@ -181,6 +208,10 @@ def run_execute(args: argparse.Namespace, surface: Surface) -> int:
         print(json.dumps({**result_json(bmap, result), "execution": report.as_json()}))
     else:
         print(report.line(plan.move_count))
+    if args.render:
+        from hexbot.planning.traversal.render import render_gif
+
+        render_gif(bmap, result, args.render)
     if not report.reached:
         reason = report.failure.splitlines()[0] if report.failure else "not reached"
         print(f"hexbot traverse: execution stopped: {reason}", file=sys.stderr)

@@ -11,7 +11,9 @@ rule that moved them.
 
 Decisions the paper leaves open (docs/traversal.md, "MOVEMODULE"):
 - a module may start, or leave a Bridge or Support cell, when none of its
-  neighbour cells changed in the last round; this yields the 2-cell spacing;
+  neighbour cells changed in the last round; this yields the 2-cell spacing
+  (under the hexbot model the last two rounds: a 3-cell spacing, since a
+  rigid rotation sweeps a cell two away);
 - a Bridge module counts the modules that pass as the entries into the last
   cell next to it on the way over the bridge (``Group.pass_cells``);
 - a module leaving a Bridge cell never enters the pocket it closed;
@@ -25,7 +27,12 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from hexbot.planning.traversal.bridges import BridgeMap, Group
-from hexbot.planning.traversal.motion import Rolled, next_rotation, required_empty
+from hexbot.planning.traversal.motion import (
+    Rolled,
+    body_cells,
+    next_rotation,
+    required_empty,
+)
 from hexbot.protocol.lattice import SIDES, Cell, distance, neighbor
 
 STATUSES = ("reached", "deadlock", "violation")
@@ -118,7 +125,12 @@ class Engine:
         self.modules = [Module(k + 1, layer.cells[k], layer.pivots[k]) for k in range(self.n)]
         self.chain_cells = [m.cell for m in self.modules]
         self.at: dict[Cell, Module] = {m.cell: m for m in self.modules}
-        self.changed: set[Cell] = set()
+        self.changed: set[Cell] = set()  # in the last round, or two (hexbot model)
+        self.changed_last: set[Cell] = set()
+        # A rigid rotation sweeps a cell two away (Table 4-3, ring 2), so two
+        # modules with two free cells between them can sweep the same cell: under
+        # the hexbot model "quiet" covers two rounds, which leaves three free cells.
+        self.quiet_rounds = 2 if self.model == "hexbot" else 1
         self.entered: set[Cell] = set()
         self.last_moves: list[tuple[Cell, Cell]] = []
         self.stall_rounds = stall_rounds or 8 * self.n + 40
@@ -129,7 +141,8 @@ class Engine:
         return cell in self.surface or cell in self.at
 
     def quiet(self, m: Module) -> bool:
-        """None of the module's neighbour cells changed in the last round."""
+        """None of the module's neighbour cells changed in the last round (the last
+        two under the hexbot model)."""
         return not any(neighbor(m.cell, s) in self.changed for s in SIDES)
 
     def sensing(self, m: Module):
@@ -255,13 +268,19 @@ class Engine:
                 if self.occupied(cell):
                     return fail("swept cells empty", [m], f"{list(cell)} is occupied "
                                 f"({self.model} model)")
+        # no move passes through a cell another move passes through or needs empty
+        # (for rigid modules: the plan checker's "no two moves need one cell")
+        bodies = {m.ident: set(body_cells(rolled.rotation, rolled.src, self.model))
+                  for m, rolled in actions}
         for m, rolled in actions:
-            swept = set(required_empty(rolled.rotation, rolled.src, self.model))
+            needs = {*bodies[m.ident], *required_empty(rolled.rotation, rolled.src, self.model)}
             for other, orolled in actions:
                 if other is m:
                     continue
-                if swept & {orolled.src, orolled.dst}:
-                    return fail("swept cells empty", [m, other], "their rotations cross")
+                shared = needs & bodies[other.ident]
+                if shared:
+                    return fail("swept cells empty", [m, other],
+                                f"their rotations cross in {list(min(shared))}")
                 if distance(rolled.src, orolled.src) == 1 or \
                         distance(rolled.dst, orolled.dst) == 1:
                     return fail("moving modules never adjacent", [m, other],
@@ -306,7 +325,9 @@ class Engine:
             for m, rolled in actions:
                 m.cell, m.pivot = rolled.dst, rolled.substrate
                 self.at[m.cell] = m
-            self.changed = {r.src for r in records} | {r.dst for r in records}
+            now = {r.src for r in records} | {r.dst for r in records}
+            self.changed = (now | self.changed_last) if self.quiet_rounds == 2 else now
+            self.changed_last = now
             self.entered = {r.dst for r in records}
             self.last_moves = [(r.src, r.dst) for r in records]
             for m, _ in actions:

@@ -108,8 +108,12 @@ def plot(sweep: list[dict[str, Any]], path: str) -> None:
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    try:
+        fig.savefig(path, dpi=110)
+    except OSError as exc:
+        raise ScenarioError(f"--plot: cannot write {path}: {exc.strerror or exc}") from None
+    finally:
+        plt.close(fig)
 
 
 def run_sweep(args: argparse.Namespace) -> int:
@@ -124,16 +128,19 @@ def run_sweep(args: argparse.Namespace) -> int:
     return 1 if bad else 0
 
 
-def random_runs(seeds: range, model: str = "deformable") -> dict[str, Any]:
+def random_runs(seeds: range, model: str = "deformable", *, bridges: bool = True,
+                three: bool = True) -> dict[str, Any]:
     """Every ``random:SEED`` of ``seeds``: how many are reached, deadlock or break
-    an invariant, and why each failure did (docs/traversal.md, random surfaces)."""
+    an invariant, and why each failure did (docs/traversal.md, random surfaces).
+    ``bridges``, ``three``: as :func:`find_bridge_cells`."""
     from hexbot.planning.traversal.bank import random_surface
 
     counts = dict.fromkeys(("reached", "deadlock", "violation", "refused"), 0)
     failures = []
     for seed in seeds:
         try:
-            result = traverse(find_bridge_cells(random_surface(seed), model))
+            result = traverse(find_bridge_cells(random_surface(seed), model, bridges=bridges,
+                                                three=three))
         except ScenarioError as exc:  # the map cannot be crossed under this model
             counts["refused"] += 1
             failures.append({"seed": seed, "status": "refused", "reason": str(exc)})
@@ -141,7 +148,8 @@ def random_runs(seeds: range, model: str = "deformable") -> dict[str, Any]:
         counts[result.status] += 1
         if result.status != "reached":
             failures.append({"seed": seed, "status": result.status, "reason": result.reason})
-    return {"seeds": [seeds.start, seeds.stop - 1], "motion": model, **counts,
+    return {"seeds": [seeds.start, seeds.stop - 1], "motion": model,
+            "bridges": "none" if not bridges else "all" if three else "1-2", **counts,
             "failures": failures}
 
 
@@ -153,11 +161,13 @@ def run_random(args: argparse.Namespace) -> int:
         raise UsageError(f"--random {args.random}: expected FIRST..LAST seeds") from None
     if not seeds:
         raise UsageError(f"--random {args.random}: the range is empty (LAST below FIRST)")
-    report = random_runs(seeds, args.motion or "deformable")
+    report = random_runs(seeds, args.motion or "deformable", bridges=not args.no_bridges,
+                         three=not args.no_3_bridges)
     if args.json:
         print(json.dumps(report))
     else:
-        print(f"random:{seeds.start}..{seeds.stop - 1} ({report['motion']}): "
+        bridges = "" if report["bridges"] == "all" else f", bridges: {report['bridges']}"
+        print(f"random:{seeds.start}..{seeds.stop - 1} ({report['motion']}{bridges}): "
               + ", ".join(f"{report[k]} {k}" for k in ("reached", "deadlock", "violation",
                                                        "refused")))
         for f in report["failures"]:

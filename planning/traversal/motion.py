@@ -39,6 +39,18 @@ def required_empty(rotation: Rotation, cell: Cell, model: str) -> tuple[Cell, ..
     return (goal, swept[0]) if model == "deformable" else (goal, *swept)
 
 
+def body_cells(rotation: Rotation, cell: Cell, model: str) -> tuple[Cell, ...]:
+    """Cells the module's body passes through, which no other move of the round
+    may pass through or need empty. A rigid module sweeps all of Table 4-3's
+    cells: its start, goal and three swept cells, the cells a move needs in the
+    plan checker and the schedule (``planning.schedule.cells_of``, checked
+    equal by a test). The paper's deformable module holds only its start and
+    goal: two of them may share a free side (its Figs. 12-13 cross a channel
+    that way)."""
+    _sub, goal, swept = rotation.at(cell)
+    return (cell, goal) if model == "deformable" else (cell, goal, *swept)
+
+
 @dataclass(frozen=True)
 class Rolled:
     """One rotation chosen by the rule: from ``src`` to ``dst`` over ``substrate``."""

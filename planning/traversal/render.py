@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+from hexbot.errors import ScenarioError
 from hexbot.extras import require
 from hexbot.planning.traversal.bridges import BridgeMap
 from hexbot.planning.traversal.engine import Result
@@ -60,6 +61,10 @@ def render_gif(bmap: BridgeMap, result: Result, path: str | Path, fps: int = 4,
 
     animation = FuncAnimation(fig, draw, frames=len(frames))
     path = Path(path)
-    animation.save(str(path), writer=PillowWriter(fps=fps))
-    plt.close(fig)
+    try:
+        animation.save(str(path), writer=PillowWriter(fps=fps))
+    except OSError as exc:
+        raise ScenarioError(f"--render: cannot write {path}: {exc.strerror or exc}") from None
+    finally:
+        plt.close(fig)
     return path

@@ -30,6 +30,7 @@ class Surface:
     modules: frozenset[Cell]
     goals: frozenset[Cell]
     name: str = "surface"
+    source: str = ""  # the map file, named by errors found past parsing ("": none)
 
     @property
     def n(self) -> int:
@@ -67,7 +68,7 @@ def parse_map(text: str, source: str = "<map>") -> Surface:
             found[token].add(cell)
             line_of[cell] = lineno
     surface = Surface(frozenset(found["S"]), frozenset(found["M"]), frozenset(found["G"]),
-                      Path(source).stem)
+                      Path(source).stem, source)
     _check(surface, source, line_of)
     return surface
 
@@ -118,4 +119,4 @@ def shifted(surface: Surface, dx: int, dy: int) -> Surface:
         return frozenset((x + dx, y + dy) for x, y in cells)
 
     return Surface(move(surface.surface), move(surface.modules), move(surface.goals),
-                   surface.name)
+                   surface.name, surface.source)

@@ -58,10 +58,12 @@ def test_render_writes_an_animated_gif(tmp_path):
 def test_random_range_counts_outcomes_and_fails_unless_all_reached(capsys):
     status, out = _json(capsys, "--random", "160..169")
     assert status == 0 and out["reached"] == 10 and out["failures"] == []
-    # under the hexbot model random:2 is refused: exit 1, with the reason
+    # under the hexbot model random:2 is refused, random:1 and 3 break an
+    # invariant (two rigid modules sweep one cell): exit 1, with the reasons
     status = main(["traverse", "--random", "0..3", "--motion", "hexbot"])
     text = capsys.readouterr().out
-    assert status == 1 and "3 reached" in text and "random:2: refused" in text
+    assert status == 1 and "1 reached, 0 deadlock, 2 violation, 1 refused" in text
+    assert "random:2: refused" in text and "random:1: violation" in text
 
 
 def test_random_range_must_be_seeds(capsys):
@@ -96,7 +98,60 @@ def test_an_unknown_map_is_neither_a_file_nor_a_shipped_map(cli_status, capsys):
     ([], "give a MAP (or --sweep or --random FIRST..LAST)"),
     (["fig14", "--random", "0..1"], "give no MAP with them"),
     (["fig14", "--sweep"], "give no MAP with them"),
+    # rigid modules cannot make the deformable model's moves
+    (["hil-three", "--execute", "--motion", "deformable"],
+     "--execute runs rigid modules, which cannot make deformable moves"),
+    # options --random and --sweep would otherwise ignore
+    (["--random", "0..1", "--execute"], "--execute runs one map on a cluster: not with --random"),
+    (["--sweep", "--execute"], "--execute runs one map on a cluster: not with --sweep"),
+    (["--random", "0..1", "--render", "x.gif"], "--render animates one map: not with --random"),
+    (["--sweep", "--render", "x.gif"], "--render animates one map: not with --sweep"),
+    (["--sweep", "--no-bridges"], "no --no-bridges or --no-3-bridges"),
+    (["--sweep", "--no-3-bridges"], "no --no-bridges or --no-3-bridges"),
+    (["--sweep", "--motion", "hexbot"], "deformable motion only"),
+    # drawings that cannot be written: refused before the work
+    (["hil-flat", "--render", "x.txt"], "x.txt: the name must end in .gif"),
+    (["hil-flat", "--render", "/proc/x.gif"], "/proc/x.gif: cannot write"),
+    (["--sweep", "--plot", "x.txt"], "x.txt: the name must end in .png or .svg or .pdf"),
 ])
 def test_usage_errors_exit_2_before_any_run(cli_status, capsys, argv, words):
     code, err = cli_status("traverse", *argv)
     assert code == 2 and words in err
+
+
+def test_random_honours_no_bridges(capsys):
+    status, out = _json(capsys, "--random", "160..169", "--no-bridges")
+    # the same seeds all reached with bridges (above); narrow pockets break without
+    assert status == 1 and out["bridges"] == "none" and out["violation"] > 0
+    status, out = _json(capsys, "--random", "160..161", "--no-3-bridges")
+    assert status == 0 and out["bridges"] == "1-2"
+
+
+def test_the_result_is_printed_before_the_drawing_and_a_failed_write_is_one_line(
+        capsys, monkeypatch, tmp_path):
+    pytest.importorskip("matplotlib")
+    from hexbot.planning.traversal import render
+
+    def refuse(*_args, **_kwargs):
+        raise PermissionError(13, "Permission denied")
+
+    monkeypatch.setattr(render.FuncAnimation, "save", refuse)
+    out = tmp_path / "run.gif"
+    code = main(["traverse", "hil-flat", "--render", str(out)])
+    captured = capsys.readouterr()
+    assert code == 1 and captured.err.strip() == (
+        f"hexbot traverse: error: --render: cannot write {out}: Permission denied")
+    assert "reached: 8 time steps, 9 moves" in captured.out
+
+
+def test_perimeter_errors_name_the_map_file(cli_status, tmp_path):
+    chain = tmp_path / "gap.txt"  # two modules apart: not one chain along the perimeter
+    chain.write_text("M . M G . G .\nS S S S S S S\n")
+    code, err = cli_status("traverse", chain)
+    assert code == 1 and err.strip() == (
+        f"hexbot traverse: error: {chain}: the modules (M) do not form one chain along "
+        "the perimeter")
+    goals = tmp_path / "goals.txt"
+    goals.write_text(". . . . . . .\nM M G . . G .\nS S S S S S S\n")
+    code, err = cli_status("traverse", goals, "--motion", "hexbot")
+    assert code == 1 and f"error: {goals}: the goal cells (G) are not consecutive" in err
