@@ -59,6 +59,30 @@ def test_an_interrupt_keeps_the_finished_rows_and_resume_runs_only_the_rest(
     assert len(part_files(out)) == 1  # closing merged the parts
 
 
+def ctrl_c_when(argv: list[str], ready, pause: float = 0.0) -> tuple[int, str]:
+    """Run ``argv`` in a group of its own, send the group SIGINT (a terminal's
+    Ctrl-C reaches every process of it) once ``ready(proc)``, plus ``pause``
+    seconds; (exit status, stderr)."""
+    # preexec: a suite started in the background (`make test &`) passes Ctrl-C
+    # on as ignored; the command gets the default, as from a terminal
+    proc = subprocess.Popen(argv, stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    try:
+        deadline = time.monotonic() + 120
+        while not ready(proc):
+            assert proc.poll() is None, proc.stderr.read()
+            assert time.monotonic() < deadline
+            time.sleep(0.01)
+        time.sleep(pause)
+        os.killpg(proc.pid, signal.SIGINT)
+        err = proc.communicate(timeout=120)[1]
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    return proc.returncode, err
+
+
 def test_ctrl_c_on_the_command_exits_130_and_resume_completes(write_spec, tmp_path):
     # Enough tasks that the first flush (every 5 s) comes well before the end:
     # with 40 tasks of ~0.1 s a quiet machine once finished them all first.
@@ -66,23 +90,8 @@ def test_ctrl_c_on_the_command_exits_130_and_resume_completes(write_spec, tmp_pa
     spec = write_spec(sweep_text(tasks))
     out = tmp_path / "out"
     argv = [str(HEXBOT), "sweep", str(spec), "--out", str(out), "--workers", "1"]
-    # preexec: a suite started in the background (`make test &`) passes Ctrl-C
-    # on as ignored; the command gets the default, as from a terminal
-    proc = subprocess.Popen(argv, stderr=subprocess.PIPE, text=True, start_new_session=True,
-                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    try:
-        deadline = time.monotonic() + 120
-        while not part_files(out):  # rows are on disk: the sweep is under way
-            assert proc.poll() is None, proc.stderr.read()
-            assert time.monotonic() < deadline
-            time.sleep(0.05)
-        os.killpg(proc.pid, signal.SIGINT)  # a terminal's Ctrl-C reaches the whole group
-        err = proc.communicate(timeout=120)[1]
-    finally:
-        if proc.poll() is None:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
-    assert proc.returncode == 130, err
+    returncode, err = ctrl_c_when(argv, lambda proc: part_files(out))  # rows on disk
+    assert returncode == 130, err
     kept = seconds_by_task(out)
     assert 0 < len(kept) < tasks
     assert f"interrupted: {tasks - len(kept)} tasks not run; add --resume" in err
@@ -227,21 +236,8 @@ def test_ctrl_c_while_the_workers_start_prints_no_traceback(write_spec, tmp_path
     with a traceback."""
     argv = [str(HEXBOT), "sweep", str(write_spec(sweep_text(20))), "--out", str(tmp_path / "o"),
             "--workers", "2", "--no-progress"]
-    proc = subprocess.Popen(argv, stderr=subprocess.PIPE, text=True, start_new_session=True,
-                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    try:
-        deadline = time.monotonic() + 120
-        while not worker_started(proc.pid):
-            assert proc.poll() is None, proc.stderr.read()
-            assert time.monotonic() < deadline
-            time.sleep(0.01)
-        time.sleep(0.2)  # the workers are importing Dask
-        os.killpg(proc.pid, signal.SIGINT)  # a terminal's Ctrl-C reaches the whole group
-        err = proc.communicate(timeout=60)[1]
-    finally:
-        if proc.poll() is None:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
+    # Ctrl-C while the workers import Dask (0.2 s after the first is spawned)
+    returncode, err = ctrl_c_when(argv, lambda proc: worker_started(proc.pid), pause=0.2)
     # ignored while the workers start (the sweep then runs to its end), or it stops
-    assert proc.returncode in (0, 130), err
+    assert returncode in (0, 130), err
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
