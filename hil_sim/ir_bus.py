@@ -18,9 +18,11 @@ by its channel selector (Table 3-5). The medium decides, byte by byte:
   idles high, and it gets what its UART samples (``ir_line.py``, the
   sampler of ``uart_line.py``): bits after the cut read 1 and so does the
   stop bit, a wrong byte *without* framing error (0x00 cut in data bit 4:
-  0xF0); a cut in the start bit is a glitch: nothing. A byte seen whole
-  arrives as before. Selector moves and resets after the byte (from its
-  stop bit's end) change nothing.
+  0xF0); a cut in the start bit is a glitch: nothing. Only the part
+  before the stop bit counts (from there on the line is high either way):
+  a byte seen up to its stop bit arrives as before, and selector moves and
+  resets from the stop bit on change nothing. The channel is the selector
+  at the start bit, a write on that very cycle included (the write wins).
 * Two bytes from different senders that overlap in time at one receiver
   collide: the IR line idles high and a lit LED pulls it low, so the line is
   the AND of the two lines, each at its real start. The receiver gets what
@@ -38,8 +40,10 @@ by its channel selector (Table 3-5). The medium decides, byte by byte:
   (protocol/timing.py, 4.5 %) from the sender's reads what its UART samples
   of the sender's levels (``uart_line.first_byte``): a wrong byte, often
   without a framing error, or nothing when the start bit is over before it
-  looks. One whose word format (data bits, parity) differs gets a garbage
-  byte from the seeded generator with the framing error flag.
+  looks; a byte it still reads right keeps a framing error, whole or cut
+  (``uart_line.out_of_range``), so the result depends only on its
+  samples. One whose word format (data bits, parity) differs gets a
+  garbage byte from the seeded generator with the framing error flag.
 * Fault injection per directed link: each data bit flips with probability
   ``bit_error_rate``; the whole byte vanishes with probability ``byte_loss``.
   Besides: a framing error (``framing_error_rate``: the stop bit reads low,
@@ -67,9 +71,9 @@ from hexbot.protocol.timing import BAUD_IR, BAUD_TOLERANCE
 
 from . import ir_line
 from .geometry import CENTRE, Cell, facing, neighbor
-from .ir_line import Part, Span, intersect, spans_where
+from .ir_line import Part, Span, intersect, spans_where, stop_bit
 from .scenario import PC, Faults
-from .uart_line import LineSettings, first_byte
+from .uart_line import LineSettings, first_byte, out_of_range
 
 Endpoint = int | str  # module id or "pc"
 #: Length of a noise burst in bit times (start, 8 data and stop bit make a
@@ -128,6 +132,11 @@ class AirByte:
     def bit(self) -> float:
         """The sender's bit time, in cycles."""
         return (self.end - self.start) / self.frame.line().frame_bits
+
+    @property
+    def stop(self) -> float:
+        """Where its stop bit begins: its spans end there (ir_line.stop_bit)."""
+        return stop_bit(self.start, self.bit, self.frame.line())
 
 
 class Air(Protocol):
@@ -233,7 +242,7 @@ class IrMedium:
         """A byte whose receiver the core's medium chose (hil_sim/core/ir_medium.c:
         bytes for the PC); the same rules from here on."""
         self._longest_frame = max(self._longest_frame, byte.end - byte.start)
-        spans = [(byte.start, byte.end)]
+        spans = [(byte.start, byte.stop)]
         if isinstance(byte.sender, int):
             channel = self.air.channel_at(byte.sender, byte.start)
             spans = self._sent_spans(byte, byte.sender, channel)
@@ -260,16 +269,19 @@ class IrMedium:
     def _sent_spans(self, byte: AirByte, sender: int, channel: int | None) -> list[Span]:
         """While the byte leaves by ``channel``'s transceiver: until the
         selector moves (the tail goes out elsewhere; back again, it goes on
-        here), and never after the sender's reset (the USART stops)."""
-        resets = self.air.resets(sender, byte.start, byte.end)
-        end = min(resets, default=byte.end)
-        changes = self.air.channel_changes(sender, byte.start, end)
+        here), and never after the sender's reset (the USART stops). Up to
+        its stop bit only: from there on its line is high either way."""
+        stop = byte.stop
+        until = int(stop)  # changes and resets are on whole cycles, before stop
+        end = min(self.air.resets(sender, byte.start, until), default=stop)
+        changes = self.air.channel_changes(sender, byte.start, until)
         return spans_where(byte.start, end, channel, changes, channel)
 
     def _listening(self, byte: AirByte, module: int, channel: int) -> list[Span]:
-        """While ``module``'s selector is on ``channel`` during the byte."""
-        changes = self.air.channel_changes(module, byte.start, byte.end)
-        return spans_where(byte.start, byte.end, self.air.channel_at(module, byte.start),
+        """While ``module``'s selector is on ``channel`` during the byte, up
+        to its stop bit."""
+        changes = self.air.channel_changes(module, byte.start, int(byte.stop))
+        return spans_where(byte.start, byte.stop, self.air.channel_at(module, byte.start),
                            changes, channel)
 
     def _arrive(self, byte: AirByte, receiver: Endpoint, spans: list[Span]) -> None:
@@ -298,10 +310,13 @@ class IrMedium:
                 byte, receiver, "ir-garbled", reason=f"sender {byte.frame}, receiver {rx}"
             )
         if not part.whole and byte.frame.same_word(rx):
-            # cut: what the receiver's UART samples of the part it saw
+            # cut: what the receiver's UART samples of the part it saw, by
+            # the rule of a whole byte at its rate (first_byte)
             read = ir_line.read([part], rx.line(), rx_bit)
             if read is None:
                 return  # no start bit where the receiver looked: nothing
+            if not byte.frame.matches(rx):
+                read = out_of_range(read, value, rx.line())
             value, framing_error = read[0], framing_error or read[1]
         elif not byte.frame.matches(rx):
             read = byte.frame.read_by(rx, value, self.rng)

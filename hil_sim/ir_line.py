@@ -9,7 +9,8 @@ first, parity, stop, idle high):
   the channel it had at the start bit (the tail of a byte whose selector
   moved leaves by another transceiver; an MCU reset stops the byte for
   good), and while the receiver's selector is on the facing side. Outside
-  those spans the receiver's line idles high.
+  those spans the receiver's line idles high. Spans end where the stop bit
+  begins (:func:`stop_bit`): from there on the line is high either way.
 * Overlapping bytes of several senders are one line: a lit LED pulls it
   low, so the line is the AND of the bytes' levels, each at its real start.
 
@@ -43,9 +44,15 @@ class Part:
     spans: tuple[Span, ...]  # when the receiver sees the sender's transceiver
 
     @property
+    def stop(self) -> float:
+        """Where its stop bit begins (:func:`stop_bit`)."""
+        return stop_bit(self.start, self.bit, self.tx)
+
+    @property
     def whole(self) -> bool:
-        """The receiver saw all of it: nothing was cut."""
-        return self.spans == ((self.start, self.end),)
+        """The receiver saw all of it up to the stop bit (its spans are cut
+        there, :func:`stop_bit`): nothing was cut."""
+        return self.spans == ((self.start, self.stop),)
 
     def level(self, t: float, wave: list[tuple[float, int]]) -> int:
         if not any(a <= t < b for a, b in self.spans):
@@ -56,6 +63,17 @@ class Part:
                 break
             at = value
         return at if t < wave[-1][0] and t >= wave[0][0] else 1
+
+
+def stop_bit(start: float, bit: float, tx: LineSettings) -> float:
+    """Where the stop bit of a byte sent as ``tx`` from ``start`` begins.
+    From there on its line is high whether the receiver sees it or not (a
+    stop bit, or idle where cut), so selector moves and resets from there on
+    change nothing a receiver can sample: the medium works out a byte's
+    spans only up to here. (The C core knows another board's moves as of a
+    quantum boundary: it reads a byte once a boundary at or after this
+    point has passed, ``settled`` in ir_medium.c.)"""
+    return start + (1 + tx.data_bits + (tx.parity != "N")) * bit
 
 
 def spans_where(start: float, end: float, state: object,
@@ -98,7 +116,7 @@ def line(parts: list[Part]) -> list[tuple[float, int]]:
                    | {t for p in parts for span in p.spans for t in span})
     edges: dict[float, int] = {}  # time -> change of the count of low parts
     for part, wave in zip(parts, waves, strict=True):
-        for (since, level), (until, _) in zip(wave, wave[1:]):
+        for (since, level), (until, _) in zip(wave, wave[1:], strict=False):
             if level:
                 continue
             for a, b in part.spans:

@@ -124,6 +124,9 @@ class Module:
             del self._sel_channels[:drop]
 
     def channel_at(self, cycle: int) -> int | None:
+        """The channel at ``cycle``, a change logged on that very cycle
+        included: a selector write on a byte's first cycle sends it on the
+        new side (docs/simulator.md, the IR medium; the core does the same)."""
         at = bisect.bisect_right(self._sel_cycles, cycle) - 1
         return self._sel_channels[max(at, 0)]
 

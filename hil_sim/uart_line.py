@@ -86,12 +86,17 @@ def first_byte(byte: int, tx: LineSettings, rx: LineSettings) -> tuple[int, bool
     good (see the end). The simulator's C core (``m162_usart_resample``)
     reads the same; a test holds them together."""
     read = next(_read(_waveform(bytes([byte]), tx), rx), None)
-    if read is None:
-        return None
+    return None if read is None else out_of_range(read, byte, rx)
+
+
+def out_of_range(read: tuple[int, bool], byte: int, rx: LineSettings) -> tuple[int, bool]:
+    """What a receiver outside the datasheet's baud range, where nothing is
+    promised, reports of ``byte`` when exact sampling reads ``read``: a byte
+    that sampling still reads right keeps a framing error (a real receiver's
+    edge detection and 3-sample vote may give it one). The one rule for a
+    whole byte (:func:`first_byte`) and a cut one (the IR medium); the C
+    core's twin is ``uart_line_out_of_range``."""
     value, framing_error = read
-    # used outside the datasheet's baud range, where nothing is promised: a
-    # byte that exact sampling still reads right keeps a framing error (a
-    # real receiver's edge detection and 3-sample vote may give it one)
     return value, framing_error or value == byte & ((1 << rx.data_bits) - 1)
 
 

@@ -10,9 +10,18 @@
 #define IR_LINE_PARTS 8 /* ir_medium.h IR_MAX_SENDERS */
 #define IR_LINE_TIMES (IR_LINE_PARTS * (UART_LINE_BYTE_MAX + 2 * IR_MAX_SPANS))
 
+double ir_part_stop(const ir_part_t *p)
+{
+	int db = p->format & 0x0F, parity = ((p->format >> 4) & 3) >= 2;
+	if (db > 8)
+		db = 8;
+	return p->start + (1 + db + parity) * p->bit;
+}
+
 int ir_part_whole(const ir_part_t *p)
 {
-	return p->n_spans == 1 && p->spans[0].from == p->start && p->spans[0].to == p->end;
+	return p->n_spans == 1 && p->spans[0].from == p->start &&
+		p->spans[0].to == ir_part_stop(p);
 }
 
 int ir_spans_intersect(ir_span_t *out, const ir_span_t *a, int na, const ir_span_t *b, int nb)

@@ -28,7 +28,10 @@ typedef struct ir_part_t {
 	ir_span_t spans[IR_MAX_SPANS];
 } ir_part_t;
 
-/* The receiver saw all of it: nothing was cut. */
+/* Where its stop bit begins (ir_line.py stop_bit).  From there on its line
+ * is high whether the receiver sees it or not, so its spans end there. */
+double ir_part_stop(const ir_part_t *p);
+/* The receiver saw all of it up to the stop bit: nothing was cut. */
 int ir_part_whole(const ir_part_t *p);
 /* Spans in both a and b, in order, at most IR_MAX_SPANS into out; how many. */
 int ir_spans_intersect(ir_span_t *out, const ir_span_t *a, int na, const ir_span_t *b, int nb);

@@ -6,6 +6,7 @@
 
 #include "ir_medium.h"
 #include "grow.h"
+#include "uart_line.h"
 
 static int selector_y(const ir_port_t *p)
 {
@@ -39,6 +40,13 @@ static void log_event(ir_port_t *p, int kind, const ir_air_t *a, const int *othe
 	*e = (ir_event_t){ .end = a->end, .seq = p->seq++, .kind = kind, .sender = a->sender,
 		.receiver = p->index, .byte = a->byte, .n_others = n };
 	memcpy(e->others, others, (size_t)n * sizeof *others);
+}
+
+/* where a byte's stop bit begins (ir_part_stop, one formula) */
+static double stop_of(uint64_t start, uint32_t bit_cycles, uint8_t format)
+{
+	ir_part_t part = { .start = (double)start, .bit = (double)bit_cycles, .format = format };
+	return ir_part_stop(&part);
 }
 
 /* ---------------------------------------------------------------- */
@@ -103,14 +111,14 @@ static int y_at(const ir_port_t *p, uint64_t t)
 
 /* Parts of [start, end) where a selector that was on y at start, and moved
  * at marks a then b, is on keep (ir_line.py spans_where). */
-static int spans_where(ir_span_t *out, uint64_t start, uint64_t end, int y, int keep,
+static int spans_where(ir_span_t *out, uint64_t start, double end, int y, int keep,
 		const ir_mark_t *a, size_t na, const ir_mark_t *b, size_t nb)
 {
 	int n = 0, on = y == keep;
 	uint64_t since = start;
 	for (size_t k = 0; k < na + nb; k++) {
 		const ir_mark_t *m = k < na ? &a[k] : &b[k - na];
-		if (m->y == IR_MARK_RESET || m->cycle <= start || m->cycle >= end)
+		if (m->y == IR_MARK_RESET || m->cycle <= start || (double)m->cycle >= end)
 			continue;
 		if (on && m->y != keep) {
 			out[n++] = (ir_span_t){ (double)since, (double)m->cycle };
@@ -123,33 +131,44 @@ static int spans_where(ir_span_t *out, uint64_t start, uint64_t end, int y, int 
 		}
 	}
 	if (on && n < IR_MAX_SPANS)
-		out[n++] = (ir_span_t){ (double)since, (double)end };
+		out[n++] = (ir_span_t){ (double)since, end };
 	return n;
 }
 
-/* The spans in which the receiver p sees byte a: the sender still on the
- * byte's channel and not reset since (its published marks), p on the
- * facing index (its own marks).  0: it saw nothing of it. */
-static int seen_spans(const ir_port_t *p, const ir_air_t *a, ir_span_t *out)
+/* The spans in which the receiver p sees byte a up to its stop bit (at
+ * stop: from there on its line is high either way, ir_line.h): the sender
+ * still on the byte's channel and not reset since (its published marks,
+ * all of them up to stop: settled()), p on the facing index (its own
+ * marks).  0: it saw nothing of it. */
+static int seen_spans(const ir_port_t *p, const ir_air_t *a, double stop, ir_span_t *out)
 {
 	ir_span_t sent[IR_MAX_SPANS], heard[IR_MAX_SPANS];
 	int ns = 1;
-	sent[0] = (ir_span_t){ (double)a->start, (double)a->end };
+	sent[0] = (ir_span_t){ (double)a->start, stop };
 	const ir_port_t *f = a->from;
 	if (f) {
-		uint64_t stop = a->end; /* the first reset in (start, end] */
+		double end = stop; /* the first reset in (start, stop] */
 		for (size_t k = 0; k < f->n_marks; k++)
 			if (f->marks[k].y == IR_MARK_RESET && f->marks[k].cycle > a->start &&
-					f->marks[k].cycle <= stop) {
-				stop = f->marks[k].cycle;
+					(double)f->marks[k].cycle <= end) {
+				end = (double)f->marks[k].cycle;
 				break;
 			}
-		ns = spans_where(sent, a->start, stop, a->sent_y, a->sent_y, f->marks, f->n_marks,
+		ns = spans_where(sent, a->start, end, a->sent_y, a->sent_y, f->marks, f->n_marks,
 				NULL, 0);
 	}
-	int nh = spans_where(heard, a->start, a->end, y_at(p, a->start), a->need_y, p->marks,
+	int nh = spans_where(heard, a->start, stop, y_at(p, a->start), a->need_y, p->marks,
 			p->n_marks, p->fresh, p->n_fresh);
 	return ir_spans_intersect(out, sent, ns, heard, nh);
+}
+
+/* Every move and reset of a's sender before its stop bit is published
+ * (the last boundary is at or after it): a can be read now.  With a
+ * quantum longer than half a bit the middle of the stop bit can come
+ * before that boundary; the byte then waits for it (ir_boundary). */
+static int settled(const ir_port_t *p, const ir_air_t *a)
+{
+	return !a->from || (double)p->published >= a->stop;
 }
 
 /* ---------------------------------------------------------------- */
@@ -168,20 +187,23 @@ static void arrive(ir_port_t *p, const ir_air_t *a)
 {
 	ir_part_t part = { (double)a->start, (double)a->end, (double)a->bit_cycles, a->byte,
 		a->format, 0, { { 0, 0 } } };
-	part.n_spans = seen_spans(p, a, part.spans);
+	part.n_spans = seen_spans(p, a, a->stop, part.spans);
 	if (!part.n_spans)
 		return; /* looking elsewhere: lost in the air, as in ir_bus.py */
 	uint8_t value = a->byte;
 	int fe = 0;
 	double own = m162_to_cluster_span(p->m, p->s->bit_cycles);
-	m162_txrec_t rec = { a->start, a->due, a->end, a->byte, a->format, a->bit_cycles, 0 };
+	m162_txrec_t rec = { a->start, a->due, a->end, a->byte, a->format, a->bit_cycles };
 	int same_word = (rec.format & 0x3F) == (p->s->format & 0x3F);
 	int frame_ok = m162_usart_frame_ok(p->s, &rec, p->tolerance);
 	if (!frame_ok)
 		log_event(p, IR_EV_GARBLED, a, NULL, 0);
 	if (!ir_part_whole(&part) && same_word) {
-		/* cut: what the receiver's UART samples of the part it saw */
+		/* cut: what the receiver's UART samples of the part it saw, by
+		 * the rule of a whole byte at its rate (m162_usart_resample) */
 		int got = ir_line_read(&part, 1, own, p->s->format);
+		if (!frame_ok)
+			got = uart_line_out_of_range(got, a->byte, a->format);
 		if (got < 0)
 			return; /* no start bit where it looked: nothing */
 		value = (uint8_t)got;
@@ -242,7 +264,7 @@ static void arrive(ir_port_t *p, const ir_air_t *a)
 static void pop_due(ir_port_t *p, uint64_t local_now)
 {
 	int k = 0;
-	while (k < p->inbox_len && p->inbox[k].due_local <= local_now)
+	while (k < p->inbox_len && p->inbox[k].due_local <= local_now && settled(p, &p->inbox[k]))
 		k++;
 	/* copy first: arrive() does not touch the inbox, but keep it simple */
 	for (int i = 0; i < k; i++)
@@ -256,7 +278,8 @@ static avr_cycle_count_t due_timer(avr_t *avr, avr_cycle_count_t when, void *par
 	ir_port_t *p = (ir_port_t *)param;
 	(void)avr;
 	pop_due(p, when);
-	return p->inbox_len ? p->inbox[0].due_local : 0;
+	/* a byte due but not settled waits for the boundary (ir_boundary) */
+	return p->inbox_len && p->inbox[0].due_local > when ? p->inbox[0].due_local : 0;
 }
 
 static void arm(ir_port_t *p)
@@ -282,7 +305,7 @@ static void enqueue(ir_port_t *p, ir_air_t a)
 	if (a.end - a.start > p->longest)
 		p->longest = a.end - a.start;
 	a.due_local = m162_to_local(p->m, a.due);
-	if (a.due_local <= avr->cycle && p->inbox_len == 0) {
+	if (a.due_local <= avr->cycle && p->inbox_len == 0 && settled(p, &a)) {
 		arrive(p, &a); /* the quantum was longer than the byte: at once */
 		return;
 	}
@@ -309,9 +332,12 @@ static void push_pc(ir_port_t *p, const m162_txrec_t *r)
 	p->to_pc[p->n_pc++] = (ir_pcbyte_t){ r->start, r->end, r->byte };
 }
 
+/* At a boundary after r started, so p's marks up to it are published: the
+ * side is the selector at the start bit, a write on that very cycle
+ * included (docs/simulator.md, "the sender's channel"). */
 static void route(cluster_t *c, ir_port_t *p, const m162_txrec_t *r)
 {
-	int y = selector_y_of(p, r->sel);
+	int y = y_at(p, r->start);
 	const ir_route_t *rt = &p->routes[y];
 	if (r->end - r->start > p->longest)
 		p->longest = r->end - r->start;
@@ -322,7 +348,7 @@ static void route(cluster_t *c, ir_port_t *p, const m162_txrec_t *r)
 		enqueue(c->mcu[rt->target]->ir, (ir_air_t){ .start = r->start, .due = r->mid_stop,
 			.end = r->end, .sender = p->index, .from = p, .byte = r->byte,
 			.format = r->format, .need_y = (uint8_t)rt->need_y, .sent_y = (int8_t)y,
-			.bit_cycles = r->bit_cycles });
+			.bit_cycles = r->bit_cycles, .stop = stop_of(r->start, r->bit_cycles, r->format) });
 	}
 }
 
@@ -399,15 +425,17 @@ void ir_send_from_pc(cluster_t *c, uint64_t start, uint64_t end, uint8_t byte,
 			continue;
 		enqueue(p, (ir_air_t){ .start = start, .due = mid, .end = end, .sender = IR_PC,
 			.byte = byte, .format = format, .need_y = (uint8_t)p->centre_y,
-			.bit_cycles = bit_cycles });
+			.bit_cycles = bit_cycles, .stop = stop_of(start, bit_cycles, format) });
 	}
 }
 
 int ir_boundary(cluster_t *c)
 {
 	int news = 0;
-	for (int i = 0; i < c->n_ir; i++)
+	for (int i = 0; i < c->n_ir; i++) {
+		c->ir[i]->published = c->cycle;
 		publish(c->ir[i], c->cycle, c->quantum);
+	}
 	for (int i = 0; i < c->n_ir; i++) {
 		ir_port_t *p = c->ir[i];
 		m162_usart_t *s = p->s;
@@ -418,10 +446,12 @@ int ir_boundary(cluster_t *c)
 		ir_port_t *p = c->ir[i];
 		if (p->inbox_len) {
 			avr_t *avr = p->m->avr;
-			if (!alive(p))
-				pop_due(p, avr->cycle); /* crashed or done: its USART still fills up */
-			else if (!avr_cycle_timer_status(avr, due_timer, p))
-				arm(p); /* a reset cleared the MCU's timers */
+			/* crashed or done: its USART still fills up; else bytes that
+			 * waited for this boundary (settled) */
+			if (!alive(p) || p->inbox[0].due_local <= avr->cycle)
+				pop_due(p, avr->cycle);
+			if (p->inbox_len && alive(p) && !avr_cycle_timer_status(avr, due_timer, p))
+				arm(p); /* a reset cleared the MCU's timers, or it waited */
 		}
 		while (p->pc_notified < p->n_pc && p->to_pc[p->pc_notified].end <= c->cycle) {
 			p->pc_notified++;

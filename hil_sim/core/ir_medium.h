@@ -10,29 +10,33 @@
  * changes the geometry; the core knows nothing of cells or sides.
  *
  * Timing, decided here and not by the quantum:
- *  - the sender's side is its selector at the byte's start bit (the port's
- *    value is logged with the byte, m162_txrec_t.sel);
+ *  - the sender's side is its selector index at the byte's start bit, a
+ *    write on that very cycle included (the write wins the tie: a byte that
+ *    waited in UDR leaves by the new side), from its own selector history
+ *    at the boundary after the start;
  *  - a receiver gets the byte in the middle of its stop bit, where the part
- *    samples it and raises RXC, if its selector was on the facing side from
- *    the start bit on (its own selector history, read in its own run);
+ *    samples it and raises RXC (or at the next boundary, below);
  *  - a byte is cut where the sender's selector left the byte's channel or
  *    the sender reset, and where the receiver's selector was elsewhere: the
  *    receiver reads what its UART samples of the part it saw, idle high
- *    around it (ir_line.c).  Selector changes and resets are noted by the
- *    MCU's own run (ir_note_port, ir_note_reset) and published to the other
- *    MCUs at the next boundary, so a receiver reads the sender's history as
- *    of the boundary before its own quantum: every change that can alter a
- *    sample at the sender's rate (up to the middle of the last data bit)
- *    is known if the quantum is shorter than a bit (1,881 cycles against
- *    3,328 at 300 baud);
+ *    around it (ir_line.c).  Only the part before the stop bit counts: from
+ *    there on the line is high either way.  Selector changes and resets are
+ *    noted by the MCU's own run (ir_note_port, ir_note_reset) and published
+ *    to the other MCUs at the next boundary; a receiver reads its own
+ *    history to the cycle and a sender's as of the boundary before its own
+ *    quantum.  When that boundary is before the byte's stop bit (a quantum
+ *    longer than half a bit), the byte waits for the next boundary, so what
+ *    a receiver reads never depends on the quantum;
  *  - two bytes from different senders that overlap in time at one receiver
  *    collide: the second is handed over, with the framing error flag, as
  *    what the receiver's UART samples of the AND of both lines, each at its
  *    real start (the bitwise AND when both started together, whole; as
  *    hil_sim/ir_bus.py);
- *  - a receiver whose frame format differs, or whose bit time is more than
- *    the cluster's baud tolerance away, gets a byte of its own seeded
- *    generator with the framing error flag.
+ *  - a receiver whose bit time is more than the cluster's baud tolerance
+ *    away reads what its UART samples (a byte it still reads right keeps a
+ *    framing error, whole or cut: uart_line_out_of_range); one whose word
+ *    format differs gets a byte of its own seeded generator with the
+ *    framing error flag.
  * Bytes for the PC wait until their stop bit ended and go to Python
  * (ir_take_pc), which owns the PC's receiver; run() returns at the boundary
  * after one ends.  The PC's own bytes come from Python (ir_send_from_pc).
@@ -80,6 +84,7 @@ typedef struct ir_air_t {
 	uint8_t byte, format, need_y;
 	int8_t sent_y;            /* the sender's selector index at the start bit */
 	uint32_t bit_cycles;
+	double stop;              /* where its stop bit begins (ir_part_stop) */
 } ir_air_t;
 
 typedef struct ir_event_t {
@@ -134,6 +139,7 @@ typedef struct ir_port_t {
 	int y_before;         /* the selector index before the first mark */
 	int y_now;            /* the last index noted */
 	uint64_t longest;     /* longest frame sent or heard: how long marks are kept */
+	uint64_t published;   /* the last boundary: every board's marks before it are in marks */
 	ir_air_t inbox[IR_INBOX]; /* sorted by due */
 } ir_port_t;
 

@@ -34,7 +34,6 @@ typedef struct m162_txrec_t {
 	uint8_t byte;
 	uint8_t format;      /* data bits | parity mode << 4 | stop bits << 6 */
 	uint32_t bit_cycles; /* sender's bit time, in cluster cycles */
-	uint8_t sel;         /* the IR selector port at the start bit (ir_medium.c), else 0 */
 } m162_txrec_t;
 
 /* A byte waiting to reach a receiver at a given cycle (wire delivery, in the
@@ -73,8 +72,8 @@ typedef struct m162_usart_t {
 	size_t notified_pos; /* records up to here already ended a run() early */
 	int watched;
 	struct m162_usart_t *peer; /* connect_uart() wire, or NULL */
-	/* IR medium routed in C (ir_medium.c): the port whose value at each
-	 * start bit goes into the log (-1: none), the next record to route */
+	/* IR medium routed in C (ir_medium.c): the selector's port (-1: not on
+	 * the medium), the next record to route */
 	int ir_sel_port;
 	size_t ir_pos;
 	/* receiver side: bytes in flight on a wire, delivered at their due cycle */

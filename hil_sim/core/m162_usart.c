@@ -85,10 +85,9 @@ static void start_frame(m162_usart_t *s, uint8_t byte, uint64_t when)
 	 * there (datasheet, "Asynchronous Data Reception") */
 	uint32_t stop_bits = s->format >> 6;
 	uint64_t mid_stop = s->shift_end - (uint64_t)s->bit_cycles * stop_bits + s->bit_cycles / 2;
-	uint8_t sel = s->ir_sel_port >= 0 ? m->avr->data[m162_port_regs[s->ir_sel_port][2]] : 0;
 	m162_usart_log(s, (m162_txrec_t){ m162_to_cluster(m, when), m162_to_cluster(m, mid_stop),
 			m162_to_cluster(m, s->shift_end), byte, s->format,
-			m162_to_cluster_span(m, s->bit_cycles), sel });
+			m162_to_cluster_span(m, s->bit_cycles) });
 }
 
 static avr_cycle_count_t tx_done(avr_t *avr, avr_cycle_count_t when, void *param)
@@ -343,15 +342,7 @@ int m162_usart_resample(const m162_usart_t *s, const m162_txrec_t *r)
 	uart_edge_t wave[UART_LINE_BYTE_MAX];
 	int n = uart_line_levels(wave, r->byte, r->format, 0, r->bit_cycles);
 	int got = uart_line_read(wave, n, m162_to_cluster_span(s->mcu, s->bit_cycles), r->format);
-	if (got < 0)
-		return -1;
-	/* outside the datasheet's range nothing is promised: a byte that exact
-	 * sampling still reads right keeps the framing error the edge
-	 * detection and 3-sample vote of a real receiver may give it */
-	int db = r->format & 0x0F;
-	if ((got & 0xFF) == (r->byte & ((1 << (db < 8 ? db : 8)) - 1)))
-		got |= UART_INPUT_FE;
-	return got;
+	return uart_line_out_of_range(got, r->byte, r->format);
 }
 
 /* Forget records every consumer has seen, so logs stay small. */

@@ -74,3 +74,11 @@ int uart_line_read(const uart_edge_t *w, int n, double bit, uint8_t format)
 		return value | (level_at(w, n, stop) == 0 ? UART_INPUT_FE : 0);
 	}
 }
+
+int uart_line_out_of_range(int got, uint8_t byte, uint8_t format)
+{
+	int db = format & 0x0F;
+	if (got >= 0 && (got & 0xFF) == (byte & ((1 << (db < 8 ? db : 8)) - 1)))
+		got |= UART_INPUT_FE;
+	return got;
+}

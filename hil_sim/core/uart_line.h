@@ -32,4 +32,12 @@ int uart_line_levels(uart_edge_t *out, uint8_t byte, uint8_t format, double star
  * when it finds no start bit. */
 int uart_line_read(const uart_edge_t *wave, int n, double bit, uint8_t format);
 
+/* What a receiver outside the datasheet's baud range, where nothing is
+ * promised, reports of byte when exact sampling read got (uart_line_read's
+ * result): a byte that sampling still reads right keeps a framing error (a
+ * real receiver's edge detection and 3-sample vote may give it one).  The
+ * one rule for a whole byte (m162_usart_resample) and a cut one (ir_medium.c);
+ * uart_line.py's out_of_range. */
+int uart_line_out_of_range(int got, uint8_t byte, uint8_t format);
+
 #endif

@@ -106,25 +106,30 @@ def test_receiver_turned_away_mid_byte_reads_idle_ones_from_then_on():
 # cycles the core logged: the twins must read the same. Sender on "3",
 # receiver facing it on "6" (test_ir_bus.pair_air); any other index is away.
 
-def python_medium(c: Cluster, a: int, b: int, others: tuple[int, ...] = ()) -> list:
+def python_medium(c: Cluster, a: int, b: int, others: tuple[int, ...] = (), bit: int = BIT,
+                  rx_bit: int | None = None, pins: dict[int, list] | None = None) -> list:
+    """What the Python medium delivers to ``b`` of the bytes ``a`` and
+    ``others`` sent (at ``bit`` cycles a bit; ``b`` reads at ``rx_bit``);
+    ``pins``: the pin logs, if the test took them already."""
     from test_ir_bus import Air, medium
 
     from hexbot.hil_sim.ir_bus import AirByte, Frame
 
-    line = Frame(1e6 / BIT)
+    line = Frame(1e6 / bit)
     cells = {a: (0, 0), b: (1, 0), **{o: (0, 0) for o in others}}
 
     def history(m: int, on: int, y_on: int) -> list[tuple[int, int]]:
         (_, pin_a), (_, pin_b), (_, pin_c) = SELECTOR_PINS
         out = [(0, on)]
-        for cycle, port, value in c.pin_log(m):
+        for cycle, port, value in (pins[m] if pins else c.pin_log(m)):
             if port == SELECTOR_PINS[0][0]:
                 y = (value >> pin_a & 1) | (value >> pin_b & 1) << 1 | (value >> pin_c & 1) << 2
                 out.append((cycle, on if y == y_on else 0))
         return out
 
     air = Air(cells, {m: history(m, 3, 3) for m in (a, *others)} | {b: history(b, 6, 5)},
-              rx={b: line}, reset_at={m: c.resets(m)[1:] for m in (a, *others)})
+              rx={b: Frame(1e6 / rx_bit) if rx_bit else line},
+              reset_at={m: c.resets(m)[1:] for m in (a, *others)})
     m, _ = medium(air)
     sent = sorted((start, end, value, m) for m in (a, *others) for start, end, value in
                   c.uart_take(m, 1))
@@ -160,6 +165,139 @@ def test_sender_reset_mid_byte_cuts_its_byte():
     advance(c, 4 * FRAME)
     assert [(v, fe) for _, v, fe in reports(c, b)] == [(0xF0, False), (0x00, False)]
     assert [(v, fe) for _, v, fe in python_medium(c, a, b)] == [(0xF0, False), (0x00, False)]
+
+
+@pytest.mark.parametrize("quantum", [250, 1000, 1881])
+def test_selector_written_as_a_waiting_byte_starts_sends_it_on_the_new_side(quantum):
+    # The second byte waits in UDR and starts as the first one's stop bit
+    # ends; the firmware's selector write lands on that very cycle. The
+    # write wins: the byte leaves whole by the new side (docs/simulator.md,
+    # "The IR medium"). Before, the core sent it on the old side and the
+    # Python medium on the new one.
+    ubrr = 214
+    bit = 16 * (ubrr + 1)
+    c = Cluster(quantum)
+    a = node(c, 3, b"\x11\x22", ubrr=ubrr)
+    b = node(c, 5, ubrr=ubrr)  # hears a's index 3
+    e = node(c, 5, ubrr=ubrr)  # hears a's index 1
+    routes = list(NONE)
+    routes[3], routes[1] = ("mcu", b, 5), ("mcu", e, 5)
+    c.ir_routes(a, routes)
+    c.watch_uart(a, 1)
+    second = 94 + 10 * bit
+    advance(c, second - 2)
+    c.set_input(a, "C", 0x07, selector_pins(1))
+    advance(c, second + 3 * 10 * bit)
+    pins = {m: c.pin_log(m) for m in (a, b)}
+    assert second in [cycle for cycle, port, _ in pins[a] if port == SELECTOR_PINS[0][0]]
+    assert [(v, fe) for _, v, fe in reports(c, b)] == [(0x11, False)]
+    assert [(v, fe) for _, v, fe in reports(c, e)] == [(0x22, False)]
+    assert [(v, fe) for _, v, fe in python_medium(c, a, b, bit=bit, pins=pins)] == [(0x11, False)]
+
+
+@pytest.mark.parametrize("quantum", [250, 500, 1000, 1881])
+@pytest.mark.parametrize("move", [None, 30_500, 31_000, 31_400, 31_781, 32_000])
+@pytest.mark.parametrize("byte", [0x5A, 0x9D])
+def test_receiver_beyond_the_baud_tolerance_is_judged_by_what_it_samples(byte, move, quantum):
+    # UBRR 197 is 4.8 % fast: its last sample (the stop bit's middle, cycle
+    # 30,190) comes before the sender's stop bit (30,046 on) is over. A move
+    # of the sender's selector after it changes no sample, so it changes
+    # nothing: 0x5A still reads right and keeps its framing error. Before,
+    # the move made the byte "cut", read without that rule (FE 0), and the
+    # core saw it or not by the quantum.
+    from hexbot.hil_sim.uart_line import LineSettings, first_byte
+
+    c = Cluster(quantum)
+    a = node(c, 3, bytes([byte]))
+    b = node(c, 5, ubrr=197)
+    route(c, a, 3, b, 5)
+    c.watch_uart(a, 1)
+    if move:
+        advance(c, move)
+        c.set_input(a, "C", 0x07, selector_pins(1))
+    advance(c, 3 * FRAME)
+    expected = first_byte(byte, LineSettings(1e6 / BIT), LineSettings(1e6 / (16 * 198)))
+    assert [(v, fe) for _, v, fe in reports(c, b)] == [expected]
+    assert [(v, fe) for _, v, fe in python_medium(c, a, b, rx_bit=16 * 198)] == [expected]
+    if byte == 0x5A:
+        assert expected == (0x5A, True)
+
+
+@pytest.mark.parametrize("quantum", [250, 1000, 1881, 2500])
+def test_sender_move_a_slow_receiver_samples_late_is_seen_at_any_quantum(quantum):
+    # UBRR 218 is 5.3 % slow: it samples 0x5A's data bit 7 (low) at cycle
+    # 29,878, 168 cycles before the stop bit. The sender's selector leaves at
+    # about 29,865: the receiver reads that bit high, 0xDA. The core knows
+    # another board's moves as of a boundary; at a quantum of 1,881 or more
+    # the boundary before the byte's mid-stop is before its stop bit, so the
+    # byte waits for the next boundary (before, it was read there without
+    # the move: 0x5A).
+    c = Cluster(quantum)
+    a = node(c, 3, b"\x5a")
+    b = node(c, 5, ubrr=218)
+    route(c, a, 3, b, 5)
+    c.watch_uart(a, 1)
+    advance(c, 29_860)
+    c.set_input(a, "C", 0x07, selector_pins(1))
+    advance(c, 3 * FRAME)
+    got = reports(c, b)
+    assert [(v, fe) for _, v, fe in got] == [(0xDA, False)]
+    assert [(v, fe) for _, v, fe in python_medium(c, a, b, rx_bit=16 * 219)] == [(0xDA, False)]
+    mid_stop = 94 + 9 * BIT + BIT // 2
+    assert mid_stop <= got[0][0] < mid_stop + quantum + 100  # at most a quantum late
+
+
+def random_case(seed: int) -> tuple[list, list, tuple]:
+    """One random input: a byte, maybe a second sender's byte some time
+    later, selector moves of senders and receiver and a sender's reset, at
+    random cycles, a random receiver rate and quantum. What the core's
+    receiver reports and what the Python medium reads of the same cycles."""
+    import random
+
+    r = random.Random(seed)
+    byte, ubrr, quantum = r.randrange(256), r.choice(RATES), r.choice(QUANTA)
+    c = Cluster(quantum)
+    a = node(c, 3, bytes([byte]))
+    b = node(c, 5, ubrr=ubrr)
+    route(c, a, 3, b, 5)
+    c.watch_uart(a, 1)
+    senders = [a]
+    if r.random() < 0.3:  # a second byte, from another board, k bits later
+        d = node(c, 3)
+        route(c, d, 3, b, 5)
+        c.watch_uart(d, 1)
+        senders.append(d)
+    todo = [(94 + r.randrange(11 * BIT), r.choice(["move", "move", "listen", "reset"]))
+            for _ in range(r.randrange(1, 4))]
+    if len(senders) > 1:
+        todo.append((r.randrange(12 * BIT), "second"))
+    for cycle, what in sorted(todo):
+        advance(c, cycle)
+        if what == "move":
+            c.set_input(r.choice(senders), "C", 0x07, selector_pins(r.choice([3, 1, 5, 6])))
+        elif what == "listen":
+            c.set_input(b, "C", 0x07, selector_pins(r.choice([5, 6, 3])))
+        elif what == "reset":
+            c.reset(a)  # it boots and sends its byte again
+        else:
+            c.write_eeprom(senders[1], 0, bytes([r.randrange(256), 0xFF]))
+            c.reset(senders[1])
+    advance(c, 4 * FRAME)
+    core = [(v, fe) for _, v, fe in reports(c, b)]
+    python = [(v, fe) for _, v, fe in python_medium(c, a, b, others=tuple(senders[1:]),
+                                                    rx_bit=16 * (ubrr + 1))]
+    return core, python, (byte, ubrr, quantum, todo)
+
+
+RATES = [207, 207, 207, 200, 197, 214, 217, 218, 219, 103]  # UBRR: 300 baud, near, far
+QUANTA = [250, 777, 1000, 1881, 2500]
+
+
+def test_core_and_python_media_read_the_same_bytes_for_random_cuts():
+    # the twins hold together beyond the hand-picked cases above: any quantum
+    for seed in range(300):
+        core, python, case = random_case(seed)
+        assert core == python, (seed, case)
 
 
 def test_bytes_colliding_three_bits_apart_read_the_and_of_the_shifted_lines():

@@ -194,6 +194,28 @@ def test_baud_mismatch_gives_what_the_receivers_uart_samples():
     assert [(value, fe) for _, value, fe in air.got] == [(0x98, False)]
 
 
+def test_moves_in_the_stop_bit_and_the_baud_rule_depend_only_on_samples():
+    # Receiver 5 % fast: its samples all fall before the sender's stop bit
+    # is over, and 0x5A still reads right (with a framing error: outside the
+    # baud range nothing is promised). Moves from the stop bit on change no
+    # sample and so nothing; a cut that changes no sample keeps the rule.
+    def got(sender, receiver):
+        air = pair_air()
+        air.rx[2] = Frame(315.0)
+        air.channels[1] = [(0, 3), *sender]
+        air.channels[2] = [(0, 6), *receiver]
+        m, _ = medium(air)
+        m.transmit(AirByte(1, 0, BYTE, 0x5A, IR))
+        return [(value, fe) for _, value, fe in air.got]
+
+    assert got([], []) == [(0x5A, True)]
+    assert got([(round(9.2 * BIT), 5)], []) == [(0x5A, True)]  # sender, in the stop bit
+    assert got([], [(round(9.7 * BIT), 1)]) == [(0x5A, True)]  # receiver, after it sampled
+    assert got([(round(8.9 * BIT), 5)], []) == [(0x5A, True)]  # bit 7 (low) is cut after the
+    # receiver sampled it (8.1 bit times): the same samples, the same byte
+    assert got([(round(7.9 * BIT), 5)], []) == [(0xDA, False)]  # before: bit 7 reads high
+
+
 def test_a_word_format_mismatch_gives_seeded_garbage_with_framing_error():
     air = pair_air()
     air.rx[2] = Frame(300.0, data_bits=7)
