@@ -20,7 +20,7 @@ STAMPS := .stamps
 # (our ATmega162 core links against it), avrdude, and what builds the Python
 # extension.
 APT_PACKAGES := gcc-avr avr-libc binutils-avr simavr libsimavr-dev libelf-dev \
-	avrdude pkg-config gcc make python3-venv python3-dev
+	avrdude pkg-config gcc make python3-venv python3-dev openssl
 PYTEST_ARGS ?=
 SUDO := $(shell [ "$$(id -u)" = 0 ] || echo sudo)
 

@@ -88,7 +88,8 @@ def main(argv: list[str] | None = None) -> int:
             print(f"hexbot {name}: error: {exc}", file=sys.stderr)
         except KeyboardInterrupt:
             status = 130
-        sys.stdout.flush()  # a reader gone shows here, not as a traceback at exit
+        if sys.stdout is not None:  # None: started with stdout closed (a daemon, `>&-`)
+            sys.stdout.flush()  # a reader gone shows here, not as a traceback at exit
     except BrokenPipeError:  # output piped into `head` and the like
         return closed_pipe(status)
     return status

@@ -73,9 +73,13 @@ def output_file(text: str) -> str:
     if path.is_dir():
         raise argparse.ArgumentTypeError(f"{text}: is a folder, give a file name")
     try:
-        if not path.exists():
+        if not os.path.lexists(path):
             os.close(os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644))
             path.unlink()
+        elif not path.exists():  # a symlink to a file still to be made: make it there
+            target = path.resolve()
+            os.close(os.open(target, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644))
+            target.unlink()
         elif path.is_file():  # not a FIFO or a device: opening those may block
             with open(path, "ab"):
                 pass

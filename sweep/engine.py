@@ -136,10 +136,13 @@ def connect(scheduler: str | None = None, workers: int | None = None,
     except BaseException:
         restore()
         raise
-    with cluster:
-        restore()  # from here a Ctrl-C closes the cluster on its way out
-        with Client(cluster) as client:
-            yield client
+    try:
+        with cluster:
+            restore()  # from here a Ctrl-C closes the cluster on its way out
+            with Client(cluster) as client:
+                yield client
+    finally:
+        restore()  # also when entering the cluster failed (a second restore is harmless)
 
 
 def _ignore_sigint() -> Callable[[], None]:
@@ -156,9 +159,13 @@ def _hear_handshake(scheduler: str) -> None:
     accepts and stays silent (a dashboard's 8787, a stuck process) would hang
     the sweep for ever."""
     from distributed.comm import connect as open_comm
+    from distributed.security import Security
+
+    # the client's own settings (TLS certificates from Dask's configuration)
+    connection_args = Security().get_connection_args("client")
 
     async def handshake() -> None:
-        comm = await open_comm(scheduler, timeout=CONNECT_SECONDS)
+        comm = await open_comm(scheduler, timeout=CONNECT_SECONDS, **connection_args)
         await comm.close()
 
     try:

@@ -54,3 +54,11 @@ def test_a_closed_output_pipe_is_quiet_and_never_exit_0(tmp_path):
     assert proc.returncode == 141 and proc.stderr == ""
     proc = _into_a_closed_pipe("codes")  # a success whose output was cut short
     assert proc.returncode == 141 and proc.stderr == ""
+
+
+def test_a_command_started_with_stdout_closed_keeps_its_status():
+    """`hexbot codes >&-` (a daemon, a cron job): the flush for a closed pipe
+    met no stdout at all and turned a success into a traceback, exit 1."""
+    proc = subprocess.run(f'exec 1>&-; "{sys.executable}" -m hexbot.cli codes', shell=True,
+                          stderr=subprocess.PIPE, text=True, timeout=300)
+    assert proc.returncode == 0 and "Traceback" not in proc.stderr, proc.stderr

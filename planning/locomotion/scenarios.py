@@ -1,9 +1,10 @@
 """Scenarios (text maps of obstacles and modules) and the rule sets shipped as data.
 
 Map format (``.map``): optional header lines ``key: value`` and ``;`` comments,
-then the grid, top row first, every row as wide as the first. ``#`` obstacle,
-``o`` module, ``.`` empty.
-Rows made only of ``#`` are floor: they continue without end to both sides.
+then the grid, top row first. ``#`` obstacle, ``o`` module, ``.`` (or a
+space) empty; a row shorter than the widest is empty to its end.
+Rows made only of ``#`` are floor: they continue without end to both sides
+(a short floor row too).
 Header keys: ``title``, ``figure`` (the thesis figure it reconstructs),
 ``directions`` (which of E N W S to offer; default all four).
 
@@ -92,13 +93,12 @@ def parse_map(text: str, name: str, source: str, n: int | None = None) -> Scenar
                 f"{source}:{lineno}: unknown map character {sorted(bad)[0]!r} "
                 "(use # obstacle, o module, . empty)"
             )
-        if rows and len(line) != len(rows[0][1]):
-            raise ScenarioError(f"{source}:{lineno}: row has {len(line)} cells, row 1 "
-                                f"(line {rows[0][0]}) has {len(rows[0][1])}")
         rows.append((lineno, line))
     if not rows:
         raise ScenarioError(f"{source}: the map has no rows")
     height = len(rows)
+    # trailing spaces are empty cells, gone with rstrip: rows end where they end
+    width = max(len(line) for _, line in rows)
     obstacles: list[Cell] = []
     modules: list[Cell] = []
     floor_rows: set[int] = set()
@@ -106,6 +106,7 @@ def parse_map(text: str, name: str, source: str, n: int | None = None) -> Scenar
         y = height - 1 - i
         if set(line) == {"#"}:
             floor_rows.add(y)
+            line = line.ljust(width, "#")  # a floor runs on, also past a short row
         for x, ch in enumerate(line):
             if ch == "#":
                 obstacles.append((x, y))

@@ -62,9 +62,11 @@ class DaskProcesses(NamedTuple):
     scheduler: subprocess.Popen
 
 
-def _dask_processes(tmp_path: Path, n_workers: int) -> Iterator[DaskProcesses]:
+def _dask_processes(tmp_path: Path, n_workers: int,
+                    scheduler_args: tuple[str, ...] = ("--host", "127.0.0.1"),
+                    ) -> Iterator[DaskProcesses]:
     info = tmp_path / "scheduler.json"
-    procs = [_start([str(DASK), "scheduler", "--host", "127.0.0.1", "--port", "0",
+    procs = [_start([str(DASK), "scheduler", *scheduler_args, "--port", "0",
                      "--no-dashboard", "--scheduler-file", str(info)],
                     tmp_path / "scheduler.log")]
     try:
@@ -112,3 +114,17 @@ def write_spec(tmp_path):
         path.write_text(text)
         return path
     return write
+
+
+@pytest.fixture
+def tls_scheduler(tmp_path):
+    """A ``dask scheduler`` that speaks TLS only (a self-signed certificate made
+    with openssl); yields (address, certificate, key)."""
+    cert, key = tmp_path / "cert.pem", tmp_path / "key.pem"
+    subprocess.run(["openssl", "req", "-x509", "-newkey", "rsa:2048", "-nodes", "-days", "1",
+                    "-subj", "/CN=127.0.0.1", "-keyout", str(key), "-out", str(cert)],
+                   check=True, capture_output=True)
+    args = ("--host", "tls://127.0.0.1", "--tls-ca-file", str(cert), "--tls-cert", str(cert),
+            "--tls-key", str(key))
+    for processes in _dask_processes(tmp_path, 0, args):
+        yield processes.address, cert, key

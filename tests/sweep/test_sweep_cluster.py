@@ -165,3 +165,48 @@ def test_a_scheduler_without_workers_says_so_and_gives_up(write_spec, tmp_path, 
     assert code == 4
     assert f"{address} has no worker yet: waiting up to 1 s" in err
     assert f"no worker joined the Dask scheduler {address} in 1 s" in err
+
+
+def test_a_tls_scheduler_is_reached_with_the_clients_own_certificates(tls_scheduler):
+    """The handshake probe opened its comm without Dask's TLS settings, so a
+    tls:// scheduler could never be reached (TypeError: no ssl_context)."""
+    import dask
+
+    from hexbot.sweep import engine
+
+    address, cert, key = tls_scheduler
+    assert address.startswith("tls://")
+    tls = {"distributed.comm.tls.ca-file": str(cert),
+           "distributed.comm.tls.client.cert": str(cert),
+           "distributed.comm.tls.client.key": str(key)}
+    with dask.config.set(tls):
+        engine._hear_handshake(address)  # raises LinkUnavailableError when it cannot
+
+
+@pytest.mark.parametrize("fails_in", ["__init__", "__enter__"])
+def test_ctrl_c_is_restored_whenever_the_embedded_cluster_fails_to_start(monkeypatch,
+                                                                         fails_in):
+    """SIGINT is ignored while the workers start; a cluster that failed on
+    entering left it ignored for the rest of the process."""
+    import signal
+
+    import distributed
+
+    from hexbot.sweep import engine
+
+    class Broken:  # a unit-test double of LocalCluster that fails where asked
+        def __init__(self, **_options):
+            if fails_in == "__init__":
+                raise RuntimeError("no cluster")
+
+        def __enter__(self):
+            raise RuntimeError("no cluster")
+
+        def __exit__(self, *exc):
+            return False
+
+    monkeypatch.setattr(distributed, "LocalCluster", Broken)
+    before = signal.getsignal(signal.SIGINT)
+    with pytest.raises(RuntimeError, match="no cluster"), engine.connect(workers=1):
+        pass
+    assert signal.getsignal(signal.SIGINT) is before
