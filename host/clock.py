@@ -12,6 +12,13 @@ and the clock decides what a second is:
   unless the waiter makes it happen, so waiting *is* running the simulator
   in slices and pumping the ports between them. The same calls give the
   same trace.
+
+On a simulator's clock time is the simulator's: when it stops (a fault of
+its core, and its port is lost for good), no deadline will ever come. A
+lost port wakes every waiter at once: one whose ``ready()`` accepts a lost
+port returns and judges it (the session's exchange: a "port lost"
+outcome); any other gets :class:`~hexbot.errors.LinkUnavailableError`
+with the reason, instead of waiting for ever.
 """
 
 from __future__ import annotations
@@ -21,9 +28,14 @@ import time
 from collections.abc import Callable
 from typing import Protocol
 
+from serial import SerialException
+
+from hexbot.errors import LinkUnavailableError
 from hexbot.protocol.simulation import SimulatorAccess
 
 STEP_S = 0.01  # simulated time between two looks: a third of a 300-baud byte
+#: Why the simulator behind the clock stopped (its port lost), or None while it runs.
+Stopped = Callable[[], str | None]
 
 
 class Clock(Protocol):
@@ -31,7 +43,8 @@ class Clock(Protocol):
         """Seconds since the session started (simulated on a simulator)."""
 
     def wait(self, ready: Callable[[], bool], timeout: float) -> bool:
-        """Until ``ready()`` (True) or ``timeout`` seconds passed (False)."""
+        """Until ``ready()`` (True) or ``timeout`` seconds passed (False);
+        LinkUnavailableError if time stopped first (a simulator that stopped)."""
 
     def wake(self) -> None:
         """Something a waiter may be waiting for changed (cancel, port state)."""
@@ -65,9 +78,11 @@ class PacedClock:
 
     LATENCY_S = 0.25
 
-    def __init__(self, condition: threading.Condition, simulator: SimulatorAccess) -> None:
+    def __init__(self, condition: threading.Condition, simulator: SimulatorAccess,
+                 stopped: Stopped) -> None:
         self._condition = condition
         self.simulator = simulator
+        self._stopped = stopped  # notified on the condition too (the port's state)
         self._t0 = simulator.now()
         simulator.on_advance(self.wake)
 
@@ -78,6 +93,9 @@ class PacedClock:
         end = self.now() + max(0.0, timeout) + self.LATENCY_S * self.simulator.speed
         with self._condition:
             while not ready():
+                why = self._stopped()
+                if why is not None:  # its time will not move again
+                    raise LinkUnavailableError(why)
                 if self.now() >= end:
                     return False
                 self._condition.wait(1.0)  # notified at every simulated step
@@ -92,9 +110,11 @@ class SteppedClock:
     """Virtual time of a stepped simulator; ``pump`` moves what the ports
     received into the session after each step."""
 
-    def __init__(self, simulator: SimulatorAccess, pump: Callable[[], None]) -> None:
+    def __init__(self, simulator: SimulatorAccess, pump: Callable[[], None],
+                 stopped: Stopped) -> None:
         self.simulator = simulator
         self._pump = pump
+        self._stopped = stopped
         self._t0 = simulator.now()
 
     def now(self) -> float:
@@ -108,7 +128,13 @@ class SteppedClock:
             left = end - before
             if left <= 1e-9:
                 return False
-            self.simulator.advance(min(STEP_S, left))
+            try:
+                self.simulator.advance(min(STEP_S, left))
+            except SerialException as exc:  # it stopped: its ports fail from now on
+                self._pump()  # ... and the pump finds them lost, with the reason
+                if ready():
+                    return True
+                raise LinkUnavailableError(self._stopped() or str(exc)) from exc
             self._pump()
             if self.simulator.now() <= before:
                 return ready()  # less than one cycle was left: the deadline is here

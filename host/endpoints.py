@@ -16,7 +16,7 @@ from pathlib import Path
 from urllib.parse import quote
 
 from hexbot.cli_args import count, port_name, rate, seconds
-from hexbot.errors import UsageError
+from hexbot.errors import HexBotError, UsageError
 from hexbot.host.events import Listener
 from hexbot.host.host import DEBUG, IR, Host
 from hexbot.host.link import PortSettings
@@ -87,7 +87,8 @@ def sim_url(scenario: str, seed: int | None = None, speed: float = 0.0,
 
 def resolve(args: argparse.Namespace, default_speed: float = 1.0) -> Endpoints:
     """Port settings from the options: hardware or a URL with ``--port``,
-    else the embedded simulator (a ``hexbot-sim://`` URL)."""
+    else the embedded simulator (a ``hexbot-sim://`` URL). Opens nothing:
+    options that do not fit are a UsageError here, before any port opens."""
     frame = dict(parity=args.parity, data_bits=args.data_bits, stop_bits=args.stop_bits)
     debug_url = getattr(args, "debug_port", None)
     debug_baud = getattr(args, "debug_baud", wire.BAUD_DEBUG)
@@ -102,8 +103,25 @@ def resolve(args: argparse.Namespace, default_speed: float = 1.0) -> Endpoints:
     scenario = args.scenario or DEFAULT_SCENARIO
     speed = args.sim_speed if args.sim_speed is not None else default_speed
     ir = PortSettings(sim_url(scenario, args.seed, speed), args.baud, **frame)
-    return Endpoints(ir, debug, scenario, getattr(args, "debug_module", None),
-                     [f"simulator scenario {scenario}"])
+    debug_module = getattr(args, "debug_module", None)
+    if debug_module is not None:
+        _check_debug_module(debug_module, scenario)
+    return Endpoints(ir, debug, scenario, debug_module, [f"simulator scenario {scenario}"])
+
+
+def _check_debug_module(ident: int, scenario: str) -> None:
+    """``--debug-module`` must be one of the scenario's modules (not another
+    module's UART1 behind the user's back): a usage error before any port
+    opens, read from the scenario file (no simulator runs for it)."""
+    from hexbot.hil_sim.scenario import load_scenario
+
+    try:
+        ids = sorted(m.id for m in load_scenario(scenario).modules)
+    except HexBotError:
+        return  # a bad scenario: opening the simulator says why (exit 4, as without the option)
+    if ident not in ids:
+        raise UsageError(f"--debug-module {ident}: scenario {scenario} has "
+                         f"modules {', '.join(map(str, ids))}")
 
 
 def _session_log(args: argparse.Namespace) -> tuple[SessionLog | None, str]:
@@ -148,11 +166,9 @@ def open_host(args: argparse.Namespace, endpoints: Endpoints,
         host.start()
         sim = host.simulator
         if sim is not None and endpoints.debug is None and hasattr(args, "debug_port"):
-            ids = sim.module_ids()
-            ident = endpoints.debug_module if endpoints.debug_module is not None else min(ids)
-            if ident not in ids:  # not another module's UART1 behind the user's back
-                raise UsageError(f"--debug-module {ident}: scenario {endpoints.scenario} has "
-                                 f"modules {', '.join(map(str, sorted(ids)))}")
+            # --debug-module: one of the scenario's ids (checked by resolve)
+            ident = (endpoints.debug_module if endpoints.debug_module is not None
+                     else min(sim.module_ids()))
             host.add_port(DEBUG, PortSettings(sim.uart1_url(ident),
                                               getattr(args, "debug_baud", wire.BAUD_DEBUG)),
                           args.retry).link.start()

@@ -177,9 +177,9 @@ class Host:
         if sim is None or not isinstance(self.clock, WallClock):
             return  # hardware, or chosen already
         if sim.stepped:
-            self.clock = SteppedClock(sim, self.pump)
+            self.clock = SteppedClock(sim, self.pump, self._simulator_stopped)
         else:
-            self.clock = PacedClock(self.changed, sim)
+            self.clock = PacedClock(self.changed, sim, self._simulator_stopped)
         sim.subscribe(self._verdict)
 
     @property
@@ -187,6 +187,15 @@ class Host:
         """The simulator behind the IR port, when it is one (``hexbot-sim://``)."""
         ch = self.channels.get(IR)
         return ch.link.simulator if ch is not None else None
+
+    def _simulator_stopped(self) -> str | None:
+        """Why the simulator behind the IR port stopped, or None while it runs:
+        its port lost is lost for good (an in-process cluster is not opened
+        again), and the simulator's clock with it."""
+        ch = self.channels.get(IR)
+        if ch is None or ch.link.state is not LinkState.LOST:
+            return None
+        return f"{IR} port lost: {ch.link.detail}" if ch.link.detail else f"{IR} port lost"
 
     def pump(self) -> None:
         """Stepped ports: move what they received into the session."""

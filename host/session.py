@@ -379,7 +379,7 @@ class Session:
         staggers those texts in per-id slots, so silence alone can end too
         early when ids leave gaps); otherwise until ``quiet`` seconds pass
         without an event. Commands sent while modules boot are lost. Returns
-        the ids heard."""
+        the ids heard; LinkUnavailableError if the port is lost meanwhile."""
         heard: set[int] = set()
         if not expected:
             self.collect(0, quiet, timeout or 60.0)
@@ -395,10 +395,13 @@ class Session:
                     if ident is not None:
                         heard.add(ident)
                         missing.discard(ident)
-                return not missing or self.cancel.is_set()
+                return not missing or self.cancel.is_set() or self._lost(IR) is not None
 
             limit = timeout if timeout is not None else timing.boot_seconds(expected) + 5.0
             self.host.clock.wait(ready, limit)
+            lost = self._lost(IR)
+            if lost is not None and not self.cancel.is_set():
+                raise LinkUnavailableError(f"{IR} port lost while the modules booted ({lost})")
         self.known |= heard
         if expected and heard >= set(expected):
             self.cluster = frozenset(expected)

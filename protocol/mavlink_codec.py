@@ -13,7 +13,11 @@ CRC_EXTRA. Whatever is not a valid frame goes to the legacy parser, so a
 the same typed events as their legacy forms (``MavAck`` is an ``Ack``...),
 so the session waits for them the same way, and carry the frame's header
 (:class:`MavInfo`): system id, sequence number, and how many messages of
-that system were missed before it (a gap in the sequence).
+that system were missed before it (a gap in the sequence). A legacy reply
+of several lines gives several events: so does the message that replaces
+it (:func:`to_events`: ``HEXBOT_LOCALIZED`` is the ``LOCALIZED`` report's
+four), and whatever reads events (the cluster model, a script's ``expect
+text LOCALIZED``) reads both framings alike.
 """
 
 from __future__ import annotations
@@ -33,7 +37,10 @@ from hexbot.protocol.parser import (
     Event,
     PositionReport,
     ReplyParser,
+    SideReport,
     StatusReport,
+    Text,
+    YrefReport,
 )
 
 STX = hexbot_mavlink.PROTOCOL_MARKER_V2  # 0xFD
@@ -180,6 +187,19 @@ def to_event(raw: bytes, msg, missed: int = 0) -> Event:
     return MavMessage(raw, mav=info)
 
 
+def to_events(raw: bytes, msg, missed: int = 0) -> list[Event]:
+    """A decoded message as the events its legacy form gives, in their
+    order: the one of :func:`to_event`, except for ``HEXBOT_LOCALIZED``,
+    which replaces the four lines of the legacy localization report
+    (``LOCALIZED``, ``Side:``, ``Yref:``, ``Pos:``) and so gives their four
+    events; the last, the position, carries the frame and its header."""
+    event = to_event(raw, msg, missed)
+    if isinstance(event, MavLocalized):
+        return [Text(b"", phrase=wire.TEXT_LOCALIZED), SideReport(b"", side=event.side),
+                YrefReport(b"", yref=event.yref), event]
+    return [event]
+
+
 @dataclass
 class FramedParser:
     """Bytes in, events out, for both framings at once (the ReplyParser
@@ -229,7 +249,7 @@ class FramedParser:
             # legacy bytes still pending before a whole MAVLink frame can
             # never complete: report them (as garbage) before the frame
             out += self.legacy.flush()
-            out.append(to_event(frame, msg, self._gap(msg)))
+            out += to_events(frame, msg, self._gap(msg))
         return out
 
     def _frame_size(self) -> float | None:

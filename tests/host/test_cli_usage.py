@@ -148,6 +148,26 @@ def test_monitor_debug_module_must_be_in_the_scenario(capsys, log_dir):
     assert code == 2 and reason(err).endswith("--debug-module 64: scenario pair has modules 1, 2")
 
 
+@pytest.mark.parametrize("argv, words", [
+    (["--scenario", "pair", "--debug-module", "9"],
+     "--debug-module 9: scenario pair has modules 1, 2"),
+    (["--port", "loop://", "--scenario", "pair"], "cannot be combined with --port"),
+])
+def test_console_usage_errors_exit_2_before_the_ui_starts(capsys, log_dir, monkeypatch,
+                                                          argv, words):
+    """docs/console.md: a usage error exits 2 before any port opens; the
+    console showed it in the TUI and exited 2 only when the user quit."""
+    from hexbot.host.console.app import HexBotConsole
+
+    def started(self, *args, **kwargs):
+        pytest.fail("the console's UI started")
+    monkeypatch.setattr(HexBotConsole, "run", started)
+    code, err = status(capsys, "console", *argv)
+    assert code == 2, err
+    assert reason(err).startswith("hexbot console: error: ") and words in reason(err)
+    assert not log_dir.exists()
+
+
 class _Writes(io.StringIO):
     """A stderr double that keeps every write() call apart."""
 

@@ -106,3 +106,33 @@ def test_ack_after_report_names_the_placement():
           + parser.reply_ack(66, "M", 2))
     assert [(c.x, c.y, c.module_id) for c in model.cells()] == [(-1, 1, 2)]
     assert model.module(2).position == (-1, 1) and model.module(2).localized
+
+
+def test_a_mavlink_localization_report_reads_as_the_legacy_one():
+    """--framing mavlink: HEXBOT_LOCALIZED replaces the four lines of the
+    legacy report; it gave one event, so `expect text LOCALIZED` never saw it
+    and the model placed nobody (docs/protocol.md: the workflows run
+    unchanged in either framing)."""
+    import io
+
+    from hexbot.protocol import hexbot_mavlink
+    from hexbot.protocol.mavlink_codec import FramedParser
+
+    out = io.BytesIO()
+    mav = hexbot_mavlink.MAVLink(out, srcSystem=2, srcComponent=1)
+    mav.send(hexbot_mavlink.MAVLink_hexbot_localized_message(4, 2, -1, 1))
+    mav.send(hexbot_mavlink.MAVLink_hexbot_ack_message(66, 1, 0, 0))
+    events = FramedParser().feed(out.getvalue())
+    legacy = parser.parse_all(wire.PREAMBLE + b"LOCALIZED\n\rSide: 4\n\rYref: 2\n\rPos: -01+01\n\r"
+                              + parser.reply_ack(66, "M", 2))
+    # the legacy report's kinds of event, in its order (MavAck is an Ack...)
+    assert all(isinstance(mav, type(old)) for mav, old in zip(events, legacy, strict=True))
+    text, side, yref, pos, ack = events
+    assert (text.phrase, side.side, yref.yref, (pos.x, pos.y), ack.code) == (
+        "LOCALIZED", 4, 2, (-1, 1), 66)
+    assert pos.mav is not None and pos.mav.name == "HEXBOT_LOCALIZED"  # shown beside it
+    model = ClusterModel()
+    for ev in events:
+        model.apply("ir", ev, 1.0)
+    assert [(c.x, c.y, c.yref, c.side, c.module_id) for c in model.cells()] == [
+        (-1, 1, 2, 4, 2)]
