@@ -92,6 +92,7 @@ def result_json(bmap: BridgeMap, result: Result) -> dict[str, Any]:
         "time_steps": result.time_steps,
         "moves": result.moves,
         "modules": bmap.surface.n,
+        "start_holds": list(result.holds),
         "bridges": [g.as_json() for g in bmap.groups]
         + ([{"kind": "FILL", "cells": [list(c) for c in bmap.fills]}] if bmap.fills else []),
         "rounds": [{"moves": [m.as_json() for m in moves]} for moves in result.rounds],
@@ -115,6 +116,9 @@ def summary(bmap: BridgeMap, result: Result) -> str:
                      f"pocket length {group.pocket_length}")
     if bmap.fills:
         lines.append(f"  FILL (hexbot model, held for good): {[list(c) for c in bmap.fills]}")
+    held = [f"module {k}: {h}" for k, h in enumerate(result.holds, start=1) if h]
+    if held:
+        lines.append(f"  start held back (rounds; their ways fold back): {', '.join(held)}")
     lines.append(f"{result.status}: {result.time_steps} time steps, {result.moves} moves")
     return "\n".join(lines)
 

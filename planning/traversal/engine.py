@@ -3,10 +3,10 @@ invariants checked every round.
 
 Each module knows only the map, the bridge map computed from it, ``n``, its
 own cell and memory, and which of its six neighbour cells are occupied
-(now and one round ago: a cell that changed means a module in motion). No
-messages. Per round, every module decides from the state at the start of
-the round; the engine then checks all decided moves together and applies
-them. A broken invariant stops the run with the round, the modules and the
+(now and in the last round or two: a cell that changed means a module in
+motion). No messages. Per round, every module decides from the state at the
+start of the round; the engine then checks all decided moves together and
+applies them. A broken invariant stops the run with the round, the modules and the
 rule that moved them.
 
 Decisions the paper leaves open (docs/traversal.md, "MOVEMODULE"):
@@ -14,6 +14,11 @@ Decisions the paper leaves open (docs/traversal.md, "MOVEMODULE"):
   neighbour cells changed in the last round; this yields the 2-cell spacing
   (under the hexbot model the last two rounds: a 3-cell spacing, since a
   rigid rotation sweeps a cell two away);
+- under the hexbot model a module whose way, where it folds back on itself,
+  would cross the way of a module ahead in the same round holds back its
+  start by the fewest rounds that avoid it (:func:`start_holds`, computed
+  from the map as the bridge map is: the modules ahead are where the map and
+  this same rule put them); the module ahead always goes first;
 - a Bridge module counts the modules that pass as the entries into the last
   cell next to it on the way over the bridge (``Group.pass_cells``);
 - a module leaving a Bridge cell never enters the pocket it closed;
@@ -50,6 +55,7 @@ class Module:
     served: set[int] = field(default_factory=set)  # id() of groups served
     avoid: set[Cell] = field(default_factory=set)
     rule: str = "start"  # the part of MOVEMODULE that made its last move
+    deferred: int = 0  # rounds it could have started and did not (its start hold)
     resume_rule: str = ""
     to_support_rule: str = ""
 
@@ -96,6 +102,7 @@ class Result:
     violation: Violation | None = None
     reason: str = ""
     initial: dict[int, Cell] = field(default_factory=dict)
+    holds: tuple[int, ...] = ()  # rounds each module deferred its start (start_holds)
 
     @property
     def time_steps(self) -> int:
@@ -110,7 +117,8 @@ class Engine:
     """One run of the traversal on a bridge map."""
 
     def __init__(self, bmap: BridgeMap, *, stall_rounds: int | None = None,
-                 max_rounds: int | None = None) -> None:
+                 max_rounds: int | None = None, holds: tuple[int, ...] | None = None,
+                 active: int | None = None) -> None:
         self.bmap = bmap
         self.surface = bmap.surface.surface
         self.model = bmap.model
@@ -135,6 +143,13 @@ class Engine:
         self.last_moves: list[tuple[Cell, Cell]] = []
         self.stall_rounds = stall_rounds or 8 * self.n + 40
         self.max_rounds = max_rounds or 20 * (len(layer) + 4 * self.n) + 200
+        # modules after the first ``active`` never start (start_holds: the ones
+        # ahead of a module, as it computes them from the map)
+        self.active = active or self.n
+        if holds is None:
+            holds = start_holds(bmap) if self.model == "hexbot" else (0,) * self.n
+        self.holds = holds
+        self.deferring = False
 
     # -- what a module senses -------------------------------------------------
     def occupied(self, cell: Cell) -> bool:
@@ -165,7 +180,13 @@ class Engine:
             return None
         if m.phase == "chain":
             k = m.ident - 1
+            if m.ident > self.active:
+                return None
             if k > 0 and (self.chain_cells[k - 1] in self.at or not self.quiet(m)):
+                return None
+            if m.deferred < self.holds[k]:  # its way would cross one ahead: not yet
+                m.deferred += 1
+                self.deferring = True
                 return None
             m.phase, rule = "moving", "start"
         elif m.phase == "bridge":
@@ -307,8 +328,9 @@ class Engine:
         rounds: list[list[MoveRecord]] = []
         idle = 0
         for rnd in range(1, self.max_rounds + 1):
-            if all(m.phase == "done" for m in self.modules):
+            if all(m.phase in self._settled(m) for m in self.modules):
                 return self._result("reached", rounds, initial)
+            self.deferring = False
             actions = [(m, r) for m in self.modules if (r := self.decide(m)) is not None]
             violation = self.check(rnd, actions)
             if violation is not None:
@@ -340,7 +362,7 @@ class Engine:
                               "modules lost contact with the surface")
                 return self._result("violation", rounds, initial, violation=v,
                                     reason=v.describe())
-            idle = 0 if records else idle + 1
+            idle = 0 if records or self.deferring else idle + 1
             if idle >= self.stall_rounds:
                 waiting = [f"{m.ident}:{m.phase}@{list(m.cell)}" for m in self.modules
                            if m.phase != "done"]
@@ -350,14 +372,51 @@ class Engine:
         return self._result("deadlock", rounds, initial,
                             reason=f"not done after {self.max_rounds} rounds")
 
+    def _settled(self, m: Module) -> tuple[str, ...]:
+        """Phases in which module ``m`` counts as finished: "done"; in a run of the
+        first ``active`` modules only (:func:`start_holds`) also waiting on a
+        bridge (the passes it waits for are the later modules'), and any phase
+        for the modules that never start."""
+        if self.active == self.n:
+            return ("done",)
+        if m.ident > self.active:
+            return (m.phase,)
+        return ("done", "bridge", "temp", "support")
+
     def _by_id(self, ident: int) -> Module:
         return self.modules[ident - 1]
 
     def _result(self, status: str, rounds: list[list[MoveRecord]], initial: dict[int, Cell],
                 violation: Violation | None = None, reason: str = "") -> Result:
         return Result(status, rounds, {m.ident: m.cell for m in self.modules}, violation,
-                      reason, initial)
+                      reason, initial, tuple(self.holds))
 
 
 def traverse(bmap: BridgeMap, **options: Any) -> Result:
     return Engine(bmap, **options).run()
+
+
+def start_holds(bmap: BridgeMap) -> tuple[int, ...]:
+    """How many rounds each module defers its start (hexbot model): the fewest
+    for which its way, with the modules ahead of it moving as they will, makes
+    no move that crosses one of theirs. A module computes this from the map
+    alone, in preprocessing like the bridge map: the modules ahead start by the
+    same rule and then follow the map's wall-following way, so where each of
+    them is in every round is known to it (no messages, no sensing beyond its
+    neighbours). Module by module: module ``k`` is run with the first ``k - 1``
+    and their holds (the later ones stay in the chain) until all of them are
+    done or wait on a bridge. Holding longer than the modules ahead take to
+    settle changes nothing; when no hold up to that helps, the hold is 0 and
+    the run reports the conflict (docs/traversal.md, "Rigid modules whose ways
+    fold back")."""
+    n = bmap.surface.n
+    holds = [0] * n
+    for k in range(1, n):
+        ahead = Engine(bmap, holds=tuple(holds), active=k).run()
+        for hold in range(ahead.time_steps + 2):
+            holds[k] = hold
+            if Engine(bmap, holds=tuple(holds), active=k + 1).run().status != "violation":
+                break
+        else:
+            holds[k] = 0
+    return tuple(holds)

@@ -58,12 +58,23 @@ def test_render_writes_an_animated_gif(tmp_path):
 def test_random_range_counts_outcomes_and_fails_unless_all_reached(capsys):
     status, out = _json(capsys, "--random", "160..169")
     assert status == 0 and out["reached"] == 10 and out["failures"] == []
-    # under the hexbot model random:2 is refused, random:1 and 3 break an
-    # invariant (two rigid modules sweep one cell): exit 1, with the reasons
+    # under the hexbot model random:2 is refused (random:1 and 3 broke an
+    # invariant before start holds): exit 1, with the reason
     status = main(["traverse", "--random", "0..3", "--motion", "hexbot"])
     text = capsys.readouterr().out
-    assert status == 1 and "1 reached, 0 deadlock, 2 violation, 1 refused" in text
-    assert "random:2: refused" in text and "random:1: violation" in text
+    assert status == 1 and "3 reached, 0 deadlock, 0 violation, 1 refused" in text
+    assert "random:2: refused" in text and "random:1:" not in text
+
+
+def test_start_holds_are_shown(capsys):
+    # random:51: modules 3 and 4 hold back their start one round (docs/traversal.md)
+    assert main(["traverse", "random:51", "--motion", "hexbot"]) == 0
+    text = capsys.readouterr().out
+    assert "start held back (rounds; their ways fold back): module 3: 1, module 4: 1" in text
+    status, out = _json(capsys, "random:51", "--motion", "hexbot")
+    assert status == 0 and out["start_holds"] == [0, 0, 1, 1]
+    status, out = _json(capsys, "random:51")
+    assert status == 0 and out["start_holds"] == [0, 0, 0, 0]
 
 
 def test_random_range_must_be_seeds(capsys):
