@@ -23,6 +23,15 @@ by its channel selector (Table 3-5). The medium decides, byte by byte:
   a byte seen up to its stop bit arrives as before, and selector moves and
   resets from the stop bit on change nothing. The channel is the selector
   at the start bit, a write on that very cycle included (the write wins).
+* **The receiver's own USART.** A receiver that was off for part of a
+  byte (its comm board reset, or the firmware cleared RXEN) lost what it
+  had of it: it reads the line from where it came on last and looks for a
+  falling edge there; a line already low when it comes on is no start bit
+  (a reset in data bit 1 of 0xF0 gives nothing, one in data bit 0 of 0x5A
+  resynchronises on bit 2's edge and reads 0xEB). Off at the byte's
+  horizon, the middle of its stop bit by the sender's bit time, it does
+  not get the byte (``ir-dropped``). Its changes count up to that horizon
+  (``Air.rx_since``).
 * Two bytes from different senders that overlap in time at one receiver
   collide: the IR line idles high and a lit LED pulls it low, so the line is
   the AND of the two lines, each at its real start. The receiver gets what
@@ -83,12 +92,20 @@ BURST_BITS = 12
 
 @dataclass(frozen=True)
 class Frame:
-    """The line settings of one USART, as far as the medium cares."""
+    """The line settings of one USART, as far as the medium cares.
+
+    ``bit_cycles``: its bit time in cluster cycles when the simulator knows
+    the part's clock (``simulator.frame_of``): its own cycles per bit times
+    nominal over its clock, not rounded, the same double as the core's
+    ``m162_bit_time``. Without it (the PC, tests' frames) the bit time is
+    ``hz / baud`` for a receiver and the byte's length over its bits for a
+    sender (:attr:`AirByte.bit`)."""
 
     baud: float
     data_bits: int = 8
     parity: str = "N"
     stop_bits: int = 1
+    bit_cycles: float | None = field(default=None, repr=False)
 
     def same_word(self, other: Frame) -> bool:
         """Data bits and parity alike (what a receiver checks of the format)."""
@@ -107,11 +124,20 @@ class Frame:
         if self.matches(receiver):
             return value, False
         if self.same_word(receiver):
-            return first_byte(value, self.line(), receiver.line())
+            bits = None
+            if self.bit_cycles is not None and receiver.bit_cycles is not None:
+                bits = (self.bit_cycles, receiver.bit_cycles)  # in cycles, as the core
+            return first_byte(value, self.line(), receiver.line(), bits)
         return rng.randrange(256), True
 
     def matches(self, other: Frame) -> bool:
-        if abs(self.baud - other.baud) > BAUD_TOLERANCE * other.baud:
+        """A receiver set as ``other`` takes this sender's bytes: bit times
+        within the tolerance (in cycles as the core's m162_usart_frame_ok
+        when both are known, the same comparison), the same word format."""
+        if self.bit_cycles is not None and other.bit_cycles is not None:
+            if abs(self.bit_cycles - other.bit_cycles) > BAUD_TOLERANCE * self.bit_cycles:
+                return False
+        elif abs(self.baud - other.baud) > BAUD_TOLERANCE * other.baud:
             return False
         # A receiver checks only the first stop bit: 8N2 into 8N1 is fine.
         return self.same_word(other)
@@ -130,7 +156,10 @@ class AirByte:
 
     @property
     def bit(self) -> float:
-        """The sender's bit time, in cycles."""
+        """The sender's bit time, in cycles: its frame's (its clock's, not
+        rounded), else the byte's length over its bits (the PC's)."""
+        if self.frame.bit_cycles is not None:
+            return self.frame.bit_cycles
         return (self.end - self.start) / self.frame.line().frame_bits
 
     @property
@@ -161,6 +190,11 @@ class Air(Protocol):
     def rx_frame(self, module: int) -> Frame:
         """The current settings of the module's comm UART1 receiver."""
 
+    def rx_since(self, module: int, before: float) -> int | None:
+        """The cycle the module's comm UART1 receiver came on last (RXEN
+        set; a reset turns it off) by its changes before ``before``, if it
+        is on then; None if it is off."""
+
     def deliver(self, module: int, value: int, framing_error: bool) -> bool:
         """Hand a byte to the module's comm UART1; False if the USART dropped it."""
 
@@ -175,10 +209,11 @@ class _Arrival:
     value: int
     framing_error: bool
     parts: list[Part] = field(default_factory=list)  # their levels, for a collision
-    #: the receiver's settings (line, bit time) while the collision's value is
-    #: still to be read: read once, when asked for (:meth:`read_value`), not
-    #: again for every byte that joins (at boot the PC hears some 20 at once)
-    unread: tuple[LineSettings, float] | None = None
+    #: the receiver's settings (line, bit time, since when its USART is on)
+    #: while the collision's value is still to be read: read once, when asked
+    #: for (:meth:`read_value`), not again for every byte that joins (at boot
+    #: the PC hears some 20 at once)
+    unread: tuple[LineSettings, float, float | None] | None = None
     together: bool = field(init=False)  # every part whole and started with the first
 
     def __post_init__(self) -> None:
@@ -188,22 +223,22 @@ class _Arrival:
         return self.start < byte.end and byte.start < self.end and byte.sender not in self.senders
 
     def absorb(self, byte: AirByte, value: int, part: Part, rx: LineSettings,
-               bit: float) -> None:
+               bit: float, since: float | None = None) -> None:
         """A byte of another sender overlapped: the receiver reads the AND of
-        the lines. Bytes that started together and went out whole: the AND
-        of the values (what sampling reads, and what the receiver read of
-        each on its own). Else what its UART (``rx``, ``bit`` cycles) samples
-        of the AND of their levels, each at its real start. Flagged broken
-        either way."""
+        the lines. Bytes that started together and went out whole, heard
+        from their start: the AND of the values (what sampling reads, and
+        what the receiver read of each on its own). Else what its UART
+        (``rx``, ``bit`` cycles, on since ``since``) samples of the AND of
+        their levels, each at its real start. Flagged broken either way."""
         self.start, self.end = min(self.start, byte.start), max(self.end, byte.end)
         self.senders.add(byte.sender)
         self.parts.append(part)
         self.together = (self.together and part.whole
                          and part.start == self.parts[0].start)
-        if self.together:
+        if self.together and (since is None or since <= part.start):
             self.value &= value
         else:
-            self.unread = (rx, bit)
+            self.unread = (rx, bit, since)
         self.framing_error = True
 
     def read_value(self) -> int:
@@ -304,15 +339,27 @@ class IrMedium:
             value, framing_error = self._extended(byte, receiver, faults, value)
         rx = PC_FRAME if receiver == PC else self.air.rx_frame(receiver)  # type: ignore[arg-type]
         part = Part(byte.start, byte.end, byte.bit, value, byte.frame.line(), tuple(spans))
-        rx_bit = self.hz / rx.baud
+        rx_bit = self.hz / rx.baud if rx.bit_cycles is None else rx.bit_cycles
+        # The receiver's own USART by its changes before the middle of the
+        # byte's stop bit: off there, it does not get the byte (below); came
+        # on within the byte, it lost what it had and looks for a falling
+        # edge from there (ir_line.read).
+        since: float | None = None
+        if receiver != PC:
+            since = self.air.rx_since(receiver, byte.stop + byte.bit / 2)  # type: ignore[arg-type]
+            on = since is not None
+        else:
+            on = True
+        late = since is not None and since > byte.start
         if not byte.frame.matches(rx):
             self._event(
                 byte, receiver, "ir-garbled", reason=f"sender {byte.frame}, receiver {rx}"
             )
-        if not part.whole and byte.frame.same_word(rx):
-            # cut: what the receiver's UART samples of the part it saw, by
-            # the rule of a whole byte at its rate (first_byte)
-            read = ir_line.read([part], rx.line(), rx_bit)
+        if (not part.whole or late) and byte.frame.same_word(rx):
+            # cut: what the receiver's UART samples of the part it saw, from
+            # where it came on, by the rule of a whole byte at its rate
+            # (first_byte)
+            read = ir_line.read([part], rx.line(), rx_bit, since)
             if read is None:
                 return  # no start bit where the receiver looked: nothing
             if not byte.frame.matches(rx):
@@ -339,11 +386,12 @@ class IrMedium:
         previous = self._last.get(receiver)
         if previous is not None and previous.overlaps(byte):
             self._event(byte, receiver, "ir-collision", other=sorted(previous.senders, key=str))
-            previous.absorb(byte, value, part, rx.line(), rx_bit)
+            previous.absorb(byte, value, part, rx.line(), rx_bit, since)
             arrival = previous
         else:
             self._last[receiver] = arrival
-        if not self.air.deliver(receiver, arrival.read_value(), arrival.framing_error):
+        if not on or not self.air.deliver(receiver, arrival.read_value(),
+                                          arrival.framing_error):
             self._event(byte, receiver, "ir-dropped", reason="receiver off (RXEN) or overrun")
         self._spurious(byte, receiver, faults)
 

@@ -13,6 +13,10 @@ first, parity, stop, idle high):
   begins (:func:`stop_bit`): from there on the line is high either way.
 * Overlapping bytes of several senders are one line: a lit LED pulls it
   low, so the line is the AND of the bytes' levels, each at its real start.
+* A receiver whose own USART was off for part of a byte (its MCU reset,
+  RXEN cleared) lost what it had of it: it reads the line from where it
+  came on last, and a line already low there is no start bit (``since``
+  of :func:`read`). The medium (ir_bus.py) decides when that is.
 
 That line is read by :func:`~hexbot.hil_sim.uart_line.read_first`, the
 sampling rule of the simulated UARTs. Times are cluster cycles. The C
@@ -134,7 +138,11 @@ def line(parts: list[Part]) -> list[tuple[float, int]]:
     return out
 
 
-def read(parts: list[Part], rx: LineSettings, bit: float) -> tuple[int, bool] | None:
+def read(parts: list[Part], rx: LineSettings, bit: float,
+         since: float | None = None) -> tuple[int, bool] | None:
     """The first byte (value, framing error) a receiver set to ``rx`` with a
-    bit time of ``bit`` cycles reads of ``parts``; None: no start bit."""
-    return read_first(line(parts), rx, bit)
+    bit time of ``bit`` cycles reads of ``parts``; None: no start bit.
+    ``since``: the receiver's USART came on there (after a reset, RXEN
+    set): it looks for a falling edge from there on
+    (:func:`~hexbot.hil_sim.uart_line.read_first`); None: on all along."""
+    return read_first(line(parts), rx, bit, since)

@@ -94,6 +94,9 @@ class Module:
     _sel_cycles: list[int] = field(default_factory=lambda: [0])
     _sel_channels: list[int | None] = field(default_factory=lambda: [CHANNEL_SIDE[0]])
     _resets: list[int] = field(default_factory=list)  # comm board resets, recent ones
+    #: the comm board's UART1 receiver: (cycle, on) of its changes, the first
+    #: the state before the rest; None: not known (the tests' double), on
+    _rx: list[tuple[int, bool]] | None = None
 
     @property
     def position(self) -> Cell:
@@ -142,3 +145,29 @@ class Module:
 
     def resets(self, after: int, until: int) -> list[int]:
         return [c for c in self._resets if after < c <= until]
+
+    def record_rx(self, changes: list[tuple[int, bool]], keep_from: int) -> None:
+        """The comm board's UART1 receiver came on or went off at these
+        cycles (``Cluster.uart_rx_log``: RXEN, resets); it boots off."""
+        if self._rx is None:
+            self._rx = [(0, False)]
+        if not changes:
+            return
+        rx = self._rx + [(int(c), bool(on)) for c, on in changes]
+        # fold what nobody can ask about any more into the first entry
+        first = max(0, bisect.bisect_right(rx, (keep_from, True)) - 1)
+        self._rx = rx[first:]
+
+    def rx_since(self, before: float) -> int | None:
+        """The cycle the receiver came on last by its changes before
+        ``before``, if it is on then; None: off."""
+        if self._rx is None:
+            return 0
+        on, since = False, 0
+        for cycle, state in self._rx:
+            if cycle >= before:
+                break
+            if state and not on:
+                since = cycle
+            on = state
+        return since if on else None

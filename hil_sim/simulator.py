@@ -87,12 +87,21 @@ def _load_core() -> Any:
     return _avr
 
 
-def frame_of(config: dict) -> Frame:
+def frame_of(config: dict, clock: int | None = None, nominal: int | None = None) -> Frame:
+    """A USART's settings (``Cluster.uart_config``). With its MCU's clock and
+    the nominal clock (Hz), also its bit time in cluster cycles: its own
+    cycles per bit times nominal over its clock, not rounded (decision,
+    docs/simulator.md "Bit times off nominal"). One division of exact
+    integers, as the core's ``m162_bit_time``: the same double."""
+    bit = None
+    if clock and nominal and "bit_cycles" in config:
+        bit = int(config["bit_cycles"]) * int(nominal) / int(clock)
     return Frame(
         float(config["baud"]),
         int(config["data_bits"]),
         str(config["parity"]),
         int(config["stop_bits"]),
+        bit,
     )
 
 
@@ -168,6 +177,8 @@ class Simulator:
                 self.plant.bodies[spec.id],
             )
             self.modules[spec.id] = module
+            if hasattr(self.cluster, "uart_rx_log"):
+                module.record_rx([], 0)  # its receiver's changes come from the core
             self._by_comm[comm] = module
             self._boards[comm] = (module, "comm")
             self._boards[control] = (module, "control")
@@ -400,6 +411,12 @@ class Simulator:
         regs = {name: module.comm.port(name) for name in COMM_PORTS}
         return ({n: r[0] for n, r in regs.items()}, {n: r[1] for n, r in regs.items()})
 
+    def _frame(self, mcu: Mcu, uart: int) -> Frame:
+        """The USART's settings, with its bit time in cluster cycles (its
+        MCU's clock: ``frame_of``)."""
+        clock = getattr(self.cluster, "clock", None)  # the tests' double has none
+        return frame_of(mcu.uart_config(uart), clock(mcu.index) if clock else None, self.hz)
+
     # --- the Air protocol of the IR medium ---------------------------------------
 
     def channel_at(self, module: int, cycle: int) -> int | None:
@@ -419,6 +436,9 @@ class Simulator:
     def resets(self, module: int, after: int, until: int) -> list[int]:
         return self.modules[module].resets(after, until)
 
+    def rx_since(self, module: int, before: float) -> int | None:
+        return self.modules[module].rx_since(before)
+
     def position(self, module: int) -> Cell:
         return self.modules[module].position
 
@@ -426,7 +446,7 @@ class Simulator:
         return list(self.modules)
 
     def rx_frame(self, module: int) -> Frame:
-        return frame_of(self.modules[module].comm.uart_config(1))
+        return self._frame(self.modules[module].comm, 1)
 
     def deliver(self, module: int, value: int, framing_error: bool) -> bool:
         return bool(self.cluster.uart_put(self.modules[module].comm.index, 1, value, framing_error))
@@ -455,6 +475,8 @@ class Simulator:
         for module, board in changed:
             if board == "comm" and hasattr(self.cluster, "resets"):
                 module.record_resets(self.cluster.resets(module.comm.index), keep_from)
+            if board == "comm" and hasattr(self.cluster, "uart_rx_log"):
+                module.record_rx(self.cluster.uart_rx_log(module.comm.index, 1), keep_from)
         changes.sort(key=lambda c: (c[0], c[1], c[2]))
         for cycle, module_id, board, port, value in changes:
             if board != "control":
@@ -476,7 +498,7 @@ class Simulator:
             self._ir_events()
             for index, start, end, value in self.cluster.ir_take_pc():
                 module = self._by_comm[index]
-                frame = frame_of(module.comm.uart_config(1))
+                frame = self._frame(module.comm, 1)
                 air.append(AirByte(module.id, start, end, value, frame))
                 if module.rf12:  # the centre input is wired to the wireless board too
                     self._radio_link(module, [(start, end, value)], frame, to_comm=False)
@@ -486,7 +508,7 @@ class Simulator:
                     continue
                 taken = self.cluster.uart_take(module.comm.index, 1)
                 if taken:
-                    frame = frame_of(module.comm.uart_config(1))
+                    frame = self._frame(module.comm, 1)
                     air.extend(AirByte(module.id, s, e, b, frame) for s, e, b in taken)
                     if module.rf12:
                         self._radio_link(module, taken, frame, to_comm=False)
@@ -498,8 +520,8 @@ class Simulator:
                 if board == "rf12":
                     taken = self.cluster.uart_take(mcu.index, RF12_LINK_UART)
                     if taken:
-                        self._radio_link(module, taken, frame_of(
-                            mcu.uart_config(RF12_LINK_UART)), to_comm=True)
+                        self._radio_link(module, taken, self._frame(mcu, RF12_LINK_UART),
+                                         to_comm=True)
         while self._pc_tx and self._pc_tx[0][1] <= now:
             start, end, value = self._pc_tx.popleft()
             air.append(AirByte(PC, start, end, value, PC_FRAME))
@@ -526,7 +548,7 @@ class Simulator:
         rf12 = module.rf12
         assert rf12 is not None
         target, uart = (module.comm, 1) if to_comm else (rf12, RF12_LINK_UART)
-        receiver = frame_of(target.uart_config(uart))
+        receiver = self._frame(target, uart)
         for _start, end, value in taken:
             if module.channel_at(end) != CENTRE:
                 continue
@@ -554,7 +576,7 @@ class Simulator:
     def _debug_received(self, module: Module, taken: list[tuple[int, int, int]],
                         board: str) -> None:
         mcu = module.control if board == "control" else module.rf12
-        frame = frame_of(mcu.uart_config(1))
+        frame = self._frame(mcu, 1)
         rx = self._debug_rx[module.id if board == "control" else (module.id, board)]
         for _start, end, value in taken:
             if not frame.matches(DEBUG_FRAME):
@@ -565,7 +587,7 @@ class Simulator:
                 rx.append(read[0])
 
     def _debug_send(self, module: Module, value: int) -> None:
-        frame = frame_of(module.control.uart_config(1))
+        frame = self._frame(module.control, 1)
         read = DEBUG_FRAME.read_by(frame, value, self._garbage)
         if read is None:
             return  # the board's UART found no start bit in it

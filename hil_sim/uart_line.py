@@ -77,15 +77,19 @@ def _waveform(data: bytes, tx: LineSettings, bit: float | None = None,
     return out
 
 
-def first_byte(byte: int, tx: LineSettings, rx: LineSettings) -> tuple[int, bool] | None:
+def first_byte(byte: int, tx: LineSettings, rx: LineSettings,
+               bits: tuple[float, float] | None = None) -> tuple[int, bool] | None:
     """One byte sent as ``tx``, as a receiver set to ``rx`` (the same word
     format, another baud rate) reads it: :func:`resample`'s reading, its
     first byte only (the IR medium delivers one byte per byte sent), with
     its framing error; None when the receiver finds no start bit in it. For
     rates outside the baud tolerance only: the sent byte never arrives as
-    good (see the end). The simulator's C core (``m162_usart_resample``)
-    reads the same; a test holds them together."""
-    read = next(_read(_waveform(bytes([byte]), tx), rx), None)
+    good (see the end). ``bits``: the sender's and the receiver's bit times
+    in cycles, when the simulator knows them (else 1 / baud, in seconds).
+    The simulator's C core (``m162_usart_resample``) reads the same; a test
+    holds them together."""
+    tx_bit, rx_bit = bits if bits is not None else (None, None)
+    read = next(_read(_waveform(bytes([byte]), tx, tx_bit), rx, rx_bit), None)
     return None if read is None else out_of_range(read, byte, rx)
 
 
@@ -114,24 +118,28 @@ def levels(byte: int, tx: LineSettings, start: float, bit: float) -> list[tuple[
     return _waveform(bytes([byte]), tx, bit, start)
 
 
-def read_first(wave: list[tuple[float, int]], rx: LineSettings,
-               bit: float) -> tuple[int, bool] | None:
+def read_first(wave: list[tuple[float, int]], rx: LineSettings, bit: float,
+               since: float | None = None) -> tuple[int, bool] | None:
     """The first byte (value, framing error) a receiver set to ``rx``, with
     a bit time of ``bit`` in the unit of ``wave``'s times, reads of the line
-    ``wave`` (as :func:`levels` gives); None if it finds no start bit. The
-    IR medium's reading of cut and colliding bytes (hil_sim/ir_line.py);
-    the C core's twin is ``uart_line_read`` (hil_sim/core/uart_line.c)."""
-    return next(_read(wave, rx, bit), None)
+    ``wave`` (as :func:`levels` gives); None if it finds no start bit.
+    ``since``: the receiver came on there (RXEN set, after a reset), after
+    the line began: it looks for a falling edge at or after it, and a line
+    already low there is no start bit (the datasheet: reception starts on a
+    high-to-low transition); None: on all along. The IR medium's reading of
+    cut and colliding bytes (hil_sim/ir_line.py); the C core's twin is
+    ``uart_line_read`` (hil_sim/core/uart_line.c)."""
+    return next(_read(wave, rx, bit, since), None)
 
 
-def _read(wave: list[tuple[float, int]], rx: LineSettings,
-          bit: float | None = None) -> Iterator[tuple[int, bool]]:
+def _read(wave: list[tuple[float, int]], rx: LineSettings, bit: float | None = None,
+          since: float | None = None) -> Iterator[tuple[int, bool]]:
     """(byte, framing error) for each start bit a receiver set to ``rx``
     finds in ``wave``: wait for the line low, check the start bit in its
     middle (a glitch re-arms there), sample each data bit in its middle,
     the stop bit too, re-arm after the middle of the (first) stop bit.
     ``bit``: the receiver's bit time in the unit of the wave (default
-    seconds, 1 / baud)."""
+    seconds, 1 / baud). ``since``: see :func:`read_first`."""
     end = wave[-1][0]
     starts = [t for t, _ in wave]
 
@@ -147,6 +155,15 @@ def _read(wave: list[tuple[float, int]], rx: LineSettings,
 
     bit = 1.0 / rx.baud if bit is None else bit
     i, t = 0, wave[0][0]
+    if since is not None and since > t:
+        # came on at since: the first low level that begins at or after it
+        # after a high one, a falling edge
+        while i < len(wave) - 1 and (wave[i][0] < since or wave[i][1] != 0
+                                     or (i > 0 and wave[i - 1][1] == 0)):
+            i += 1
+        if i >= len(wave) - 1:
+            return
+        t = wave[i][0]
     while True:
         # the line low at or after t: the first low bit that has not ended by t
         # (the waveform ends idle high, so a low bit always has a successor)

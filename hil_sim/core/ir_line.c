@@ -58,7 +58,7 @@ static int by_time(const void *a, const void *b)
 	return (x > y) - (x < y);
 }
 
-int ir_line_read(const ir_part_t *parts, int n, double bit, uint8_t format)
+int ir_line_read(const ir_part_t *parts, int n, double bit, uint8_t format, double since)
 {
 	uart_edge_t waves[IR_LINE_PARTS][UART_LINE_BYTE_MAX];
 	int lens[IR_LINE_PARTS];
@@ -93,5 +93,5 @@ int ir_line_read(const ir_part_t *parts, int n, double bit, uint8_t format)
 	}
 	if (line[nl - 1].level != 1)
 		line[nl++] = (uart_edge_t){ times[nt - 1], 1 };
-	return uart_line_read(line, nl, bit, format);
+	return uart_line_read(line, nl, bit, format, since);
 }

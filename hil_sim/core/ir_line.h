@@ -36,7 +36,9 @@ int ir_part_whole(const ir_part_t *p);
 /* Spans in both a and b, in order, at most IR_MAX_SPANS into out; how many. */
 int ir_spans_intersect(ir_span_t *out, const ir_span_t *a, int na, const ir_span_t *b, int nb);
 /* The first byte a receiver with bit time bit and format reads of the line
- * of parts[0..n): byte | UART_INPUT_FE, or -1 (no start bit). */
-int ir_line_read(const ir_part_t *parts, int n, double bit, uint8_t format);
+ * of parts[0..n): byte | UART_INPUT_FE, or -1 (no start bit).  since: the
+ * receiver came on there, and looks for a falling edge from there on
+ * (uart_line_read); -1: on all along. */
+int ir_line_read(const ir_part_t *parts, int n, double bit, uint8_t format, double since);
 
 #endif

@@ -43,9 +43,9 @@ static void log_event(ir_port_t *p, int kind, const ir_air_t *a, const int *othe
 }
 
 /* where a byte's stop bit begins (ir_part_stop, one formula) */
-static double stop_of(uint64_t start, uint32_t bit_cycles, uint8_t format)
+static double stop_of(uint64_t start, double bit, uint8_t format)
 {
-	ir_part_t part = { .start = (double)start, .bit = (double)bit_cycles, .format = format };
+	ir_part_t part = { .start = (double)start, .bit = bit, .format = format };
 	return ir_part_stop(&part);
 }
 
@@ -72,6 +72,52 @@ void ir_note_port(ir_port_t *p, int port, uint8_t value, uint64_t cycle)
 void ir_note_reset(ir_port_t *p, uint64_t cycle)
 {
 	note(p, cycle, IR_MARK_RESET);
+}
+
+void ir_note_rx(ir_port_t *p, const m162_usart_t *s, uint64_t cycle, int on)
+{
+	if (s != p->s)
+		return;
+	if (GROW(p->rx, p->n_rx, p->cap_rx, 8) == 0)
+		p->rx[p->n_rx++] = (m162_rxmark_t){ cycle, on };
+}
+
+/* Whether p's receiver is on at horizon h by its own changes before h, and
+ * since when (the cycle it came on last; ir_medium.h). */
+static int rx_on_at(const ir_port_t *p, double h, double *since)
+{
+	int on = p->rx_before_on;
+	uint64_t from = p->rx_before_since;
+	for (size_t k = 0; k < p->n_rx && (double)p->rx[k].cycle < h; k++) {
+		if (p->rx[k].on && !on)
+			from = p->rx[k].cycle;
+		on = p->rx[k].on;
+	}
+	*since = (double)from;
+	return on;
+}
+
+/* At a boundary: changes older than any byte can reach back to fold into
+ * the state before. */
+static void prune_rx(ir_port_t *p, uint64_t now, uint64_t quantum)
+{
+	uint64_t keep = 2 * p->longest + quantum;
+	size_t drop = 0;
+	while (drop < p->n_rx && p->rx[drop].cycle + keep < now) {
+		if (p->rx[drop].on && !p->rx_before_on)
+			p->rx_before_since = p->rx[drop].cycle;
+		p->rx_before_on = p->rx[drop].on;
+		drop++;
+	}
+	memmove(p->rx, p->rx + drop, (p->n_rx - drop) * sizeof *p->rx);
+	p->n_rx -= drop;
+}
+
+/* The middle of a's stop bit by its sender's bit time: p's own on/off
+ * changes count before it (rx_on_at) */
+static double horizon(const ir_air_t *a)
+{
+	return a->stop + a->bit / 2;
 }
 
 /* At a boundary: fresh marks become readable by every MCU; marks older than
@@ -185,23 +231,31 @@ static int has_sender(const ir_port_t *p, int sender)
 /* The byte reaches the receiver's antenna now (middle of its stop bit). */
 static void arrive(ir_port_t *p, const ir_air_t *a)
 {
-	ir_part_t part = { (double)a->start, (double)a->end, (double)a->bit_cycles, a->byte,
+	ir_part_t part = { (double)a->start, (double)a->end, a->bit, a->byte,
 		a->format, 0, { { 0, 0 } } };
 	part.n_spans = seen_spans(p, a, a->stop, part.spans);
 	if (!part.n_spans)
 		return; /* looking elsewhere: lost in the air, as in ir_bus.py */
 	uint8_t value = a->byte;
 	int fe = 0;
-	double own = m162_to_cluster_span(p->m, p->s->bit_cycles);
-	m162_txrec_t rec = { a->start, a->due, a->end, a->byte, a->format, a->bit_cycles };
+	double since;
+	int on = rx_on_at(p, horizon(a), &since);
+	/* it came on within the byte: it lost what it had and looks for a
+	 * falling edge from there (ir_line_read) */
+	int late = on && since > (double)a->start;
+	if (!on)
+		since = -1.0; /* dropped below; read as if on, for a collision to come */
+	double own = m162_bit_time(p->m, p->s->bit_cycles);
+	m162_txrec_t rec = { a->start, a->due, a->end, a->byte, a->format, a->bit };
 	int same_word = (rec.format & 0x3F) == (p->s->format & 0x3F);
 	int frame_ok = m162_usart_frame_ok(p->s, &rec, p->tolerance);
 	if (!frame_ok)
 		log_event(p, IR_EV_GARBLED, a, NULL, 0);
-	if (!ir_part_whole(&part) && same_word) {
-		/* cut: what the receiver's UART samples of the part it saw, by
-		 * the rule of a whole byte at its rate (m162_usart_resample) */
-		int got = ir_line_read(&part, 1, own, p->s->format);
+	if ((!ir_part_whole(&part) || late) && same_word) {
+		/* cut: what the receiver's UART samples of the part it saw, from
+		 * where it came on, by the rule of a whole byte at its rate
+		 * (m162_usart_resample) */
+		int got = ir_line_read(&part, 1, own, p->s->format, since);
 		if (!frame_ok)
 			got = uart_line_out_of_range(got, a->byte, a->format);
 		if (got < 0)
@@ -234,14 +288,15 @@ static void arrive(ir_port_t *p, const ir_air_t *a)
 			p->last.parts[p->last.n] = part;
 			p->last.senders[p->last.n++] = a->sender;
 		}
-		int together = 1; /* started together, whole: the AND of the values */
+		/* started together, whole, heard from the start: the AND of the values */
+		int together = since <= part.start;
 		for (int k = 0; k < p->last.n; k++)
 			together &= p->last.parts[k].start == part.start &&
 				ir_part_whole(&p->last.parts[k]);
 		if (together) {
 			p->last.value &= value;
 		} else {
-			int got = ir_line_read(p->last.parts, p->last.n, own, p->s->format);
+			int got = ir_line_read(p->last.parts, p->last.n, own, p->s->format, since);
 			if (got >= 0)
 				p->last.value = (uint8_t)got;
 		}
@@ -257,7 +312,9 @@ static void arrive(ir_port_t *p, const ir_air_t *a)
 		p->last.fe = fe;
 	}
 	uint16_t v = p->last.value | (p->last.fe ? UART_INPUT_FE : 0);
-	if (!m162_usart_put(p->s, v))
+	if (!on) /* off at the byte's horizon: lost, as m162_usart_put drops it */
+		p->s->rx_dropped++;
+	if (!on || !m162_usart_put(p->s, v))
 		log_event(p, IR_EV_DROPPED, a, NULL, 0);
 }
 
@@ -305,6 +362,14 @@ static void enqueue(ir_port_t *p, ir_air_t a)
 	if (a.end - a.start > p->longest)
 		p->longest = a.end - a.start;
 	a.due_local = m162_to_local(p->m, a.due);
+	/* not before the receiver's run has passed every cycle before the
+	 * horizon: its own changes there are then all noted (an instruction of
+	 * the local cycle of the last one runs before a timer of the next) */
+	double h = horizon(&a);
+	uint64_t last = (double)(uint64_t)h == h ? (uint64_t)h - 1 : (uint64_t)h;
+	uint64_t need = m162_to_local(p->m, last) + 1;
+	if (a.due_local < need)
+		a.due_local = need;
 	if (a.due_local <= avr->cycle && p->inbox_len == 0 && settled(p, &a)) {
 		arrive(p, &a); /* the quantum was longer than the byte: at once */
 		return;
@@ -348,7 +413,7 @@ static void route(cluster_t *c, ir_port_t *p, const m162_txrec_t *r)
 		enqueue(c->mcu[rt->target]->ir, (ir_air_t){ .start = r->start, .due = r->mid_stop,
 			.end = r->end, .sender = p->index, .from = p, .byte = r->byte,
 			.format = r->format, .need_y = (uint8_t)rt->need_y, .sent_y = (int8_t)y,
-			.bit_cycles = r->bit_cycles, .stop = stop_of(r->start, r->bit_cycles, r->format) });
+			.bit = r->bit, .stop = stop_of(r->start, r->bit, r->format) });
 	}
 }
 
@@ -384,6 +449,9 @@ int ir_attach(cluster_t *c, int mcu, int uart, int sel_port, const uint8_t sel_b
 	p->rng = 0x9E3779B97F4A7C15ULL ^ (uint64_t)(mcu + 1);
 	p->y_before = p->y_now = selector_y(p);
 	p->n_fresh = p->n_marks = 0;
+	p->rx_before_on = p->s->rx_on;
+	p->rx_before_since = 0;
+	p->n_rx = 0;
 	p->s->ir_sel_port = sel_port;
 	p->s->ir_pos = p->s->log_len;
 	m162_usart_set_keep_log(p->s, 1);
@@ -414,18 +482,21 @@ void ir_set_seed(cluster_t *c, uint64_t seed)
 	}
 }
 
-void ir_send_from_pc(cluster_t *c, uint64_t start, uint64_t end, uint8_t byte,
-		uint32_t bit_cycles, uint8_t format)
+void ir_send_from_pc(cluster_t *c, uint64_t start, uint64_t end, uint8_t byte, uint8_t format)
 {
-	/* one stop bit: its middle is half a bit before the end */
-	uint64_t mid = end - bit_cycles + bit_cycles / 2;
+	/* The PC's bit time: its byte's length over its bits, not rounded (as
+	 * the Python medium's AirByte.bit); it is sent with one stop bit, whose
+	 * middle is half a bit before the end. */
+	int bits = 1 + (format & 0x0F) + (((format >> 4) & 3) >= 2) + (format >> 6);
+	double bit = (double)(end - start) / bits;
+	uint64_t mid = end - (uint64_t)(bit / 2);
 	for (int i = 0; i < c->n_ir; i++) {
 		ir_port_t *p = c->ir[i];
 		if (p->centre_y < 0)
 			continue;
 		enqueue(p, (ir_air_t){ .start = start, .due = mid, .end = end, .sender = IR_PC,
 			.byte = byte, .format = format, .need_y = (uint8_t)p->centre_y,
-			.bit_cycles = bit_cycles, .stop = stop_of(start, bit_cycles, format) });
+			.bit = bit, .stop = stop_of(start, bit, format) });
 	}
 }
 
@@ -435,6 +506,8 @@ int ir_boundary(cluster_t *c)
 	for (int i = 0; i < c->n_ir; i++) {
 		c->ir[i]->published = c->cycle;
 		publish(c->ir[i], c->cycle, c->quantum);
+		if (c->ir[i]->n_rx)
+			prune_rx(c->ir[i], c->cycle, c->quantum);
 	}
 	for (int i = 0; i < c->n_ir; i++) {
 		ir_port_t *p = c->ir[i];
@@ -482,5 +555,6 @@ void ir_free(ir_port_t *p)
 	free(p->to_pc);
 	free(p->fresh);
 	free(p->marks);
+	free(p->rx);
 	free(p);
 }

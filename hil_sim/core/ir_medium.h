@@ -27,6 +27,14 @@
  *    quantum.  When that boundary is before the byte's stop bit (a quantum
  *    longer than half a bit), the byte waits for the next boundary, so what
  *    a receiver reads never depends on the quantum;
+ *  - a receiver whose own USART was off for part of a byte (RXEN cleared,
+ *    or its MCU reset) lost what it had of it: it reads the line from where
+ *    it came on last, looking for a falling edge there (a line already low
+ *    is no start bit; uart_line_read), and one that is off at the byte's
+ *    horizon, the middle of its stop bit by the sender's bit time (stop +
+ *    bit / 2), does not get it (ir-dropped).  Its own on/off changes
+ *    (ir_note_rx) count up to that horizon; the byte is handed over once
+ *    the receiver's run has passed it, so they are all known;
  *  - two bytes from different senders that overlap in time at one receiver
  *    collide: the second is handed over, with the framing error flag, as
  *    what the receiver's UART samples of the AND of both lines, each at its
@@ -83,7 +91,7 @@ typedef struct ir_air_t {
 	const struct ir_port_t *from; /* the sender's port, NULL for the PC */
 	uint8_t byte, format, need_y;
 	int8_t sent_y;            /* the sender's selector index at the start bit */
-	uint32_t bit_cycles;
+	double bit;               /* the sender's bit time, cluster cycles (m162_bit_time) */
 	double stop;              /* where its stop bit begins (ir_part_stop) */
 } ir_air_t;
 
@@ -140,6 +148,12 @@ typedef struct ir_port_t {
 	int y_now;            /* the last index noted */
 	uint64_t longest;     /* longest frame sent or heard: how long marks are kept */
 	uint64_t published;   /* the last boundary: every board's marks before it are in marks */
+	/* its USART receiver's on/off changes (ir_note_rx), read by its own run
+	 * and pruned at the boundary, as its own selector marks */
+	m162_rxmark_t *rx;
+	size_t n_rx, cap_rx;
+	int rx_before_on;     /* the state before rx[0] */
+	uint64_t rx_before_since; /* and since when it was on, if it was */
 	ir_air_t inbox[IR_INBOX]; /* sorted by due */
 } ir_port_t;
 
@@ -151,7 +165,7 @@ void ir_set_seed(cluster_t *c, uint64_t seed);
 /* A byte of the PC's transceiver (start..end, cluster cycles): reaches every
  * attached board whose selector is on the centre in the middle of its stop bit. */
 void ir_send_from_pc(cluster_t *c, uint64_t start, uint64_t end, uint8_t byte,
-		uint32_t bit_cycles, uint8_t format);
+		uint8_t format);
 /* Work at a quantum boundary; 1 if a byte for the PC ended. */
 int ir_boundary(cluster_t *c);
 /* Bytes for the PC whose stop bit ended by now, of MCU mcu (removed). */

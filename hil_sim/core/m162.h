@@ -33,7 +33,7 @@ typedef struct m162_txrec_t {
 	uint64_t start, mid_stop, end;
 	uint8_t byte;
 	uint8_t format;      /* data bits | parity mode << 4 | stop bits << 6 */
-	uint32_t bit_cycles; /* sender's bit time, in cluster cycles */
+	double bit;          /* sender's bit time in cluster cycles, not rounded (m162_bit_time) */
 } m162_txrec_t;
 
 /* A byte waiting to reach a receiver at a given cycle (wire delivery, in the
@@ -44,6 +44,13 @@ typedef struct m162_rxpend_t {
 } m162_rxpend_t;
 
 #define M162_RXQ_SIZE 64
+
+/* A USART receiver came on (RXEN set) or went off (RXEN cleared, or the
+ * MCU's reset), at a cluster cycle. */
+typedef struct m162_rxmark_t {
+	uint64_t cycle;
+	int on;
+} m162_rxmark_t;
 
 typedef struct m162_usart_t {
 	struct m162_t *mcu;
@@ -80,6 +87,11 @@ typedef struct m162_usart_t {
 	m162_rxpend_t rxq[M162_RXQ_SIZE];
 	unsigned rxq_head, rxq_len;
 	uint64_t rx_dropped;
+	/* the receiver's on/off changes, until taken (pyavr uart_rx_log; the
+	 * last 64 at most), and its state as last noted */
+	int rx_on;
+	m162_rxmark_t *rx_log;
+	size_t rx_log_len, rx_log_cap;
 	avr_io_read_t orig_ucsra_read;
 	void *orig_ucsra_read_param;
 	avr_io_write_t orig_ucsrb_write;
@@ -167,7 +179,12 @@ void m162_reset(m162_t *m);
 /* Cluster cycles <-> this MCU's own cycles (equal on the nominal clock). */
 uint64_t m162_to_local(const m162_t *m, uint64_t cluster_cycle);
 uint64_t m162_to_cluster(const m162_t *m, uint64_t local_cycle);
-uint32_t m162_to_cluster_span(const m162_t *m, uint32_t local_cycles);
+/* A span of the MCU's own cycles (a bit time) in cluster cycles, not
+ * rounded: on a clock off nominal it is not a whole number.  One division
+ * of exact integers, local * nominal / hz, so Python's twin
+ * (simulator.frame_of) computes the same double (docs/simulator.md,
+ * "Bit times off nominal"). */
+double m162_bit_time(const m162_t *m, uint32_t local_cycles);
 /* Change the MCU's clock at cluster cycle now (hz > 0). */
 void m162_set_clock(m162_t *m, uint32_t hz, uint64_t now);
 /* Drive external levels on the pins of port (0..4 = A..E) in mask: they
@@ -181,6 +198,9 @@ static inline m162_t *m162_of(avr_t *avr) { return (m162_t *)avr->custom.data; }
 struct ir_port_t;
 void ir_note_port(struct ir_port_t *p, int port, uint8_t value, uint64_t cycle);
 void ir_note_reset(struct ir_port_t *p, uint64_t cycle);
+/* USART s's receiver came on or went off (m162_usart.c): the medium's
+ * receiver, if s is its USART, reads from there (ir_medium.h). */
+void ir_note_rx(struct ir_port_t *p, const struct m162_usart_t *s, uint64_t cycle, int on);
 
 /* USART (m162_usart.c) */
 void m162_usart_init(m162_t *m);

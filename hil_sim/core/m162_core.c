@@ -100,12 +100,12 @@ uint64_t m162_to_cluster(const m162_t *m, uint64_t local_cycle)
 	return k->base_cluster + (uint64_t)((d + k->hz - 1) / k->hz);
 }
 
-uint32_t m162_to_cluster_span(const m162_t *m, uint32_t local_cycles)
+double m162_bit_time(const m162_t *m, uint32_t local_cycles)
 {
 	const m162_clock_t *k = &m->clock;
 	if (k->hz == k->nominal_hz)
-		return local_cycles;
-	return (uint32_t)(((uint64_t)local_cycles * k->nominal_hz + k->hz / 2) / k->hz);
+		return (double)local_cycles;
+	return (double)((uint64_t)local_cycles * k->nominal_hz) / (double)k->hz;
 }
 
 void m162_set_clock(m162_t *m, uint32_t hz, uint64_t now)
@@ -1115,8 +1115,10 @@ void m162_free(m162_t *m)
 	avr_t *avr = m->avr;
 	avr_terminate(avr);
 	m162_free_irq_pool(avr);
-	for (int i = 0; i < M162_NUARTS; i++)
+	for (int i = 0; i < M162_NUARTS; i++) {
 		free(m->usart[i].log);
+		free(m->usart[i].rx_log);
+	}
 	free(m->pinlog);
 	free(m->resets);
 	if (!m->is_m162)

@@ -19,6 +19,9 @@
  *  4. Receiver: a byte handed to m162_usart_put() is complete "now": RXC
  *     rises at once (simavr would wait another frame).  RXEN off drops it;
  *     a full buffer (2-byte FIFO + shift register) drops it and sets DOR.
+ *     Every change of the receiver's state (RXEN set or cleared, a reset)
+ *     is logged: the IR medium reads a byte the receiver was off for part
+ *     of from where it came on (ir_medium.h).
  *
  * simavr's stdout echo and real-time sleep on polling are switched off.
  */
@@ -87,7 +90,7 @@ static void start_frame(m162_usart_t *s, uint8_t byte, uint64_t when)
 	uint64_t mid_stop = s->shift_end - (uint64_t)s->bit_cycles * stop_bits + s->bit_cycles / 2;
 	m162_usart_log(s, (m162_txrec_t){ m162_to_cluster(m, when), m162_to_cluster(m, mid_stop),
 			m162_to_cluster(m, s->shift_end), byte, s->format,
-			m162_to_cluster_span(m, s->bit_cycles) });
+			m162_bit_time(m, s->bit_cycles) });
 }
 
 static avr_cycle_count_t tx_done(avr_t *avr, avr_cycle_count_t when, void *param)
@@ -197,6 +200,26 @@ void m162_usart_queue_rx(m162_usart_t *s, uint64_t due_cluster, uint16_t value)
 		avr_cycle_timer_register(avr, s->rxq[tail].due - avr->cycle, rx_deliver, s);
 }
 
+/* The receiver came on or went off (RXEN, or a reset): log it for the IR
+ * medium (its own receiver reads from there) and for Python (uart_rx_log). */
+static void note_rx(m162_usart_t *s, int on)
+{
+	m162_t *m = s->mcu;
+	if (on == s->rx_on)
+		return;
+	s->rx_on = on;
+	uint64_t now = m162_to_cluster(m, m->avr->cycle);
+	if (m->ir)
+		ir_note_rx(m->ir, s, now, on);
+	if (s->rx_log_len == 64) { /* nobody takes them: keep the latest */
+		memmove(s->rx_log, s->rx_log + 1, 63 * sizeof *s->rx_log);
+		s->rx_log_len--;
+	}
+	if (GROW(s->rx_log, s->rx_log_len, s->rx_log_cap, 4) == 0)
+		s->rx_log[s->rx_log_len++] = (m162_rxmark_t){ now, on };
+	m->changed = 1;
+}
+
 /* ---------------------------------------------------------------- */
 /* control registers */
 
@@ -214,6 +237,7 @@ static void ctrl_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
 	/* RXC is a level: enabling RXCIE with data waiting interrupts at once */
 	if (!had_rxcie && avr_regbit_get(avr, u->rxc.enable) && !uart_fifo_isempty(&u->input))
 		avr_raise_interrupt(avr, &u->rxc);
+	note_rx(s, avr_regbit_get(avr, u->rxen));
 	recompute_frame(s);
 }
 
@@ -293,6 +317,7 @@ void m162_usart_reset(m162_t *m)
 		s->rxq_len = 0;
 		s->rxq_head = 0;
 		s->last_shared_read = 0;
+		note_rx(s, 0); /* a byte on its way in is lost (the medium reads on) */
 		recompute_frame(s);
 	}
 }
@@ -324,7 +349,7 @@ int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r, double tol
 	/* a receiver checks only the first stop bit: 8N2 into 8N1 is fine */
 	if ((r->format & 0x3F) != (s->format & 0x3F))
 		return 0;
-	double sent = r->bit_cycles, own = m162_to_cluster_span(s->mcu, s->bit_cycles);
+	double sent = r->bit, own = m162_bit_time(s->mcu, s->bit_cycles);
 	double diff = sent > own ? sent - own : own - sent;
 	return diff <= tolerance * sent;
 }
@@ -340,8 +365,8 @@ int m162_usart_frame_ok(const m162_usart_t *s, const m162_txrec_t *r, double tol
 int m162_usart_resample(const m162_usart_t *s, const m162_txrec_t *r)
 {
 	uart_edge_t wave[UART_LINE_BYTE_MAX];
-	int n = uart_line_levels(wave, r->byte, r->format, 0, r->bit_cycles);
-	int got = uart_line_read(wave, n, m162_to_cluster_span(s->mcu, s->bit_cycles), r->format);
+	int n = uart_line_levels(wave, r->byte, r->format, 0, r->bit);
+	int got = uart_line_read(wave, n, m162_bit_time(s->mcu, s->bit_cycles), r->format, -1.0);
 	return uart_line_out_of_range(got, r->byte, r->format);
 }
 

@@ -394,9 +394,10 @@ static PyObject *Cluster_uart_config(ClusterObject *self, PyObject *args)
 	char parity;
 	m162_usart_config(s, &baud, &db, &parity, &sb, &rxen, &txen);
 	char par[2] = { parity, 0 };
-	return Py_BuildValue("{s:d,s:i,s:s,s:i,s:O,s:O,s:k,s:K}", "baud", baud, "data_bits", db,
+	return Py_BuildValue("{s:d,s:i,s:s,s:i,s:O,s:O,s:k,s:k,s:K}", "baud", baud, "data_bits", db,
 			"parity", par, "stop_bits", sb, "rxen", rxen ? Py_True : Py_False, "txen",
 			txen ? Py_True : Py_False, "frame_cycles", (unsigned long)s->frame_cycles,
+			"bit_cycles", (unsigned long)s->bit_cycles,
 			"rx_dropped", (unsigned long long)s->rx_dropped);
 }
 
@@ -520,6 +521,30 @@ static PyObject *Cluster_resets(ClusterObject *self, PyObject *args)
 		PyList_SET_ITEM(list, (Py_ssize_t)i, v);
 	}
 	mc->n_resets = 0;
+	return list;
+}
+
+static PyObject *Cluster_uart_rx_log(ClusterObject *self, PyObject *args)
+{
+	long m, u;
+	if (!PyArg_ParseTuple(args, "ll", &m, &u))
+		return NULL;
+	m162_usart_t *s = get_usart(self, m, u);
+	if (!s)
+		return NULL;
+	PyObject *list = PyList_New((Py_ssize_t)s->rx_log_len);
+	if (!list)
+		return NULL;
+	for (size_t i = 0; i < s->rx_log_len; i++) {
+		PyObject *t = Py_BuildValue("(KO)", (unsigned long long)s->rx_log[i].cycle,
+				s->rx_log[i].on ? Py_True : Py_False);
+		if (!t) {
+			Py_DECREF(list);
+			return NULL;
+		}
+		PyList_SET_ITEM(list, (Py_ssize_t)i, t);
+	}
+	s->rx_log_len = 0;
 	return list;
 }
 
@@ -926,10 +951,7 @@ static PyObject *Cluster_ir_send_from_pc(ClusterObject *self, PyObject *args, Py
 				"5..9 data bits, parity N/E/O, 1 or 2 stop bits");
 		return NULL;
 	}
-	uint32_t bits = (uint32_t)(1 + db + (upm ? 1 : 0) + sb);
-	uint32_t bit_cycles = (uint32_t)((end - start + bits / 2) / bits);
-	ir_send_from_pc(self->c, start, end, (uint8_t)byte, bit_cycles,
-			(uint8_t)(db | upm << 4 | sb << 6));
+	ir_send_from_pc(self->c, start, end, (uint8_t)byte, (uint8_t)(db | upm << 4 | sb << 6));
 	Py_RETURN_NONE;
 }
 
@@ -1147,6 +1169,9 @@ static PyMethodDef Cluster_methods[] = {
 		"set_input(mcu, port, mask, value): drive external levels on pins" },
 	{ "resets", (PyCFunction)Cluster_resets, METH_VARARGS,
 		"resets(mcu) -> [cycle] of the MCU's resets since the last call (at most the last 64)" },
+	{ "uart_rx_log", (PyCFunction)Cluster_uart_rx_log, METH_VARARGS,
+		"uart_rx_log(mcu, uart) -> [(cycle, on)] of the USART receiver's changes since the "
+		"last call: RXEN set (True) or cleared, a reset (False); at most the last 64" },
 	{ "pin_log", (PyCFunction)Cluster_pin_log, METH_VARARGS,
 		"pin_log(mcu) -> [(cycle, port, PORT value)] since the last call" },
 	{ "state", (PyCFunction)Cluster_state, METH_VARARGS,

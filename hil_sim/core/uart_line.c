@@ -49,13 +49,22 @@ static int level_at(const uart_edge_t *w, int n, double t)
 	return t < w[n - 1].t ? w[lo].level : 1;
 }
 
-int uart_line_read(const uart_edge_t *w, int n, double bit, uint8_t format)
+int uart_line_read(const uart_edge_t *w, int n, double bit, uint8_t format, double since)
 {
 	int db = format & 0x0F, parity = ((format >> 4) & 3) >= 2;
 	if (db > 8)
 		db = 8;
 	int i = 0;
 	double t = w[0].t;
+	if (since > t) {
+		/* came on at since: the first low level that begins at or after
+		 * it after a high one, a falling edge */
+		while (i < n - 1 && (w[i].t < since || w[i].level != 0 || (i > 0 && w[i - 1].level == 0)))
+			i++;
+		if (i >= n - 1)
+			return -1;
+		t = w[i].t;
+	}
 	for (;;) {
 		/* the line low at or after t: the first low entry not over by t */
 		while (i < n - 1 && (w[i].level != 0 || w[i + 1].t <= t))

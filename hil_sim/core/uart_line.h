@@ -29,8 +29,12 @@ int uart_line_levels(uart_edge_t *out, uint8_t byte, uint8_t format, double star
 
 /* The first byte a receiver with this bit time and format reads of the line
  * wave[0..n): the byte | UART_INPUT_FE when its stop bit reads low, or -1
- * when it finds no start bit. */
-int uart_line_read(const uart_edge_t *wave, int n, double bit, uint8_t format);
+ * when it finds no start bit.  A receiver that came on (RXEN set, after a
+ * reset) at since, after the line's first level, looks for a falling edge
+ * at or after it: a line already low there is no start bit (the datasheet:
+ * the receiver starts on a high-to-low transition).  since at or before
+ * the first level (-1): on all along. */
+int uart_line_read(const uart_edge_t *wave, int n, double bit, uint8_t format, double since);
 
 /* What a receiver outside the datasheet's baud range, where nothing is
  * promised, reports of byte when exact sampling read got (uart_line_read's

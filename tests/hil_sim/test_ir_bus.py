@@ -20,6 +20,8 @@ class Air:
     rxen: dict[int, bool] = field(default_factory=dict)
     got: list[tuple[int, int, bool]] = field(default_factory=list)
     reset_at: dict[int, list[int]] = field(default_factory=dict)  # module -> reset cycles
+    #: module -> (cycle, on) of its receiver's changes (RXEN, resets); on from 0 before
+    rx_log: dict[int, list[tuple[int, bool]]] = field(default_factory=dict)
 
     def channel_at(self, module, cycle):
         current = None
@@ -46,6 +48,16 @@ class Air:
 
     def rx_frame(self, module):
         return self.rx.get(module, IR)
+
+    def rx_since(self, module, before):
+        on, since = True, 0
+        for cycle, state in self.rx_log.get(module, []):
+            if cycle >= before:
+                break
+            if state and not on:
+                since = cycle
+            on = state
+        return since if on else None
 
     def deliver(self, module, value, framing_error):
         if not self.rxen.get(module, True):
@@ -136,6 +148,32 @@ def test_a_sender_that_switches_back_sends_the_rest_of_its_byte():
     m, _ = medium(air)
     m.transmit(AirByte(1, 0, BYTE, 0x00, IR))
     assert air.got == [(2, 0x0C, False)]
+
+
+def test_a_receiver_off_for_part_of_a_byte_reads_from_a_falling_edge_after():
+    # 0x5A: data bits 0, 2, 5, 7 low. Off in bit 0, on again in bit 1 (high):
+    # bit 2's falling edge is a start bit, and bits 3..7, the stop bit and
+    # the idle line read 0xEB. On again in bit 2 (low): that is no start
+    # bit; bit 5's edge is, and reads 0xFD.
+    def got(rx_log, value=0x5A):
+        air = pair_air()
+        air.rx_log[2] = rx_log
+        m, events = medium(air)
+        m.transmit(AirByte(1, 0, BYTE, value, IR))
+        return [(v, fe) for _, v, fe in air.got], [e["event"] for e in events]
+
+    assert got([(round(1.5 * BIT), False), (round(2.2 * BIT), True)]) == ([(0xEB, False)], [])
+    assert got([(round(1.5 * BIT), False), (round(3.2 * BIT), True)]) == ([(0xFD, False)], [])
+    # 0xF0 on again in data bit 1: the line is low, then only high: nothing
+    assert got([(round(1.5 * BIT), False), (round(2.2 * BIT), True)], 0xF0) == ([], [])
+    # off before the byte and on again as its start bit begins: the whole byte
+    assert got([(-5, False), (0, True)]) == ([(0x5A, False)], [])
+    # off at the middle of the stop bit (9.5 bits): not delivered; on again
+    # after it: the byte is lost all the same
+    assert got([(round(4 * BIT), False)]) == ([], ["ir-dropped"])
+    assert got([(round(9.4 * BIT), False), (round(9.6 * BIT), True)]) == ([], ["ir-dropped"])
+    # changes after that middle do not matter
+    assert got([(round(9.6 * BIT), False)]) == ([(0x5A, False)], [])
 
 
 def test_centre_goes_to_pc_and_pc_goes_to_every_centre_listener():

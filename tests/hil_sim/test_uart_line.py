@@ -29,6 +29,27 @@ def test_a_fast_receiver_reads_breaks_and_a_wrong_parity_reads_other_bytes():
     assert b"*F" not in resample(b"*FNNNNNNNN#", LineSettings(9600), LINE)
 
 
+def test_a_receiver_that_comes_on_mid_line_starts_only_on_a_falling_edge():
+    from hexbot.hil_sim.uart_line import levels, read_first
+
+    wave = levels(0x5A, LINE, 0.0, 10.0)  # bits of 10: 0x5A's bit 2 falls at 30
+    assert read_first(wave, LINE, 10.0) == (0x5A, False)
+    assert read_first(wave, LINE, 10.0, since=25.0) == (0xEB, False)  # bit 2's edge
+    assert read_first(wave, LINE, 10.0, since=30.0) == (0xEB, False)  # the edge at since counts
+    assert read_first(wave, LINE, 10.0, since=30.5) == (0xFD, False)  # low there: bit 5's edge
+    assert read_first(wave, LINE, 10.0, since=0.0) == read_first(wave, LINE, 10.0)
+    assert read_first(wave, LINE, 10.0, since=81.0) is None  # bit 7 low, then only high
+
+
+def test_bit_times_in_cycles_read_as_the_core_reads_them():
+    # an off-nominal clock: bit times that are not whole cycles, one rule
+    from hexbot.hil_sim.uart_line import first_byte
+
+    tx, rx = LineSettings(300), LineSettings(600)
+    assert first_byte(0x5A, tx, rx) == first_byte(0x5A, tx, rx, (3328.0, 1664.0))
+    assert first_byte(0x5A, tx, rx, (3328 * 1e6 / 1_013_000, 1664 * 1e6 / 987_000)) == (0x98, False)
+
+
 def _boot_texts(**settings) -> list[str]:
     urlhandler.register()
     with serial.serial_for_url("hexbot-sim://single?speed=0", timeout=timing.boot_seconds([1]),
