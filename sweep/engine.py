@@ -25,12 +25,14 @@ from __future__ import annotations
 
 import asyncio
 import logging
+import multiprocessing
 import os
 import signal
+import struct
 import threading
 import time
 import uuid
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Coroutine, Iterator
 from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import Any
@@ -46,6 +48,10 @@ LOST = "lost"  # what the progress callback hears for a task that left no row
 RETRIES = 1  # a task lost with its worker runs again, alone, this many times
 CONNECT_SECONDS = 10.0  # to reach a --scheduler and hear its handshake
 WORKER_WAIT_SECONDS = 60.0  # for a first worker to join a --scheduler that has none
+# how the embedded cluster makes its worker processes (see connect): spawn
+# only where there is no fork server (Windows)
+START_METHOD = ("forkserver" if "forkserver" in multiprocessing.get_all_start_methods()
+                else "spawn")
 
 
 @dataclass
@@ -105,6 +111,7 @@ def connect(scheduler: str | None = None, workers: int | None = None,
     A scheduler with no worker gets ``worker_wait`` seconds for a first one to
     join (default :data:`WORKER_WAIT_SECONDS`; ``on_wait`` hears that it
     waits), then the sweep gives up."""
+    import dask
     from distributed import Client, LocalCluster
 
     if scheduler:
@@ -121,28 +128,35 @@ def connect(scheduler: str | None = None, workers: int | None = None,
             _close(client)
         return
     # A terminal's Ctrl-C reaches the whole process group, also worker processes
-    # still importing Dask, which then die with a traceback each. A spawned
-    # process keeps an ignored SIGINT (not a blocked one, nor a handler), so the
-    # workers start while this process ignores it: a Ctrl-C in that second is
-    # not seen, the next one stops the sweep as usual.
-    restore = _ignore_sigint()
-    try:
-        # loopback only; the scheduler's HTTP server (dashboard) on a free port, never 8787
-        cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
-                               processes=True, host="127.0.0.1",
-                               dashboard_address="127.0.0.1:0",
-                               preload=["hexbot.sweep.worker_setup"],
-                               silence_logs=logging.ERROR)
-    except BaseException:
-        restore()
-        raise
-    try:
-        with cluster:
-            restore()  # from here a Ctrl-C closes the cluster on its way out
-            with Client(cluster) as client:
-                yield client
-    finally:
-        restore()  # also when entering the cluster failed (a second restore is harmless)
+    # still importing Dask, which then die with a traceback each. A new process
+    # keeps an ignored SIGINT (not a blocked one, nor a handler), so the cluster
+    # starts while this process ignores it: a Ctrl-C in that second is not
+    # seen, the next one stops the sweep as usual. A worker that its nanny
+    # restarts later (its process died) would come from this process again,
+    # with Ctrl-C live until the preload ignores it, and a Ctrl-C in that half
+    # second printed its traceback. So workers are forked by multiprocessing's
+    # fork server: it starts in that second too, and every worker it forks,
+    # at any time, starts with SIGINT ignored. The start method is Dask's
+    # setting, read at each (re)start: it holds for the cluster's whole life.
+    with dask.config.set({"distributed.worker.multiprocessing-method": START_METHOD}):
+        restore = _ignore_sigint()
+        try:
+            # loopback only; the scheduler's HTTP server (dashboard) on a free port, never 8787
+            cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1,
+                                   threads_per_worker=1, processes=True, host="127.0.0.1",
+                                   dashboard_address="127.0.0.1:0",
+                                   preload=["hexbot.sweep.worker_setup"],
+                                   silence_logs=logging.ERROR)
+        except BaseException:
+            restore()
+            raise
+        try:
+            with cluster:
+                restore()  # from here a Ctrl-C closes the cluster on its way out
+                with Client(cluster) as client:
+                    yield client
+        finally:
+            restore()  # also when entering the cluster failed (a second restore is harmless)
 
 
 def _ignore_sigint() -> Callable[[], None]:
@@ -154,29 +168,84 @@ def _ignore_sigint() -> Callable[[], None]:
 
 
 def _hear_handshake(scheduler: str) -> None:
-    """Open one comm to ``scheduler`` and read its handshake, under a deadline.
-    Dask's own connect waits for the handshake without one, so a port that
-    accepts and stays silent (a dashboard's 8787, a stuck process) would hang
-    the sweep for ever."""
+    """Open one comm to ``scheduler`` and read its handshake, under a deadline
+    of :data:`CONNECT_SECONDS`. Dask's own connect waits for the handshake
+    without one, so a port that accepts and stays silent (a dashboard's 8787,
+    a stuck process) would hang the sweep for ever.
+
+    Safe to call from a thread that runs an event loop (a notebook, an async
+    caller): the probe then runs on a loop of its own in another thread, and
+    this thread waits for it, as it waits for ``Client()``."""
+    import msgpack
     from distributed.comm import connect as open_comm
     from distributed.security import Security
 
     # the client's own settings (TLS certificates from Dask's configuration)
     connection_args = Security().get_connection_args("client")
+    # Dask retries a refused or unresolvable address until its timeout, then
+    # says why; the last fifth of the deadline is for the handshake, so a
+    # timeout of the whole means a connection that stayed silent
+    trying = 0.8 * CONNECT_SECONDS
 
     async def handshake() -> None:
-        comm = await open_comm(scheduler, timeout=CONNECT_SECONDS, **connection_args)
+        comm = await open_comm(scheduler, timeout=trying, **connection_args)
         await comm.close()
 
     try:
-        asyncio.run(asyncio.wait_for(handshake(), CONNECT_SECONDS))
-    except TimeoutError:
+        _run_apart(lambda: asyncio.wait_for(handshake(), CONNECT_SECONDS))
+    except TimeoutError:  # before OSError, whose subclass it is
         raise LinkUnavailableError(
             f"cannot reach the Dask scheduler {scheduler}: it accepts connections but did "
             f"not answer as a scheduler in {CONNECT_SECONDS:g} s") from None
-    except Exception as exc:  # noqa: BLE001 - refused, unreachable, or not Dask's protocol
+    except OSError as exc:  # refused, unresolvable, unreachable, closed on us
+        raise LinkUnavailableError(f"cannot reach the Dask scheduler {scheduler}: "
+                                   f"{_with_cause(exc)}") from exc
+    except (MemoryError, struct.error, msgpack.UnpackException) as exc:
+        # what reading another protocol's bytes as Dask's frames raises (an SSH
+        # greeting's first 8 bytes as a frame count: "Unable to allocate 2.82 EiB")
+        raise LinkUnavailableError(
+            f"cannot reach the Dask scheduler {scheduler}: something answers there, but "
+            f"not as a Dask scheduler ({type(exc).__name__}: {exc})") from exc
+    except Exception as exc:  # noqa: BLE001 - e.g. TLS settings that do not fit the address
         raise LinkUnavailableError(f"cannot reach the Dask scheduler {scheduler}: "
                                    f"{type(exc).__name__}: {exc}") from exc
+
+
+def _run_apart(main: Callable[[], Coroutine[Any, Any, Any]]) -> None:
+    """``asyncio.run(main())`` in this thread, or in a thread of its own when
+    this one already runs an event loop (``asyncio.run`` refuses to start a
+    loop there); its exception, if any, is raised here."""
+    try:
+        asyncio.get_running_loop()
+    except RuntimeError:
+        asyncio.run(main())
+        return
+    failed: list[BaseException] = []
+
+    def run() -> None:
+        try:
+            asyncio.run(main())
+        except BaseException as exc:  # noqa: BLE001 - raised again in the caller's thread
+            failed.append(exc)
+
+    thread = threading.Thread(target=run, name="hexbot-sweep-handshake", daemon=True)
+    thread.start()
+    thread.join()
+    if failed:
+        raise failed[0]
+
+
+def _with_cause(exc: BaseException) -> str:
+    """``exc``'s text, and that of the deepest cause in its chain that says
+    why (Dask's time-out says only that it timed out; its cause says refused,
+    or no such host, unless the last attempt was itself cut by the clock)."""
+    cause = None
+    link = exc.__cause__
+    while link is not None:
+        if not isinstance(link, asyncio.CancelledError | TimeoutError):
+            cause = link
+        link = link.__cause__
+    return str(exc) if cause is None else f"{exc} ({type(cause).__name__}: {cause})"
 
 
 def _wait_for_a_worker(client: Any, scheduler: str, seconds: float,

@@ -37,6 +37,7 @@ from typing import Any
 from hexbot.errors import HexBotError, ScenarioError
 from hexbot.files import load_toml, read_text
 from hexbot.sweep.kinds import Kind, Param, load_kind
+from hexbot.sweep.summary import ENGINE_COLUMNS
 from hexbot.toml_lines import TomlLines
 
 MAX_TASKS = 1_000_000  # a bigger grid is refused (split it into several sweep files)
@@ -82,7 +83,8 @@ class Spec:
 
 
 def task_id(kind: str, params: dict[str, Any]) -> str:
-    text = json.dumps({"kind": kind, "params": params}, sort_keys=True)
+    # repr: what JSON has no type for, a TOML date or time (a dotted-path kind's value)
+    text = json.dumps({"kind": kind, "params": params}, sort_keys=True, default=repr)
     return hashlib.sha256(text.encode()).hexdigest()[:16]
 
 
@@ -144,6 +146,10 @@ def parse_spec(data: dict[str, Any], text: str, path: Path) -> Spec:
     axes: dict[str, list[Any]] = {}
     for name, raw in grid.items():
         line = lines.find("grid", -1, name)
+        if name in ENGINE_COLUMNS:  # the row's own column would overwrite it, or it that
+            raise fail(line, f"{name}: the results table has a column of that name "
+                       f"({', '.join(ENGINE_COLUMNS)} are the sweep's own): rename the "
+                       "parameter")
         values = _values(raw, lambda problem, name=name, line=line:
                          fail(line, f"{name}: {problem}"))
         if isinstance(raw, list) and kind.params is None:  # a kind's Param checks the type

@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import sys
 import time
+from pathlib import Path
 
 
 def misbehave(seed: int, how: str = "ok") -> dict:
@@ -27,4 +28,17 @@ def mixed_figure(seed: int) -> dict:
 def slow_echo(seed: int) -> dict:
     """A task that takes a while, so a sweep is still running when a test breaks it."""
     time.sleep(0.5)
+    return {"echo": seed}
+
+
+def echo_params(**params) -> dict:
+    """Any parameters; says how many it got."""
+    return {"got": len(params)}
+
+
+def note_worker(seed: int, folder: str) -> dict:
+    """Leaves a file named by its worker's process id in ``folder``, then takes
+    a while (a test kills that worker)."""
+    Path(folder, str(os.getpid())).touch()
+    time.sleep(0.2)
     return {"echo": seed}

@@ -71,16 +71,53 @@ def test_a_lost_worker_keeps_every_row_and_the_sweep_completes(write_spec, tmp_p
     assert len(rows_of(tmp_path / "out")) == 8
 
 
-def test_an_unreachable_scheduler_is_exit_4(write_spec, tmp_path, capsys):
+def test_an_unreachable_scheduler_is_exit_4_and_says_why(write_spec, tmp_path, capsys,
+                                                        monkeypatch):
+    """A port nobody listens on was said to accept connections and stay silent:
+    Dask's connect and the deadline around it ended at the same moment, and
+    the deadline won."""
     import socket
 
+    from hexbot.sweep import engine
+
+    monkeypatch.setattr(engine, "CONNECT_SECONDS", 1.0)
     with socket.socket() as s:  # a port nobody listens on
         s.bind(("127.0.0.1", 0))
         port = s.getsockname()[1]
     code = main(["sweep", str(write_spec(SWEEP)), "--out", str(tmp_path / "o"),
                  "--scheduler", f"tcp://127.0.0.1:{port}", "--no-progress"])
+    err = capsys.readouterr().err
     assert code == 4
-    assert "cannot reach the Dask scheduler" in capsys.readouterr().err
+    assert (f"cannot reach the Dask scheduler tcp://127.0.0.1:{port}: Timed out trying to "
+            f"connect to tcp://127.0.0.1:{port} after 0.8 s") in err
+    assert "accepts connections" not in err
+    # why, unless Dask's last attempt was cut by its clock (a loaded machine)
+    assert "(ConnectionRefusedError: [Errno 111] Connection refused)" in err or (
+        err.endswith("after 0.8 s\n")), err
+
+
+def test_a_port_that_speaks_another_protocol_is_named_so(write_spec, tmp_path, capsys):
+    """An SSH server's greeting read as a Dask frame said only 'MemoryError:
+    Unable to allocate 2.82 EiB ...'."""
+    import socket
+    import threading
+
+    with socket.socket() as server:
+        server.bind(("127.0.0.1", 0))
+        server.listen()
+
+        def greet() -> None:
+            conn, _ = server.accept()
+            with conn:
+                conn.sendall(b"SSH-2.0-OpenSSH_9.2p1 Debian-2\r\n")
+                conn.recv(1)  # until the client hangs up
+
+        threading.Thread(target=greet, daemon=True).start()
+        code = main(["sweep", str(write_spec(SWEEP)), "--out", str(tmp_path / "o"),
+                     "--scheduler", f"tcp://127.0.0.1:{server.getsockname()[1]}",
+                     "--no-progress"])
+    assert code == 4
+    assert "something answers there, but not as a Dask scheduler (" in capsys.readouterr().err
 
 
 @pytest.mark.parametrize("resume", [False, True])
@@ -181,6 +218,30 @@ def test_a_tls_scheduler_is_reached_with_the_clients_own_certificates(tls_schedu
            "distributed.comm.tls.client.key": str(key)}
     with dask.config.set(tls):
         engine._hear_handshake(address)  # raises LinkUnavailableError when it cannot
+
+
+def test_the_handshake_probe_works_inside_a_running_event_loop(dask_scheduler_alone,
+                                                               monkeypatch):
+    """asyncio.run refuses to start inside a running loop (a notebook, an async
+    caller): the probe said it could not reach a scheduler that was there."""
+    import asyncio
+    import socket
+
+    from hexbot.errors import LinkUnavailableError
+    from hexbot.sweep import engine
+
+    monkeypatch.setattr(engine, "CONNECT_SECONDS", 1.0)
+
+    async def probe_from_a_coroutine() -> None:
+        engine._hear_handshake(dask_scheduler_alone.address)  # raises when it cannot
+        with socket.socket() as silent:  # its failure still reaches the caller
+            silent.bind(("127.0.0.1", 0))
+            silent.listen()
+            address = f"tcp://127.0.0.1:{silent.getsockname()[1]}"
+            with pytest.raises(LinkUnavailableError, match="did not answer as a scheduler"):
+                engine._hear_handshake(address)
+
+    asyncio.run(probe_from_a_coroutine())
 
 
 @pytest.mark.parametrize("fails_in", ["__init__", "__enter__"])

@@ -59,14 +59,16 @@ def test_an_interrupt_keeps_the_finished_rows_and_resume_runs_only_the_rest(
     assert len(part_files(out)) == 1  # closing merged the parts
 
 
-def ctrl_c_when(argv: list[str], ready, pause: float = 0.0) -> tuple[int, str]:
+def ctrl_c_when(argv: list[str], ready, pause: float = 0.0,
+                env: dict[str, str] | None = None) -> tuple[int, str]:
     """Run ``argv`` in a group of its own, send the group SIGINT (a terminal's
     Ctrl-C reaches every process of it) once ``ready(proc)``, plus ``pause``
     seconds; (exit status, stderr)."""
     # preexec: a suite started in the background (`make test &`) passes Ctrl-C
     # on as ignored; the command gets the default, as from a terminal
     proc = subprocess.Popen(argv, stderr=subprocess.PIPE, text=True, start_new_session=True,
-                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
+                            env=env)
     try:
         deadline = time.monotonic() + 120
         while not ready(proc):
@@ -220,15 +222,44 @@ def test_a_repeated_task_runs_once(write_spec, tmp_path, embedded_client):
 
 
 def worker_started(parent: int) -> bool:
-    """A process that ``parent`` spawned runs multiprocessing's spawn (Linux /proc)."""
+    """A process that ``parent`` started runs multiprocessing's spawn or its fork
+    server, which imports Dask before it forks the workers (Linux /proc)."""
     for stat in Path("/proc").glob("[0-9]*/stat"):
         try:
             ppid = int(stat.read_text().rsplit(")", 1)[1].split()[1])
-            if ppid == parent and b"spawn_main" in stat.with_name("cmdline").read_bytes():
+            cmdline = stat.with_name("cmdline").read_bytes()
+            if ppid == parent and (b"spawn_main" in cmdline or b"forkserver" in cmdline):
                 return True
         except (OSError, IndexError, ValueError):
             continue  # gone meanwhile
     return False
+
+
+def process_group(pgid: int) -> set[int]:
+    """The processes of a process group, but its leader (Linux /proc)."""
+    found = set()
+    for stat in Path("/proc").glob("[0-9]*/stat"):
+        try:
+            if int(stat.read_text().rsplit(")", 1)[1].split()[2]) == pgid:
+                found.add(int(stat.parent.name))
+        except (OSError, IndexError, ValueError):
+            continue  # gone meanwhile
+    return found - {pgid}
+
+
+def sigint_disposition(pid: int) -> str:
+    """``default``, ``ignored`` or ``caught`` (a handler: Python's raises
+    KeyboardInterrupt), from /proc/PID/status; ``gone`` for no such process."""
+    try:
+        status = Path(f"/proc/{pid}/status").read_text()
+    except OSError:
+        return "gone"
+    masks = dict(line.split(":\t") for line in status.splitlines()
+                 if line.startswith(("SigIgn", "SigCgt")))
+    bit = 1 << (signal.SIGINT - 1)
+    if int(masks["SigIgn"], 16) & bit:
+        return "ignored"
+    return "caught" if int(masks["SigCgt"], 16) & bit else "default"
 
 
 def test_ctrl_c_while_the_workers_start_prints_no_traceback(write_spec, tmp_path):
@@ -241,3 +272,39 @@ def test_ctrl_c_while_the_workers_start_prints_no_traceback(write_spec, tmp_path
     # ignored while the workers start (the sweep then runs to its end), or it stops
     assert returncode in (0, 130), err
     assert "Traceback" not in err and "KeyboardInterrupt" not in err
+
+
+def test_ctrl_c_after_a_worker_was_restarted_prints_no_traceback(write_spec, tmp_path):
+    """A worker process that dies mid-sweep is started again by its nanny. It
+    came from the command with Ctrl-C live until the preload ignored it (half
+    a second), so a Ctrl-C then printed its KeyboardInterrupt traceback. The
+    Ctrl-C goes out as soon as the new process has its SIGINT set up."""
+    pids = tmp_path / "pids"
+    pids.mkdir()
+    spec = write_spec('kind = "tests.sweep.sample_tasks:note_worker"\n[grid]\n'
+                      f'seed = {{ start = 0, stop = 400 }}\nfolder = "{pids}"\n')
+    argv = [str(HEXBOT), "sweep", str(spec), "--out", str(tmp_path / "o"), "--workers", "2",
+            "--no-progress"]
+    # the repository on the path, so the workers import the tests' task function
+    env = {**os.environ, "PYTHONPATH": os.pathsep.join(
+        filter(None, [os.environ.get("PYTHONPATH"), str(Path(__file__).parents[2])]))}
+    before: set[int] = set()
+    seen: list[str] = []
+
+    def restarted(proc) -> bool:
+        if not before:
+            working = [int(p.name) for p in pids.iterdir()]
+            if not working:
+                return False  # no task has started yet
+            before.update(process_group(proc.pid))
+            os.kill(working[0], signal.SIGKILL)  # a worker dies mid-task
+            return False
+        new = process_group(proc.pid) - before  # the worker its nanny starts again
+        seen[:] = [sigint_disposition(pid) for pid in new]
+        return "ignored" in seen or "caught" in seen
+
+    returncode, err = ctrl_c_when(argv, restarted, env=env)
+    assert returncode == 130, err
+    assert "interrupted: " in err and "add --resume" in err
+    assert "Traceback" not in err and "KeyboardInterrupt" not in err, (seen, err)
+    assert seen == ["ignored"]  # from its first moment

@@ -68,6 +68,11 @@ def test_task_ids_depend_on_the_parameters_only(write_spec):
     ('kind = "locomotion"\n[grid]\nruleset = "salvador"\nn = { start = 1, stop = 3000 }\n'
      'seed = { start = 0, stop = 3000 }\nround_limit = { start = 1, stop = 3000 }\n', 2,
      "the grid has 26,982,003,000 tasks (2,999 n x 3,000 seed x 2,999 round_limit)"),
+    # the row's own column overwrote the parameter: every row had task "x", one was kept
+    ('kind = "tests.sweep.sample_tasks:echo_params"\n[grid]\nseed = [1, 2, 3]\n'
+     'task = "x"\n', 4, "task: the results table has a column of that name"),
+    ('kind = "tests.sweep.sample_tasks:echo_params"\n[grid]\n\noutcome = 1\n', 4,
+     "outcome: the results table has a column of that name"),
 ])
 def test_errors_name_the_file_and_line(write_spec, text, line, words):
     path = write_spec(text)
@@ -127,3 +132,17 @@ def test_ints_among_floats_are_floats_and_a_big_grid_up_to_the_limit_is_fine(wri
     spec = load_spec(write_spec('kind = "hexbot.bench.sweep:noop"\n[grid]\n'
                                 f'seed = {{ start = 0, stop = {MAX_TASKS} }}\n', "big.toml"))
     assert len(spec.axes["seed"]) == MAX_TASKS
+
+
+def test_toml_dates_and_times_are_values_with_task_ids(write_spec):
+    """A date in the grid of a dotted-path kind stopped the sweep with a
+    traceback (the task id's JSON had no type for it)."""
+    text = ('kind = "tests.sweep.sample_tasks:echo_params"\n[grid]\n'
+            'day = [1979-05-27, 1980-01-01]\nat = 1979-05-27T07:32:00Z\nt = 07:32:00\n')
+    tasks = load_spec(write_spec(text)).tasks()
+    assert len({t.id for t in tasks}) == 2
+    assert [t.id for t in load_spec(write_spec(text, "again.toml")).tasks()] == [
+        t.id for t in tasks]  # the same in every run: --resume finds them
+    as_text = load_spec(write_spec(text.replace("1979-05-27,", '"1979-05-27",')
+                                   .replace("1980-01-01", '"1980-01-01"'), "s.toml")).tasks()
+    assert not {t.id for t in as_text} & {t.id for t in tasks}  # a date is not its text
