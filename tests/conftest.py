@@ -5,7 +5,9 @@ run, so a red build is reproducible and never depends on luck. Locally it
 explores new examples each run.
 """
 
+import importlib
 import os
+from pathlib import Path
 
 import pytest
 from hypothesis import settings
@@ -13,6 +15,27 @@ from hypothesis import settings
 settings.register_profile("ci", derandomize=True, deadline=None)
 settings.register_profile("dev", deadline=None)
 settings.load_profile("ci" if os.environ.get("CI") else "dev")
+
+#: The subpackages the editable install maps from the repository's folders
+#: (setup.py's ROOTS).
+MAPPED = ("hexbot", "hexbot.protocol", "hexbot.host", "hexbot.hil_sim",
+          "hexbot.planning", "hexbot.bench", "hexbot.sweep")
+
+
+def pytest_configure(config):
+    """Refuse to test another tree's code. The editable install maps each
+    subpackage to a folder of the checkout it was installed from; a second
+    checkout (a git worktree, a clone) run with the same virtualenv would
+    import the first one's code and its C extensions, and pass or fail for
+    it, silently."""
+    root = Path(config.rootpath).resolve()
+    for name in MAPPED:
+        where = Path(importlib.import_module(name).__file__).resolve().parent
+        if not where.is_relative_to(root):
+            raise pytest.UsageError(
+                f"{name} is imported from {where}, not from the checkout under test "
+                f"({root}): this virtualenv's editable install belongs to another tree; "
+                f"run `pip install -e .` here, or use this checkout's own virtualenv")
 
 
 @pytest.fixture
