@@ -65,6 +65,7 @@ def run(args: argparse.Namespace) -> int:
         HexBotConsole(Host(), replay=records, start_ports=False).run()
         return 0
     endpoints.resolve(args, default_speed=DEFAULT_SIM_SPEED)  # usage errors before the UI
+    endpoints.check_log_dir(args)
     app = HexBotConsole(opener=make_opener(args), reply_timeout=args.timeout)
     app.run()
     return app.failure_status or 0  # the session could not go on: say so to the shell

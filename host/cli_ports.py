@@ -30,9 +30,12 @@ def running_simulators() -> list[dict]:
             words = [w.decode(errors="replace")
                      for w in (proc / "cmdline").read_bytes().split(b"\0") if w]
             fds = sorted((int(fd.name), os.readlink(fd)) for fd in (proc / "fd").iterdir())
+            program = Path(os.readlink(proc / "exe")).name
         except (OSError, ValueError):
             continue  # gone, or not ours to look at
         if "sim" not in words or "--pty" not in words or not any("hexbot" in w for w in words):
+            continue
+        if "python" not in program:  # a wrapper (`timeout 600 hexbot sim pair --pty`)
             continue
         # fds 0-2 are the terminal it runs in (`hexbot sim pair --pty &`), not its ports
         ptys = [target for fd, target in fds if fd > 2 and target.startswith("/dev/pts/")]

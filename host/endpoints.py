@@ -10,6 +10,8 @@ exactly like hardware. Every session writes its logs (see
 from __future__ import annotations
 
 import argparse
+import errno
+import os
 from collections.abc import Iterable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -122,6 +124,24 @@ def _check_debug_module(ident: int, scenario: str) -> None:
     if ident not in ids:
         raise UsageError(f"--debug-module {ident}: scenario {scenario} has "
                          f"modules {', '.join(map(str, ids))}")
+
+
+def check_log_dir(args: argparse.Namespace) -> None:
+    """An explicit ``--log-dir`` that cannot hold a session folder is a usage
+    error before anything starts: the console opens its ports in the UI, and
+    a console that opened on a status line saying so, then exited 2 at ``q``,
+    was no use (the same test :func:`_session_log` makes, without the session's
+    folder)."""
+    if args.no_log or args.log_dir is None:
+        return
+    root = Path(args.log_dir)
+    try:
+        root.mkdir(parents=True, exist_ok=True)
+        if not os.access(root, os.W_OK | os.X_OK):
+            raise PermissionError(errno.EACCES, os.strerror(errno.EACCES))
+    except OSError as exc:
+        raise UsageError(f"--log-dir {args.log_dir}: cannot create a session folder: "
+                         f"{exc.strerror or exc}") from None
 
 
 def _session_log(args: argparse.Namespace) -> tuple[SessionLog | None, str]:

@@ -6,8 +6,10 @@
     hexbot sweep report sweep_locomotion.results [--plot outcomes.png]
 
 Exit status: 0 every task ok, 1 some task failed or was lost (the table
-says which), 2 a usage error, 130 interrupted (finished rows are kept;
---resume goes on).
+says which) or the sweep file is wrong, 2 a usage error, 4 the Dask
+scheduler cannot be reached, has no worker, or was lost mid-sweep (the rows
+taken back are kept), 130 interrupted (finished rows are kept; --resume
+goes on).
 """
 
 from __future__ import annotations

@@ -168,6 +168,28 @@ def test_console_usage_errors_exit_2_before_the_ui_starts(capsys, log_dir, monke
     assert not log_dir.exists()
 
 
+def test_console_log_dir_that_cannot_hold_a_session_exits_2_before_the_ui(
+        capsys, tmp_path, monkeypatch):
+    """docs/console.md: an explicit --log-dir where no session folder can be
+    made is a usage error before any port opens (send and monitor said so;
+    the console opened, showed it on the status line and exited 2 at q)."""
+    from hexbot.host.console.app import HexBotConsole
+
+    def started(self, *args, **kwargs):
+        pytest.fail("the console's UI started")
+    monkeypatch.setattr(HexBotConsole, "run", started)
+    not_a_folder = tmp_path / "file"
+    not_a_folder.write_text("x")
+    code, err = status(capsys, "console", "--scenario", "pair", "--log-dir", not_a_folder)
+    assert code == 2, err
+    assert reason(err).startswith("hexbot console: error: --log-dir ")
+    assert reason(err).endswith("cannot create a session folder: File exists")
+    made = tmp_path / "new" / "logs"  # a folder still to be made is fine: it is made
+    monkeypatch.setattr(HexBotConsole, "run", lambda self, *a, **k: None)
+    code, err = status(capsys, "console", "--scenario", "pair", "--log-dir", made)
+    assert code == 0, err
+
+
 class _Writes(io.StringIO):
     """A stderr double that keeps every write() call apart."""
 

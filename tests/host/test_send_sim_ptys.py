@@ -135,3 +135,20 @@ def test_ports_does_not_take_the_terminal_of_a_sim_run_in_it_for_its_ir_port():
         proc.terminate()
         proc.wait(30)
         os.close(master)
+
+
+def test_ports_lists_a_sim_started_through_a_wrapper_once():
+    """``timeout 600 hexbot sim pair --pty``: the wrapper's command line names
+    the sim too; ``ports`` listed it as a second running sim, with no ptys."""
+    proc = subprocess.Popen(["timeout", "120", sys.executable, "-m", "hexbot.cli", "sim",
+                             "single", "--pty", "--speed", "0"],
+                            stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    try:
+        ir = json.loads(proc.stdout.readline())["ir"]
+        listed = json.loads(hexbot("ports", "--json").stdout)["running"]
+        assert not [s for s in listed if s["pid"] == proc.pid], listed
+        (mine,) = [s for s in listed if s["ptys"][:1] == [ir]]
+        assert mine["command"].split()[0] != "timeout"
+    finally:
+        proc.terminate()
+        proc.wait(30)
