@@ -11,9 +11,9 @@ from urllib.parse import parse_qs, urlsplit
 
 from hexbot.host import endpoints
 from hexbot.host.cli_progress import meter
-from hexbot.host.events import HostEvent, HostWarning, Listener, Observed, PortChanged
+from hexbot.host.events import HostEvent, HostWarning, Listener, PortChanged
 from hexbot.host.link import LinkState
-from hexbot.host.session import Session, listening_id
+from hexbot.host.session import Session
 from hexbot.protocol import wire
 from hexbot.protocol.parser import Garbage
 
@@ -64,32 +64,35 @@ def _print_state(event: HostEvent) -> None:
 
 def _wait_booted(sess: Session, scenario: str, ids: list[int]) -> None:
     """Wait for a simulated cluster's boot texts with "n of N booted" on a
-    terminal, then one line saying how it went."""
+    terminal, ask the modules whose texts were not heard whole for their
+    Status, then one line saying how it went."""
     started = sess.now()
-    seen: set[int] = set()
     with meter(f"simulator {scenario}: modules booted", len(ids)) as bar:
-        def booted(event: HostEvent) -> None:
-            ident = listening_id(event.event) if isinstance(event, Observed) else None
-            if ident is not None and ident not in seen:
-                seen.add(ident)
-                bar.advance()
-        sess.host.add_listener(booted)
-        for obs in sess.host.since(0):  # texts heard before the listener was added
-            booted(obs)
-        heard = sess.wait_booted(ids)
-    print(f"simulator: {scenario}, {len(heard)} of {len(ids)} modules booted in "
-          f"{sess.now() - started:.1f} s", file=sys.stderr)
-    if not heard and any(isinstance(o.event, Garbage) for o in sess.host.since(0)):
+        def booted(_ident: int) -> None:
+            bar.advance()
+        heard = sess.wait_booted(ids, on_boot=booted)
+        rest = sorted(set(ids) - heard)
+        # by the radio the PC hears only the modules in its range: it cannot
+        # ask the others either
+        by_radio = parse_qs(urlsplit(scenario).query).get("radio") == ["1"]
+        answered: set[int] = set()
+        if rest and not by_radio and not sess.cancel.is_set():
+            # ids 8 apart share a boot slot: their texts collide into one
+            # with a wrong id, so they say nothing about who booted
+            answered = sess.confirm_booted(rest, on_boot=booted)
+    up = heard | answered
+    how = f" ({len(heard)} by boot text, {len(answered)} by Status)" if answered else ""
+    print(f"simulator: {scenario}, {len(up)} of {len(ids)} modules booted in "
+          f"{sess.now() - started:.1f} s{how}", file=sys.stderr)
+    if not up and any(isinstance(o.event, Garbage) for o in sess.host.since(0)):
         print(f"warning: only garbled bytes heard: the modules speak {wire.BAUD_IR} 8N1 "
               "(check --baud, --parity, --data-bits, --stop-bits, or the scenario's "
               "faults)", file=sys.stderr)
-    missing = sorted(set(ids) - heard)
-    # by the radio the PC hears only the modules in its range: silence is no proof
-    by_radio = parse_qs(urlsplit(scenario).query).get("radio") == ["1"]
-    if missing and heard and not by_radio and not sess.cancel.is_set():
-        # not a failure: ids 8 apart share a boot slot and their texts can
-        # collide, and a fault scenario garbles some; but say it, so that a
-        # run that passes on part of the cluster does not read as the whole
-        print(f"warning: module(s) {', '.join(map(str, missing))} sent no "
-              f"{wire.TEXT_COMM_LISTENING} text: not booted, or their boot texts were "
-              "lost; steps addressed to them will fail", file=sys.stderr)
+    missing = sorted(set(ids) - up)
+    if missing and up and not by_radio and not sess.cancel.is_set():
+        # not a failure: a run that passes on part of the cluster is fine, but
+        # say it, so that it does not read as the whole
+        print(f"warning: module(s) {', '.join(map(str, missing))}: no "
+              f"{wire.TEXT_COMM_LISTENING} text of theirs heard whole and no answer to a "
+              "Status: not booted, or out of reach; steps addressed to them will fail",
+              file=sys.stderr)

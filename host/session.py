@@ -373,29 +373,54 @@ class Session:
         return self.known
 
     def wait_booted(self, expected: Collection[int] | None = None,
-                    timeout: float | None = None, quiet: float = 2.0) -> set[int]:
+                    timeout: float | None = None, quiet: float = 2.0,
+                    on_boot: Callable[[int], None] | None = None) -> set[int]:
         """Wait for a freshly started cluster's boot texts. With ``expected``
         ids, until each has said ``COMM. LISTENING ID=nn`` (the firmware
         staggers those texts in per-id slots, so silence alone can end too
         early when ids leave gaps); otherwise until ``quiet`` seconds pass
         without an event. Commands sent while modules boot are lost. Returns
-        the ids heard; LinkUnavailableError if the port is lost meanwhile."""
+        the ids heard (``on_boot`` is called with each as it is); raises
+        LinkUnavailableError if the port is lost meanwhile.
+
+        On an embedded simulator, whose clock counts from the modules'
+        reset, a text counts only in its own boot slot and only if no other
+        expected module shares that slot: modules whose ids are 8 apart send
+        at the same time, and their bytes AND on the IR link into one
+        well-formed text with a wrong id (1, 9, 17 and 25 read ``ID=01``; 2,
+        10, 18 and 26 ``ID=00``; 6 and 14 ``ID=04``), which names a module
+        whose own text was lost, or none. Such modules are left out of the
+        result (ask them: :meth:`confirm_booted`), and the wait for a slot
+        ends with the slot (stretched by the clock tolerance), not at the
+        time-out."""
         heard: set[int] = set()
         if not expected:
             self.collect(0, quiet, timeout or 60.0)
         else:
             missing = set(expected)
             checked = 0
+            sim = self.host.simulator
+            slots = _BootSlots(expected) if sim is not None else None
+            t0 = sim.now() - self.now() if sim is not None else 0.0  # since reset, at 0
 
             def ready() -> bool:
                 nonlocal checked
                 for obs in self.host.since(checked):
                     checked = obs.seq + 1
                     ident = listening_id(obs.event)
-                    if ident is not None:
+                    if slots is not None:
+                        slots.learn_version(obs.event)
+                        if obs.port != IR or not slots.own(ident, t0 + obs.t,
+                                                           _fw_version(obs.event)):
+                            continue
+                    if ident is not None and ident not in heard:
                         heard.add(ident)
                         missing.discard(ident)
-                return not missing or self.cancel.is_set() or self._lost(IR) is not None
+                        if on_boot is not None and ident in expected:
+                            on_boot(ident)
+                if not missing or self.cancel.is_set() or self._lost(IR) is not None:
+                    return True
+                return slots is not None and slots.over(missing, sim.now())
 
             limit = timeout if timeout is not None else timing.boot_seconds(expected) + 5.0
             self.host.clock.wait(ready, limit)
@@ -406,6 +431,56 @@ class Session:
         if expected and heard >= set(expected):
             self.cluster = frozenset(expected)
         return heard
+
+    def confirm_booted(self, ids: Iterable[int],
+                       on_boot: Callable[[int], None] | None = None) -> set[int]:
+        """Ask each of ``ids`` for its Status, after the boot, when its boot
+        text was not heard whole (:meth:`wait_booted`); returns those that
+        answered (``on_boot`` is called with each). The request is a MAVLink
+        frame whose ``target_system`` is the module: it alone answers, at
+        once, and no module's ``Select`` state changes (a legacy Status
+        would need a Select, which ends every module's legacy mode); the
+        session's framing is left as it was. A module whose answer came
+        garbled is asked once more. If no boot text came at all,
+        whole or collided, one Status that is not answered ends it (a link
+        that carries nothing: the first tells whether anybody is there).
+        Raises LinkUnavailableError if the port is lost meanwhile."""
+        answered: set[int] = set()
+        ids = list(ids)
+        if not ids:
+            return answered
+        phrase = wire.TEXT_COMM_LISTENING.rstrip()
+        spoke = any(obs.port == IR and isinstance(obs.event, Text) and obs.event.phrase == phrase
+                    for obs in self.host.since(0))
+        earlier = {id(d) for d in self._owed}
+        framing = self.host.framing
+        if framing is not Framing.MAVLINK:
+            self.host.set_framing(Framing.MAVLINK)
+        try:
+            for ident in ids:
+                if self.cancel.is_set():
+                    break
+                out = self.exchange(frames.make("Status"), target=ident)
+                if out.kind is OutcomeKind.GARBLED and not self.cancel.is_set():
+                    out = self.exchange(frames.make("Status"), target=ident)  # once more
+                if out.kind is OutcomeKind.PORT_LOST:
+                    raise LinkUnavailableError(
+                        f"{IR} port lost while asking the modules whether they booted "
+                        f"({out.detail})")
+                if any(_module_of(r.event) == ident for r in out.replies):
+                    answered.add(ident)
+                    if on_boot is not None:
+                        on_boot(ident)
+                elif not spoke and not answered:
+                    break
+        finally:
+            if framing is not Framing.MAVLINK:
+                self.host.set_framing(framing)
+            # a module that did not answer is taken for one that did not
+            # boot, not for one still busy with the Status
+            self._owed[:] = [d for d in self._owed if id(d) in earlier]
+        self.known |= answered
+        return answered
 
     # --- send and wait -----------------------------------------------------------
 
@@ -653,6 +728,59 @@ class Session:
                        if d.module is None or d.module in missing})
         return Outcome(command, OutcomeKind.TIMED_OUT, replies, extra, missing, waited=waited,
                        detail="; ".join(busy))
+
+
+#: A version string as long as the boot slots allow (timing.BOOT_GUARD_TICKS):
+#: the slots' ends while no text has named the firmware's version yet.
+_LONGEST_VERSION = "v" * 16
+
+
+def _fw_version(event: object) -> str | None:
+    """The firmware version in a boot text's tail (``FW=0.1.0``), if any."""
+    if isinstance(event, Text):
+        m = re.search(re.escape(wire.BOOT_FW_TAIL.strip()) + r"(\S+)", event.tail)
+        if m:
+            return m.group(1)
+    return None
+
+
+class _BootSlots:
+    """Where the boot texts of a simulated cluster's ``ids`` fall in time
+    (seconds from reset): a module's id-bearing texts end in its slot,
+    ``timing.boot_rank``, on a clock within ``timing.CLOCK_TOLERANCE``."""
+
+    def __init__(self, ids: Iterable[int]) -> None:
+        self.ranks: dict[int, set[int]] = {}
+        for ident in ids:
+            self.ranks.setdefault(timing.boot_rank(ident), set()).add(ident)
+        self.version: str | None = None  # the firmware's, from the first text naming it
+
+    def learn_version(self, event: object) -> None:
+        if self.version is None:
+            self.version = _fw_version(event)
+
+    def own(self, ident: int | None, t: float, version: str | None) -> bool:
+        """Whether a ``COMM. LISTENING ID=ident`` text that ended at ``t`` is
+        that module's own: no other module shares its slot (their texts
+        would have collided into this one), and it came in that slot (not a
+        collision of another slot's texts that reads as this id)."""
+        if ident is None or self.ranks.get(timing.boot_rank(ident)) != {ident}:
+            return False
+        version = version or self.version or wire.FW_VERSION
+        slot = timing.boot_slot_ticks(version)
+        text = (timing.BOOT_TEXT_FIXED_BYTES + len(version)
+                - 2 * (wire.ID_MAX_DIGITS - len(f"{ident:02d}")))
+        end = (timing.BOOT_FIRST_SLOT_TICKS + timing.boot_rank(ident) * slot
+               + timing.ir_ticks(text))
+        return abs(t / timing.TICK_S - end) < slot / 2
+
+    def over(self, ids: Iterable[int], now: float) -> bool:
+        """Whether the slots of ``ids`` are over at ``now``: every module of
+        theirs has sent its texts, if it booted at all."""
+        slot = timing.boot_slot_ticks(self.version or _LONGEST_VERSION)
+        last = max(timing.boot_rank(i) for i in ids)
+        end = (timing.BOOT_FIRST_SLOT_TICKS + (last + 1) * slot) * timing.TICK_S
+        return now >= end * (1 + timing.CLOCK_TOLERANCE)
 
 
 def listening_id(event: object) -> int | None:

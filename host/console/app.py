@@ -300,10 +300,12 @@ class HexBotConsole(App[None]):
             # Frames sent while the simulated modules boot are lost.
             def boot() -> str:
                 heard = session.wait_booted(ids)
+                # ids 8 apart share a boot slot and their texts collide: ask
+                heard |= session.confirm_booted(sorted(set(ids) - heard))
                 if session.cancel.is_set():
                     return "boot wait cancelled"
                 if not heard >= set(ids):
-                    raise HexBotError("no boot text from module(s) "
+                    raise HexBotError("no boot text and no answer to a Status from module(s) "
                                       + ", ".join(map(str, sorted(set(ids) - heard))))
                 return f"{len(heard)} modules booted"
             boot.__name__ = "modules booting"

@@ -431,6 +431,19 @@ async def test_a_bad_scenario_file_stays_visible_and_fails_the_exit_status(log_d
 
 
 @sync
+async def test_a_big_cluster_boots_though_its_boot_texts_collide(log_dir):
+    """Beyond eight ids the boot slots are shared and the texts collide into
+    wrong ids: the console said "no boot text from module(s) 2, 3, ..." of
+    modules that were up. Those not heard whole answer a Status instead."""
+    args = cli_console.parse(["--scenario", "blob:10", "--sim-speed", "10"])
+    app = HexBotConsole(opener=cli_console.make_opener(args))
+    async with app.run_test(size=(100, 30)) as pilot:
+        assert await until(pilot, lambda: app.host is not None, timeout=60)
+        assert await until(pilot, lambda: not app.busy and app.last_result, timeout=120)
+        assert "Simulator: done: 10 modules booted" in app.last_result, app.last_result
+
+
+@sync
 async def test_a_stopped_simulator_is_said_and_restarted(pair_args):
     """Issue 13, defect 10: when the embedded simulator dies the console
     retried forever without saying so. Its core failing is simulated by
