@@ -142,9 +142,11 @@ def booted_session(scenario: str, seed: int | None) -> Iterator[Any]:
         host.start(5.0)
         ids = host.simulator.module_ids()
         session = Session(host, ids)
-        missing = set(ids) - session.wait_booted(ids)
+        heard, answered = session.boot(ids)
+        missing = set(ids) - heard - answered
         if missing:
-            raise HexBotTimeoutError(f"{scenario}: modules {sorted(missing)} did not boot")
+            raise HexBotTimeoutError(f"{scenario}: modules {sorted(missing)} sent no boot "
+                                     "text heard whole and did not answer a Status")
         yield session
     finally:
         host.close()

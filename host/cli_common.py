@@ -70,16 +70,10 @@ def _wait_booted(sess: Session, scenario: str, ids: list[int]) -> None:
     with meter(f"simulator {scenario}: modules booted", len(ids)) as bar:
         def booted(_ident: int) -> None:
             bar.advance()
-        heard = sess.wait_booted(ids, on_boot=booted)
-        rest = sorted(set(ids) - heard)
         # by the radio the PC hears only the modules in its range: it cannot
         # ask the others either
         by_radio = parse_qs(urlsplit(scenario).query).get("radio") == ["1"]
-        answered: set[int] = set()
-        if rest and not by_radio and not sess.cancel.is_set():
-            # ids 8 apart share a boot slot: their texts collide into one
-            # with a wrong id, so they say nothing about who booted
-            answered = sess.confirm_booted(rest, on_boot=booted)
+        heard, answered = sess.boot(ids, on_boot=booted, ask=not by_radio)
     up = heard | answered
     how = f" ({len(heard)} by boot text, {len(answered)} by Status)" if answered else ""
     print(f"simulator: {scenario}, {len(up)} of {len(ids)} modules booted in "

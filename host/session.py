@@ -310,6 +310,9 @@ class Session:
         self._owed: list[_Owed] = []
         self._owed_checked = 0  # journal events already matched against them
         self._boots_checked = 0  # journal events already searched for restarts
+        #: journal seqs of boot texts reading ID=00 that came in a slot which
+        #: several modules share: a collision, not a module without an id
+        self._collided_boot_texts: set[int] = set()
 
     # --- time ----------------------------------------------------------------
 
@@ -410,6 +413,9 @@ class Session:
                     ident = listening_id(obs.event)
                     if slots is not None:
                         slots.learn_version(obs.event)
+                        if _without_id(obs.event) and slots.shared(t0 + obs.t,
+                                                                   _fw_version(obs.event)):
+                            self._collided_boot_texts.add(obs.seq)
                         if obs.port != IR or not slots.own(ident, t0 + obs.t,
                                                            _fw_version(obs.event)):
                             continue
@@ -431,6 +437,22 @@ class Session:
         if expected and heard >= set(expected):
             self.cluster = frozenset(expected)
         return heard
+
+    def boot(self, ids: Collection[int], on_boot: Callable[[int], None] | None = None,
+             ask: bool = True) -> tuple[set[int], set[int]]:
+        """A freshly started cluster's boot: :meth:`wait_booted` for ``ids``,
+        then, with ``ask``, :meth:`confirm_booted` for those whose texts were
+        not heard whole (ids 8 apart share a boot slot, and their texts
+        collide into one with a wrong id). Returns (ids heard by boot text,
+        ids that answered a Status)."""
+        heard = self.wait_booted(ids, on_boot=on_boot)
+        rest = sorted(set(ids) - heard)
+        answered: set[int] = set()
+        if ask and rest and not self.cancel.is_set():
+            answered = self.confirm_booted(rest, on_boot=on_boot)
+        if ids and heard | answered >= set(ids):
+            self.cluster = frozenset(ids)
+        return heard, answered
 
     def confirm_booted(self, ids: Iterable[int],
                        on_boot: Callable[[int], None] | None = None) -> set[int]:
@@ -687,9 +709,8 @@ class Session:
         that got no id from its control board says ``COMM. LISTENING ID=00``
         at boot and then sends ``STA`` with id 0. Otherwise a STA with id 0 is
         two replies that collided (their bytes AND on the IR link)."""
-        return any(obs.port == port and isinstance(obs.event, Text)
-                   and obs.event.phrase == wire.TEXT_COMM_LISTENING.rstrip()
-                   and re.search(_BOOT_ID + r"0+\b", obs.event.tail)
+        return any(obs.port == port and _without_id(obs.event)
+                   and obs.seq not in self._collided_boot_texts
                    for obs in self.host.since(0))
 
     def port_lost(self, port: str = IR) -> str | None:
@@ -766,12 +787,20 @@ class _BootSlots:
         collision of another slot's texts that reads as this id)."""
         if ident is None or self.ranks.get(timing.boot_rank(ident)) != {ident}:
             return False
+        return self._in_slot(timing.boot_rank(ident), ident, t, version)
+
+    def shared(self, t: float, version: str | None) -> bool:
+        """Whether a text that ended at ``t`` came in a slot that several of
+        the modules share (what it reads is their texts ANDed together)."""
+        return any(len(ids) > 1 and self._in_slot(rank, min(ids), t, version)
+                   for rank, ids in self.ranks.items())
+
+    def _in_slot(self, rank: int, ident: int, t: float, version: str | None) -> bool:
         version = version or self.version or wire.FW_VERSION
         slot = timing.boot_slot_ticks(version)
         text = (timing.BOOT_TEXT_FIXED_BYTES + len(version)
                 - 2 * (wire.ID_MAX_DIGITS - len(f"{ident:02d}")))
-        end = (timing.BOOT_FIRST_SLOT_TICKS + timing.boot_rank(ident) * slot
-               + timing.ir_ticks(text))
+        end = timing.BOOT_FIRST_SLOT_TICKS + rank * slot + timing.ir_ticks(text)
         return abs(t / timing.TICK_S - end) < slot / 2
 
     def over(self, ids: Iterable[int], now: float) -> bool:
@@ -781,6 +810,12 @@ class _BootSlots:
         last = max(timing.boot_rank(i) for i in ids)
         end = (timing.BOOT_FIRST_SLOT_TICKS + (last + 1) * slot) * timing.TICK_S
         return now >= end * (1 + timing.CLOCK_TOLERANCE)
+
+
+def _without_id(event: object) -> bool:
+    """Whether ``event`` is a ``COMM. LISTENING ID=00`` boot text."""
+    return (isinstance(event, Text) and event.phrase == wire.TEXT_COMM_LISTENING.rstrip()
+            and re.search(_BOOT_ID + r"0+\b", event.tail) is not None)
 
 
 def listening_id(event: object) -> int | None:

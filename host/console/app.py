@@ -299,9 +299,8 @@ class HexBotConsole(App[None]):
 
             # Frames sent while the simulated modules boot are lost.
             def boot() -> str:
-                heard = session.wait_booted(ids)
-                # ids 8 apart share a boot slot and their texts collide: ask
-                heard |= session.confirm_booted(sorted(set(ids) - heard))
+                heard, answered = session.boot(ids)
+                heard |= answered
                 if session.cancel.is_set():
                     return "boot wait cancelled"
                 if not heard >= set(ids):

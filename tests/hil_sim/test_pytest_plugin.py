@@ -32,6 +32,12 @@ def test_session(hexbot_session):
     assert isinstance(reply.event, StatusReport)
     assert (reply.event.module_id, reply.event.localized) == (2, False)
     assert hexbot_session.host.simulator.simulator.time < 30  # virtual time
+
+@pytest.mark.hexbot_scenario("blob:10", seed=1)
+def test_session_of_ten(hexbot_session):
+    # ids 1 and 9, 2 and 10 share a boot slot: their texts collide, and the
+    # fixture refused the cluster ("modules [1, 2, 9, 10] did not boot")
+    assert hexbot_session.cluster == set(range(1, 11))
 '''
 
 
@@ -44,7 +50,7 @@ def test_plugin_fixtures_marker_and_events_dir(tmp_path):
         capture_output=True, text=True, cwd=tmp_path, timeout=120,
     )
     assert result.returncode == 0, result.stdout + result.stderr
-    assert "4 passed" in result.stdout
+    assert "5 passed" in result.stdout
     saved = sorted(p.name for p in events.iterdir())
     assert saved == [
         "test_user.py_test_default_scenario.jsonl",
@@ -52,6 +58,7 @@ def test_plugin_fixtures_marker_and_events_dir(tmp_path):
         "test_user.py_test_factory.jsonl",
         "test_user.py_test_marked.jsonl",
         "test_user.py_test_session.jsonl",
+        "test_user.py_test_session_of_ten.jsonl",
     ]
     assert "ir-collision" in (events / "test_user.py_test_marked.jsonl").read_text()
     assert (events / "test_user.py_test_session.jsonl").read_text()

@@ -115,3 +115,17 @@ def test_the_cli_names_exactly_the_silent_module_of_a_big_cluster(tmp_path, log_
         "to a Status: not booted, or out of reach; steps addressed to them will fail"]
     assert code == 3 and "s.hbs:2: select 9" in err  # a step to it fails
     assert "may still be running Status" not in err  # the boot's question is not owed
+
+
+def test_a_collided_id_00_boot_text_is_no_module_without_an_id(tmp_path, open_session):
+    # 2 and 10 collide into "ID=00" at boot. A comm board without an id says
+    # that too, and then a STA with id 0 is its reply; here a STA with id 0 is
+    # replies that collided, and must stay a garbled reply for the session
+    from hexbot.host.session import OutcomeKind
+    from hexbot.protocol import frames
+
+    ids = list(range(1, 11))
+    session = open_session(row(tmp_path, ids), boot=False)
+    session.boot(ids)
+    out = session.exchange(frames.make("Status"))  # legacy: all ten answer at once
+    assert out.kind is OutcomeKind.GARBLED, out
