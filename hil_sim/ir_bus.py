@@ -30,8 +30,15 @@ by its channel selector (Table 3-5). The medium decides, byte by byte:
   (a reset in data bit 1 of 0xF0 gives nothing, one in data bit 0 of 0x5A
   resynchronises on bit 2's edge and reads 0xEB). Off at the byte's
   horizon, the middle of its stop bit by the sender's bit time, it does
-  not get the byte (``ir-dropped``). Its changes count up to that horizon
-  (``Air.rx_since``).
+  not get the byte (``ir-dropped``, counted in its USART's ``rx_dropped``
+  as the core counts it: ``Air.drop``). Its changes count up to that
+  horizon (``Air.rx_since``). On there, the byte is its own (the core
+  puts it into the receive buffer there); if the receiver goes off after
+  the horizon, before this medium hands the byte over (at the boundary
+  after the byte's end), the byte went with the buffer it would have been
+  in (RXEN cleared or a reset flush it): lost, no event, not counted, as
+  in the core (``Air.rx_went_off``), instead of landing in the buffer of
+  the rebooted firmware.
 * Two bytes from different senders that overlap in time at one receiver
   collide: the IR line idles high and a lit LED pulls it low, so the line is
   the AND of the two lines, each at its real start. The receiver gets what
@@ -114,28 +121,40 @@ class Frame:
     def line(self) -> LineSettings:
         return LineSettings(self.baud, self.data_bits, self.parity, self.stop_bits)
 
-    def read_by(self, receiver: Frame, value: int,
-                rng: random.Random) -> tuple[int, bool] | None:
+    def read_by(self, receiver: Frame, value: int, rng: random.Random,
+                bits: tuple[float, float] | None = None) -> tuple[int, bool] | None:
         """A byte sent with these settings, as ``receiver`` reads it: (value,
         framing error), or None when it finds no start bit. Alike within the
         baud tolerance: the byte. Another rate: what its UART samples
         (:func:`~hexbot.hil_sim.uart_line.first_byte`). Another word format:
-        a garbage byte from ``rng`` with a framing error."""
-        if self.matches(receiver):
+        a garbage byte from ``rng`` with a framing error. ``bits``: the
+        sender's and the receiver's bit times in cycles (:meth:`matches`)."""
+        bits = self._bits(receiver, bits)
+        if self.matches(receiver, bits):
             return value, False
         if self.same_word(receiver):
-            bits = None
-            if self.bit_cycles is not None and receiver.bit_cycles is not None:
-                bits = (self.bit_cycles, receiver.bit_cycles)  # in cycles, as the core
             return first_byte(value, self.line(), receiver.line(), bits)
         return rng.randrange(256), True
 
-    def matches(self, other: Frame) -> bool:
+    def _bits(self, other: Frame,
+              bits: tuple[float, float] | None) -> tuple[float, float] | None:
+        if bits is None and self.bit_cycles is not None and other.bit_cycles is not None:
+            return self.bit_cycles, other.bit_cycles
+        return bits
+
+    def matches(self, other: Frame, bits: tuple[float, float] | None = None) -> bool:
         """A receiver set as ``other`` takes this sender's bytes: bit times
-        within the tolerance (in cycles as the core's m162_usart_frame_ok
-        when both are known, the same comparison), the same word format."""
-        if self.bit_cycles is not None and other.bit_cycles is not None:
-            if abs(self.bit_cycles - other.bit_cycles) > BAUD_TOLERANCE * self.bit_cycles:
+        within the tolerance, the same word format. The bit times are
+        compared in cycles, relative to the sender's, as the core's
+        m162_usart_frame_ok does: ``bits`` (sender's, receiver's) when the
+        caller knows them (the IR medium: the byte's own, the PC's from its
+        length over its bits, as ``ir_send_from_pc``), else the frames'
+        ``bit_cycles`` when both are known, else 1 / baud (the same
+        comparison: |1/a - 1/b| <= t/a is |a - b| <= t b)."""
+        bits = self._bits(other, bits)
+        if bits is not None:
+            sent, own = bits
+            if abs(sent - own) > BAUD_TOLERANCE * sent:
                 return False
         elif abs(self.baud - other.baud) > BAUD_TOLERANCE * other.baud:
             return False
@@ -194,6 +213,15 @@ class Air(Protocol):
         """The cycle the module's comm UART1 receiver came on last (RXEN
         set; a reset turns it off) by its changes before ``before``, if it
         is on then; None if it is off."""
+
+    def rx_went_off(self, module: int, after: float) -> bool:
+        """Whether the module's comm UART1 receiver went off (RXEN cleared,
+        a reset) at or after ``after``, by its changes up to now (the
+        medium hands a byte over now)."""
+
+    def drop(self, module: int) -> None:
+        """A byte reached the module's comm UART1 while its receiver was
+        off: count it as the USART counts one (``rx_dropped``)."""
 
     def deliver(self, module: int, value: int, framing_error: bool) -> bool:
         """Hand a byte to the module's comm UART1; False if the USART dropped it."""
@@ -344,14 +372,19 @@ class IrMedium:
         # byte's stop bit: off there, it does not get the byte (below); came
         # on within the byte, it lost what it had and looks for a falling
         # edge from there (ir_line.read).
+        horizon = byte.stop + byte.bit / 2
         since: float | None = None
         if receiver != PC:
-            since = self.air.rx_since(receiver, byte.stop + byte.bit / 2)  # type: ignore[arg-type]
+            since = self.air.rx_since(receiver, horizon)  # type: ignore[arg-type]
             on = since is not None
         else:
             on = True
         late = since is not None and since > byte.start
-        if not byte.frame.matches(rx):
+        # bit times in cycles, the PC's from its byte's length: one rule with
+        # the core (m162_usart_frame_ok, m162_usart_resample)
+        bits = (byte.bit, rx_bit)
+        frame_ok = byte.frame.matches(rx, bits)
+        if not frame_ok:
             self._event(
                 byte, receiver, "ir-garbled", reason=f"sender {byte.frame}, receiver {rx}"
             )
@@ -362,11 +395,11 @@ class IrMedium:
             read = ir_line.read([part], rx.line(), rx_bit, since)
             if read is None:
                 return  # no start bit where the receiver looked: nothing
-            if not byte.frame.matches(rx):
+            if not frame_ok:
                 read = out_of_range(read, value, rx.line())
             value, framing_error = read[0], framing_error or read[1]
-        elif not byte.frame.matches(rx):
-            read = byte.frame.read_by(rx, value, self.rng)
+        elif not frame_ok:
+            read = byte.frame.read_by(rx, value, self.rng, bits)
             if read is None:
                 return  # no start bit where the receiver looked: nothing
             value, framing_error = read
@@ -390,8 +423,12 @@ class IrMedium:
             arrival = previous
         else:
             self._last[receiver] = arrival
-        if not on or not self.air.deliver(receiver, arrival.read_value(),
-                                          arrival.framing_error):
+        if not on:
+            self.air.drop(receiver)  # counted as the core counts it
+            self._event(byte, receiver, "ir-dropped", reason="receiver off (RXEN) or overrun")
+        elif self.air.rx_went_off(receiver, horizon):
+            pass  # it had the byte at the horizon; RXEN cleared or a reset flushed it since
+        elif not self.air.deliver(receiver, arrival.read_value(), arrival.framing_error):
             self._event(byte, receiver, "ir-dropped", reason="receiver off (RXEN) or overrun")
         self._spurious(byte, receiver, faults)
 

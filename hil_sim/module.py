@@ -97,6 +97,7 @@ class Module:
     #: the comm board's UART1 receiver: (cycle, on) of its changes, the first
     #: the state before the rest; None: not known (the tests' double), on
     _rx: list[tuple[int, bool]] | None = None
+    rx_log_lost: int = 0  # of those changes, lost by the core before they were taken
 
     @property
     def position(self) -> Cell:
@@ -171,3 +172,13 @@ class Module:
                 since = cycle
             on = state
         return since if on else None
+
+    def rx_went_off(self, after: float) -> bool:
+        """Whether the receiver went off at or after ``after`` by the
+        changes recorded so far."""
+        for cycle, state in reversed(self._rx or ()):
+            if cycle < after:
+                break
+            if not state:
+                return True
+        return False

@@ -439,6 +439,14 @@ class Simulator:
     def rx_since(self, module: int, before: float) -> int | None:
         return self.modules[module].rx_since(before)
 
+    def rx_went_off(self, module: int, after: float) -> bool:
+        return self.modules[module].rx_went_off(after)
+
+    def drop(self, module: int) -> None:
+        count = getattr(self.cluster, "uart_drop", None)  # the tests' double has none
+        if count is not None:
+            count(self.modules[module].comm.index, 1)
+
     def position(self, module: int) -> Cell:
         return self.modules[module].position
 
@@ -476,7 +484,10 @@ class Simulator:
             if board == "comm" and hasattr(self.cluster, "resets"):
                 module.record_resets(self.cluster.resets(module.comm.index), keep_from)
             if board == "comm" and hasattr(self.cluster, "uart_rx_log"):
-                module.record_rx(self.cluster.uart_rx_log(module.comm.index, 1), keep_from)
+                rx = self.cluster.uart_rx_log(module.comm.index, 1)
+                if rx and not self.ir_in_c:
+                    self._check_rx_log(module)
+                module.record_rx(rx, keep_from)
         changes.sort(key=lambda c: (c[0], c[1], c[2]))
         for cycle, module_id, board, port, value in changes:
             if board != "control":
@@ -538,6 +549,21 @@ class Simulator:
             while queue and queue[0][0] <= now:
                 _, value = queue.popleft()
                 self._debug_send(self.modules[module_id], value)
+
+    def _check_rx_log(self, module: Module) -> None:
+        """The core keeps the last 64 changes of a receiver between two
+        looks (``uart_rx_log``); firmware that switches RXEN more often than
+        that within one run loses the older ones, and the Python medium
+        could then judge a byte by a wrong state: say so (the core's own
+        medium keeps every change it needs)."""
+        lost = int(self.cluster.uart_config(module.comm.index, 1).get("rx_log_lost", 0))
+        if lost > module.rx_log_lost:
+            self._emit(self._cycle, {
+                "event": "sim-error", "module": module.id,
+                "reason": f"comm UART1 receiver log overflowed: {lost - module.rx_log_lost} "
+                          "RXEN changes lost; bytes it received around them may be judged "
+                          "by a wrong receiver state"})
+            module.rx_log_lost = lost
 
     def _radio_link(self, module: Module, taken: list[tuple[int, int, int]], frame: Frame,
                     to_comm: bool) -> None:

@@ -156,14 +156,15 @@ static int boundary(cluster_t *c)
 					 * what its UART samples; to another frame
 					 * format, a framing error */
 					uint16_t v = r->byte;
-					if (!m162_usart_frame_ok(s->peer, r, c->baud_tolerance)) {
+					int ok = m162_usart_frame_ok(s->peer, r, c->baud_tolerance);
+					if (!ok) {
 						int got = (r->format & 0x3F) == (s->peer->format & 0x3F)
 							? m162_usart_resample(s->peer, r) : (r->byte | UART_INPUT_FE);
 						if (got < 0)
 							continue; /* no start bit where it looked */
 						v = (uint16_t)got;
 					}
-					m162_usart_queue_rx(s->peer, r->mid_stop, v);
+					m162_usart_queue_rx(s->peer, r, v, ok);
 				}
 			}
 			if (s->watched) {

@@ -37,10 +37,15 @@ typedef struct m162_txrec_t {
 } m162_txrec_t;
 
 /* A byte waiting to reach a receiver at a given cycle (wire delivery, in the
- * receiver's own cycles). */
+ * receiver's own cycles), with what a receiver that came on within it needs
+ * to read its line (m162_usart_queue_rx). */
 typedef struct m162_rxpend_t {
 	uint64_t due;
-	uint16_t value; /* byte | UART_INPUT_FE */
+	uint16_t value;   /* byte | UART_INPUT_FE, as read by a receiver on all along */
+	uint64_t start;   /* the sender's start bit, cluster cycles */
+	double bit;       /* the sender's bit time, cluster cycles */
+	uint8_t byte, format; /* as sent (m162_txrec_t) */
+	uint8_t frame_ok; /* the receiver's settings took it (m162_usart_frame_ok) */
 } m162_rxpend_t;
 
 #define M162_RXQ_SIZE 64
@@ -88,10 +93,13 @@ typedef struct m162_usart_t {
 	unsigned rxq_head, rxq_len;
 	uint64_t rx_dropped;
 	/* the receiver's on/off changes, until taken (pyavr uart_rx_log; the
-	 * last 64 at most), and its state as last noted */
+	 * last 64 at most, rx_log_lost counts the older ones it lost), and its
+	 * state as last noted, on since rx_since (cluster cycles) */
 	int rx_on;
+	uint64_t rx_since;
 	m162_rxmark_t *rx_log;
 	size_t rx_log_len, rx_log_cap;
+	uint64_t rx_log_lost;
 	avr_io_read_t orig_ucsra_read;
 	void *orig_ucsra_read_param;
 	avr_io_write_t orig_ucsrb_write;
@@ -206,7 +214,9 @@ void ir_note_rx(struct ir_port_t *p, const struct m162_usart_t *s, uint64_t cycl
 void m162_usart_init(m162_t *m);
 void m162_usart_reset(m162_t *m);
 int m162_usart_put(m162_usart_t *s, uint16_t value); /* 1 = accepted, 0 = dropped */
-void m162_usart_queue_rx(m162_usart_t *s, uint64_t due_cluster, uint16_t value);
+/* A wire byte r for receiver s, read as value by a receiver on all along
+ * (frame_ok: within its tolerance), due at r's mid-stop. */
+void m162_usart_queue_rx(m162_usart_t *s, const m162_txrec_t *r, uint16_t value, int frame_ok);
 void m162_usart_config(m162_usart_t *s, double *baud, int *data_bits, char *parity,
 		int *stop_bits, int *rxen, int *txen);
 void m162_usart_set_keep_log(m162_usart_t *s, int keep);

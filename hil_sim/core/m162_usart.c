@@ -20,8 +20,8 @@
  *     rises at once (simavr would wait another frame).  RXEN off drops it;
  *     a full buffer (2-byte FIFO + shift register) drops it and sets DOR.
  *     Every change of the receiver's state (RXEN set or cleared, a reset)
- *     is logged: the IR medium reads a byte the receiver was off for part
- *     of from where it came on (ir_medium.h).
+ *     is logged: the IR medium and the wires read a byte the receiver was
+ *     off for part of from where it came on (ir_medium.h, wire_put).
  *
  * simavr's stdout echo and real-time sleep on polling are switched off.
  */
@@ -169,24 +169,48 @@ static uint8_t udr_read(avr_t *avr, avr_io_addr_t addr, void *param)
 	return v;
 }
 
+/* A wire byte at its due cycle.  A receiver that came on after the byte's
+ * start bit (RXEN set again, or after a reset) lost what it had of it: it
+ * reads the sender's line from there, and only a falling edge at or after
+ * that point is a start bit (uart_line_read's since), as on the IR medium
+ * (ir_medium.h); no start bit: nothing.  Off now: m162_usart_put drops it. */
+static void wire_put(m162_usart_t *s, const m162_rxpend_t *p)
+{
+	uint16_t v = p->value;
+	if (s->rx_on && s->rx_since > p->start && (p->format & 0x3F) == (s->format & 0x3F)) {
+		uart_edge_t wave[UART_LINE_BYTE_MAX];
+		int n = uart_line_levels(wave, p->byte, p->format, (double)p->start, p->bit);
+		int got = uart_line_read(wave, n, m162_bit_time(s->mcu, s->bit_cycles), s->format,
+				(double)s->rx_since);
+		if (!p->frame_ok)
+			got = uart_line_out_of_range(got, p->byte, p->format);
+		if (got < 0)
+			return;
+		v = (uint16_t)got;
+	}
+	m162_usart_put(s, v);
+}
+
 static avr_cycle_count_t rx_deliver(avr_t *avr, avr_cycle_count_t when, void *param)
 {
 	m162_usart_t *s = (m162_usart_t *)param;
 	(void)avr;
 	while (s->rxq_len && s->rxq[s->rxq_head].due <= when) {
-		m162_usart_put(s, s->rxq[s->rxq_head].value);
+		wire_put(s, &s->rxq[s->rxq_head]);
 		s->rxq_head = (s->rxq_head + 1) % M162_RXQ_SIZE;
 		s->rxq_len--;
 	}
 	return s->rxq_len ? s->rxq[s->rxq_head].due : 0;
 }
 
-void m162_usart_queue_rx(m162_usart_t *s, uint64_t due_cluster, uint16_t value)
+void m162_usart_queue_rx(m162_usart_t *s, const m162_txrec_t *r, uint16_t value, int frame_ok)
 {
 	avr_t *avr = s->mcu->avr;
-	uint64_t due = m162_to_local(s->mcu, due_cluster);
+	uint64_t due = m162_to_local(s->mcu, r->mid_stop);
+	m162_rxpend_t pend = { due < avr->cycle ? avr->cycle : due, value, r->start, r->bit,
+		r->byte, r->format, (uint8_t)(frame_ok != 0) };
 	if (due <= avr->cycle && s->rxq_len == 0) {
-		m162_usart_put(s, value);
+		wire_put(s, &pend);
 		return;
 	}
 	if (s->rxq_len == M162_RXQ_SIZE) {
@@ -194,7 +218,7 @@ void m162_usart_queue_rx(m162_usart_t *s, uint64_t due_cluster, uint16_t value)
 		return;
 	}
 	unsigned tail = (s->rxq_head + s->rxq_len) % M162_RXQ_SIZE;
-	s->rxq[tail] = (m162_rxpend_t){ due < avr->cycle ? avr->cycle : due, value };
+	s->rxq[tail] = pend;
 	s->rxq_len++;
 	if (s->rxq_len == 1)
 		avr_cycle_timer_register(avr, s->rxq[tail].due - avr->cycle, rx_deliver, s);
@@ -209,11 +233,14 @@ static void note_rx(m162_usart_t *s, int on)
 		return;
 	s->rx_on = on;
 	uint64_t now = m162_to_cluster(m, m->avr->cycle);
+	if (on)
+		s->rx_since = now;
 	if (m->ir)
 		ir_note_rx(m->ir, s, now, on);
-	if (s->rx_log_len == 64) { /* nobody takes them: keep the latest */
+	if (s->rx_log_len == 64) { /* nobody takes them: keep the latest, count the loss */
 		memmove(s->rx_log, s->rx_log + 1, 63 * sizeof *s->rx_log);
 		s->rx_log_len--;
+		s->rx_log_lost++;
 	}
 	if (GROW(s->rx_log, s->rx_log_len, s->rx_log_cap, 4) == 0)
 		s->rx_log[s->rx_log_len++] = (m162_rxmark_t){ now, on };
@@ -314,11 +341,17 @@ void m162_usart_reset(m162_t *m)
 		avr_regbit_set(avr, u->udrc.raised);
 		s->shifting = 0;
 		s->udr_full = 0;
-		s->rxq_len = 0;
-		s->rxq_head = 0;
 		s->last_shared_read = 0;
 		note_rx(s, 0); /* a byte on its way in is lost (the medium reads on) */
 		recompute_frame(s);
+		/* wire bytes on their way in stay queued: the receiver reads what
+		 * it can of them from where it comes on again (wire_put); simavr
+		 * has cleared the MCU's timers before this hook runs */
+		if (s->rxq_len) {
+			uint64_t due = s->rxq[s->rxq_head].due;
+			avr_cycle_timer_register(avr, due > avr->cycle ? due - avr->cycle : 0,
+					rx_deliver, s);
+		}
 	}
 }
 

@@ -377,6 +377,18 @@ static PyObject *Cluster_uart_put(ClusterObject *self, PyObject *args, PyObject 
 	return PyBool_FromLong(m162_usart_put(s, v));
 }
 
+static PyObject *Cluster_uart_drop(ClusterObject *self, PyObject *args)
+{
+	long m, u;
+	if (!PyArg_ParseTuple(args, "ll", &m, &u))
+		return NULL;
+	m162_usart_t *s = get_usart(self, m, u);
+	if (!s)
+		return NULL;
+	s->rx_dropped++;
+	Py_RETURN_NONE;
+}
+
 static PyObject *Cluster_uart_config(ClusterObject *self, PyObject *args)
 {
 	long m, u;
@@ -394,11 +406,12 @@ static PyObject *Cluster_uart_config(ClusterObject *self, PyObject *args)
 	char parity;
 	m162_usart_config(s, &baud, &db, &parity, &sb, &rxen, &txen);
 	char par[2] = { parity, 0 };
-	return Py_BuildValue("{s:d,s:i,s:s,s:i,s:O,s:O,s:k,s:k,s:K}", "baud", baud, "data_bits", db,
-			"parity", par, "stop_bits", sb, "rxen", rxen ? Py_True : Py_False, "txen",
+	return Py_BuildValue("{s:d,s:i,s:s,s:i,s:O,s:O,s:k,s:k,s:K,s:K}", "baud", baud, "data_bits",
+			db, "parity", par, "stop_bits", sb, "rxen", rxen ? Py_True : Py_False, "txen",
 			txen ? Py_True : Py_False, "frame_cycles", (unsigned long)s->frame_cycles,
 			"bit_cycles", (unsigned long)s->bit_cycles,
-			"rx_dropped", (unsigned long long)s->rx_dropped);
+			"rx_dropped", (unsigned long long)s->rx_dropped,
+			"rx_log_lost", (unsigned long long)s->rx_log_lost);
 }
 
 static PyObject *Cluster_set_clock(ClusterObject *self, PyObject *args)
@@ -1126,6 +1139,9 @@ static PyMethodDef Cluster_methods[] = {
 		"uart_take(mcu, uart) -> [(start_cycle, end_cycle, byte)]" },
 	{ "uart_put", (PyCFunction)(void (*)(void))Cluster_uart_put, METH_VARARGS | METH_KEYWORDS,
 		"uart_put(mcu, uart, byte, framing_error=False) -> False if dropped" },
+	{ "uart_drop", (PyCFunction)Cluster_uart_drop, METH_VARARGS,
+		"uart_drop(mcu, uart): a byte reached the receiver while it was off (the Python IR "
+		"medium): counted in rx_dropped, as uart_put counts one; nothing is received" },
 	{ "uart_config", (PyCFunction)Cluster_uart_config, METH_VARARGS,
 		"uart_config(mcu, uart) -> dict of the USART's present configuration" },
 	{ "port", (PyCFunction)Cluster_port, METH_VARARGS, "port(mcu, 'A'..'E') -> (DDR, PORT, PIN)" },
@@ -1171,7 +1187,8 @@ static PyMethodDef Cluster_methods[] = {
 		"resets(mcu) -> [cycle] of the MCU's resets since the last call (at most the last 64)" },
 	{ "uart_rx_log", (PyCFunction)Cluster_uart_rx_log, METH_VARARGS,
 		"uart_rx_log(mcu, uart) -> [(cycle, on)] of the USART receiver's changes since the "
-		"last call: RXEN set (True) or cleared, a reset (False); at most the last 64" },
+		"last call: RXEN set (True) or cleared, a reset (False); at most the last 64 "
+		"(uart_config's rx_log_lost counts the older ones lost)" },
 	{ "pin_log", (PyCFunction)Cluster_pin_log, METH_VARARGS,
 		"pin_log(mcu) -> [(cycle, port, PORT value)] since the last call" },
 	{ "state", (PyCFunction)Cluster_state, METH_VARARGS,

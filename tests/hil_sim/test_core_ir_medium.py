@@ -318,6 +318,109 @@ def test_receiver_switched_off_mid_byte_loses_it(byte, off, on, expected):
     assert c.uart_config(b, 1)["rx_dropped"] == (on is None)
 
 
+# The wires between boards (connect_uart: comm <-> control) follow the same
+# rule: the receiver reads a byte it was off for part of from where it came
+# on. Before, a byte queued on the wire arrived whole if RXEN was set again
+# by its mid-stop (0xF0 below: a phantom 0xF0), and a reset dropped every
+# byte on its way in (0x5A reset in data bit 0: nothing, where the IR
+# medium's receiver resynchronises and reads 0xEB).
+
+WIRE_RESETS = [
+    (0xF0, 94 + 2 * BIT + 250, []),
+    (0x5A, 94 + BIT + 500, [(0xEB, False)]),
+    (0x5A, 94 + 9 * BIT + 300, []),
+]
+
+
+@pytest.mark.parametrize("quantum", [250, 1000, 2500, 10_000])
+@pytest.mark.parametrize(("byte", "at", "expected"), WIRE_RESETS)
+def test_wire_receiver_reset_mid_byte_reads_as_on_the_ir_medium(byte, at, expected, quantum):
+    c = Cluster(quantum)
+    a = node(c, 3, bytes([byte]))
+    b = node(c, 5)
+    c.connect_uart(a, 1, b, 1)
+    advance(c, at)
+    c.reset(b)
+    advance(c, 4 * FRAME)
+    assert [(v, fe) for _, v, fe in reports(c, b)] == expected
+
+
+@pytest.mark.parametrize("quantum", [1000, 10_000])
+@pytest.mark.parametrize(("byte", "off", "on", "expected"), [
+    (0xF0, 94 + BIT + 500, 94 + 2 * BIT + 500, []),  # on again in low data bit 1
+    (0x5A, 94 + BIT + 500, 94 + 2 * BIT + 500, [(0xEB, False)]),  # in high bit 1
+    (0x5A, 94 + 4 * BIT, None, []),  # off to the end: dropped
+])
+def test_wire_receiver_switched_off_mid_byte_loses_it(byte, off, on, expected, quantum):
+    c = Cluster(quantum)
+    a = node(c, 3, bytes([byte]))
+    b = rx_node(c, 5)
+    c.connect_uart(a, 1, b, 1)
+    advance(c, off)
+    c.set_input(b, "C", 0x08, 0x08)  # RXEN cleared
+    if on is not None:
+        advance(c, on)
+        c.set_input(b, "C", 0x08, 0)  # and set again
+    advance(c, 4 * FRAME)
+    assert [(v, fe) for _, v, fe in reports(c, b)] == expected
+    assert c.uart_config(b, 1)["rx_dropped"] == (on is None)
+
+
+@pytest.mark.parametrize(("hz", "noted", "dropped"), [
+    (970_052, 0, True), (970_053, 0, True), (970_054, 0, True),
+    (970_022, 1, False), (970_024, 1, False),
+])
+def test_receiver_reset_on_the_last_cycle_before_the_horizon(hz, noted, dropped):
+    # On these sender clocks the mid-stop the sender logs (whole cycles) is
+    # a fraction of a cycle before the exact horizon, and the receiver is
+    # reset at the boundary on the last whole cycle before it. At 970,052
+    # to 970,054 Hz its run stops right there and the reset is noted
+    # before the horizon: off there, it must not get the byte (ir-dropped,
+    # counted), as the Python medium judges. The core hands the byte over
+    # only once the receiver's run has passed every cycle before the
+    # horizon (the clamp in enqueue); at the logged mid-stop it handed it
+    # over before the reset was noted, and the reset flushed it silently.
+    # At 970,022 and 970,024 Hz the run overshoots by a cycle: the reset is
+    # noted after the horizon, the byte was the receiver's and the reset
+    # flushed it: no event, nothing counted, and nothing for the rebooted
+    # firmware in the Python medium either, which hands bytes over after
+    # their end (before, it put the byte into the rebooted firmware's
+    # buffer).
+    import math
+
+    start = math.ceil(94 * 1e6 / hz)  # the sender's start bit, as logged
+    horizon = start + 9.5 * BIT * 1e6 / hz
+    due = math.ceil((94 + 9 * BIT + BIT // 2) * 1e6 / hz)  # its logged mid-stop
+    assert due <= math.floor(horizon) < horizon
+    c = Cluster(1000)
+    a = node(c, 3, b"\x5a")
+    b = node(c, 5)
+    c.set_clock(a, hz)
+    route(c, a, 3, b, 5)
+    c.watch_uart(a, 1)
+    advance(c, math.floor(horizon))
+    c.reset(b)
+    advance(c, 4 * FRAME)
+    events = ["ir-dropped"] if dropped else []
+    assert reports(c, b) == []
+    assert [e[0] for e in c.ir_events()] == events
+    assert c.uart_config(b, 1)["rx_dropped"] == dropped
+    rx_log = c.uart_rx_log(b, 1)
+    assert (math.floor(horizon) + noted, False) in rx_log  # the reset
+    from test_ir_bus import Air, medium
+
+    from hexbot.hil_sim.ir_bus import AirByte
+
+    # the Python medium on the same cycles, handing the byte over at its end
+    [(s, e, v)] = c.uart_take(a, 1)
+    air = Air({a: (0, 0), b: (1, 0)}, {a: [(0, 3)], b: [(0, 6)]}, rx={b: core_frame(c, b)},
+              rx_log={b: [(0, False), *rx_log]}, now=e)
+    m, py_events = medium(air)
+    m.transmit(AirByte(a, s, e, v, core_frame(c, a)))
+    assert air.got == [] and [ev["event"] for ev in py_events] == events
+    assert air.dropped == ({b: 1} if dropped else {})
+
+
 def random_case(seed: int) -> tuple[list, list, tuple]:
     """One random input: a byte, maybe a second sender's byte some time
     later, selector moves of senders and receiver, a sender's reset and
