@@ -28,6 +28,8 @@ Decisions the paper leaves open (docs/traversal.md, "MOVEMODULE"):
 
 from __future__ import annotations
 
+import dataclasses
+import sys
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -38,9 +40,16 @@ from hexbot.planning.traversal.motion import (
     next_rotation,
     required_empty,
 )
-from hexbot.protocol.lattice import SIDES, Cell, distance, neighbor
+from hexbot.protocol.lattice import SIDE_OFFSETS, SIDES, Cell
 
 STATUSES = ("reached", "deadlock", "violation")
+_OFFSETS = tuple(SIDE_OFFSETS[s] for s in SIDES)  # a cell's neighbours: (x + dx, y + dy)
+_NEXT_TO = frozenset(_OFFSETS)
+
+
+def _next_to(a: Cell, b: Cell) -> bool:
+    """``distance(a, b) == 1``."""
+    return (b[0] - a[0], b[1] - a[1]) in _NEXT_TO
 
 
 @dataclass
@@ -147,9 +156,15 @@ class Engine:
         # ahead of a module, as it computes them from the map)
         self.active = active or self.n
         if holds is None:
-            holds = start_holds(bmap) if self.model == "hexbot" else (0,) * self.n
+            holds = (start_holds(bmap, stall_rounds=stall_rounds, max_rounds=max_rounds)
+                     if self.model == "hexbot" else (0,) * self.n)
         self.holds = holds
         self.deferring = False
+        # the run so far (:meth:`step`)
+        self.initial = {m.ident: m.cell for m in self.modules}
+        self.rounds: list[list[MoveRecord]] = []
+        self.played = 0  # rounds played
+        self.idle = 0  # rounds in a row in which nothing moved (or deferred)
 
     # -- what a module senses -------------------------------------------------
     def occupied(self, cell: Cell) -> bool:
@@ -158,19 +173,28 @@ class Engine:
     def quiet(self, m: Module) -> bool:
         """None of the module's neighbour cells changed in the last round (the last
         two under the hexbot model)."""
-        return not any(neighbor(m.cell, s) in self.changed for s in SIDES)
+        x, y, changed = *m.cell, self.changed
+        return not any((x + dx, y + dy) in changed for dx, dy in _OFFSETS)
 
     def sensing(self, m: Module):
         """Occupancy as module ``m`` knows it: its neighbours by contact, farther
         cells only from the map of the surface and the Fill cells the modules
         ahead of it hold (module k passes after the first k - 1 are held)."""
         held = set(self.fills[: m.ident - 1])
+        x, y = m.cell
+        near = {(x + dx, y + dy) for dx, dy in _OFFSETS}
 
         def occupied(cell: Cell) -> bool:
-            if distance(cell, m.cell) == 1:
+            if cell in near:
                 return self.occupied(cell)
             return cell in self.surface or cell in held
         return occupied
+
+    def could_start(self, m: Module) -> bool:
+        """Module ``m``, still in the chain, may start this round: the chain cell
+        of the module before it is empty and its neighbour cells are quiet."""
+        k = m.ident - 1
+        return k == 0 or (self.chain_cells[k - 1] not in self.at and self.quiet(m))
 
     # -- MOVEMODULE ---------------------------------------------------------------
     def decide(self, m: Module) -> Rolled | None:
@@ -180,9 +204,7 @@ class Engine:
             return None
         if m.phase == "chain":
             k = m.ident - 1
-            if m.ident > self.active:
-                return None
-            if k > 0 and (self.chain_cells[k - 1] in self.at or not self.quiet(m)):
+            if m.ident > self.active or not self.could_start(m):
                 return None
             if m.deferred < self.holds[k]:  # its way would cross one ahead: not yet
                 m.deferred += 1
@@ -302,8 +324,7 @@ class Engine:
                 if shared:
                     return fail("swept cells empty", [m, other],
                                 f"their rotations cross in {list(min(shared))}")
-                if distance(rolled.src, orolled.src) == 1 or \
-                        distance(rolled.dst, orolled.dst) == 1:
+                if _next_to(rolled.src, orolled.src) or _next_to(rolled.dst, orolled.dst):
                     return fail("moving modules never adjacent", [m, other],
                                 f"{list(rolled.src)}->{list(rolled.dst)} and "
                                 f"{list(orolled.src)}->{list(orolled.dst)}")
@@ -311,72 +332,97 @@ class Engine:
 
     def connected(self) -> list[int]:
         """Modules not connected to the surface through other modules."""
-        reached = {c for c in self.at if any(neighbor(c, s) in self.surface for s in SIDES)}
+        surface, at = self.surface, self.at
+        reached = {(x, y) for x, y in at
+                   if any((x + dx, y + dy) in surface for dx, dy in _OFFSETS)}
+        if len(reached) == len(at):
+            return []
         frontier = list(reached)
         while frontier:
-            cell = frontier.pop()
-            for s in SIDES:
-                nb = neighbor(cell, s)
-                if nb in self.at and nb not in reached:
+            x, y = frontier.pop()
+            for dx, dy in _OFFSETS:
+                nb = (x + dx, y + dy)
+                if nb in at and nb not in reached:
                     reached.add(nb)
                     frontier.append(nb)
-        return sorted(self.at[c].ident for c in self.at if c not in reached)
+        return sorted(at[c].ident for c in at if c not in reached)
 
     # -- the rounds ---------------------------------------------------------------
     def run(self) -> Result:
-        initial = {m.ident: m.cell for m in self.modules}
-        rounds: list[list[MoveRecord]] = []
-        idle = 0
-        for rnd in range(1, self.max_rounds + 1):
-            if all(m.phase in self._settled(m) for m in self.modules):
-                return self._result("reached", rounds, initial)
-            self.deferring = False
-            actions = [(m, r) for m in self.modules if (r := self.decide(m)) is not None]
-            violation = self.check(rnd, actions)
-            if violation is not None:
-                return self._result("violation", rounds, initial, violation=violation,
-                                    reason=violation.describe())
-            records = []
-            for m, rolled in actions:
-                sub = self.at.get(rolled.substrate)
-                records.append(MoveRecord(m.ident, rolled.src, rolled.dst, rolled.substrate,
-                                          sub.ident if sub else None, rolled.rotation.joint,
-                                          rolled.rotation.direction, m.rule))
-            for m, _ in actions:
-                del self.at[m.cell]
-            for m, rolled in actions:
-                m.cell, m.pivot = rolled.dst, rolled.substrate
-                self.at[m.cell] = m
-            now = {r.src for r in records} | {r.dst for r in records}
-            self.changed = (now | self.changed_last) if self.quiet_rounds == 2 else now
-            self.changed_last = now
-            self.entered = {r.dst for r in records}
-            self.last_moves = [(r.src, r.dst) for r in records]
-            for m, _ in actions:
-                self.arrive(m)
-            rounds.append(records)
-            loose = self.connected()
-            if loose:
-                v = Violation(rnd, "connected to the surface", loose,
-                              [self._by_id(i).rule for i in loose],
-                              "modules lost contact with the surface")
-                return self._result("violation", rounds, initial, violation=v,
-                                    reason=v.describe())
-            idle = 0 if records or self.deferring else idle + 1
-            if idle >= self.stall_rounds:
-                waiting = [f"{m.ident}:{m.phase}@{list(m.cell)}" for m in self.modules
-                           if m.phase != "done"]
-                return self._result("deadlock", rounds[: len(rounds) - idle], initial,
-                                    reason=f"no module moved for {idle} rounds; waiting: "
-                                           + ", ".join(waiting))
-        return self._result("deadlock", rounds, initial,
-                            reason=f"not done after {self.max_rounds} rounds")
+        while (result := self.step()) is None:
+            pass
+        return result
+
+    def step(self) -> Result | None:
+        """Play the next round; the result when the run ends (before or in it)."""
+        rnd = self.played + 1
+        rounds, initial = self.rounds, self.initial
+        if rnd > self.max_rounds:
+            return self._result("deadlock", rounds, initial,
+                                reason=f"not done after {self.max_rounds} rounds")
+        if all(m.phase in self._settled(m) for m in self.modules):
+            return self._result("reached", rounds, initial)
+        self.played = rnd
+        self.deferring = False
+        actions = [(m, r) for m in self.modules if (r := self.decide(m)) is not None]
+        violation = self.check(rnd, actions)
+        if violation is not None:
+            return self._result("violation", rounds, initial, violation=violation,
+                                reason=violation.describe())
+        records = []
+        for m, rolled in actions:
+            sub = self.at.get(rolled.substrate)
+            records.append(MoveRecord(m.ident, rolled.src, rolled.dst, rolled.substrate,
+                                      sub.ident if sub else None, rolled.rotation.joint,
+                                      rolled.rotation.direction, m.rule))
+        for m, _ in actions:
+            del self.at[m.cell]
+        for m, rolled in actions:
+            m.cell, m.pivot = rolled.dst, rolled.substrate
+            self.at[m.cell] = m
+        now = {r.src for r in records} | {r.dst for r in records}
+        self.changed = (now | self.changed_last) if self.quiet_rounds == 2 else now
+        self.changed_last = now
+        self.entered = {r.dst for r in records}
+        self.last_moves = [(r.src, r.dst) for r in records]
+        for m, _ in actions:
+            self.arrive(m)
+        rounds.append(records)
+        loose = self.connected()
+        if loose:
+            v = Violation(rnd, "connected to the surface", loose,
+                          [self._by_id(i).rule for i in loose],
+                          "modules lost contact with the surface")
+            return self._result("violation", rounds, initial, violation=v,
+                                reason=v.describe())
+        self.idle = idle = 0 if records or self.deferring else self.idle + 1
+        if idle >= self.stall_rounds:
+            waiting = [f"{m.ident}:{m.phase}@{list(m.cell)}" for m in self.modules
+                       if m.phase != "done"]
+            return self._result("deadlock", rounds[: len(rounds) - idle], initial,
+                                reason=f"no module moved for {idle} rounds; waiting: "
+                                       + ", ".join(waiting))
+        return None
+
+    def fork(self, holds: tuple[int, ...], active: int) -> Engine:
+        """A copy of this run as it stands, to go on with other ``holds`` and
+        ``active`` (:func:`start_holds`): what the rounds change is copied, the
+        map and what is computed from it shared."""
+        other = object.__new__(Engine)
+        other.__dict__.update(self.__dict__)
+        other.modules = [dataclasses.replace(m, served=set(m.served), avoid=set(m.avoid))
+                         for m in self.modules]
+        other.at = {cell: other.modules[m.ident - 1] for cell, m in self.at.items()}
+        other.rounds = list(self.rounds)
+        other.holds, other.active = holds, active
+        return other
 
     def _settled(self, m: Module) -> tuple[str, ...]:
         """Phases in which module ``m`` counts as finished: "done"; in a run of the
-        first ``active`` modules only (:func:`start_holds`) also waiting on a
-        bridge (the passes it waits for are the later modules'), and any phase
-        for the modules that never start."""
+        first ``active`` modules only (:func:`start_holds`) also waiting for the
+        modules behind it: on a Bridge cell (for their passes), a TempSupport
+        cell (for the one that will hold the bridge) or a Support cell (for the
+        Bridge module to leave); and any phase for the modules that never start."""
         if self.active == self.n:
             return ("done",)
         if m.ident > self.active:
@@ -393,10 +439,19 @@ class Engine:
 
 
 def traverse(bmap: BridgeMap, **options: Any) -> Result:
+    if bmap.model == "hexbot" and options.get("holds") is None and not options.get("active"):
+        # the search for the holds ends with this very run: no need to run it again
+        return _hold_search(bmap, options.get("stall_rounds"), options.get("max_rounds"))[1]
     return Engine(bmap, **options).run()
 
 
-def start_holds(bmap: BridgeMap) -> tuple[int, ...]:
+#: the hold of the module whose start :func:`start_holds` is searching: it never
+#: starts, it counts the rounds in which it could have
+_NEVER = sys.maxsize
+
+
+def start_holds(bmap: BridgeMap, *, stall_rounds: int | None = None,
+                max_rounds: int | None = None) -> tuple[int, ...]:
     """How many rounds each module defers its start (hexbot model): the fewest
     for which its way, with the modules ahead of it moving as they will, makes
     no move that crosses one of theirs. A module computes this from the map
@@ -404,19 +459,74 @@ def start_holds(bmap: BridgeMap) -> tuple[int, ...]:
     same rule and then follow the map's wall-following way, so where each of
     them is in every round is known to it (no messages, no sensing beyond its
     neighbours). Module by module: module ``k`` is run with the first ``k - 1``
-    and their holds (the later ones stay in the chain) until all of them are
-    done or wait on a bridge. Holding longer than the modules ahead take to
-    settle changes nothing; when no hold up to that helps, the hold is 0 and
-    the run reports the conflict (docs/traversal.md, "Rigid modules whose ways
-    fold back")."""
+    and their holds (the later ones stay in the chain) until each of them is
+    done or waits for the modules behind it (on a Bridge, TempSupport or
+    Support cell); the first hold whose run breaks no invariant is taken. A
+    run that deadlocks (no module moved for ``stall_rounds`` rounds, or not
+    done after ``max_rounds``) crossed nothing: its hold is taken too, and the
+    run reports the deadlock, not the crossing a shorter hold would make.
+    Holding longer than the modules ahead take to settle changes nothing;
+    when no hold up to that helps, the hold is 0 and the run reports the
+    conflict (docs/traversal.md, "Rigid modules whose ways fold back").
+    ``stall_rounds``, ``max_rounds``: the run's (:class:`Engine`), None for
+    its defaults."""
+    return _hold_search(bmap, stall_rounds, max_rounds)[0]
+
+
+def _hold_search(bmap: BridgeMap, stall_rounds: int | None,
+                 max_rounds: int | None) -> tuple[tuple[int, ...], Result]:
+    """:func:`start_holds`, and the run of all modules with them.
+
+    The run of module ``k`` with hold ``h`` (the first ``k`` modules, ``k``
+    held ``h`` of the rounds in which it could start) is the same as the run
+    with module ``k`` held for good (``base``, in which it stays in the chain)
+    up to the round in which it starts: each candidate is a copy of ``base``
+    taken at the start of that round (:meth:`Engine.fork`), run on from there.
+    The run of the first ``k`` modules with the hold taken is the next
+    module's ``ahead``; ``base`` for the next module is the copy of the one for
+    module ``k`` at the round in which it starts with that hold. When ``base``
+    breaks an invariant before module ``k`` could start the ``h``-th time, so
+    do all holds from ``h`` on (the same rounds up to there): the search stops.
+    """
     n = bmap.surface.n
+    options = {"stall_rounds": stall_rounds, "max_rounds": max_rounds}
     holds = [0] * n
-    for k in range(1, n):
-        ahead = Engine(bmap, holds=tuple(holds), active=k).run()
-        for hold in range(ahead.time_steps + 2):
-            holds[k] = hold
-            if Engine(bmap, holds=tuple(holds), active=k + 1).run().status != "violation":
+
+    def with_hold(k: int, hold: int) -> tuple[int, ...]:
+        return (*holds[:k], hold, *holds[k + 1:])
+
+    ahead = Engine(bmap, holds=tuple(holds), active=1, **options).run()
+    base = Engine(bmap, holds=with_hold(1, _NEVER), active=2, **options) if n > 1 else None
+    for k in range(1, n):  # module k + 1, index k
+        assert base is not None
+        limit = ahead.time_steps + 2  # holds 0 .. limit - 1 (longer change nothing)
+        mod = base.modules[k]
+        taken: tuple[int, Result, Engine | None] | None = None
+        first: tuple[Result, Engine | None] | None = None  # hold 0, the fallback
+        while taken is None and mod.deferred < limit:
+            if mod.phase == "chain" and base.could_start(mod):
+                hold = mod.deferred  # it starts in this round with this hold
+                at_start = base.fork(with_hold(k, hold), k + 1)
+                result = at_start.fork(at_start.holds, k + 1).run()
+                if hold == 0:
+                    first = (result, at_start)
+                if result.status != "violation":
+                    taken = (hold, result, at_start)
+                    break
+            end = base.step()
+            if end is not None:  # module k + 1 does not start again: the holds left
+                hold = mod.deferred  # all give this run (module k + 1 stays)
+                result = dataclasses.replace(end, holds=with_hold(k, hold))
+                if hold == 0:
+                    first = (result, None)
+                if hold < limit and result.status != "violation":
+                    taken = (hold, result, None)
                 break
-        else:
-            holds[k] = 0
-    return tuple(holds)
+        if taken is None:  # no hold helps: 0, and the run reports the violation
+            assert first is not None
+            taken = (0, *first)
+        holds[k], ahead, at_start = taken
+        if at_start is None:  # module k + 1 never starts, nor do those behind it
+            return tuple(holds), dataclasses.replace(ahead, holds=tuple(holds))
+        base = (at_start.fork(with_hold(k + 1, _NEVER), k + 2) if k + 1 < n else None)
+    return tuple(holds), ahead

@@ -24,7 +24,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from hexbot.protocol.lattice import Cell, side_towards, wrap
-from hexbot.protocol.rotation_geometry import ROTATION_BY_KEY, Direction, Rotation
+from hexbot.protocol.rotation_geometry import ROTATION_BY_KEY, ROTATIONS, Direction, Rotation
 
 MODELS = ("deformable", "hexbot")
 
@@ -33,9 +33,22 @@ def opposite(direction: Direction) -> Direction:
     return "CCW" if direction == "CW" else "CW"
 
 
+#: each rotation's (substrate, goal, swept) cells for a module at (0, 0)
+_AT_ORIGIN = {rotation: rotation.at((0, 0)) for rotation in ROTATIONS}
+
+
+def cells_at(rotation: Rotation, cell: Cell) -> tuple[Cell, Cell, tuple[Cell, Cell, Cell]]:
+    """``rotation.at(cell)``: the cells at the origin moved to ``cell`` (the
+    round engine asks for them some ten thousand times a run)."""
+    (sx, sy), (gx, gy), ((ax, ay), (bx, by), (rx, ry)) = _AT_ORIGIN[rotation]
+    x, y = cell
+    return ((x + sx, y + sy), (x + gx, y + gy),
+            ((x + ax, y + ay), (x + bx, y + by), (x + rx, y + ry)))
+
+
 def required_empty(rotation: Rotation, cell: Cell, model: str) -> tuple[Cell, ...]:
     """Cells that must be empty for the module at ``cell`` to do ``rotation``."""
-    _sub, goal, swept = rotation.at(cell)
+    _sub, goal, swept = cells_at(rotation, cell)
     return (goal, swept[0]) if model == "deformable" else (goal, *swept)
 
 
@@ -47,7 +60,7 @@ def body_cells(rotation: Rotation, cell: Cell, model: str) -> tuple[Cell, ...]:
     equal by a test). The paper's deformable module holds only its start and
     goal: two of them may share a free side (its Figs. 12-13 cross a channel
     that way)."""
-    _sub, goal, swept = rotation.at(cell)
+    _sub, goal, swept = cells_at(rotation, cell)
     return (cell, goal) if model == "deformable" else (cell, goal, *swept)
 
 
@@ -82,7 +95,7 @@ def next_rotation(cell: Cell, pivot: Cell | None, direction: Direction,
     for k in range(1, 7):
         goal_side = wrap(start + step * k)
         rotation = rotation_to(goal_side, direction)
-        substrate, goal, _swept = rotation.at(cell)
+        substrate, goal, _swept = cells_at(rotation, cell)
         if not occupied(substrate) or avoid(goal):
             continue
         if any(occupied(c) for c in required_empty(rotation, cell, model)):
