@@ -651,7 +651,7 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
         assert not isinstance(app.screen, PlanScreen)
 
         await plan_to(goal)
-        assert await until(pilot, lambda: plan_shown(app), timeout=120)
+        assert await until(pilot, lambda: plan_shown(app), timeout=120), (app.busy, app.last_result)
         # planned is not done: the operation's result says nothing moved yet
         assert "1 move(s) in 1 time step(s) planned, not executed" in app.last_result
         assert "goal reached" not in app.last_result
@@ -673,7 +673,7 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
         assert app.host.simulator.placements()[2] == Placement((-1, 1), 0)
 
         await plan_to(f"{goal} reference 1 verify plant")
-        assert await until(pilot, lambda: plan_shown(app), timeout=120)
+        assert await until(pilot, lambda: plan_shown(app), timeout=120), (app.busy, app.last_result)
         await pilot.pause()
         await pilot.press("e")  # the dialog's Execute
         assert await until(pilot, lambda: not app.busy and "Execute plan" in app.last_result,
@@ -700,7 +700,7 @@ async def test_escape_cancels_a_running_plan_and_claims_nothing(pair_args, tmp_p
         await pilot.pause()
         app.screen.query_one("#prompt-input").value = str(goal)
         await pilot.press("enter")
-        assert await until(pilot, lambda: plan_shown(app), timeout=120)
+        assert await until(pilot, lambda: plan_shown(app), timeout=120), (app.busy, app.last_result)
         await pilot.pause()
         await pilot.press("e")
         assert await until(pilot, lambda: app.host.simulator.placements()[2]
