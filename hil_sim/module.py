@@ -164,14 +164,7 @@ class Module:
         ``before``, if it is on then; None: off."""
         if self._rx is None:
             return 0
-        on, since = False, 0
-        for cycle, state in self._rx:
-            if cycle >= before:
-                break
-            if state and not on:
-                since = cycle
-            on = state
-        return since if on else None
+        return receiver_on_since(self._rx, before)
 
     def rx_went_off(self, after: float) -> bool:
         """Whether the receiver went off at or after ``after`` by the
@@ -182,3 +175,17 @@ class Module:
             if not state:
                 return True
         return False
+
+
+def receiver_on_since(changes, before: float, on: bool = False) -> int | None:
+    """Folded receiver changes ``(cycle, on)``, in cycle order: the cycle the
+    receiver came on last before ``before`` if it is on then (0: on from
+    the start, as ``on`` says); None: off."""
+    since = 0
+    for cycle, state in changes:
+        if cycle >= before:
+            break
+        if state and not on:
+            since = cycle
+        on = state
+    return since if on else None

@@ -4,6 +4,7 @@ from dataclasses import dataclass, field
 
 from hexbot.hil_sim.geometry import CENTRE
 from hexbot.hil_sim.ir_bus import AirByte, Frame, IrMedium
+from hexbot.hil_sim.module import receiver_on_since
 from hexbot.hil_sim.scenario import Faults
 
 IR = Frame(300.0)
@@ -54,14 +55,7 @@ class Air:
         return self.rx.get(module, IR)
 
     def rx_since(self, module, before):
-        on, since = True, 0
-        for cycle, state in self.rx_log.get(module, []):
-            if cycle >= before:
-                break
-            if state and not on:
-                since = cycle
-            on = state
-        return since if on else None
+        return receiver_on_since(self.rx_log.get(module, []), before, on=True)
 
     def rx_went_off(self, module, after):
         until = after if self.now is None else self.now
