@@ -11,6 +11,7 @@ from fwsim import BUILD, Bench, scenario_file
 from hexbot.hil_sim.module import decode_actuators
 from hexbot.hil_sim.plant import OFF
 from hexbot.protocol import frames
+from hexbot.protocol.codes import ErrorCode
 from hexbot.protocol.timing import TICK_TRUE_S
 
 #: Awake cycles per idle tick: the tick interrupt and one check of the
@@ -87,6 +88,15 @@ def test_a_half_frame_expires_on_its_tick_while_the_board_sleeps(single: Bench):
     assert magnets_on(single)  # not abandoned early
     single.run(0.013)
     assert not magnets_on(single)  # abandoned within the 4th tick
+
+
+def test_after_a_half_pc_frame_expires_the_comm_board_sleeps_again(single: Bench):
+    single.send(b"*\x01\x03NN")  # half a frame, then silence
+    single.run(0.6)  # > its inter-byte time-out: abandoned
+    awake, _ = awake_per_tick(single, 2.0)["comm"]
+    assert awake < IDLE_CYCLES_PER_TICK_MAX, awake
+    (sta,) = single.command("Status")
+    assert sta.error == ErrorCode.BAD_FRAME
 
 
 def test_a_reply_slot_minutes_away_is_waited_asleep(images, tmp_path):

@@ -9,7 +9,7 @@ import random
 import pytest
 from fwsim import Bench, pc_frame, single_ack
 
-from hexbot.protocol import frames, parser
+from hexbot.protocol import codes, frames, parser
 from hexbot.protocol.codes import ErrorCode
 
 LON = frames.encode_pc(frames.make("LOn"))
@@ -171,3 +171,22 @@ def test_a_frame_whose_unused_bytes_are_not_the_filler_is_refused(single: Bench,
     assert [(type(r).__name__, r.code, r.reason) for r in replies] == [
         ("ErrorReply", code, ErrorCode.ARG_RANGE)]
     single_ack(single.frame(LON), 44)  # and the next good frame runs
+
+
+@pytest.mark.parametrize("name,slot", [
+    (name, slot) for name in ("JxOpen", "LOn", "JTest", "Status")
+    for slot in range(len(codes.lookup(name).args), 8)])
+def test_any_one_filler_byte_that_is_not_n_refuses_the_frame(single: Bench, name, slot):
+    # host and module agree on every filler, the first one after the
+    # arguments too: the frame is refused, the next one is executed
+    fn = codes.lookup(name)
+    arity = len(fn.args)
+    args = [a.lo for a in fn.args] + [ord("N")] * (8 - arity)
+    args[slot] = 0
+    frame = pc_frame(fn.code, *args)
+    with pytest.raises(frames.FrameError, match="must be 'N'"):
+        frames.decode_pc(frame)
+    replies = single.frame(frame)
+    assert [(type(r).__name__, r.code, r.reason) for r in replies] == [
+        ("ErrorReply", fn.code, ErrorCode.ARG_RANGE)], replies
+    single_ack(single.frame(LON), 44)

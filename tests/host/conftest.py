@@ -33,3 +33,17 @@ def log_dir(tmp_path, monkeypatch):
     return path
 
 
+
+
+@pytest.fixture
+def pty_session(responder):
+    """A Session on the pty test double's seven modules."""
+    from hexbot.host.host import IR, Host
+    from hexbot.host.link import PortSettings
+    from hexbot.host.session import Session
+
+    host = Host()
+    host.add_port(IR, PortSettings(responder.path))
+    host.start(5.0)
+    yield Session(host, [m.ident for m in responder.modules])
+    host.close()

@@ -64,7 +64,8 @@ async def test_composer_sends_from_the_table_and_shows_the_ack(responder):
         await pilot.press("2")  # composer tab
         await pilot.click("#fn-filter")
         await pilot.press(*"select", "enter")  # first match, focus its first argument
-        await pilot.pause()
+        assert await until(pilot, lambda: getattr(app.focused, "id", None) == "arg-0"), \
+            app.focused
         composer = app.query_one(Composer)
         assert composer.function.name == "Select"
         await pilot.press("4")
@@ -265,10 +266,15 @@ async def test_console_on_simulator_flower7(sim_args):
         await pilot.press("2")
         await pilot.click("#fn-filter")
         await pilot.press(*"69", "enter")
-        await pilot.pause()
+        # the form's first field takes the focus after a refresh: under load
+        # a key pressed before it would land in the filter
+        assert await until(pilot, lambda: getattr(app.focused, "id", None) == "arg-0"), \
+            app.focused
         await pilot.press("0")
+        assert await until(pilot, lambda: not app.query_one("#fn-send").disabled)
         await pilot.click("#fn-send")
-        assert await until(pilot, lambda: ir_text(app).count("ACK 69 Select") == 7, timeout=30)
+        assert await until(pilot, lambda: ir_text(app).count("ACK 69 Select") == 7,
+                           timeout=30), (app.last_result, ir_text(app)[-3000:])
         # the modules view updates after the terminal line (under load, a
         # moment later): wait for it, as a user would
         assert await until(pilot, lambda: len(modules_rows(app)) == 7 and all(

@@ -96,3 +96,64 @@ def test_a_status_check_assumes_the_place_but_does_not_call_it_localized(open_se
     poses = workflows.localize(session, 1)  # a localization judges it
     assert poses[2].cell == (0, 1) and session.host.model.module(2).localized
     assert not session.host.model.module(2).assumed
+
+
+# --- what a rotation must not report as done ---------------------------------
+
+
+def test_a_status_check_refuses_a_module_that_still_says_localized(responder, pty_session,
+                                                                   monkeypatch):
+    # the rotation is acknowledged, but the mobile module's Status says it is
+    # still localized where it was: it did not move
+    workflows.localize(pty_session, 1)
+    real = responder._answer
+
+    def stays(frame):
+        real(frame)
+        if frame[1] in (67, 68):
+            for m in responder.modules:
+                m.localized = True
+
+    monkeypatch.setattr(responder, "_answer", stays)
+    with pytest.raises(CommandRefusedError, match="module 3 does not report a move"):
+        workflows.rotate(pty_session, "CW", 5, 3, 1, verify=workflows.Verify.STATUS)
+
+
+def test_a_rotation_the_modules_refuse_fails_with_their_refusal(responder, pty_session,
+                                                              monkeypatch):
+    # the rotation frame itself is refused (ERR STOPPED): the failure must
+    # say so, not leave it to a later check to notice that nothing moved
+    from hexbot.protocol.codes import ErrorCode
+
+    workflows.localize(pty_session, 1)
+    real = responder._answer
+
+    def refuse(frame):
+        if frame[1] in (67, 68):
+            for m in responder._targets():
+                responder._reply(m, b"ERR" + bytes([frame[1], ErrorCode.STOPPED]))
+            return
+        real(frame)
+
+    monkeypatch.setattr(responder, "_answer", refuse)
+    with pytest.raises(CommandRefusedError, match="ERR STOPPED"):
+        workflows.rotate(pty_session, "CW", 5, 3, 1, verify=workflows.Verify.STATUS)
+
+
+def test_a_rotation_that_leaves_a_module_alone_is_not_a_success(open_session, tmp_path):
+    from hexbot.hil_sim.geometry import Rotation, distance, neighbor, to_global
+
+    # the pair rig plus module 3 touching only the mobile module 2
+    rot = Rotation(to_global(4, 0), "CW")
+    taken = {rot.goal_cell((-1, 1)), *rot.swept_cells((-1, 1)), (0, 0)}
+    third = next(c for c in (neighbor((-1, 1), s) for s in range(1, 7))
+                 if c not in taken and all(distance(c, o) > 1
+                                           for o in [(0, 0), rot.goal_cell((-1, 1))]))
+    scenario = tmp_path / "tail.toml"
+    scenario.write_text('name = "tail"\nseed = 1\nbase = 1\n' + "".join(
+        f"[[module]]\nid = {i}\nposition = [{x}, {y}]\norientation = 0\n"
+        for i, (x, y) in ((1, (0, 0)), (2, (-1, 1)), (3, third))))
+    session = open_session(scenario)
+    workflows.localize(session, 1)
+    with pytest.raises(CommandRefusedError, match="the cluster split"):
+        workflows.rotate(session, "CW", 4, 2, 1, verify=workflows.Verify.PLANT)

@@ -280,3 +280,24 @@ def test_plot_and_render_draw_the_executed_plan(tmp_path, capsys):
     assert status == 0 and out["execution"]["reached"]
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert gif.read_bytes()[:6] == b"GIF89a"
+
+
+def test_a_plan_whose_status_checked_move_did_not_happen_does_not_reach_its_goal(
+        open_session):
+    # The hardware path, verify status: the base module is bolted down, so
+    # the plant refuses the move, the firmware still acknowledges it and says
+    # "unlocalized": only the final localization can tell.
+    from hexbot.errors import HexBotError
+
+    initial = Configuration({(1, -1): Module(1, 0), (0, 0): Module(2, 0)})
+    move = Move(module=1, src=(1, -1), dst=(0, -1), joint=1, direction="CW",
+                substrate=(0, 0), substrate_module=2)
+    plan = Plan("robust", initial, frozenset({(0, -1), (0, 0)}), [Step([move])], reached=True)
+    with SimProcess("pair", speed=0) as sim:
+        session = open_session(sim.ports.ir, boot=False)
+        session.wait_booted({1, 2})
+        report = execute(plan, session, reference=2, verify=Verify.STATUS)
+    assert report.finished and not report.reached and report.exit_status == 1
+    assert "is not the goal" in report.failure
+    with pytest.raises(HexBotError, match="is not the goal"):
+        report.outcome(1)

@@ -1,7 +1,7 @@
 """Frame codecs: round trips (hypothesis), specific errors, golden vectors."""
 
 import pytest
-from hypothesis import given
+from hypothesis import example, given
 from hypothesis import strategies as st
 
 from hexbot.errors import FrameError
@@ -60,6 +60,8 @@ def test_random_pc_frames_decode_or_raise_frame_error(data):
 
 
 @given(valid_commands(), st.integers(0, 10), st.integers(0, 255))
+@example(Command(44, ()), 10, ord("X"))  # the end byte, every run
+@example(Command(44, ()), 0, ord("#"))
 def test_any_corrupted_delimiter_is_rejected(cmd, pos, value):
     frame = bytearray(frames.encode_pc(cmd))
     if pos not in (0, 10) or frame[pos] == value:
@@ -99,11 +101,19 @@ def test_select_rules():
             frames.select(bad)
 
 
-def test_non_n_bytes_beyond_arity_rejected():
+@pytest.mark.parametrize("slot", range(1, 8))  # JxOpen's 7 fillers, the first one too
+def test_non_n_bytes_beyond_arity_rejected(slot):
     frame = bytearray(frames.encode_pc(frames.make("JxOpen", 3)))
-    frame[4] = 0
+    frame[2 + slot] = 0
     with pytest.raises(FrameError, match="must be 'N'"):
         frames.decode_pc(bytes(frame))
+
+
+def test_a_decoded_frame_is_checked_like_an_encoded_one():
+    # the wire form of JxOpen(7): well framed, but joint 7 does not exist
+    frame = b"*\x01\x07" + b"N" * 7 + b"#"
+    with pytest.raises(FrameError, match="1..6"):
+        frames.decode_pc(frame)
 
 
 def test_board_ack():

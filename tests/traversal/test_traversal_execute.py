@@ -66,3 +66,23 @@ def test_a_refused_move_stops_with_one_line(tmp_path, capsys):
     assert status == 1
     assert err.startswith("hexbot traverse: execution stopped: the plan moves module 1, "
                           "bolted to the base in the scenario: nothing sent")
+
+
+def test_a_cluster_that_is_not_the_maps_start_sends_no_move(tmp_path, capsys):
+    # execute()'s own check is the only one on this path: module 1 turned
+    # by half a turn localizes elsewhere than the map says
+    from hexbot.planning.traversal.execute import scenario_toml
+
+    cluster = cluster_of(resolve_map("hil-flat"))
+    result = traverse(find_bridge_cells(cluster.surface, "hexbot"))
+    text = scenario_toml(cluster, result.initial)
+    turned = text.replace("id = 1\nposition = [-2, 1]\n",
+                          "id = 1\nposition = [-2, 1]\norientation = 3\n")
+    assert turned != text
+    scenario = tmp_path / "turned.toml"
+    scenario.write_text(turned)
+    status = main(["traverse", "hil-flat", "--execute", "--scenario", str(scenario),
+                   "--no-log"])
+    err = capsys.readouterr().err
+    assert status == 1, err
+    assert "does not start from the cluster as localized" in err, err
