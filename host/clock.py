@@ -77,12 +77,18 @@ class PacedClock:
     produced (at 50x, 0.25 s of reading is 12 simulated seconds)."""
 
     LATENCY_S = 0.25
+    #: Wall seconds a wait stays past its deadline while the reader is behind
+    #: (bytes unread, half a reply parsed): a loaded machine's reader can lag
+    #: the simulator by more than ``LATENCY_S``, and what it has not read
+    #: yet may be the answer. Bounded: a port that never stops talking.
+    BEHIND_MAX_S = 5.0
 
     def __init__(self, condition: threading.Condition, simulator: SimulatorAccess,
-                 stopped: Stopped) -> None:
+                 stopped: Stopped, behind: Callable[[], bool] = lambda: False) -> None:
         self._condition = condition
         self.simulator = simulator
         self._stopped = stopped  # notified on the condition too (the port's state)
+        self._behind = behind
         self._t0 = simulator.now()
         simulator.on_advance(self.wake)
 
@@ -91,13 +97,21 @@ class PacedClock:
 
     def wait(self, ready: Callable[[], bool], timeout: float) -> bool:
         end = self.now() + max(0.0, timeout) + self.LATENCY_S * self.simulator.speed
+        late: float | None = None  # wall time the deadline passed with the reader behind
         with self._condition:
             while not ready():
                 why = self._stopped()
                 if why is not None:  # its time will not move again
                     raise LinkUnavailableError(why)
                 if self.now() >= end:
-                    return False
+                    if not self._behind():
+                        return False
+                    if late is None:
+                        late = time.monotonic()
+                    elif time.monotonic() - late > self.BEHIND_MAX_S:
+                        return False
+                    self._condition.wait(0.02)  # the reader's events notify it
+                    continue
                 self._condition.wait(1.0)  # notified at every simulated step
             return True
 

@@ -66,28 +66,55 @@ class PortDecoder:
     after ``QUIET_FLUSH_S`` of quiet nothing more is coming to complete it,
     and what it held comes out stamped at the end of that quiet second (so
     a replay, which knows when the next bytes came, shows what the live
-    session showed, at the same time)."""
+    session showed, at the same time).
 
-    def __init__(self) -> None:
+    ``live``: the times are when a reader thread got the bytes, not when
+    they came. A reader that ran late (a loaded machine, a simulator paced
+    faster than the reader) reads the second half of a reply long after
+    the first, though the line had no gap; so live, the quiet is the time
+    between two reads that found nothing (:meth:`quiet` is called for
+    each), never the time between two reads that found bytes. (A replay
+    has only the capture's read times: where the live reader ran late by
+    more than ``QUIET_FLUSH_S``, the replay shows garbage that the live
+    session did not.)"""
+
+    def __init__(self, *, live: bool = False) -> None:
         self.parser = FramedParser()  # legacy replies and MAVLink frames alike
+        self.live = live
         self._last_rx = 0.0
+        self._idle_since: float | None = None  # live: the first empty read since bytes
         self._unflushed = False
 
     def feed(self, t: float, data: bytes) -> list[tuple[float, Event]]:
         """Bytes received at ``t``: what was held back and went quiet before
-        them, then the events they complete."""
-        held = self.quiet(t)
+        them (a replay), then the events they complete."""
+        held = [] if self.live else self.quiet(t)
         self._last_rx = t
+        self._idle_since = None
         self._unflushed = True
         return held + [(t, ev) for ev in self.parser.feed(data)]
 
     def quiet(self, now: float) -> list[tuple[float, Event]]:
-        """What the parser held, when nothing came for ``QUIET_FLUSH_S`` before ``now``."""
-        if not self._unflushed or now - self._last_rx <= QUIET_FLUSH_S:
+        """What the parser held, when nothing came for ``QUIET_FLUSH_S`` before
+        ``now`` (live: since the first read that found nothing)."""
+        if not self._unflushed:
+            return []
+        since = self._last_rx
+        if self.live:
+            if self._idle_since is None:
+                self._idle_since = now
+                return []
+            since = self._idle_since
+        if now - since <= QUIET_FLUSH_S:
             return []
         self._unflushed = False
-        stamp = self._last_rx + QUIET_FLUSH_S
+        stamp = since + QUIET_FLUSH_S
         return [(stamp, ev) for ev in self.parser.flush()]
+
+    @property
+    def holding(self) -> bool:
+        """Whether the parser holds the start of a reply it has not decoded."""
+        return bool(self.parser.pending)
 
     def flush(self) -> list[tuple[float, Event]]:
         """Everything held, now (the end of a replay), stamped with the last bytes' time."""
@@ -99,7 +126,7 @@ class Channel:
     def __init__(self, host: Host, name: str, settings: PortSettings, retry_s: float) -> None:
         self.host = host
         self.name = name
-        self.decoder = PortDecoder()
+        self.decoder = PortDecoder(live=True)
         self.link = Link(settings, self._on_data, self._on_state, self._on_idle, retry_s=retry_s)
 
     @property
@@ -109,6 +136,11 @@ class Channel:
     def _on_data(self, data: bytes) -> None:
         for t, ev in self.decoder.feed(self.host.received(self.name, data), data):
             self.host.observe(t, self.name, ev)
+
+    def behind(self) -> bool:
+        """Whether this port has bytes its reader has not turned into events
+        yet: unread at the port, or the start of a reply in the parser."""
+        return self.link.unread() > 0 or self.decoder.holding
 
     def _on_idle(self) -> None:
         for t, ev in self.decoder.quiet(self.host.elapsed()):
@@ -179,7 +211,9 @@ class Host:
         if sim.stepped:
             self.clock = SteppedClock(sim, self.pump, self._simulator_stopped)
         else:
-            self.clock = PacedClock(self.changed, sim, self._simulator_stopped)
+            self.clock = PacedClock(self.changed, sim, self._simulator_stopped,
+                                    behind=lambda: any(ch.behind()
+                                                       for ch in self.channels.values()))
         sim.subscribe(self._verdict)
 
     @property

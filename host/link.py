@@ -167,6 +167,17 @@ class Link:
         access = getattr(self._port, "hexbot_sim", None)
         return access if isinstance(access, SimulatorAccess) else None
 
+    def unread(self) -> int:
+        """Bytes waiting at the open port for the reader (0 when closed)."""
+        with self._lock:
+            port = self._port
+            if port is None:
+                return 0
+            try:
+                return port.in_waiting
+            except (serial.SerialException, OSError, TypeError, AttributeError):
+                return 0  # the reader finds out and says so
+
     @property
     def stepped(self) -> bool:
         """True for a port whose virtual time moves only when pumped."""

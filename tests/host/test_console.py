@@ -274,7 +274,7 @@ async def test_console_on_simulator_flower7(sim_args):
         assert await until(pilot, lambda: not app.query_one("#fn-send").disabled)
         await pilot.click("#fn-send")
         assert await until(pilot, lambda: ir_text(app).count("ACK 69 Select") == 7,
-                           timeout=30), (app.last_result, ir_text(app)[-3000:])
+                           timeout=30), (app.last_result, ir_text(app)[-3000:], sim_story(app))
         # the modules view updates after the terminal line (under load, a
         # moment later): wait for it, as a user would
         assert await until(pilot, lambda: len(modules_rows(app)) == 7 and all(
@@ -615,6 +615,12 @@ async def test_a_boards_refresh_while_the_view_is_torn_down_is_skipped(responder
         assert app.query_one(BoardsView) is view
 
 
+def sim_story(app, last: int = 40) -> list[dict]:
+    """The embedded simulator's last events (collisions, dropped bytes,
+    verdicts): what a failed exchange's assertion shows."""
+    return app.host.simulator.simulator.events[-last:]
+
+
 def plan_shown(app) -> bool:
     """The plan screen is pushed and composed (on a loaded machine its widgets
     come a frame after the screen: querying them at once failed)."""
@@ -684,7 +690,8 @@ async def test_plan_to_a_goal_file_is_shown_then_executed_and_verified(pair_args
         await pilot.press("e")  # the dialog's Execute
         assert await until(pilot, lambda: not app.busy and "Execute plan" in app.last_result,
                            timeout=120), (app.busy, app.last_result, app.screen)
-        assert "goal reached (localized): 1 of 1 moves" in app.last_result, app.last_result
+        assert "goal reached (localized): 1 of 1 moves" in app.last_result, (
+            app.last_result, ir_text(app)[-2000:], sim_story(app))
         assert not app.last_result.startswith("[red]")
         assert app.host.simulator.placements()[2] == Placement((0, 1), 2)
         assert "S01 ACK 67 CW" in ir_text(app) and "M02 ACK 67 CW" in ir_text(app)
