@@ -168,15 +168,17 @@ class Link:
         return access if isinstance(access, SimulatorAccess) else None
 
     def unread(self) -> int:
-        """Bytes waiting at the open port for the reader (0 when closed)."""
-        with self._lock:
-            port = self._port
-            if port is None:
-                return 0
-            try:
-                return port.in_waiting
-            except (serial.SerialException, OSError, TypeError, AttributeError):
-                return 0  # the reader finds out and says so
+        """Bytes waiting at the open port for the reader (0 when closed).
+        Without the port lock: a waiter calls it holding the host's
+        condition, and a port dropped under the lock notifies that condition
+        (the other lock order)."""
+        port = self._port
+        if port is None:
+            return 0
+        try:
+            return port.in_waiting
+        except (serial.SerialException, OSError, TypeError, AttributeError, ValueError):
+            return 0  # closed meanwhile: the reader finds out and says so
 
     @property
     def stepped(self) -> bool:
