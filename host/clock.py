@@ -5,6 +5,11 @@ and the clock decides what a second is:
 
 - :class:`WallClock` (hardware, ptys): reader threads append to the
   journal and notify a condition; the waiter sleeps on it.
+
+On the wall clock and the paced one, a wait whose deadline passed while the
+reader thread is behind (bytes unread at the port, half a reply parsed)
+waits for it, at most :data:`BEHIND_MAX_S` more: on a loaded machine what
+the reader has not read yet may be the answer, which came in time.
 - :class:`PacedClock` (a simulator on its own thread, ``speed`` > 0): the
   same condition, also notified as the simulator's time advances, so "5 s"
   means five simulated seconds whatever the load.
@@ -50,11 +55,35 @@ class Clock(Protocol):
         """Something a waiter may be waiting for changed (cancel, port state)."""
 
 
+#: Wall seconds a wait stays past its deadline while the reader is behind
+#: (bytes unread at the port, half a reply parsed): a loaded machine's
+#: reader thread can lag the line, and what it has not read yet may be the
+#: answer. Bounded: a port that never stops talking.
+BEHIND_MAX_S = 5.0
+Behind = Callable[[], bool]
+
+
+def _nothing_behind() -> bool:
+    return False
+
+
+def _grace(condition: threading.Condition, ready: Callable[[], bool],
+           behind: Behind) -> bool:
+    """Past a deadline, with ``condition`` held: wait while the reader is
+    behind, until ``ready()`` or :data:`BEHIND_MAX_S`."""
+    late = time.monotonic()
+    while behind() and time.monotonic() - late <= BEHIND_MAX_S:
+        if condition.wait_for(ready, 0.02):  # the reader's events notify it
+            return True
+    return ready()
+
+
 class WallClock:
     """Real time; waits sleep on ``condition`` (the host's journal condition)."""
 
-    def __init__(self, condition: threading.Condition) -> None:
+    def __init__(self, condition: threading.Condition, behind: Behind = _nothing_behind) -> None:
         self._condition = condition
+        self._behind = behind
         self._t0 = time.monotonic()
 
     def now(self) -> float:
@@ -62,7 +91,8 @@ class WallClock:
 
     def wait(self, ready: Callable[[], bool], timeout: float) -> bool:
         with self._condition:
-            return self._condition.wait_for(ready, max(0.0, timeout))
+            return (self._condition.wait_for(ready, max(0.0, timeout))
+                    or _grace(self._condition, ready, self._behind))
 
     def wake(self) -> None:
         with self._condition:
@@ -77,14 +107,9 @@ class PacedClock:
     produced (at 50x, 0.25 s of reading is 12 simulated seconds)."""
 
     LATENCY_S = 0.25
-    #: Wall seconds a wait stays past its deadline while the reader is behind
-    #: (bytes unread, half a reply parsed): a loaded machine's reader can lag
-    #: the simulator by more than ``LATENCY_S``, and what it has not read
-    #: yet may be the answer. Bounded: a port that never stops talking.
-    BEHIND_MAX_S = 5.0
 
     def __init__(self, condition: threading.Condition, simulator: SimulatorAccess,
-                 stopped: Stopped, behind: Callable[[], bool] = lambda: False) -> None:
+                 stopped: Stopped, behind: Behind = _nothing_behind) -> None:
         self._condition = condition
         self.simulator = simulator
         self._stopped = stopped  # notified on the condition too (the port's state)
@@ -96,22 +121,15 @@ class PacedClock:
         return self.simulator.now() - self._t0
 
     def wait(self, ready: Callable[[], bool], timeout: float) -> bool:
+        # a reader that lags more than LATENCY_S (a loaded machine): _grace
         end = self.now() + max(0.0, timeout) + self.LATENCY_S * self.simulator.speed
-        late: float | None = None  # wall time the deadline passed with the reader behind
         with self._condition:
             while not ready():
                 why = self._stopped()
                 if why is not None:  # its time will not move again
                     raise LinkUnavailableError(why)
                 if self.now() >= end:
-                    if not self._behind():
-                        return False
-                    if late is None:
-                        late = time.monotonic()
-                    elif time.monotonic() - late > self.BEHIND_MAX_S:
-                        return False
-                    self._condition.wait(0.02)  # the reader's events notify it
-                    continue
+                    return _grace(self._condition, ready, self._behind)
                 self._condition.wait(1.0)  # notified at every simulated step
             return True
 

@@ -166,7 +166,7 @@ class Host:
         self.warnings: list[str] = []
         self._schema_checked: set[int] = set()
         self._restarts_told: dict[int, int] = {}  # module -> restart error warned
-        self.clock: Clock = WallClock(self.changed)
+        self.clock: Clock = WallClock(self.changed, behind=self._behind)
         #: how commands go out on the IR port (AUTO: the session probes first)
         self.framing = Framing.LEGACY
         self._mavlink: MavlinkEncoder | None = None
@@ -212,9 +212,12 @@ class Host:
             self.clock = SteppedClock(sim, self.pump, self._simulator_stopped)
         else:
             self.clock = PacedClock(self.changed, sim, self._simulator_stopped,
-                                    behind=lambda: any(ch.behind()
-                                                       for ch in self.channels.values()))
+                                    behind=self._behind)
         sim.subscribe(self._verdict)
+
+    def _behind(self) -> bool:
+        """Whether a port's reader has bytes it has not turned into events yet."""
+        return any(ch.behind() for ch in list(self.channels.values()))
 
     @property
     def simulator(self) -> SimulatorAccess | None:

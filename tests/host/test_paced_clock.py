@@ -7,7 +7,8 @@ from __future__ import annotations
 import threading
 import time
 
-from hexbot.host.clock import PacedClock
+from hexbot.host import clock as clock_module
+from hexbot.host.clock import PacedClock, WallClock
 
 
 class RunAway:
@@ -50,7 +51,25 @@ def test_a_wait_past_its_deadline_with_nothing_unread_times_out():
 
 
 def test_a_port_that_never_stops_talking_does_not_hold_a_wait_for_ever(monkeypatch):
-    monkeypatch.setattr(PacedClock, "BEHIND_MAX_S", 0.2)
+    monkeypatch.setattr(clock_module, "BEHIND_MAX_S", 0.2)
     sim, cond = RunAway(), threading.Condition()
     clock = PacedClock(cond, sim, lambda: None, behind=lambda: True)
     assert not clock.wait(lambda: False, timeout=1.0)
+
+
+def test_the_wall_clock_also_waits_for_a_reader_that_is_behind():
+    # hardware: the reply is in the port's buffer at the deadline, the
+    # reader thread has not run yet
+    cond = threading.Condition()
+    answered = threading.Event()
+    clock = WallClock(cond, behind=lambda: not answered.is_set())
+
+    def reader():
+        time.sleep(0.3)
+        with cond:
+            answered.set()
+            cond.notify_all()
+
+    threading.Thread(target=reader).start()
+    assert clock.wait(answered.is_set, timeout=0.05)
+    assert not WallClock(cond).wait(lambda: False, timeout=0.05)
