@@ -24,6 +24,8 @@ unused-code ACK ``N``, the control board's time-out ``~``), timed out
 from __future__ import annotations
 
 import enum
+import functools
+import itertools
 import re
 import threading
 from collections.abc import Callable, Collection, Iterable
@@ -395,7 +397,13 @@ class Session:
         whose own text was lost, or none. Such modules are left out of the
         result (ask them: :meth:`confirm_booted`), and the wait for a slot
         ends with the slot (stretched by the clock tolerance), not at the
-        time-out."""
+        time-out.
+
+        On hardware and ptys, whose clock does not start at the modules'
+        reset, a text is judged by its id alone: one that a collision of
+        the texts of ids sharing a slot could read as (:func:`collision_ids`)
+        is left out of the result too, so that :meth:`boot` asks that module,
+        but it ends the wait for that id."""
         heard: set[int] = set()
         if not expected:
             self.collect(0, quiet, timeout or 60.0)
@@ -405,6 +413,8 @@ class Session:
             sim = self.host.simulator
             slots = _BootSlots(expected) if sim is not None else None
             t0 = sim.now() - self.now() if sim is not None else 0.0  # since reset, at 0
+            suspects = collision_ids(expected) if slots is None else set()
+            unsure: set[int] = set()  # heard, but a collision may have said it
 
             def ready() -> bool:
                 nonlocal checked
@@ -419,6 +429,10 @@ class Session:
                         if obs.port != IR or not slots.own(ident, t0 + obs.t,
                                                            _fw_version(obs.event)):
                             continue
+                    elif ident in suspects:
+                        unsure.add(ident)
+                        missing.discard(ident)
+                        continue
                     if ident is not None and ident not in heard:
                         heard.add(ident)
                         missing.discard(ident)
@@ -810,6 +824,25 @@ class _BootSlots:
         last = max(timing.boot_rank(i) for i in ids)
         end = (timing.BOOT_FIRST_SLOT_TICKS + (last + 1) * slot) * timing.TICK_S
         return now >= end * (1 + timing.CLOCK_TOLERANCE)
+
+
+def collision_ids(ids: Iterable[int]) -> set[int]:
+    """The ids that the boot texts of ``ids`` can read as when the texts of
+    modules sharing a boot slot (ids 8 apart) go out together: their bytes
+    AND on the IR link, digit by digit (6 and 14 read ``04``; 0 is no id)."""
+    ranks: dict[int, list[int]] = {}
+    for ident in ids:
+        ranks.setdefault(timing.boot_rank(ident), []).append(ident)
+    found: set[int] = set()
+    for group in ranks.values():
+        texts = [f"{i:0{wire.ID_MAX_DIGITS}d}".encode() for i in sorted(group)]
+        for size in range(2, len(texts) + 1):
+            for chosen in itertools.combinations(texts, size):
+                digits = bytes(functools.reduce(lambda a, b: a & b, column)
+                               for column in zip(*chosen, strict=True))
+                if int(digits):
+                    found.add(int(digits))
+    return found
 
 
 def _without_id(event: object) -> bool:

@@ -129,3 +129,28 @@ def test_a_collided_id_00_boot_text_is_no_module_without_an_id(tmp_path, open_se
     session.boot(ids)
     out = session.exchange(frames.make("Status"))  # legacy: all ten answer at once
     assert out.kind is OutcomeKind.GARBLED, out
+
+
+def test_on_hardware_a_text_a_collision_could_say_is_asked_for(tmp_path, open_session):
+    # the same cluster behind a pty, as real modules are: no boot clock, so
+    # "ID=04" may be 6 and 14 at once; module 4 is asked, and does not answer
+    from hexbot.host.session import collision_ids
+    from hexbot.host.simproc import SimProcess
+
+    ids = [4, 6, 14]
+    assert collision_ids(ids) == {4}
+    with SimProcess(str(row(tmp_path, ids, dead={4}, base=6)), speed=0) as sim:
+        session = open_session(sim.ports.ir, boot=False)
+        # the simulator runs free: its slots are over long before 10 s
+        heard = session.wait_booted(ids, timeout=10.0)
+        assert 4 not in heard
+        assert session.confirm_booted(sorted(set(ids) - heard)) == {6, 14}
+
+
+def test_collision_ids_are_the_digit_wise_and_of_ids_that_share_a_slot():
+    from hexbot.host.session import collision_ids
+
+    assert collision_ids(range(1, 9)) == set()  # eight slots, eight modules
+    assert collision_ids(range(1, 11)) == {1}  # 1 & 9 read 01; 2 & 10 read 00: nobody
+    # 06 & 14 = 04, 06 & 22 = 02, 14 & 22 = 00 and all three 00: nobody
+    assert collision_ids([6, 14, 22]) == {2, 4}
