@@ -5,11 +5,6 @@ and the clock decides what a second is:
 
 - :class:`WallClock` (hardware, ptys): reader threads append to the
   journal and notify a condition; the waiter sleeps on it.
-
-On the wall clock and the paced one, a wait whose deadline passed while the
-reader thread is behind (bytes unread at the port, half a reply parsed)
-waits for it, at most :data:`BEHIND_MAX_S` more: on a loaded machine what
-the reader has not read yet may be the answer, which came in time.
 - :class:`PacedClock` (a simulator on its own thread, ``speed`` > 0): the
   same condition, also notified as the simulator's time advances, so "5 s"
   means five simulated seconds whatever the load.
@@ -17,6 +12,11 @@ the reader has not read yet may be the answer, which came in time.
   unless the waiter makes it happen, so waiting *is* running the simulator
   in slices and pumping the ports between them. The same calls give the
   same trace.
+
+On the wall clock and the paced one, a wait whose deadline passed while the
+reader thread is behind (bytes unread at the port, half a reply parsed)
+waits for it, at most :data:`BEHIND_MAX_S` more: on a loaded machine what
+the reader has not read yet may be the answer, which came in time.
 
 On a simulator's clock time is the simulator's: when it stops (a fault of
 its core, and its port is lost for good), no deadline will ever come. A
