@@ -26,15 +26,20 @@ LAG_S = 0.1  # wall seconds the reader sleeps after each read that found bytes
 SPEED = 20.0  # so each lag is 2 simulated seconds: twice the quiet second
 
 
-def test_a_reader_that_lags_the_simulator_still_reads_whole_replies(monkeypatch):
+def lagging(monkeypatch, lag_s: float) -> None:
+    """Every port's reader sleeps ``lag_s`` after each read that found bytes."""
     deliver = Link._deliver
 
     def late(self, data: bytes) -> None:
         deliver(self, data)
         if data:
-            time.sleep(LAG_S)
+            time.sleep(lag_s)
 
     monkeypatch.setattr(Link, "_deliver", late)
+
+
+def test_a_reader_that_lags_the_simulator_still_reads_whole_replies(monkeypatch):
+    lagging(monkeypatch, LAG_S)
     host = Host()
     host.add_port(IR, PortSettings(sim_url("pair", 1, SPEED)))
     try:
@@ -46,5 +51,20 @@ def test_a_reader_that_lags_the_simulator_still_reads_whole_replies(monkeypatch)
         assert sorted(poses) == [1, 2]
         garbage = [o for o in host.since(booted) if isinstance(o.event, Garbage)]
         assert garbage == []
+    finally:
+        host.close()
+
+
+def test_boot_texts_read_late_still_count_when_no_slot_is_shared(monkeypatch):
+    # 0.5 s of wall time is 10 simulated seconds, far outside any boot slot;
+    # with seven modules in eight slots no text can be a collision, so each
+    # counts whenever it is read, and nobody is asked for a Status
+    lagging(monkeypatch, 0.5)
+    host = Host()
+    host.add_port(IR, PortSettings(sim_url("flower7", 1, SPEED)))
+    try:
+        host.start(5.0)
+        heard, answered = Session(host).boot(host.simulator.module_ids())
+        assert (heard, answered) == (set(range(1, 8)), set())
     finally:
         host.close()
