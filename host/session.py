@@ -389,8 +389,10 @@ class Session:
         LinkUnavailableError if the port is lost meanwhile.
 
         On an embedded simulator, whose clock counts from the modules'
-        reset, a text counts only in its own boot slot and only if no other
-        expected module shares that slot: modules whose ids are 8 apart send
+        reset, a text counts only if no other expected module shares its
+        slot and, when a collision can read as its id, only in its own
+        slot (a text read late is no collision otherwise): modules whose
+        ids are 8 apart send
         at the same time, and their bytes AND on the IR link into one
         well-formed text with a wrong id (1, 9, 17 and 25 read ``ID=01``; 2,
         10, 18 and 26 ``ID=00``; 6 and 14 ``ID=04``), which names a module
@@ -785,9 +787,11 @@ class _BootSlots:
     ``timing.boot_rank``, on a clock within ``timing.CLOCK_TOLERANCE``."""
 
     def __init__(self, ids: Iterable[int]) -> None:
+        ids = list(ids)
         self.ranks: dict[int, set[int]] = {}
         for ident in ids:
             self.ranks.setdefault(timing.boot_rank(ident), set()).add(ident)
+        self.suspects = collision_ids(ids)  # what a collision may read as
         self.version: str | None = None  # the firmware's, from the first text naming it
 
     def learn_version(self, event: object) -> None:
@@ -797,13 +801,13 @@ class _BootSlots:
     def own(self, ident: int | None, t: float, version: str | None) -> bool:
         """Whether a ``COMM. LISTENING ID=ident`` text that ended at ``t`` is
         that module's own: no other module shares its slot (their texts
-        would have collided into this one), and it came in that slot (not a
-        collision of another slot's texts that reads as this id)."""
+        would have collided into this one), and, if a collision of another
+        slot's texts can read as this id, it came in this id's slot."""
         if ident is None or self.ranks.get(timing.boot_rank(ident)) != {ident}:
             return False
-        if all(len(ids) == 1 for ids in self.ranks.values()):
-            # no slot is shared, so no text is a collision: when it came does
-            # not matter (a reader that ran late stamps it late)
+        if ident not in self.suspects:
+            # no collision reads as this id: when the text came does not
+            # matter (a reader that ran late stamps it late)
             return True
         return self._in_slot(timing.boot_rank(ident), ident, t, version)
 
