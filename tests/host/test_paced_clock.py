@@ -29,18 +29,23 @@ class RunAway:
         pass
 
 
-def test_a_wait_past_its_deadline_still_sees_what_the_reader_was_behind_on():
-    sim, cond = RunAway(), threading.Condition()
-    answered = threading.Event()
-    clock = PacedClock(cond, sim, lambda: None, behind=lambda: not answered.is_set())
-
-    def reader():  # reads the answer 0.3 s of wall time late
-        time.sleep(0.3)
+def answer_late(cond: threading.Condition, answered: threading.Event, after_s: float) -> None:
+    """A reader thread that gets to the answer ``after_s`` of wall time late."""
+    def reader() -> None:
+        time.sleep(after_s)
         with cond:
             answered.set()
             cond.notify_all()
 
     threading.Thread(target=reader).start()
+
+
+def test_a_wait_past_its_deadline_still_sees_what_the_reader_was_behind_on():
+    sim, cond = RunAway(), threading.Condition()
+    answered = threading.Event()
+    clock = PacedClock(cond, sim, lambda: None, behind=lambda: not answered.is_set())
+
+    answer_late(cond, answered, 0.3)
     assert clock.wait(answered.is_set, timeout=1.0)
 
 
@@ -64,12 +69,6 @@ def test_the_wall_clock_also_waits_for_a_reader_that_is_behind():
     answered = threading.Event()
     clock = WallClock(cond, behind=lambda: not answered.is_set())
 
-    def reader():
-        time.sleep(0.3)
-        with cond:
-            answered.set()
-            cond.notify_all()
-
-    threading.Thread(target=reader).start()
+    answer_late(cond, answered, 0.3)
     assert clock.wait(answered.is_set, timeout=0.05)
     assert not WallClock(cond).wait(lambda: False, timeout=0.05)
