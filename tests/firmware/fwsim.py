@@ -12,6 +12,8 @@ import subprocess
 from pathlib import Path
 
 from hexbot.hil_sim import Simulator
+from hexbot.hil_sim.module import decode_actuators
+from hexbot.hil_sim.plant import OFF
 from hexbot.host.endpoints import sim_url
 from hexbot.host.events import Traffic, TrafficDirection
 from hexbot.host.host import IR, Host
@@ -72,6 +74,16 @@ class Bench:
         if (isinstance(event, Traffic) and event.direction is TrafficDirection.RX
                 and event.port == IR):
             self.heard += event.data
+
+    def actuators(self, module: int = 1) -> tuple[tuple[bool, ...], tuple[int, ...]]:
+        """(joints, magnets) of ``module``'s control board, read from its ports."""
+        control = self.sim.modules[module].control
+        return decode_actuators({p: control.port(p)[1] for p in "ABD"})
+
+    def all_off(self, module: int = 1) -> bool:
+        """No joint open and no magnet energised on ``module``."""
+        joints, magnets = self.actuators(module)
+        return not any(joints) and all(m == OFF for m in magnets)
 
     @property
     def sim(self) -> Simulator:
@@ -159,6 +171,20 @@ def pc_frame(code: int, *args: int) -> bytes:
     """A PC frame with any byte values, unchecked (for bad input on purpose)."""
     body = list(args) + [wire.UNUSED] * (wire.PC_ARGS - len(args))
     return bytes([wire.START, code, *body, wire.END])
+
+
+def replies_to(bench: Bench, mark: int, count: int, timeout: float) -> list:
+    """The first ``count`` replies (ACK, ERR, STA) heard after journal
+    position ``mark``, as observed (with their times)."""
+    got: list = []
+
+    def enough(obs) -> bool:
+        if isinstance(obs.event, (parser.Ack, parser.ErrorReply, parser.StatusReport)):
+            got.append(obs)
+        return len(got) >= count
+
+    assert bench.session.wait_for(enough, mark, timeout) is not None, got
+    return got
 
 
 def single_ack(events: list, code: int) -> parser.Ack:

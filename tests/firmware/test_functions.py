@@ -87,37 +87,34 @@ def test_out_of_range_arguments_get_err_not_wraparound(single: Bench, code, args
     assert sta.error == ErrorCode.NONE
 
 
-def actuators(bench: Bench):
-    ports = {p: bench.sim.modules[1].control.port(p)[1] for p in "ABD"}
-    return decode_actuators(ports)
 
 
 @pytest.mark.parametrize("joint", range(1, 7))
 def test_joint_open_close(single: Bench, joint: int):
     single.command("JxOpen", joint)
-    joints, _ = actuators(single)
+    joints, _ = single.actuators()
     assert joints == tuple(j == joint for j in range(1, 7))
     single.command("JxClose", joint)
-    assert actuators(single)[0] == (False,) * 6
+    assert single.actuators()[0] == (False,) * 6
 
 
 @pytest.mark.parametrize("side", range(1, 7))
 def test_magnet_poles_never_both_lines(single: Bench, side: int):
     single.command("SxP", side)
-    assert actuators(single)[1] == tuple(POS if s == side else OFF for s in range(1, 7))
+    assert single.actuators()[1] == tuple(POS if s == side else OFF for s in range(1, 7))
     single.command("SxN", side)
-    assert actuators(single)[1] == tuple(NEG if s == side else OFF for s in range(1, 7))
+    assert single.actuators()[1] == tuple(NEG if s == side else OFF for s in range(1, 7))
     single.command("SxOff", side)
-    assert actuators(single)[1] == (OFF,) * 6
+    assert single.actuators()[1] == (OFF,) * 6
 
 
 def test_turn_off_all(single: Bench):
     single.command("JxOpenAll")
     for side in (1, 4):
         single.command("SxN", side)
-    assert any(actuators(single)[0]) and any(actuators(single)[1])
+    assert any(single.actuators()[0]) and any(single.actuators()[1])
     single_ack(single.command("TurnOffAll"), 20)
-    assert actuators(single) == ((False,) * 6, (OFF,) * 6)
+    assert single.actuators() == ((False,) * 6, (OFF,) * 6)
 
 
 def led_on(bench: Bench, name: str) -> bool:
@@ -245,17 +242,17 @@ def test_debug_port_drives_the_control_board_directly(single: Bench):
     single.debug_write(1, b"*\x01\x03NNN#")
     single.run(0.2)
     assert single.debug_read(1) == b"\n\r\n\rACK\x01\n\rMSG\x01\x03NNN\n\r"
-    assert actuators(single)[0] == J(3)
+    assert single.actuators()[0] == J(3)
     single.debug_write(1, b"*\x01\x09NNN#")  # joint 9: refused, everything off
     single.run(0.2)
     assert single.debug_read(1).startswith(b"\n\r\n\rACKN\n\r")
-    assert actuators(single)[0] == J()
+    assert single.actuators()[0] == J()
     single.debug_write(1, b"*\x0b\x02NNN#")  # SxP(2)
     single.run(0.05)
-    assert actuators(single)[1] == M(s2=POS)
+    assert single.actuators()[1] == M(s2=POS)
     single.debug_write(1, b"*\x01\x02NN")  # half a frame
     single.run(0.1)  # it times out (30 ms): error path, everything off
-    assert actuators(single) == (J(), M())
+    assert single.actuators() == (J(), M())
     assert single.replies() == []  # nothing went to the PC
 
 

@@ -8,7 +8,6 @@ import subprocess
 
 from fwsim import BUILD, Bench, scenario_file
 
-from hexbot.hil_sim.module import decode_actuators
 from hexbot.hil_sim.plant import OFF
 from hexbot.protocol import frames
 from hexbot.protocol.codes import ErrorCode
@@ -71,8 +70,7 @@ def test_watchdog_resets_a_main_loop_that_stops_coming_back(single: Bench):
 
 def magnets_on(bench: Bench) -> bool:
     """Any magnet of module 1's control board energised (PORTx, read from the core)."""
-    ports = {p: bench.sim.modules[1].control.port(p)[1] for p in "ABD"}
-    _, magnets = decode_actuators(ports)
+    _, magnets = bench.actuators()
     return any(m != OFF for m in magnets)
 
 

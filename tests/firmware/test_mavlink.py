@@ -8,7 +8,6 @@ from __future__ import annotations
 import pytest
 from fwsim import QUIET_S, Bench, pc_frame
 
-from hexbot.hil_sim.module import decode_actuators
 from hexbot.protocol import frames, parser
 from hexbot.protocol.mavlink_codec import (
     Framing,
@@ -35,10 +34,6 @@ def pair(images) -> Bench:
     return bench
 
 
-def joints(bench: Bench, module: int = 1) -> tuple[bool, ...]:
-    ports = {p: bench.sim.modules[module].control.port(p)[1] for p in "ABD"}
-    return decode_actuators(ports)[0]
-
 
 def mavlink(bench: Bench) -> Bench:
     bench.host.set_framing(Framing.MAVLINK)
@@ -51,7 +46,7 @@ def test_both_framings_on_one_image_each_answered_in_its_own(single: Bench):
     (mav,) = mavlink(single).command("JxOpen", 5)
     assert isinstance(mav, MavAck) and (mav.code, mav.module, mav.role) == (1, 1, "M")
     assert mav.mav.name == "HEXBOT_ACK"
-    assert joints(single) == (False, True, False, False, True, False)
+    assert single.actuators()[0] == (False, True, False, False, True, False)
     single.host.set_framing(Framing.LEGACY)
     (again,) = single.command("JxClose", 2)
     assert type(again) is parser.Ack and again.code == 2
@@ -85,7 +80,7 @@ def test_a_frame_with_a_bad_checksum_is_dropped_counted_never_executed(single: B
     single.send(bytes(frame))
     single.run(3.0)
     assert single.replies() == []
-    assert joints(single) == (False,) * 6
+    assert single.actuators()[0] == (False,) * 6
     assert not [e for e in parser.parse_all(single.debug_read(1))
                 if isinstance(e, parser.ControlMessage)]  # the control board got nothing
     (status,) = mavlink(single).command("Status")
@@ -96,14 +91,14 @@ def test_target_system_addresses_one_module_without_select(pair: Bench):
     mavlink(pair)
     (ack,) = pair.command("JxOpen", 4, target=2, settle=QUIET_S)
     assert (ack.code, ack.module) == (1, 2)
-    assert joints(pair, 2)[3] and not any(joints(pair, 1))
+    assert pair.actuators(2)[0][3] and not any(pair.actuators(1)[0])
 
 
 def test_a_frame_for_another_module_is_ignored(pair: Bench):
     pair.send(MavlinkEncoder().encode(frames.make("JxOpenAll"), target=9))
     pair.run(4.0)
     assert pair.replies() == []
-    assert not any(joints(pair, 1)) and not any(joints(pair, 2))
+    assert not any(pair.actuators(1)[0]) and not any(pair.actuators(2)[0])
 
 
 def test_broadcast_replies_keep_their_ack_slots(pair: Bench):

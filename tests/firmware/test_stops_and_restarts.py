@@ -4,9 +4,8 @@ module that lost its id, never an actuator left on that nobody asked for."""
 
 from __future__ import annotations
 
-from fwsim import Bench, pc_frame
+from fwsim import Bench, pc_frame, replies_to
 
-from hexbot.hil_sim.module import decode_actuators
 from hexbot.hil_sim.plant import OFF
 from hexbot.protocol import frames, parser
 from hexbot.protocol.codes import ErrorCode
@@ -16,27 +15,10 @@ BOOT_TEXT = b"COMM. BOARD READY"
 MCW_3S = pc_frame(21, 1, 100, 100, 100)  # MCW about joint 1, 1 s per phase
 
 
-def actuators(bench: Bench, module: int = 1):
-    control = bench.sim.modules[module].control
-    return decode_actuators({p: control.port(p)[1] for p in "ABD"})
 
 
-def all_off(bench: Bench, module: int = 1) -> bool:
-    joints, magnets = actuators(bench, module)
-    return not any(joints) and all(m == OFF for m in magnets)
 
 
-def replies_to(bench: Bench, mark: int, count: int, timeout: float) -> list:
-    """The first ``count`` replies heard after ``mark``, with their times."""
-    got: list = []
-
-    def enough(obs) -> bool:
-        if isinstance(obs.event, (parser.Ack, parser.ErrorReply, parser.StatusReport)):
-            got.append(obs)
-        return len(got) >= count
-
-    assert bench.session.wait_for(enough, mark, timeout) is not None, got
-    return got
 
 
 def test_a_zero_tick_led_pattern_does_not_starve_the_watchdog(single: Bench):
@@ -52,14 +34,14 @@ def test_a_zero_tick_led_pattern_does_not_starve_the_watchdog(single: Bench):
 def test_a_rotation_stopped_by_a_new_control_command_is_reported_stopped(single: Bench):
     mark = single.send(MCW_3S)
     single.run(1.5)  # phase 2 of 3: joints open, magnets on
-    assert not all_off(single)
+    assert not single.all_off()
     single.send(frames.encode_pc(frames.make("JxOpen", 2)))
     first, second = replies_to(single, mark, 2, 8.0)
     assert isinstance(first.event, parser.ErrorReply), first.event
     assert first.event.code == 21 and first.event.reason == ErrorCode.STOPPED
     assert isinstance(second.event, parser.Ack) and second.event.code == 1
     # the rotation is over, only what the new command asked for is on
-    joints, magnets = actuators(single)
+    joints, magnets = single.actuators()
     assert joints == (False, True, False, False, False, False)
     assert all(m == OFF for m in magnets)
 
@@ -73,19 +55,19 @@ def test_a_status_during_a_rotation_waits_for_its_end(single: Bench):
     assert isinstance(ack.event, parser.Ack) and ack.event.code == 21
     assert ack.t - sent >= 3.0  # the ACK says the rotation ran to its end
     assert isinstance(sta.event, parser.StatusReport)
-    assert all_off(single)
+    assert single.all_off()
 
 
 def test_an_unannounced_comm_restart_keeps_the_id_and_drops_the_actuators(single: Bench):
     single.command("SxP", 1)
     single.command("JxOpen", 2)
-    assert not all_off(single)
+    assert not single.all_off()
     comm = single.sim.modules[1].comm
     comm.cluster.reset(comm.index)  # the comm board alone restarts
     single.run(4.0)
     heard = single.drain()
     assert BOOT_TEXT in heard and b"ID=01" in heard, heard
-    assert all_off(single)  # the control board let go of what nobody runs any more
+    assert single.all_off()  # the control board let go of what nobody runs any more
     (sta,) = single.command("Status")
     assert sta.module_id == 1
 
@@ -95,7 +77,7 @@ def test_a_control_restart_is_reported_in_status(single: Bench):
     control = single.sim.modules[1].control
     control.cluster.reset(control.index)
     single.run(2.0)
-    assert all_off(single)
+    assert single.all_off()
     (sta,) = single.command("Status")
     assert sta.module_id == 1 and sta.error == ErrorCode.CONTROL_RESTARTED
     (ack,) = single.command("JxOpen", 3)  # and it listens again (code 1)
@@ -136,11 +118,11 @@ def test_all_off_stops_a_running_rotation_and_every_actuator(images, tmp_path):
     bench.session.request(select(1))
     bench.send(frames.encode_pc(frames.make("MCW", 1, 250, 250, 250)))  # 7.5 s on module 1
     bench.run(1.0)
-    assert not all_off(bench, 1) and not all_off(bench, 2)
+    assert not bench.all_off(1) and not bench.all_off(2)
     started = bench.session.now()
     workflows.all_off(bench.session)  # raises unless every step was acknowledged
     assert bench.session.now() - started < 5.0  # did not wait for the rotation's end
-    assert all_off(bench, 1) and all_off(bench, 2)
+    assert bench.all_off(1) and bench.all_off(2)
 
 
 def test_a_late_reply_to_an_abandoned_command_is_not_the_next_ones_answer(single: Bench):
@@ -174,7 +156,7 @@ def test_after_a_module_restarts_the_session_selects_again_and_forgets_its_role(
     # it forgot the Select: without a new one it would open its joint 3 too
     out = bench.session.request(frames.make("JxOpen", 3))
     assert [o.event.module for o in out.replies] == [2]
-    assert not actuators(bench, 1)[0][2] and actuators(bench, 2)[0][2]
+    assert not bench.actuators(1)[0][2] and bench.actuators(2)[0][2]
     assert any("module(s) 1 restarted" in w for w in bench.host.warnings)
     row = bench.host.model.module(1)  # the model forgot its role and place
     assert row.role == "M" and not row.localized
