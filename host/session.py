@@ -415,7 +415,8 @@ class Session:
             sim = self.host.simulator
             slots = _BootSlots(expected) if sim is not None else None
             t0 = sim.now() - self.now() if sim is not None else 0.0  # since reset, at 0
-            suspects = collision_ids(expected) if slots is None else set()
+            reads = _collision_reads(expected)  # what collided texts read as
+            suspects = reads - {0} if slots is None else set()
             unsure: set[int] = set()  # heard, but a collision may have said it
 
             def ready() -> bool:
@@ -423,11 +424,12 @@ class Session:
                 for obs in self.host.since(checked):
                     checked = obs.seq + 1
                     ident = listening_id(obs.event)
+                    if _without_id(obs.event) and 0 in reads:
+                        # texts of a shared slot can read ID=00 (2 and 10): this
+                        # one says nothing of a comm board without an id
+                        self._collided_boot_texts.add(obs.seq)
                     if slots is not None:
                         slots.learn_version(obs.event)
-                        if _without_id(obs.event) and slots.shared(t0 + obs.t,
-                                                                   _fw_version(obs.event)):
-                            self._collided_boot_texts.add(obs.seq)
                         if obs.port != IR or not slots.own(ident, t0 + obs.t,
                                                            _fw_version(obs.event)):
                             continue
@@ -811,12 +813,6 @@ class _BootSlots:
             return True
         return self._in_slot(timing.boot_rank(ident), ident, t, version)
 
-    def shared(self, t: float, version: str | None) -> bool:
-        """Whether a text that ended at ``t`` came in a slot that several of
-        the modules share (what it reads is their texts ANDed together)."""
-        return any(len(ids) > 1 and self._in_slot(rank, min(ids), t, version)
-                   for rank, ids in self.ranks.items())
-
     def _in_slot(self, rank: int, ident: int, t: float, version: str | None) -> bool:
         version = version or self.version or wire.FW_VERSION
         slot = timing.boot_slot_ticks(version)
@@ -837,7 +833,13 @@ class _BootSlots:
 def collision_ids(ids: Iterable[int]) -> set[int]:
     """The ids that the boot texts of ``ids`` can read as when the texts of
     modules sharing a boot slot (ids 8 apart) go out together: their bytes
-    AND on the IR link, digit by digit (6 and 14 read ``04``; 0 is no id)."""
+    AND on the IR link, digit by digit (6 and 14 read ``04``)."""
+    return _collision_reads(ids) - {0}
+
+
+def _collision_reads(ids: Iterable[int]) -> set[int]:
+    """:func:`collision_ids`, and 0 when some collision reads ``ID=00``
+    (2 and 10), which is no id."""
     ranks: dict[int, list[int]] = {}
     for ident in ids:
         ranks.setdefault(timing.boot_rank(ident), []).append(ident)
@@ -848,8 +850,7 @@ def collision_ids(ids: Iterable[int]) -> set[int]:
             for chosen in itertools.combinations(texts, size):
                 digits = bytes(functools.reduce(lambda a, b: a & b, column)
                                for column in zip(*chosen, strict=True))
-                if int(digits):
-                    found.add(int(digits))
+                found.add(int(digits))
     return found
 
 

@@ -154,3 +154,19 @@ def test_collision_ids_are_the_digit_wise_and_of_ids_that_share_a_slot():
     assert collision_ids(range(1, 11)) == {1}  # 1 & 9 read 01; 2 & 10 read 00: nobody
     # 06 & 14 = 04, 06 & 22 = 02, 14 & 22 = 00 and all three 00: nobody
     assert collision_ids([6, 14, 22]) == {2, 4}
+
+
+def test_on_hardware_a_collided_id_00_text_is_no_module_without_an_id(tmp_path,
+                                                                       open_session):
+    # the same ten modules behind a pty: 2 and 10 read "ID=00" at boot, and
+    # a STA with id 0 later is replies that collided, not an id-less module
+    from hexbot.host.session import OutcomeKind
+    from hexbot.host.simproc import SimProcess
+    from hexbot.protocol import frames
+
+    ids = list(range(1, 11))
+    with SimProcess(str(row(tmp_path, ids)), speed=0) as sim:
+        session = open_session(sim.ports.ir, boot=False)
+        session.wait_booted(ids, timeout=10.0)  # the free-running slots are over by then
+        out = session.exchange(frames.make("Status"))  # legacy: all ten answer at once
+    assert out.kind is OutcomeKind.GARBLED, out
