@@ -413,11 +413,10 @@ class Session:
             missing = set(expected)
             checked = 0
             sim = self.host.simulator
-            slots = _BootSlots(expected) if sim is not None else None
-            t0 = sim.now() - self.now() if sim is not None else 0.0  # since reset, at 0
             reads = _collision_reads(expected)  # what collided texts read as
-            suspects = reads - {0} if slots is None else set()
-            unsure: set[int] = set()  # heard, but a collision may have said it
+            suspects = reads - {0}
+            slots = _BootSlots(expected, suspects) if sim is not None else None
+            t0 = sim.now() - self.now() if sim is not None else 0.0  # since reset, at 0
 
             def ready() -> bool:
                 nonlocal checked
@@ -433,8 +432,7 @@ class Session:
                         if obs.port != IR or not slots.own(ident, t0 + obs.t,
                                                            _fw_version(obs.event)):
                             continue
-                    elif ident in suspects:
-                        unsure.add(ident)
+                    elif ident in suspects:  # ends the wait, but boot() asks it
                         missing.discard(ident)
                         continue
                     if ident is not None and ident not in heard:
@@ -788,12 +786,11 @@ class _BootSlots:
     (seconds from reset): a module's id-bearing texts end in its slot,
     ``timing.boot_rank``, on a clock within ``timing.CLOCK_TOLERANCE``."""
 
-    def __init__(self, ids: Iterable[int]) -> None:
-        ids = list(ids)
+    def __init__(self, ids: Iterable[int], suspects: set[int]) -> None:
         self.ranks: dict[int, set[int]] = {}
         for ident in ids:
             self.ranks.setdefault(timing.boot_rank(ident), set()).add(ident)
-        self.suspects = collision_ids(ids)  # what a collision may read as
+        self.suspects = suspects  # the ids a collision may read as (collision_ids)
         self.version: str | None = None  # the firmware's, from the first text naming it
 
     def learn_version(self, event: object) -> None:
