@@ -3,18 +3,29 @@
 Format (``*.hbcap``, UTF-8 text, one record per line, flushed per line so
 a killed console or a vanished port loses nothing already received)::
 
-    # hexbot-capture 1
+    # hexbot-capture 2
     # start 2026-11-22T00:45:01.123+00:00
     # port ir socket://localhost:7000 300 8N1
     0.000 ir state connected socket://localhost:7000 300 8N1
     1.234 ir tx 2a45004e4e4e4e4e4e4e23
     1.912 ir rx 0a0d0a0d4d30333a2041434b450a0d
+    3.105 ir rx 0a0d0a0d53
+    4.412 ir cut 4.105
 
 Record fields: seconds since ``start`` with three decimals, the port name
 (``ir`` or ``debug``), the kind (``tx`` PC to robot, ``rx`` robot to PC,
-``state`` link state change, ``note`` free text), then lowercase hex bytes
-or text. Each ``rx`` record is one read from the port, so the chunking of
-the original session is kept. Lines starting ``#`` are comments.
+``state`` link state change, ``note`` free text, ``cut`` see below), then
+lowercase hex bytes or text. Each ``rx`` record is one read from the port,
+so the chunking of the original session is kept. Lines starting ``#`` are
+comments.
+
+A ``cut`` record (format 2) says that the live session gave up on the
+half reply its parser held: a quiet second was seen on the line, and what
+was held became garbage stamped at the record's text. A replay of a format
+2 capture cuts there and nowhere else, so it decodes as the live session
+did even where the live reader ran late (its read times then show gaps the
+line never had). Format 1 captures have no such records, and a replay judges
+the quiet second by their read times.
 """
 
 from __future__ import annotations
@@ -30,8 +41,10 @@ from typing import TextIO
 
 from hexbot.errors import ScenarioError
 
-MAGIC = "# hexbot-capture 1"
-KINDS = ("tx", "rx", "state", "note")
+MAGIC = "# hexbot-capture 2"
+#: first line -> format; format 1 (before session 33) has no ``cut`` records
+FORMATS = {"# hexbot-capture 1": 1, MAGIC: 2}
+KINDS = ("tx", "rx", "state", "note", "cut")
 
 
 @dataclass(frozen=True)
@@ -40,8 +53,9 @@ class Record:
     port: str
     kind: str  # one of KINDS
     data: bytes = b""  # tx / rx
-    text: str = ""  # state / note
+    text: str = ""  # state / note / cut (the time stamp of what was cut)
     line: int = 0  # line number in the file it came from
+    format: int = 1  # of the capture it came from (2: the live cuts are recorded)
 
 
 class CaptureWriter:
@@ -118,7 +132,8 @@ def read_capture(path: Path) -> Iterator[Record]:
             if number != len(raw_lines) or number == 1:
                 raise ScenarioError(f"{path}: not a hexbot capture (not UTF-8 text)") from exc
             lines.append("")  # the half last line, skipped as any other
-    if not lines or lines[0].strip() != MAGIC:
+    version = FORMATS.get(lines[0].strip()) if lines else None
+    if version is None:
         raise ScenarioError(f"{path}:1: not a hexbot capture (first line must be {MAGIC!r})")
     last = len(lines) - 1  # text after the final newline: possibly half-written
     for number, raw in enumerate(lines, start=1):
@@ -126,14 +141,14 @@ def read_capture(path: Path) -> Iterator[Record]:
         if not line or line.startswith("#"):
             continue
         try:
-            yield _parse(line, f"{path}:{number}", number)
+            yield _parse(line, f"{path}:{number}", number, version)
         except ScenarioError:
             if number - 1 == last:
                 return
             raise
 
 
-def _parse(line: str, where: str, number: int) -> Record:
+def _parse(line: str, where: str, number: int, version: int) -> Record:
     parts = line.split(" ", 3)
     if len(parts) < 3:
         raise ScenarioError(f"{where}: expected 'TIME PORT KIND DATA', got {line!r}")
@@ -145,11 +160,22 @@ def _parse(line: str, where: str, number: int) -> Record:
         raise ScenarioError(f"{where}: bad time stamp {t_text!r}") from exc
     if not math.isfinite(t) or t < 0:  # a paced replay would wait for ever on nan
         raise ScenarioError(f"{where}: bad time stamp {t_text!r}")
-    if kind not in KINDS:
-        raise ScenarioError(f"{where}: unknown record kind {kind!r} (expected {KINDS})")
+    kinds = KINDS if version >= 2 else KINDS[:4]
+    if kind not in kinds:
+        raise ScenarioError(f"{where}: unknown record kind {kind!r} (expected {kinds})")
     if kind in ("tx", "rx"):
         try:
-            return Record(t, port, kind, data=bytes.fromhex(body), line=number)
+            return Record(t, port, kind, data=bytes.fromhex(body), line=number, format=version)
         except ValueError as exc:
             raise ScenarioError(f"{where}: bad hex data {body[:40]!r}") from exc
-    return Record(t, port, kind, text=body, line=number)
+    if kind == "cut" and not _stamp_ok(body):
+        raise ScenarioError(f"{where}: a cut needs the time stamp of what it cut, got {body!r}")
+    return Record(t, port, kind, text=body, line=number, format=version)
+
+
+def _stamp_ok(text: str) -> bool:
+    try:
+        t = float(text)
+    except ValueError:
+        return False
+    return math.isfinite(t) and t >= 0

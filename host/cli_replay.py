@@ -11,7 +11,7 @@ from pathlib import Path
 from hexbot.cli_args import positive, seconds_or_zero
 from hexbot.host.capture import read_capture
 from hexbot.host.describe import describe_event, describe_tx, event_json
-from hexbot.host.host import DEBUG, IR, PortDecoder
+from hexbot.host.host import DEBUG, IR, ReplayDecoders
 from hexbot.host.replay_control import ReplayControl
 from hexbot.host.session_log import CAPTURE_NAME
 
@@ -47,7 +47,7 @@ def run(args: argparse.Namespace) -> int:
         print(f"hexbot replay: error: --to {args.stop:g} is before --from {args.start:g}",
               file=sys.stderr)
         return 2  # a usage error, as argparse's own
-    decoders: dict[str, PortDecoder] = {}  # both framings, held text flushed as live
+    decoders = ReplayDecoders()  # both framings, held text cut as live
     control = ReplayControl(args.speed, args.start) if args.speed else None
     never = threading.Event()
 
@@ -66,8 +66,8 @@ def run(args: argparse.Namespace) -> int:
             return 0  # a reply cut by the window is not garbage: no flush
         if control is not None:
             control.wait_until(rec.t, never)
-        if rec.kind == "rx":
-            for t, ev in decoders.setdefault(rec.port, PortDecoder()).feed(rec.t, rec.data):
+        if rec.kind in ("rx", "cut"):
+            for t, ev in decoders.play(rec):
                 emit(t, rec.port, "<", describe_event(ev), event_json(ev))
         elif rec.kind == "tx" and not args.no_tx:
             emit(rec.t, rec.port, ">", describe_tx(rec.data),
@@ -75,7 +75,6 @@ def run(args: argparse.Namespace) -> int:
         elif rec.kind in ("state", "note"):
             emit(rec.t, rec.port, "!" if rec.kind == "state" else "#", rec.text,
                  {"kind": rec.kind, "text": rec.text})
-    for port, decoder in decoders.items():
-        for t, ev in decoder.flush():
-            emit(t, port, "<", describe_event(ev), event_json(ev))
+    for port, t, ev in decoders.flush():
+        emit(t, port, "<", describe_event(ev), event_json(ev))
     return 0

@@ -74,13 +74,14 @@ class PortDecoder:
     the first, though the line had no gap; so live, the quiet is the time
     between two reads that found nothing (:meth:`quiet` is called for
     each), never the time between two reads that found bytes. (A replay
-    has only the capture's read times: where the live reader ran late by
-    more than ``QUIET_FLUSH_S``, the replay shows garbage that the live
-    session did not.)"""
+    has only the capture's read times, so the live session records where
+    it cut (:meth:`Host.cut`) and a replay of such a capture cuts there and
+    nowhere else: ``cuts_recorded``, :class:`ReplayDecoders`.)"""
 
-    def __init__(self, *, live: bool = False) -> None:
+    def __init__(self, *, live: bool = False, cuts_recorded: bool = False) -> None:
         self.parser = FramedParser()  # legacy replies and MAVLink frames alike
         self.live = live
+        self.cuts_recorded = cuts_recorded
         self._last_rx = 0.0
         self._idle_since: float | None = None  # live: the first empty read since bytes
         self._unflushed = False
@@ -88,7 +89,7 @@ class PortDecoder:
     def feed(self, t: float, data: bytes) -> list[tuple[float, Event]]:
         """Bytes received at ``t``: what was held back and went quiet before
         them (a replay), then the events they complete."""
-        held = [] if self.live else self.quiet(t)
+        held = [] if self.live or self.cuts_recorded else self.quiet(t)
         self._last_rx = t
         self._idle_since = None
         self._unflushed = True
@@ -118,8 +119,38 @@ class PortDecoder:
 
     def flush(self) -> list[tuple[float, Event]]:
         """Everything held, now (the end of a replay), stamped with the last bytes' time."""
+        return self.cut(self._last_rx)
+
+    def cut(self, stamp: float) -> list[tuple[float, Event]]:
+        """Everything held, stamped ``stamp`` (a replay, where the live session cut)."""
         self._unflushed = False
-        return [(self._last_rx, ev) for ev in self.parser.flush()]
+        return [(stamp, ev) for ev in self.parser.flush()]
+
+
+class ReplayDecoders:
+    """A replay's decoders, one per port, fed with capture records. A format
+    2 capture records where the live session cut a half reply (``cut``), so
+    the replay cuts there and only there; a format 1 capture has only its
+    read times, which judge the quiet second."""
+
+    def __init__(self) -> None:
+        self.ports: dict[str, PortDecoder] = {}
+
+    def play(self, rec: Record) -> list[tuple[float, Event]]:
+        """The events ``rec`` completes (none for records other than rx and cut)."""
+        if rec.kind not in ("rx", "cut"):
+            return []
+        decoder = self.ports.get(rec.port)
+        if decoder is None:
+            decoder = self.ports[rec.port] = PortDecoder(cuts_recorded=rec.format >= 2)
+        if rec.kind == "rx":
+            return decoder.feed(rec.t, rec.data)
+        return decoder.cut(float(rec.text))
+
+    def flush(self) -> list[tuple[str, float, Event]]:
+        """What each port still holds at the end of the capture (as garbage)."""
+        return [(port, t, ev) for port, decoder in self.ports.items()
+                for t, ev in decoder.flush()]
 
 
 class Channel:
@@ -143,7 +174,10 @@ class Channel:
         return self.link.unread() > 0 or self.decoder.holding
 
     def _on_idle(self) -> None:
-        for t, ev in self.decoder.quiet(self.host.elapsed()):
+        held = self.decoder.quiet(self.host.elapsed())
+        if held:  # the capture says so: its read times alone cannot (late reader)
+            self.host.cut(self.name, held[0][0])
+        for t, ev in held:
             self.host.observe(t, self.name, ev)
 
     def _on_state(self, state: LinkState, detail: str) -> None:
@@ -276,6 +310,12 @@ class Host:
         self._notify(Traffic(port, TrafficDirection.RX, t, data))
         return t
 
+    def cut(self, port: str, stamp: float) -> None:
+        """The decoder of ``port`` gave up on a half reply (a quiet second),
+        stamping it ``stamp``: recorded, so that a replay cuts it there too."""
+        if self.log:
+            self.log.cut(port, stamp)
+
     def sent(self, port: str, data: bytes) -> float:
         t = self.log.sent(port, data) if self.log else self.elapsed()
         self._notify(Traffic(port, TrafficDirection.TX, t, data))
@@ -350,7 +390,7 @@ class Host:
         listeners. Nothing is written to a port. ``control`` paces it
         (speed, pause, seek); without, as fast as it goes. Returns records
         played."""
-        decoders: dict[str, PortDecoder] = {}
+        decoders = ReplayDecoders()
         n = 0
         stop = cancel or threading.Event()
         for rec in records:
@@ -361,7 +401,10 @@ class Host:
             n += 1
             if rec.kind == "rx":
                 self._notify(Traffic(rec.port, TrafficDirection.RX, rec.t, rec.data))
-                for t, ev in decoders.setdefault(rec.port, PortDecoder()).feed(rec.t, rec.data):
+                for t, ev in decoders.play(rec):
+                    self.observe(t, rec.port, ev)
+            elif rec.kind == "cut":
+                for t, ev in decoders.play(rec):
                     self.observe(t, rec.port, ev)
             elif rec.kind == "tx":
                 self._notify(Traffic(rec.port, TrafficDirection.TX, rec.t, rec.data))
@@ -372,9 +415,8 @@ class Host:
                 except ValueError:
                     continue
                 self._notify(PortChanged(rec.port, state, detail, rec.t))
-        for port, decoder in decoders.items():
-            for t, ev in decoder.flush():
-                self.observe(t, port, ev)
+        for port, t, ev in decoders.flush():
+            self.observe(t, port, ev)
         return n
 
     # --- sending ------------------------------------------------------------

@@ -81,6 +81,10 @@ class SessionLog:
     def received(self, port: str, data: bytes) -> float:
         return self.capture.record(port, "rx", data)
 
+    def cut(self, port: str, stamp: float) -> None:
+        """Where the live decoder cut a half reply (:meth:`Host.cut`)."""
+        self.capture.record(port, "cut", text=f"{stamp:.3f}")
+
     def event(self, t: float, port: str, ev: Event) -> None:
         self._line(t, port, "<", describe_event(ev))
         if getattr(ev, "mav", None) is not None:
