@@ -401,12 +401,9 @@ class Host:
             n += 1
             if rec.kind == "rx":
                 self._notify(Traffic(rec.port, TrafficDirection.RX, rec.t, rec.data))
-                for t, ev in decoders.play(rec):
-                    self.observe(t, rec.port, ev)
-            elif rec.kind == "cut":
-                for t, ev in decoders.play(rec):
-                    self.observe(t, rec.port, ev)
-            elif rec.kind == "tx":
+            for t, ev in decoders.play(rec):  # rx and cut records
+                self.observe(t, rec.port, ev)
+            if rec.kind == "tx":
                 self._notify(Traffic(rec.port, TrafficDirection.TX, rec.t, rec.data))
             elif rec.kind == "state":
                 word, _, detail = rec.text.partition(" ")

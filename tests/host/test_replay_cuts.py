@@ -130,6 +130,13 @@ def replayed(capture, capsys) -> list[str]:
     return [k for k in kinds if k not in ("tx", "state", "note")]
 
 
+def console_replayed(capture) -> list[str]:
+    """What the console's replay (``Host.replay``) decodes."""
+    host = Host()
+    host.replay(read_capture(capture))
+    return live_kinds(host)
+
+
 def live_kinds(host) -> list[str]:
     return [type(o.event).__name__.lower() for o in host.since(0)]
 
@@ -158,6 +165,7 @@ def test_a_reply_a_late_reader_read_whole_replays_whole(tmp_path, module_pty, mo
     rx_times = [r.t for r in read_capture(log.capture_path) if r.kind == "rx"]
     assert len(rx_times) == 2 and rx_times[1] - rx_times[0] > 2 * QUIET_FLUSH_S
     assert replayed(log.capture_path, capsys) == ["ack"]
+    assert console_replayed(log.capture_path) == ["ack"]
 
 
 @pytest.mark.wallclock
@@ -176,3 +184,4 @@ def test_a_reply_cut_live_by_a_quiet_second_replays_cut(tmp_path, module_pty, mo
     assert live[0] == "garbage"
     assert [r.kind for r in read_capture(log.capture_path)].count("cut") == 1
     assert replayed(log.capture_path, capsys) == live
+    assert console_replayed(log.capture_path) == live
