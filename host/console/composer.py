@@ -5,7 +5,7 @@ the exact frame previewed in hex, and a history to re-send from."""
 from __future__ import annotations
 
 from rich.markup import escape
-from textual import on
+from textual import events, on
 from textual.app import ComposeResult
 from textual.containers import Horizontal, Vertical, VerticalScroll
 from textual.message import Message
@@ -38,6 +38,42 @@ def function_rows(query: str) -> list[FunctionCode]:
     return out
 
 
+#: Seconds the filter holds keys typed after Enter for the form Enter opens,
+#: at most (it hands them over as soon as the form has the focus).
+TYPEAHEAD_HOLD_S = 1.0
+
+
+class FunctionFilter(Input):
+    """The function table's filter. Enter opens the highlighted function's
+    form, whose first field takes the focus only after a refresh; keys
+    typed in between (a fast typist, a paste) belong to that form, not to
+    the filter, so they wait here until the composer plays them again."""
+
+    def __init__(self, **kwargs) -> None:
+        super().__init__(**kwargs)
+        self.held: list[events.Key] | None = None  # None: not holding
+
+    async def _on_key(self, event: events.Key) -> None:
+        if self.held is not None:
+            event.stop()
+            event.prevent_default()
+            self.held.append(event)
+            return
+        if event.key == "enter":  # the submit that follows says where they go
+            held = self.held = []
+            self.set_timer(TYPEAHEAD_HOLD_S, lambda: self.play_held(held))
+        await super()._on_key(event)
+
+    def play_held(self, only: list[events.Key] | None = None) -> None:
+        """Send the held keys again, to whatever has the focus now (with
+        ``only``: if the filter still holds that list, a time-out's)."""
+        if only is not None and self.held is not only:
+            return
+        held, self.held = self.held or [], None
+        for key in held:
+            self.app.post_message(events.Key(key.key, key.character))
+
+
 class Composer(Vertical):
     class Send(Message):
         """The user asked to send this command (or these raw bytes)."""
@@ -54,8 +90,8 @@ class Composer(Vertical):
 
     def compose(self) -> ComposeResult:
         with Vertical(id="fn-pick"):
-            yield Input(placeholder="filter: name, code or words (e.g. 'magnet')",
-                        id="fn-filter")
+            yield FunctionFilter(placeholder="filter: name, code or words (e.g. 'magnet')",
+                                 id="fn-filter")
             yield DataTable(id="fn-table", cursor_type="row", zebra_stripes=True)
         with VerticalScroll(id="fn-form"):
             yield Label("pick a function", id="fn-title")
@@ -91,9 +127,12 @@ class Composer(Vertical):
     def _filter_enter(self, event: Input.Submitted) -> None:
         event.stop()
         table = self.query_one("#fn-table", DataTable)
+        typed = self.query_one("#fn-filter", FunctionFilter)
         if table.row_count:
             key = table.coordinate_to_cell_key((table.cursor_row, 0)).row_key.value
-            self.choose(int(key), focus=True)
+            self.choose(int(key), focus=True, then=typed.play_held)
+        else:
+            typed.play_held()  # no form: they were the filter's after all
 
     @on(DataTable.RowHighlighted, "#fn-table")
     @on(DataTable.RowSelected, "#fn-table")
@@ -102,12 +141,13 @@ class Composer(Vertical):
         if event.row_key is not None and event.row_key.value is not None:
             self.choose(int(event.row_key.value), focus=isinstance(event, DataTable.RowSelected))
 
-    def choose(self, code: int, *, focus: bool = False) -> None:
-        """Show the form of one function (also used by the command palette)."""
+    def choose(self, code: int, *, focus: bool = False, then=None) -> None:
+        """Show the form of one function (also used by the command palette);
+        with ``focus``, focus its first field and then call ``then``."""
         fn = CODES[code]
         if self.function is fn:
             if focus:
-                self._focus_first()
+                self._focus_first(then)
             return
         self.function = fn
         self.query_one("#fn-title", Label).update(
@@ -126,11 +166,13 @@ class Composer(Vertical):
         box.mount_all(rows)
         self._validate()
         if focus:
-            self.call_after_refresh(self._focus_first)
+            self.call_after_refresh(self._focus_first, then)
 
-    def _focus_first(self) -> None:
+    def _focus_first(self, then=None) -> None:
         inputs = self.query(".arg-input")
         (inputs.first() if inputs else self.query_one("#fn-send")).focus()
+        if then is not None:  # after the app has moved the focus (focus() queues that)
+            self.app.call_later(then)
 
     def arg_values(self) -> list[str]:
         return [inp.value.strip() for inp in self.query(".arg-input").results(Input)]

@@ -266,8 +266,8 @@ async def test_console_on_simulator_flower7(sim_args):
         await pilot.press("2")
         await pilot.click("#fn-filter")
         await pilot.press(*"69", "enter")
-        # the form's first field takes the focus after a refresh: under load
-        # a key pressed before it would land in the filter
+        # the form's first field takes the focus after a refresh (keys typed
+        # before wait in the filter: test_composer_typeahead.py)
         assert await until(pilot, lambda: getattr(app.focused, "id", None) == "arg-0"), \
             app.focused
         await pilot.press("0")
