@@ -17,6 +17,18 @@ from hexbot.host.link import PortSettings
 pytestmark = pytest.mark.wallclock  # a console against the pty double, as test_console.py
 
 
+def console(responder) -> HexBotConsole:
+    """A console on the pty double (it acknowledges what it gets)."""
+    host = Host()
+    host.add_port(IR, PortSettings(responder.path), retry_s=0.1)
+    return HexBotConsole(host)
+
+
+async def in_the_filter(pilot) -> None:
+    await pilot.press("2")  # the composer's tab
+    await pilot.click("#fn-filter")
+
+
 def typed_at_once(app: HexBotConsole, *keys: tuple[str, str | None]) -> None:
     """Keys as a fast typist or a paste gives them: all queued before the
     console handles the first (the pilot's ``press`` waits after each)."""
@@ -46,12 +58,9 @@ def form(app: HexBotConsole) -> tuple:
 
 @sync
 async def test_keys_typed_right_after_enter_go_to_the_first_argument(responder):
-    host = Host()
-    host.add_port(IR, PortSettings(responder.path), retry_s=0.1)
-    app = HexBotConsole(host)
+    app = console(responder)
     async with app.run_test(size=(100, 30)) as pilot:
-        await pilot.press("2")  # composer tab
-        await pilot.click("#fn-filter")
+        await in_the_filter(pilot)
         await pilot.press(*"69")
         typed_at_once(app, ("enter", "\r"), ("3", "3"), ("enter", "\r"))
         assert await settled(pilot, lambda: app.query_one(Composer).history), \
@@ -65,12 +74,9 @@ async def test_keys_typed_right_after_enter_go_to_the_first_argument(responder):
 async def test_keys_typed_right_after_enter_on_a_function_without_arguments_are_not_lost(
         responder):
     # Ref has no argument: Enter focuses Send, and a second Enter sends it
-    host = Host()
-    host.add_port(IR, PortSettings(responder.path), retry_s=0.1)
-    app = HexBotConsole(host)
+    app = console(responder)
     async with app.run_test(size=(100, 30)) as pilot:
-        await pilot.press("2")
-        await pilot.click("#fn-filter")
+        await in_the_filter(pilot)
         await pilot.press(*"ref")
         typed_at_once(app, ("enter", "\r"), ("enter", "\r"))
         assert await settled(pilot, lambda: app.query_one(Composer).history), \
@@ -81,12 +87,9 @@ async def test_keys_typed_right_after_enter_on_a_function_without_arguments_are_
 
 @sync
 async def test_keys_typed_after_an_enter_that_opens_nothing_stay_in_the_filter(responder):
-    host = Host()
-    host.add_port(IR, PortSettings(responder.path), retry_s=0.1)
-    app = HexBotConsole(host)
+    app = console(responder)
     async with app.run_test(size=(100, 30)) as pilot:
-        await pilot.press("2")
-        await pilot.click("#fn-filter")
+        await in_the_filter(pilot)
         await pilot.press(*"zzz")  # matches no function
         typed_at_once(app, ("enter", "\r"), ("q", "q"))
         assert await settled(pilot, lambda: app.query_one("#fn-filter").value == "zzzq"), \
