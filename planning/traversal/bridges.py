@@ -599,5 +599,23 @@ def _find_bridge_cells(surface: Surface, model: str, bridges: bool, three: bool)
             break
         unsafe += late
         candidates = [g for g in candidates if g not in late]
+    for group in groups:
+        _check_pocket_ahead_of_chain(first, group, surface.n)
     _neighbour_pass_cells(s, first, groups, model)
     return BridgeMap(surface, model, first, second, pairs, bis, groups, dropped + unsafe, fills)
+
+
+def _check_pocket_ahead_of_chain(layer: Layer, group: Group, n: int) -> None:
+    """A pocket must begin past the chain. One whose first cell is a module's
+    (the front module stands at its edge) is crossed by the modules behind
+    before any of them enters its Bridge cell: they roll over the front
+    module, not into the pocket. The front module then enters the Bridge cell
+    last of all and waits for ``n - 1`` passes that already happened: a
+    deadlock (session 33's audit). The paper starts the chain before the first
+    pocket; such a map is refused."""
+    first = group.span[0]
+    if first < n:
+        raise ScenarioError(
+            f"the {group.kind} pocket at {list(group.bridge[0])} begins at the module in "
+            f"{list(layer.cells[first])}: the modules behind it would cross the pocket "
+            "before its bridge forms; start the chain at least one cell before the pocket")
