@@ -583,14 +583,16 @@ class HexBotConsole(App[None]):
     def _show_wait(self) -> None:
         """Tick: a long wait (a localization, ~50 s) moves the bar by replies
         and shows the time it has been waiting and its time-out."""
-        if not self.busy or self.session is None:
-            return
+        if not self.busy or self.session is None or not self._shown():
+            return  # the timer ticks on while the app tears its widgets down
         w = self.session.waiting
         done, total = (w.replied, w.need) if w is not None else self.step_progress
         self.main_query("#progress", ProgressBar).update(total=total, progress=done)
         self._update_status()
 
     def _progress(self, n: int, label: str) -> None:
+        if not self._shown():  # a worker's step that ends while the app exits
+            return
         self.step_progress = (n, self.step_progress[1])
         self.main_query("#progress", ProgressBar).update(total=self.step_progress[1],
                                                          progress=n)
@@ -600,6 +602,8 @@ class HexBotConsole(App[None]):
     def _finished(self, result: str, ok: bool, total: int) -> None:
         then, self.after_operation = self.after_operation, None
         self.busy = ""
+        if not self._shown():  # the app exits: nothing left to show it in
+            return
         self.last_result = escape(result) if ok else f"[red]{escape(result)}[/]"
         bar = self.main_query("#progress", ProgressBar)
         bar.update(progress=total)

@@ -807,3 +807,20 @@ async def test_the_console_refuses_more_that_would_mislead(pair_args):
         assert not app.last_result.startswith("[red]"), app.last_result
         drawn = str(app.query_one("#lattice-view").render())
         assert drawn.count("02") == 1 and drawn.count("01") == 1, drawn
+
+
+@sync
+async def test_a_wait_that_ticks_while_the_console_exits_is_no_crash(responder):
+    """CI, session 33: the wait's timer ticked while the app tore its main
+    screen down at exit (busy, a session open) and its query for the
+    progress bar raised NoMatches: the exit ended in a traceback. A worker's
+    last step or its end, arriving then, is the same."""
+    app = _app(responder)
+    async with app.run_test(size=(100, 30)) as pilot:
+        assert await until(pilot, lambda: app.session is not None)
+        app.busy = "Localize"
+        await app.screen_stack[0].remove_children()  # what the exit does first
+        app._show_wait()
+        app._progress(1, "Localize: step")
+        app._finished("Localize: cancelled", False, 3)
+        assert app.busy == ""
