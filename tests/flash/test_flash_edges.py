@@ -179,14 +179,6 @@ def test_fuses_that_differ_from_table_3_6_are_noted_when_not_written(isp_server,
     assert "differ from Table 3-6" not in result.out
 
 
-@pytest.mark.parametrize("value", ["0x100", "256", "-1"])
-def test_a_fuse_value_must_fit_in_a_byte(hexbot_flash, capsys, value):
-    with pytest.raises(SystemExit) as exit_:
-        hexbot_flash("--image", "x.hex", "--port", "/dev/pts/0", "--lfuse", value, "--dry-run")
-    assert exit_.value.code == 2
-    assert "--lfuse" in capsys.readouterr().err
-
-
 # --- images -----------------------------------------------------------------
 
 def test_the_last_flash_byte_is_accepted_and_the_next_is_refused(tmp_path):

@@ -87,12 +87,16 @@ def test_a_port_lost_mid_write_is_stopped_and_exits_4(images, hexbot_flash, monk
     assert elapsed < 15
 
 
-@pytest.mark.parametrize("baud", ["0", "-5", "fast"])
-def test_a_baud_rate_must_be_a_positive_whole_number(hexbot_flash, baud, capsys):
+@pytest.mark.parametrize(("option", "value"), [
+    ("--baud", "0"), ("--baud", "-5"), ("--baud", "fast"),
+    # a fuse value must fit in a byte (session 33's audit)
+    ("--lfuse", "0x100"), ("--lfuse", "256"), ("--lfuse", "-1"),
+])
+def test_a_bad_number_is_a_usage_error(hexbot_flash, option, value, capsys):
     with pytest.raises(SystemExit) as exit_:
-        hexbot_flash("--image", "x.hex", "--port", "/dev/pts/0", "--baud", baud, "--dry-run")
+        hexbot_flash("--image", "x.hex", "--port", "/dev/pts/0", option, value, "--dry-run")
     assert exit_.value.code == 2
-    assert "--baud" in capsys.readouterr().err
+    assert option in capsys.readouterr().err
 
 
 @pytest.mark.parametrize(("option", "value"), [("--image", "x.hex"), ("--programmer", "avrisp2"),

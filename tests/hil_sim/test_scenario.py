@@ -73,6 +73,17 @@ def test_full_file(tmp_path):
         ("id = 2\n", "id = 2\nclock_ppm = 60000\n", 19, "beyond +-50000 ppm"),
         ("seed = ", "clock_spread_ppm = -5\nseed = ", 2, "must not be negative"),
         ("seed = ", "pc_radio = [1]\nseed = ", 2, "pc_radio must be a cell [x, y]"),
+        # session 33's audit: values at the edges, each refused, not run
+        ("id = 2\n", "id = 0\n", 18, "module id 0 outside 1..255"),  # 0 addresses all
+        ("id = 2\n", "id = 2\nclock_ppm = -60000\n", 19, "beyond +-50000 ppm"),
+        ("byte_loss = 0.1", "byte_loss = -0.1", 6, "must be a probability 0..1"),
+        ("bit_error_rate = 0.5", "bit_error_rate = -1", 11, "must be a probability 0..1"),
+        # a misspelt fault would silently inject nothing
+        ("byte_loss = 0.1", "byte_los = 0.1", 6, "unknown key 'byte_los' in [faults]"),
+        ("bit_error_rate = 0.5", "bit_eror_rate = 0.5", 11,
+         "unknown key 'bit_eror_rate' in [faults.link]"),
+        ("seed = ", "radio_range = -1\nseed = ", 2, "radio_range must be a whole number"),
+        ("seed = ", "threads = 0\nseed = ", 2, "threads must be a whole number 1..256"),
     ],
 )
 def test_semantic_errors_name_file_line_problem(tmp_path, old, new, line, problem):
@@ -81,6 +92,12 @@ def test_semantic_errors_name_file_line_problem(tmp_path, old, new, line, proble
         load_scenario(path)
     assert f"{path}:{line}:" in str(err.value)
     assert problem in str(err.value)
+
+
+def test_a_position_on_the_coordinate_limit_is_accepted(tmp_path):
+    # MSG1 carries two decimal digits per coordinate: +-99 still fits
+    scenario = load_scenario(write(tmp_path, GOOD.replace("[1, 0]", "[99, -99]")))
+    assert scenario.modules[1].position == (99, -99)
 
 
 def test_toml_syntax_error_names_the_line(tmp_path):

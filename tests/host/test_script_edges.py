@@ -86,29 +86,26 @@ def test_expect_err_with_a_reason_fails_on_an_err_of_another_reason(responder, l
     assert "e.hbs:3: expect err Ref BUSY within 2: no ERR 65 within 2 s" in err
 
 
-def test_expect_ack_from_two_modules_fails_when_one_is_silent(responder, log_dir,
-                                                              tmp_path, cli_status):
+@pytest.mark.parametrize(("text", "said"), [
     # only module 1 is selected: the ACK of module 3 never comes
-    text = "select 1\nRef\nexpect ack Ref from 1 3 within 0.3\n"
-    code, err = cli_status("run", _write(tmp_path, text), "--port", responder.path)
-    assert code == 1, err
-    assert "e.hbs:3: expect ack Ref from 1 3 within 0.3: no ACK 65 from 3 within 0.3 s" in err
-
-
-def test_expect_status_fails_on_another_yref(responder, log_dir, tmp_path, cli_status):
+    ("select 1\nRef\nexpect ack Ref from 1 3 within 0.3\n",
+     "e.hbs:3: expect ack Ref from 1 3 within 0.3: no ACK 65 from 3 within 0.3 s"),
     # the double's module 3 has Yref 2
-    text = "select 3\nstatus\nexpect status 3 yref 4\n"
-    code, err = cli_status("run", _write(tmp_path, text), "--port", responder.path)
-    assert code == 1, err
-    assert "e.hbs:3: expect status 3 yref 4: module is yref 2" in err
-
-
-def test_expect_placements_fails_one_short(responder, log_dir, tmp_path, cli_status):
+    ("select 3\nstatus\nexpect status 3 yref 4\n",
+     "e.hbs:3: expect status 3 yref 4: module is yref 2"),
     # one module localized: 2 placements is one too many
-    text = "select 2\nLocalize\nexpect placements 2 within 0.3\n"
+    ("select 2\nLocalize\nexpect placements 2 within 0.3\n",
+     "e.hbs:3: expect placements 2 within 0.3: 1 of 2 modules reported a position"),
+    # "everything received since the last sent command": the ACK of the Ref
+    # sent before the post is not an answer to anything after it
+    ("select 2\nRef\npost Status\nexpect ack Ref within 0.3\n",
+     "e.hbs:4: expect ack Ref within 0.3: no ACK 65 within 0.3 s"),
+])
+def test_an_expectation_the_replies_do_not_meet_fails(responder, log_dir, tmp_path,
+                                                      cli_status, text, said):
     code, err = cli_status("run", _write(tmp_path, text), "--port", responder.path)
     assert code == 1, err
-    assert "e.hbs:3: expect placements 2 within 0.3: 1 of 2 modules reported a position" in err
+    assert said in err
 
 
 def test_expect_quiet_fails_on_garbage(responder, log_dir, tmp_path, cli_status):
@@ -119,16 +116,6 @@ def test_expect_quiet_fails_on_garbage(responder, log_dir, tmp_path, cli_status)
     code, err = cli_status("run", _write(tmp_path, text), "--port", responder.path)
     assert code == 1, err
     assert "e.hbs:2: expect quiet 3: " in err
-
-
-def test_an_expectation_after_post_sees_only_what_came_after_it(responder, log_dir,
-                                                                tmp_path, cli_status):
-    # "everything received since the last sent command": the ACK of the Ref
-    # sent before the post is not an answer to anything after it
-    text = "select 2\nRef\npost Status\nexpect ack Ref within 0.3\n"
-    code, err = cli_status("run", _write(tmp_path, text), "--port", responder.path)
-    assert code == 1, err
-    assert "e.hbs:4: expect ack Ref within 0.3: no ACK 65 within 0.3 s" in err
 
 
 # --- times: on the simulator, in virtual time ------------------------------
