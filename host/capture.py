@@ -154,11 +154,8 @@ def _parse(line: str, where: str, number: int, version: int) -> Record:
         raise ScenarioError(f"{where}: expected 'TIME PORT KIND DATA', got {line!r}")
     t_text, port, kind = parts[:3]
     body = parts[3] if len(parts) > 3 else ""
-    try:
-        t = float(t_text)
-    except ValueError as exc:
-        raise ScenarioError(f"{where}: bad time stamp {t_text!r}") from exc
-    if not math.isfinite(t) or t < 0:  # a paced replay would wait for ever on nan
+    t = _stamp(t_text)
+    if t is None:
         raise ScenarioError(f"{where}: bad time stamp {t_text!r}")
     kinds = KINDS if version >= 2 else KINDS[:4]
     if kind not in kinds:
@@ -168,14 +165,16 @@ def _parse(line: str, where: str, number: int, version: int) -> Record:
             return Record(t, port, kind, data=bytes.fromhex(body), line=number, format=version)
         except ValueError as exc:
             raise ScenarioError(f"{where}: bad hex data {body[:40]!r}") from exc
-    if kind == "cut" and not _stamp_ok(body):
+    if kind == "cut" and _stamp(body) is None:
         raise ScenarioError(f"{where}: a cut needs the time stamp of what it cut, got {body!r}")
     return Record(t, port, kind, text=body, line=number, format=version)
 
 
-def _stamp_ok(text: str) -> bool:
+def _stamp(text: str) -> float | None:
+    """Seconds since the start, or None: not a finite, non-negative number
+    (a paced replay would wait for ever on nan)."""
     try:
         t = float(text)
     except ValueError:
-        return False
-    return math.isfinite(t) and t >= 0
+        return None
+    return t if math.isfinite(t) and t >= 0 else None

@@ -66,10 +66,9 @@ def run(args: argparse.Namespace) -> int:
             return 0  # a reply cut by the window is not garbage: no flush
         if control is not None:
             control.wait_until(rec.t, never)
-        if rec.kind in ("rx", "cut"):
-            for t, ev in decoders.play(rec):
-                emit(t, rec.port, "<", describe_event(ev), event_json(ev))
-        elif rec.kind == "tx" and not args.no_tx:
+        for t, ev in decoders.play(rec):  # rx and cut records
+            emit(t, rec.port, "<", describe_event(ev), event_json(ev))
+        if rec.kind == "tx" and not args.no_tx:
             emit(rec.t, rec.port, ">", describe_tx(rec.data),
                  {"kind": "tx", "decoded": describe_tx(rec.data), "raw": rec.data.hex()})
         elif rec.kind in ("state", "note"):

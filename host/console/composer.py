@@ -4,6 +4,8 @@ the exact frame previewed in hex, and a history to re-send from."""
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 from rich.markup import escape
 from textual import events, on
 from textual.app import ComposeResult
@@ -141,7 +143,8 @@ class Composer(Vertical):
         if event.row_key is not None and event.row_key.value is not None:
             self.choose(int(event.row_key.value), focus=isinstance(event, DataTable.RowSelected))
 
-    def choose(self, code: int, *, focus: bool = False, then=None) -> None:
+    def choose(self, code: int, *, focus: bool = False,
+               then: Callable[[], None] | None = None) -> None:
         """Show the form of one function (also used by the command palette);
         with ``focus``, focus its first field and then call ``then``."""
         fn = CODES[code]
@@ -168,7 +171,7 @@ class Composer(Vertical):
         if focus:
             self.call_after_refresh(self._focus_first, then)
 
-    def _focus_first(self, then=None) -> None:
+    def _focus_first(self, then: Callable[[], None] | None = None) -> None:
         inputs = self.query(".arg-input")
         (inputs.first() if inputs else self.query_one("#fn-send")).focus()
         if then is not None:  # after the app has moved the focus (focus() queues that)
