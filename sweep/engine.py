@@ -348,7 +348,7 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
         if task is not None:
             submit(task)
 
-    def take(fut: Any, retry: bool = True) -> None:
+    def take(fut: Any, retry: bool = True, report: bool = True) -> None:
         task, _ = in_flight.pop(fut.key)
         if fut.status == "cancelled" and (lost := _scheduler_lost(client)):
             raise lost  # not this task's doing: no retry, no row
@@ -370,7 +370,7 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
             outcome.lost += 1
             outcome.lost_reason = outcome.lost_reason or lost_reason(fut, task)
             result = LOST
-        if on_result:
+        if on_result and report:
             on_result(result)
 
     for _ in range(window):
@@ -385,8 +385,11 @@ def run_sweep(spec: Spec, client: Any, store: ResultStore, *, resume: bool = Fal
                 take(fut)
     except KeyboardInterrupt:
         outcome.interrupted = True
+        # the rows already done are kept, without progress reports: the
+        # report is what a Ctrl-C interrupts, and calling it again could
+        # raise the interrupt a second time, out of the sweep
         for fut in [f for _, f in in_flight.values() if f.status == "finished"]:
-            take(fut, retry=False)
+            take(fut, retry=False, report=False)
         client.cancel([f for _, f in in_flight.values()])
     finally:
         store.flush()

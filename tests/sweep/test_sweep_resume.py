@@ -308,3 +308,24 @@ def test_ctrl_c_after_a_worker_was_restarted_prints_no_traceback(write_spec, tmp
     assert "interrupted: " in err and "add --resume" in err
     assert "Traceback" not in err and "KeyboardInterrupt" not in err, (seen, err)
     assert seen == ["ignored"]  # from its first moment
+
+
+def test_a_progress_report_that_raises_the_interrupt_is_not_called_again(
+        write_spec, embedded_client, tmp_path):
+    # The rows finished when Ctrl-C came are stored without progress reports:
+    # calling the report again raised the interrupt out of run_sweep (seen in
+    # a fresh-clone run of test_a_resume_right_after_an_interrupt_loses_no_task
+    # as a crashed xdist worker, when tasks had finished during the first report).
+    spec = load_spec(write_spec(sweep_text(8)))
+    calls = []
+
+    def slow_then_interrupted(outcome: str) -> None:
+        calls.append(outcome)
+        time.sleep(1.0)  # the other tasks of the window finish meanwhile
+        raise KeyboardInterrupt
+
+    with ResultStore(tmp_path / "out", spec.kind.name, spec.param_names) as store:
+        outcome = run_sweep(spec, embedded_client, store, on_result=slow_then_interrupted,
+                            window=4)
+    assert outcome.interrupted and len(calls) == 1
+    assert outcome.stored > 1  # the rows done during the report are kept
