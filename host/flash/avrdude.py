@@ -76,6 +76,9 @@ def explain(stderr: str, port: str, programmer: str) -> str:
     if port_missing(stderr):
         hint = (f"is the programmer plugged in at {port}, and may you open it "
                 "(group dialout)?")
+    elif "communicating with programmer" in low or "getsync" in low:
+        # before "initialization failed": avrdude 7 says both when nothing answers
+        hint = f"no {programmer} programmer answered on {port}"
     elif "initialization failed" in low or "program enable" in low:
         hint = ("the programmer answered but the ATmega162 did not enter programming mode: "
                 "check the ISP cable, the programming jumper of that board, and that the "

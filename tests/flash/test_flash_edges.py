@@ -127,6 +127,24 @@ def test_avrdude_7_timeouts_get_the_no_programmer_hint():
     text = avrdude_mod.explain(AVRDUDE_7_TIMEOUT, "/dev/ttyUSB0", "stk500v2")
     assert "no stk500v2 programmer answered on /dev/ttyUSB0" in text
 
+
+#: avrdude 7.1 after 453 s on a pty that never answers (its own retries; the
+#: lines repeat): "initialization failed" too, which is not the cause
+AVRDUDE_7_SILENT = ((("avrdude error: timeout\n" * 7
+                      + "avrdude error: timeout communicating with programmer\n\n") * 7)
+                    + "avrdude error: failed to execute command 0x10\n"
+                    "avrdude error: initialization failed, rc=-1\n"
+                    "        - double check the connections and try again\n"
+                    "        - use -B to set lower ISP clock frequency, e.g. -B 125kHz\n"
+                    "        - use -F to override this check\n\n"
+                    + AVRDUDE_7_TIMEOUT)
+
+
+def test_a_programmer_that_never_answered_is_not_blamed_on_the_chip():
+    text = avrdude_mod.explain(AVRDUDE_7_SILENT, "/dev/ttyUSB0", "stk500v2")
+    assert "no stk500v2 programmer answered on /dev/ttyUSB0" in text
+    assert "did not enter programming mode" not in text
+
 # --- signatures -------------------------------------------------------------
 
 @needs_avrdude
