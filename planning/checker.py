@@ -180,6 +180,12 @@ def check_plan(initial: Configuration, goal: frozenset[Cell], steps: list[Step],
 
 def _check_step(where: dict[Cell, int], step: Step, bolted: int | None) -> str:
     starts = {m.src for m in step.moves}
+    if len(starts) < len(step.moves):  # a module given two moves (the replay would fail)
+        seen: set[Cell] = set()
+        for m in step.moves:
+            if m.src in seen:
+                return f"the module at {m.src} is given two moves in one step"
+            seen.add(m.src)
     used: dict[Cell, int] = {}
     for m in step.moves:
         if where.get(m.src) != m.module:

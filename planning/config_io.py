@@ -16,7 +16,9 @@ Two formats:
 
 The format follows the suffix, never the content. Both formats keep their
 cells within ``hexlattice.COORD_LIMIT`` (one check, :func:`_check_cell`).
-Every error names the file, the line and the problem.
+Every error names the file, the line (of a ``[[module]]`` table: its
+header) and the problem; a file with neither ``cells`` nor ``[[module]]``
+has no line to name.
 """
 
 from __future__ import annotations
@@ -93,10 +95,23 @@ def _check_cell(cell: Cell, where: str) -> Cell:
 
 
 def _toml_line(text: str, needle: str) -> int:
-    for lineno, line in enumerate(text.splitlines(), start=1):
+    """The line that sets the key ``needle`` (else the first that names it, else 1):
+    a comment naming the key before it is not the line."""
+    lines = text.splitlines()
+    sets = re.compile(rf"^\s*{re.escape(needle)}\s*=")
+    for lineno, line in enumerate(lines, start=1):
+        if sets.match(line):
+            return lineno
+    for lineno, line in enumerate(lines, start=1):
         if needle in line:
             return lineno
     return 1
+
+
+def _module_lines(text: str) -> list[int]:
+    """The line of each ``[[module]]`` header, in order (inline tables: none)."""
+    header = re.compile(r"^\s*\[\[\s*module\s*\]\]")
+    return [n for n, line in enumerate(text.splitlines(), start=1) if header.match(line)]
 
 
 def _as_cell(value: object, where: str) -> Cell:
@@ -118,7 +133,8 @@ def parse_toml(text: str, source: str = "<toml>") -> Configuration:
     """Parse a TOML cell list (see the module docstring)."""
     data = load_toml(text, source)
     if "cells" in data and "module" in data:
-        raise ScenarioError(f"{source}: give either 'cells' or [[module]] tables, not both")
+        raise ScenarioError(f"{source}:{_toml_line(text, 'cells')}: give either 'cells' or "
+                            "[[module]] tables, not both")
     if "cells" in data:
         cells = data["cells"]
         where = f"{source}:{_toml_line(text, 'cells')}"
@@ -134,8 +150,10 @@ def parse_toml(text: str, source: str = "<toml>") -> Configuration:
         raise ScenarioError(f"{source}: expected 'cells = [...]' or [[module]] tables")
     out: dict[Cell, Module] = {}
     ids: set[int] = set()
+    headers = _module_lines(text)
     for k, entry in enumerate(modules, start=1):
-        where = f"{source}: [[module]] #{k}"
+        line = headers[k - 1] if len(headers) == len(modules) else _toml_line(text, "module")
+        where = f"{source}:{line}: [[module]] #{k}"
         if not isinstance(entry, dict) or "id" not in entry or "cell" not in entry:
             raise ScenarioError(f"{where}: needs 'id' and 'cell'")
         mid, orientation = entry["id"], entry.get("orientation", 0)

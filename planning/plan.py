@@ -6,6 +6,7 @@ turns it into firmware frames, and the plot and JSON views read it.
 
 from __future__ import annotations
 
+from collections import Counter
 from dataclasses import dataclass, field
 
 from hexbot.planning.configuration import Configuration, is_connected
@@ -78,6 +79,10 @@ def check_step(config: Configuration, step: Step) -> list[str]:
     """
     problems = []
     movers = {m.src for m in step.moves}
+    if len(movers) < len(step.moves):  # one module, two moves: each alone may look legal
+        twice = Counter(m.src for m in step.moves)
+        problems += [f"the module at {src} is given {n} moves in one step"
+                     for src, n in sorted(twice.items()) if n > 1]
     staying = config.cells - movers
     used: dict[Cell, int] = {}
     for move in step.moves:

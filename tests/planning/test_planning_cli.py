@@ -323,7 +323,7 @@ def test_coordinates_beyond_the_planner_limit_name_file_and_line(cli_status, cap
     code, err = cli_status("plan", big, two)
     assert code == 1 and "Traceback" not in err
     assert f"{big}:2: cell [0, 99999999999] is outside the planner's coordinate range" in err
-    with pytest.raises(ScenarioError, match=r"m.toml: \[\[module\]\] #1: cell"):
+    with pytest.raises(ScenarioError, match=r"m.toml:1: \[\[module\]\] #1: cell"):
         parse_toml(f"[[module]]\nid = 1\ncell = [{-COORD_LIMIT - 1}, 0]\n", "m.toml")
     assert parse_toml(f"cells = [[{COORD_LIMIT}, {-COORD_LIMIT}]]").cells == {
         (COORD_LIMIT, -COORD_LIMIT)}
@@ -406,7 +406,7 @@ def test_booleans_are_not_integers_in_toml(tmp_path):
     for entry, words in (("id = true\ncell = [0, 0]", "id must be an integer 1..63"),
                          ("id = 1\ncell = [0, 0]\norientation = true", "orientation must be 0..5"),
                          ("id = 1\ncell = [true, 0]", "a cell must be [x, y] with two integers")):
-        with pytest.raises(ScenarioError, match=re.escape(f"m.toml: [[module]] #1: {words}")):
+        with pytest.raises(ScenarioError, match=re.escape(f"m.toml:1: [[module]] #1: {words}")):
             parse_toml(f"[[module]]\n{entry}\n", "m.toml")
 
 
