@@ -73,7 +73,19 @@ def validate(command: Command, *, strict: bool = True) -> Command:
             raise FrameError(
                 f"{fn.name}: {arg.name} ({arg.meaning}) must be {arg.lo}..{arg.hi}, got {value}"
             )
+    if fn.name == "Select":
+        _check_select(command.args)
     return command
+
+
+def _check_select(ids: Sequence[int]) -> None:
+    """What a Select list means only one way: the firmware takes a first 0 as
+    "all" and drops the rest, and gives a repeated id the rank of its first
+    place, while a host would wait for a reply per place."""
+    if 0 in ids and len(ids) > 1:
+        raise FrameError("id 0 (all modules) cannot be combined with other ids")
+    if len(set(ids)) != len(ids):
+        raise FrameError(f"duplicate module ids in {list(ids)}")
 
 
 def make(key: int | str, *args: int, strict: bool = True) -> Command:
@@ -143,7 +155,10 @@ def decode_board(frame: bytes) -> Command:
     fn = CODES.get(frame[1])
     if fn is None or fn.board.value != "control":
         raise FrameError(f"code {frame[1]} is not a control-board function")
-    return validate(Command(frame[1], tuple(frame[2 : 2 + len(fn.args)])))
+    arity = len(fn.args)
+    if any(b != wire.UNUSED for b in frame[2 + arity : -1]):  # as the control firmware checks
+        raise FrameError(f"{fn.name}: bytes beyond its {arity} argument(s) must be 'N'")
+    return validate(Command(frame[1], tuple(frame[2 : 2 + arity])))
 
 
 def encode_board_ack(code: int) -> bytes:
@@ -216,8 +231,4 @@ def select(ids: Sequence[int]) -> Command:
     ids = list(ids)
     if not ids:
         raise FrameError("select needs at least one module id (0 = all)")
-    if 0 in ids and len(ids) > 1:
-        raise FrameError("id 0 (all modules) cannot be combined with other ids")
-    if len(set(ids)) != len(ids):
-        raise FrameError(f"duplicate module ids in {ids}")
     return make("Select", *ids)
