@@ -3,24 +3,12 @@ stand for the legacy ACK N and ACK ~, the sequence number's wrap, Select(0)."""
 
 from __future__ import annotations
 
-import io
-
 import pytest
 
 from hexbot.errors import FrameError
 from hexbot.protocol import frames, hexbot_mavlink, wire
 from hexbot.protocol.mavlink_codec import FramedParser, MavAck, MavlinkEncoder, describe_mavlink_tx
-
-
-def module(ident: int):
-    return hexbot_mavlink.MAVLink(io.BytesIO(), srcSystem=ident, srcComponent=1)
-
-
-def sent(mav, msg) -> bytes:
-    mav.file.seek(0)
-    mav.file.truncate()
-    mav.send(msg)
-    return mav.file.getvalue()
+from tests.protocol.test_mavlink_codec import module, sent
 
 
 @pytest.mark.parametrize("target", [0, 1, wire.MAX_MODULE_ID])
