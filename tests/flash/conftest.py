@@ -22,8 +22,6 @@ from hexbot.hil_sim.isp import (
 
 AVR_DIR = Path(__file__).parent / "avr"
 
-needs_avrdude = pytest.mark.skipif(shutil.which("avrdude") is None, reason="avrdude missing")
-needs_avr_gcc = pytest.mark.skipif(shutil.which("avr-gcc") is None, reason="avr-gcc missing")
 
 
 @dataclass

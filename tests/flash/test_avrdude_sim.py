@@ -7,12 +7,12 @@ import select
 import subprocess
 
 import pytest
-from conftest import needs_avrdude
 
 from hexbot.hil_sim.isp import Atmega162Memory
 from hexbot.hil_sim.isp.avr068 import ANSWER_CKSUM_ERROR
 from hexbot.hil_sim.isp.framing import FrameDecoder, encode
 from hexbot.host.flash.ihex import read_hex
+from tests.flash.marks import needs_avrdude
 
 pytestmark = needs_avrdude
 

@@ -4,7 +4,6 @@ Cluster, which then boots the new image."""
 from __future__ import annotations
 
 import pytest
-from conftest import needs_avrdude
 
 from hexbot.errors import FlashingError
 from hexbot.hil_sim.isp.cluster import (
@@ -12,6 +11,7 @@ from hexbot.hil_sim.isp.cluster import (
     missing_cluster_methods,
     open_cluster_isp,
 )
+from tests.flash.marks import needs_avrdude
 
 _avr = pytest.importorskip("hexbot.hil_sim._avr", reason="simulator extension not built")
 pytestmark = needs_avrdude

@@ -6,7 +6,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
-from conftest import needs_avr_gcc, needs_avrdude
+
+from tests.flash.marks import needs_avr_gcc, needs_avrdude
 
 pytest.importorskip("hexbot.hil_sim._avr", reason="simulator extension not built")
 

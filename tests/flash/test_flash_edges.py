@@ -10,13 +10,13 @@ import sys
 from pathlib import Path
 
 import pytest
-from conftest import needs_avr_gcc, needs_avrdude
 
 from hexbot.errors import FlashingError
 from hexbot.hil_sim.isp import Atmega162Memory
 from hexbot.host.flash import avrdude as avrdude_mod
 from hexbot.host.flash.fuses import FuseSet, check_fuses, fuse_notes
 from hexbot.host.flash.ihex import read_hex
+from tests.flash.marks import needs_avr_gcc, needs_avrdude
 
 #: A stand-in for avrdude: answers the device read (``-U name:r:FILE:r``)
 #: with an ATmega162 at Table 3-6's fuses, and does on a write (``flash:w``)

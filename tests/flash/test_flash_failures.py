@@ -8,12 +8,12 @@ import time
 from pathlib import Path
 
 import pytest
-from conftest import needs_avrdude
 
 from hexbot.hil_sim.isp import Atmega162Isp, IspPtyServer, MemoryBackend, Stk500v2Programmer
 from hexbot.host.flash import avrdude as avrdude_mod
 from hexbot.host.flash.avrdude import explain
 from hexbot.host.flash.cluster import not_booted
+from tests.flash.marks import needs_avrdude
 
 AUDIT_63 = (  # avrdude 6.3 (Ubuntu 22.04, Debian 11) on a port that is not there
     'avrdude: ser_open(): can\'t open device "/dev/ttyUSB0": No such file or directory\n'

@@ -9,9 +9,9 @@ import threading
 import time
 
 import pytest
-from conftest import needs_avrdude
 
 from hexbot.hil_sim.isp.cluster import open_simulator_isp
+from tests.flash.marks import needs_avrdude
 
 pytest.importorskip("hexbot.hil_sim._avr", reason="simulator extension not built")
 pytestmark = needs_avrdude
