@@ -27,7 +27,7 @@ def session(args: argparse.Namespace, *, wait_s: float = 5.0, verbose_states: bo
     everything from the first byte (boot texts included); with
     ``wait_boot`` a simulated cluster is given time to finish booting."""
     ends = endpoints.resolve(args, default_speed)
-    listeners = ([_print_state] if verbose_states else []) + ([listener] if listener else [])
+    listeners = ([_state_printer()] if verbose_states else []) + ([listener] if listener else [])
     host = endpoints.open_host(args, ends, listeners)
     try:
         for ch in host.channels.values():
@@ -55,11 +55,21 @@ def err_line(text: str) -> None:
         sys.stderr.flush()
 
 
-def _print_state(event: HostEvent) -> None:
-    if isinstance(event, HostWarning):
-        err_line(f"warning: {event.text}")
-    elif isinstance(event, PortChanged) and event.state in (LinkState.LOST, LinkState.CONNECTED):
-        err_line(f"{event.port}: {event.state.value} {event.detail}".rstrip())  # type: ignore[attr-defined]
+def _state_printer() -> Listener:
+    """Warnings, and the ports' states once they have been up: a port that
+    never opened is the command's own error line (exit 4), said once."""
+    been_up: set[str] = set()
+
+    def print_state(event: HostEvent) -> None:
+        if isinstance(event, HostWarning):
+            err_line(f"warning: {event.text}")
+        elif isinstance(event, PortChanged):
+            if event.state is LinkState.CONNECTED:
+                been_up.add(event.port)
+            elif event.state is not LinkState.LOST or event.port not in been_up:
+                return
+            err_line(f"{event.port}: {event.state.value} {event.detail}".rstrip())
+    return print_state
 
 
 def _wait_booted(sess: Session, scenario: str, ids: list[int]) -> None:

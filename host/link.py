@@ -19,6 +19,8 @@ from __future__ import annotations
 
 import enum
 import errno
+import os
+import termios
 import threading
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -82,10 +84,41 @@ class PortSettings:
                 exclusive=True, **writes,  # exclusive: two readers would split the bytes
             )
         except (serial.SerialException, OSError, ValueError) as exc:
-            if getattr(exc, "errno", None) == errno.EWOULDBLOCK:  # pyserial: the flock is taken
-                raise LinkUnavailableError(f"cannot open {self.url}: "
-                                           f"{busy_reason(self.url)}") from exc
-            raise LinkUnavailableError(f"cannot open {self.url}: {exc}") from exc
+            raise LinkUnavailableError(f"cannot open {self.url}: "
+                                       f"{open_failure(self.url, exc)}") from exc
+
+
+def _errno_of(exc: BaseException) -> int | None:
+    """The OS error number behind a failed open. pyserial wraps it: in the
+    exception's own ``errno`` (posix devices), in the exception it was raised
+    from (sockets, rfc2217), or in a ``termios.error`` (not a tty)."""
+    for e in (exc, exc.__cause__, exc.__context__):
+        if e is None:
+            continue
+        number = getattr(e, "errno", None)
+        if number is None and isinstance(e, termios.error) and e.args:
+            number = e.args[0]
+        if isinstance(number, int) and number > 0:
+            return number
+    return None
+
+
+def open_failure(url: str, exc: BaseException) -> str:
+    """Why a port did not open, in one short phrase. pyserial's own text
+    repeats the port and the errno ("could not open port X: [Errno 2] No such
+    file or directory: 'X'"); the user needs the cause and, for the usual
+    ones, what to do."""
+    number = _errno_of(exc)
+    if number == errno.EWOULDBLOCK:  # pyserial: the exclusive flock is taken
+        return busy_reason(url)
+    if number is None:
+        return str(exc)
+    text = os.strerror(number)
+    if number == errno.ENOTTY:
+        return f"not a serial port ({text})"
+    if number == errno.EACCES and url.startswith("/dev/"):
+        return f"{text} (is your user in the group that owns {url}, often 'dialout'?)"
+    return text
 
 
 class LinkState(enum.Enum):

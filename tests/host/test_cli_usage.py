@@ -208,6 +208,34 @@ def test_a_port_state_line_is_written_whole(monkeypatch):
     included, or the two run together on a terminal."""
     fake = _Writes()
     monkeypatch.setattr(sys, "stderr", fake)
-    cli_common._print_state(PortChanged("ir", LinkState.CONNECTED, "loop:// 300 8N1", 0.0))
+    cli_common._state_printer()(PortChanged("ir", LinkState.CONNECTED, "loop:// 300 8N1", 0.0))
     cli_common.err_line("session log: /tmp/x")
     assert fake.calls == ["ir: connected loop:// 300 8N1\n", "session log: /tmp/x\n"]
+
+
+def test_a_port_lost_is_said_only_after_it_was_up(monkeypatch):
+    """A port that never opened is the command's error line; saying "lost"
+    first repeated it. A port that was up and went away is news."""
+    fake = _Writes()
+    monkeypatch.setattr(sys, "stderr", fake)
+    show = cli_common._state_printer()
+    show(PortChanged("ir", LinkState.LOST, "cannot open /dev/ttyUSB9: No such file", 0.0))
+    assert fake.calls == []
+    show(PortChanged("ir", LinkState.CONNECTED, "/dev/ttyUSB9 300 8N1", 1.0))
+    show(PortChanged("ir", LinkState.LOST, "read failed: device reports readiness", 2.0))
+    show(PortChanged("debug", LinkState.LOST, "cannot open /dev/ttyUSB8: No such file", 2.0))
+    assert fake.calls == ["ir: connected /dev/ttyUSB9 300 8N1\n",
+                          "ir: lost read failed: device reports readiness\n"]
+
+
+@pytest.mark.parametrize("port, why", [
+    ("/nonexistent/ttyNOPE", "cannot open /nonexistent/ttyNOPE: No such file or directory"),
+    ("/dev/null", "cannot open /dev/null: not a serial port (Inappropriate ioctl for device)"),
+])
+def test_a_port_that_does_not_open_is_one_short_line(capsys, log_dir, port, why):
+    """pyserial's text repeated the port and the errno ("could not open port
+    X: [Errno 2] No such file or directory: 'X'"), and a "lost" line said it
+    once more before the error."""
+    code, err = status(capsys, "send", "Status", "--module", "2", "--port", port)
+    assert code == 4
+    assert err.strip().splitlines() == [f"hexbot send: error: {why}"]

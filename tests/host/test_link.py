@@ -2,16 +2,18 @@
 
 from __future__ import annotations
 
+import errno
 import socket
 import threading
 import time
 
 import pytest
+import serial
 
 from hexbot.errors import LinkUnavailableError
 from hexbot.host.events import PortChanged
 from hexbot.host.host import IR, Host
-from hexbot.host.link import Link, LinkState, PortSettings
+from hexbot.host.link import Link, LinkState, PortSettings, open_failure
 from hexbot.protocol import parser, wire
 
 
@@ -38,6 +40,27 @@ def test_bad_settings_are_refused():
     with pytest.raises(LinkUnavailableError, match="cannot open /nonexistent"):
         Link(PortSettings("/nonexistent/tty"), lambda d: None).start(wait_s=0.3)
 
+
+
+def test_a_device_the_user_may_not_open_says_what_to_check():
+    """The usual first failure on a fresh Linux machine: the serial device
+    belongs to a group the user is not in. pyserial raises it as
+    SerialException(errno, text); the reason names the cause and the fix."""
+    denied = serial.SerialException(errno.EACCES, "could not open port /dev/ttyUSB0: "
+                                    "[Errno 13] Permission denied: '/dev/ttyUSB0'")
+    assert open_failure("/dev/ttyUSB0", denied) == (
+        "Permission denied (is your user in the group that owns /dev/ttyUSB0, often "
+        "'dialout'?)")
+    # a socket URL: pyserial keeps the errno in the exception it raised from
+    free = socket.socket()
+    free.bind(("127.0.0.1", 0))
+    url = f"socket://127.0.0.1:{free.getsockname()[1]}"
+    free.close()
+    with pytest.raises(LinkUnavailableError) as refused:
+        PortSettings(url).open(0.1)
+    assert str(refused.value) == f"cannot open {url}: Connection refused"
+    # pyserial's own text when nothing holds an errno
+    assert open_failure("spy://x", ValueError("invalid URL")) == "invalid URL"
 
 def test_write_while_disconnected_is_a_clear_error():
     link = Link(PortSettings("/nonexistent/tty"), lambda d: None, retry_s=0.05)
