@@ -34,6 +34,17 @@ def read_text(path: str | Path, what: str = "") -> str:
         raise ScenarioError(f"{path}: cannot read{kind}: {exc.strerror or exc}") from None
 
 
+def read_bytes(path: str | Path, what: str = "") -> bytes:
+    """The file's bytes (captures, which may end in half a character);
+    ScenarioError ``PATH: cannot read[ WHAT]: reason`` as :func:`read_text`."""
+    path = Path(path)
+    try:
+        return path.read_bytes()
+    except OSError as exc:
+        kind = f" {what}" if what else ""
+        raise ScenarioError(f"{path}: cannot read{kind}: {exc.strerror or exc}") from None
+
+
 #: where tomllib says the error is: a line and column, or the end
 _TOML_WHERE = re.compile(r"\((?:at line (\d+), column \d+|at end of document)\)")
 

@@ -39,6 +39,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import TextIO
 
+from hexbot import files
 from hexbot.errors import ScenarioError
 
 MAGIC = "# hexbot-capture 2"
@@ -118,10 +119,7 @@ def read_capture(path: Path) -> Iterator[Record]:
     malformed record. A truncated last line (the writer was killed
     mid-write) is skipped, since everything before it is intact."""
     path = Path(path)
-    try:
-        raw_lines = path.read_bytes().split(b"\n")
-    except OSError as exc:
-        raise ScenarioError(f"{path}: cannot read capture: {exc}") from exc
+    raw_lines = files.read_bytes(path, "capture").split(b"\n")
     # line by line: a writer killed in the middle of a character (a note
     # naming a non-ASCII path) leaves a half last line, not a broken file
     lines = []

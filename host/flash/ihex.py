@@ -91,7 +91,8 @@ def read_hex(path: str | Path, limit: int | None = None) -> HexImage:
     except FileNotFoundError:
         raise FlashingError(f"{path}: no such image file") from None
     except (OSError, UnicodeDecodeError) as exc:
-        raise FlashingError(f"{path}: cannot read as Intel HEX: {exc}") from exc
+        why = exc.strerror if isinstance(exc, OSError) and exc.strerror else exc
+        raise FlashingError(f"{path}: cannot read as Intel HEX: {why}") from exc
     image = _records(path, text)
     lines = text.split("\n")  # numbered as intelhex numbers them
     # every line up to the end-of-file record is a valid record: its type is at [7:9]

@@ -218,6 +218,13 @@ def test_an_elf_given_as_the_image_is_refused_in_words(hexbot_flash, images):
     assert f"{elf}: cannot read as Intel HEX" in result.err
 
 
+def test_a_folder_given_as_the_image_says_so_once(hexbot_flash, tmp_path):
+    result = hexbot_flash("--image", str(tmp_path), "--port", "/dev/pts/0", "--dry-run")
+    assert result.code == 1
+    assert result.err.strip().splitlines()[-1] == (
+        f"hexbot flash: error: {tmp_path}: cannot read as Intel HEX: Is a directory")
+
+
 # --- --all ------------------------------------------------------------------
 
 def test_a_failed_firmware_build_stops_flash_all(hexbot_flash, monkeypatch, tmp_path):

@@ -86,3 +86,16 @@ def test_a_paced_replay_starts_at_from_without_waiting_for_the_records_before(
     capture = _capture(tmp_path, "0.100 host note early\n30.000 host note late\n")
     assert _texts(_rows(capsys, capture, "--from", "30", "--speed", "64")) == ["late"]
     assert len(starts) == 1 and starts[0] >= 30
+
+
+def test_a_capture_that_cannot_be_read_is_one_line_with_its_cause(tmp_path, capsys):
+    """The OS's reason once, not Python's ``[Errno 2] ...: 'path'`` with the
+    path a second time; a session folder names the capture inside it."""
+    missing = tmp_path / "gone.hbcap"
+    assert main(["replay", str(missing)]) == 1
+    err = capsys.readouterr().err.strip()
+    assert err == f"hexbot replay: error: {missing}: cannot read capture: No such file or directory"
+    assert main(["replay", str(tmp_path)]) == 1
+    err = capsys.readouterr().err.strip()
+    assert err == (f"hexbot replay: error: {tmp_path / 'capture.hbcap'}: cannot read capture: "
+                   "No such file or directory")
