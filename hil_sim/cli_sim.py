@@ -105,6 +105,8 @@ def run(args: argparse.Namespace) -> int:
     if not args.pty and args.duration is None:
         raise UsageError("nothing to do: give --pty to serve ports, or --duration to run")
     sim = Simulator(load_scenario(args.scenario), seed=args.seed, threads=args.threads)
+    for note in sim.image_notes:
+        print(f"warning: {note}", file=sys.stderr, flush=True)
     stop = _Stop()
     previous = {s: signal.signal(s, stop) for s in (signal.SIGINT, signal.SIGTERM)}
     with ExitStack() as stack:

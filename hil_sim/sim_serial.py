@@ -79,6 +79,7 @@ class SimCluster:
         self.scenario = scenario
         self.seed = self.simulator.seed
         self.base = self.simulator.scenario.base
+        self.image_notes = tuple(self.simulator.image_notes)
         self.speed = speed
         self.number = next(_numbers)
         _instances[self.number] = weakref.ref(self)

@@ -32,9 +32,12 @@ from __future__ import annotations
 import random
 from collections import deque
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 from hexbot.errors import HexBotError, HexBotTimeoutError, ScenarioError
+from hexbot.protocol.header import SCHEMA_HASH
+from hexbot.protocol.image_mark import ImageMark, mismatch, read_mark
 from hexbot.protocol.pins import (
     COMM_PORTS,
     CONTROL_PORTS,
@@ -144,6 +147,10 @@ class Simulator:
         self.ir_in_c = bool(ir_in_c) and hasattr(self.cluster, "ir_attach") and not any(
             f.active for f in (scenario.faults, *scenario.link_faults.values()))
         self._geometry_version = -1
+        #: what the images' marks say is wrong but may be meant (firmware built
+        #: from another protocol): one line each, for the host to warn about
+        self.image_notes: list[str] = []
+        self._marks: dict[Path, ImageMark | None] = {}
         clocks = scenario.clocks(self.seed)
         for spec in sorted(scenario.modules, key=lambda m: m.id):
             for board in ("comm", "control"):
@@ -153,6 +160,8 @@ class Simulator:
                         f"{scenario.where(spec.line)}: module {spec.id}: {board} image "
                         f"{image} does not exist (build it with `make -C firmware`)"
                     )
+                self._check_image(image, (board,), f"{scenario.where(spec.line)}: "
+                                  f"module {spec.id}: {board} image {image}")
             try:  # not an ELF, not for the AVR, built for another AVR, too big
                 comm = self.cluster.add_mcu(str(spec.firmware.comm), f"comm{spec.id}")
                 control = self.cluster.add_mcu(str(spec.firmware.control), f"control{spec.id}")
@@ -212,12 +221,29 @@ class Simulator:
             self.cluster.ir_seed(self.seed)
             self._send_ir_routes()
 
+    def _check_image(self, image: Path, boards: tuple[str, ...], what: str) -> None:
+        """Refuse another board's firmware; note one built from another
+        protocol (an old build against this host may be the point)."""
+        if image not in self._marks:
+            try:
+                self._marks[image] = read_mark(image.read_bytes())
+            except OSError as exc:
+                raise ScenarioError(f"{what}: cannot read: {exc.strerror or exc}") from None
+            _, other = mismatch(self._marks[image], boards, SCHEMA_HASH)
+            if other:
+                self.image_notes.append(f"{image}: {other}")
+        wrong, _ = mismatch(self._marks[image], boards, SCHEMA_HASH)
+        if wrong:
+            raise ScenarioError(f"{what}: {wrong}")
+
     def _add_rf12(self, module: Module, image: Any, where: str) -> None:
         """The module's wireless board: an MCU with an RF12 part on its SPI pins
         (nominal clock; its UART1 is a debug port like the control board's)."""
         if not image.is_file():
             raise ScenarioError(f"{where}: module {module.id}: rf12 image {image} does not "
                                 "exist (build it with `make -C firmware`)")
+        self._check_image(image, ("rf12", "rflink"),
+                          f"{where}: module {module.id}: rf12 image {image}")
         try:
             index = self.cluster.add_mcu(str(image), f"rf12{module.id}")
         except ValueError as exc:

@@ -248,6 +248,8 @@ class Host:
             self.clock = PacedClock(self.changed, sim, self._simulator_stopped,
                                     behind=self._behind)
         sim.subscribe(self._verdict)
+        for note in sim.image_notes:  # what a module's Status would tell, before it runs
+            self.warn(self.elapsed(), note)
 
     def _behind(self) -> bool:
         """Whether a port's reader has bytes it has not turned into events yet."""

@@ -16,7 +16,7 @@ import hashlib
 import re
 from pathlib import Path
 
-from hexbot.protocol import lattice, pins_header, radio, timing, wire
+from hexbot.protocol import image_mark, lattice, pins_header, radio, timing, wire
 from hexbot.protocol.codes import CODES, ErrorCode, Role, Status
 
 HEADER_PATH = Path(__file__).resolve().parent.parent / "firmware" / "include" / "hexbot_codes.h"
@@ -124,6 +124,9 @@ def _render(schema: str) -> str:
         "#define HEXBOT_CODES_H",
         "",
         schema,
+        "/* What an image is, in its flash (protocol/image_mark.py): every image",
+        " * defines one, HB_IMAGE_MARK(\"comm\") and so on */",
+        image_mark.c_macro(),
         "",
         "/* Wire constants (Table 3-8, Appendix A) */",
         f"#define HB_START            {wire.START}  /* '*' */",

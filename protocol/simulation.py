@@ -121,6 +121,7 @@ class SimulatorAccess(Protocol):
     seed: int
     speed: float
     base: int | None  # the module bolted to the base (it never moves)
+    image_notes: tuple[str, ...]  # firmware images built from another protocol schema
 
     @property
     def stepped(self) -> bool: ...

@@ -5,6 +5,7 @@
 
 #include "comm_board.h"
 #include "id_text.h"
+#include "image_mark.h"
 #include "mavframe.h"
 #include "state.h"
 #include "system.h"
@@ -193,7 +194,7 @@ void reply_status(void)
     uart_putc(IR, (uint8_t)g_state.y);
     uart_putc(IR, g_state.yref);
     uart_putc(IR, g_state.last_error);
-    uart_puts_P(IR, PSTR(HB_SCHEMA_HASH_TEXT)); /* the protocol it was built from */
+    uart_puts_P(IR, HB_IMAGE_MARK_SCHEMA); /* the protocol it was built from */
     eol();
 }
 

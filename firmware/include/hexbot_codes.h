@@ -4,8 +4,11 @@
 #ifndef HEXBOT_CODES_H
 #define HEXBOT_CODES_H
 
-#define HB_SCHEMA_HASH 0xa7f566bcUL
-#define HB_SCHEMA_HASH_TEXT "a7f566bc"
+#define HB_SCHEMA_HASH 0xc9e4afd8UL
+#define HB_SCHEMA_HASH_TEXT "c9e4afd8"
+/* What an image is, in its flash (protocol/image_mark.py): every image
+ * defines one, HB_IMAGE_MARK("comm") and so on */
+#define HB_IMAGE_MARK(board) "hexbot-image board=" board " version=" HB_FW_VERSION " schema=" HB_SCHEMA_HASH_TEXT
 
 /* Wire constants (Table 3-8, Appendix A) */
 #define HB_START            42  /* '*' */

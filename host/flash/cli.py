@@ -21,7 +21,8 @@ from hexbot.errors import FlashingError, UsageError
 from hexbot.host.flash.avrdude import Avrdude
 from hexbot.host.flash.fuses import TABLE_3_6, FuseSet, check_fuses, fuse_notes
 from hexbot.host.flash.ihex import read_hex
-from hexbot.protocol import wire
+from hexbot.protocol import image_mark, wire
+from hexbot.protocol.header import SCHEMA_HASH
 
 FLASH_BYTES = wire.FLASH_BYTES
 BOARDS = ("comm", "control")
@@ -74,7 +75,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--verify", action=argparse.BooleanOptionalAction, default=True,
                         help="read back and compare everything written (default on)")
     parser.add_argument("--force", action="store_true",
-                        help="write fuse/lock values even if they would lock the board out")
+                        help="write fuse/lock values even if they would lock the board out, "
+                        "and an image built for another board or from another protocol schema")
     parser.add_argument("--all", action="store_true",
                         help="rebuild the firmware and reflash every board of a simulated cluster")
     parser.add_argument("--scenario", help="simulator scenario for --all")
@@ -125,6 +127,22 @@ def check_device(signature: bytes, part_guess: str | None, port: str) -> None:
         "refusing to flash it, nothing was written")
 
 
+def guard_image(image: Path, mark: image_mark.ImageMark | None, board: str | None,
+                force: bool, say) -> None:
+    """Refuse an image built for another board or from another protocol than
+    this host's (its modules would not understand the host), unless forced."""
+    wrong, other = image_mark.mismatch(mark, (board,) if board else (), SCHEMA_HASH)
+    problems = [p for p in (wrong if board else None, other) if p]
+    if not problems:
+        return
+    if force:
+        for problem in problems:
+            say(f"warning: {image.name}: {problem} (--force: flashing it anyway)")
+        return
+    raise FlashingError(f"{image}: {'; '.join(problems)}; refusing to flash it, nothing was "
+                        "written (--force flashes it anyway)")
+
+
 def flash_board(args: argparse.Namespace, say=print) -> int:
     if not args.board and not args.image:
         raise UsageError("give --board comm|control (or --image FILE), or --all --scenario")
@@ -134,9 +152,13 @@ def flash_board(args: argparse.Namespace, say=print) -> int:
     if not image.exists():
         raise FlashingError(f"{image}: no such image (build it: make -C firmware)")
     hexfile = read_hex(image, limit=FLASH_BYTES)
-    label = f"{args.board} board" if args.board else "board"
-    say(f"image {image}: {hexfile.used} bytes "
+    mark = image_mark.read_mark(hexfile.to_bytes())
+    board = args.board or (mark.board if mark else None)
+    label = f"{board} board" if board else "board"
+    what = f"{mark.describe()}, " if mark else ""
+    say(f"image {image}: {what}{hexfile.used} bytes "
         f"({100 * hexfile.size / FLASH_BYTES:.0f} % of the {FLASH_BYTES // 1024} KiB flash)")
+    guard_image(image, mark, board, args.force, say)
     fuses = requested_fuses(args)
     if fuses is not None:
         guard_fuses(fuses, args.force, say)  # before touching the device at all

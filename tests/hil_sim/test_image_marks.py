@@ -1,0 +1,84 @@
+"""The simulator reads every image's mark (protocol/image_mark.py) before it
+runs it: another board's firmware is refused with the scenario's line, and
+firmware built from another protocol runs with a warning that reaches the
+user (`hexbot sim`, and every session on the embedded simulator)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from hexbot.cli import main
+from hexbot.errors import ScenarioError
+from hexbot.hil_sim import Simulator, load_scenario
+from hexbot.protocol.header import SCHEMA_HASH
+
+BUILD = Path(__file__).resolve().parents[2] / "firmware" / "build"
+SCHEMA = f"{SCHEMA_HASH:08x}"
+
+
+@pytest.fixture
+def built():
+    if not (BUILD / "comm.elf").exists():
+        pytest.skip("firmware not built (make -C firmware)")
+    return BUILD
+
+
+def _scenario(tmp: Path, comm: Path, control: Path) -> Path:
+    path = tmp / "two.toml"
+    path.write_text("\n".join([
+        'name = "two"', "seed = 1", "base = 1",
+        "[firmware]", f'comm = "{comm}"', f'control = "{control}"',
+        "[[module]]", "id = 1", "position = [0, 0]",
+        "[[module]]", "id = 2", "position = [1, 0]", ""]))
+    return path
+
+
+@pytest.fixture
+def old_build(built, tmp_path) -> Path:
+    """The real images as if built from another protocol: their marks' schema
+    digits changed (the comm board's Status reads them from there too)."""
+    out = tmp_path / "old"
+    out.mkdir()
+    for name in ("comm.elf", "control.elf"):
+        data = (built / name).read_bytes()
+        assert data.count(f"schema={SCHEMA}".encode()) == 1
+        (out / name).write_bytes(data.replace(f"schema={SCHEMA}".encode(), b"schema=0badf00d"))
+    return out
+
+
+def test_a_boards_image_in_the_other_boards_place_is_refused(built, tmp_path):
+    path = _scenario(tmp_path, built / "comm.elf", built / "comm.elf")
+    with pytest.raises(ScenarioError) as refused:
+        Simulator(load_scenario(path))
+    assert str(refused.value) == (
+        f"{path}:7: module 1: control image {built / 'comm.elf'}: it is the comm board's "
+        "firmware, not the control board's")
+
+
+def test_hexbot_sim_warns_of_firmware_from_another_protocol(old_build, tmp_path, capsys):
+    path = _scenario(tmp_path, old_build / "comm.elf", old_build / "control.elf")
+    assert main(["sim", str(path), "--duration", "0.01", "--speed", "0"]) == 0
+    err = capsys.readouterr().err.splitlines()
+    assert [line for line in err if line.startswith("warning:")] == [
+        f"warning: {old_build / name}: it was built from protocol schema 0badf00d, this "
+        f"host speaks {SCHEMA}: rebuild it (make -C firmware)"
+        for name in ("comm.elf", "control.elf")]
+
+
+def test_a_session_on_old_firmware_is_warned_before_any_status(old_build, capsys, tmp_path,
+                                                               monkeypatch):
+    """The images' warning comes as the port opens; the comm board's Status,
+    built from the same mark, then says the same of the running module."""
+    monkeypatch.setenv("HEXBOT_LOG_DIR", str(tmp_path / "logs"))
+    url = f"hexbot-sim://pair?speed=0&firmware={old_build}"
+    assert main(["send", "Status", "--module", "2", "--port", url]) == 0
+    err = capsys.readouterr().err.splitlines()
+    warnings = [line for line in err if line.startswith("warning:")]
+    assert warnings[:2] == [
+        f"warning: {old_build / name}: it was built from protocol schema 0badf00d, this "
+        f"host speaks {SCHEMA}: rebuild it (make -C firmware)"
+        for name in ("comm.elf", "control.elf")]
+    assert any("module 2: module firmware speaks protocol schema 0badf00d" in w
+               for w in warnings[2:])
