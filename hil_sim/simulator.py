@@ -147,8 +147,9 @@ class Simulator:
         self.ir_in_c = bool(ir_in_c) and hasattr(self.cluster, "ir_attach") and not any(
             f.active for f in (scenario.faults, *scenario.link_faults.values()))
         self._geometry_version = -1
-        #: what the images' marks say is wrong but may be meant (firmware built
-        #: from another protocol): one line each, for the host to warn about
+        #: what the images' marks say is wrong but may be meant (another
+        #: board's firmware, or built from another protocol): one line each,
+        #: for the host to warn about
         self.image_notes: list[str] = []
         self._marks: dict[Path, ImageMark | None] = {}
         clocks = scenario.clocks(self.seed)
@@ -222,8 +223,9 @@ class Simulator:
             self._send_ir_routes()
 
     def _check_image(self, image: Path, boards: tuple[str, ...], what: str) -> None:
-        """Refuse another board's firmware; note one built from another
-        protocol (an old build against this host may be the point)."""
+        """Note an image that is another board's firmware or was built from
+        another protocol: both may be meant (an old build against this host, a
+        test bench with a program in a board's place), neither is silent."""
         if image not in self._marks:
             try:
                 self._marks[image] = read_mark(image.read_bytes())
@@ -233,8 +235,8 @@ class Simulator:
             if other:
                 self.image_notes.append(f"{image}: {other}")
         wrong, _ = mismatch(self._marks[image], boards, SCHEMA_HASH)
-        if wrong:
-            raise ScenarioError(f"{what}: {wrong}")
+        if wrong and f"{image}: {wrong}" not in self.image_notes:
+            self.image_notes.append(f"{image}: {wrong}")
 
     def _add_rf12(self, module: Module, image: Any, where: str) -> None:
         """The module's wireless board: an MCU with an RF12 part on its SPI pins
