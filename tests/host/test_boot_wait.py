@@ -111,6 +111,10 @@ def test_the_cli_names_exactly_the_silent_module_of_a_big_cluster(tmp_path, log_
     assert "9 of 10 modules booted in " in err
     warnings = [line for line in err.splitlines() if line.startswith("warning:")]
     assert warnings == [
+        # the image's mark says so as the simulator loads it ...
+        f"warning: {FIRMWARE / 'rf12.elf'}: it is the rf12 board's firmware, not the comm "
+        "board's",
+        # ... and the boot wait names the module that did not come up
         "warning: module(s) 9: no COMM. LISTENING text of theirs heard whole and no answer "
         "to a Status: not booted, or out of reach; steps addressed to them will fail"]
     assert code == 3 and "s.hbs:2: select 9" in err  # a step to it fails
