@@ -81,3 +81,15 @@ def cli_status(capsys):
             code = exc.code
         return code, capsys.readouterr().err
     return run
+
+
+#: The firmware images `make -C firmware` builds (`make test` builds them first).
+FIRMWARE_BUILD = Path(__file__).resolve().parents[1] / "firmware" / "build"
+
+
+@pytest.fixture
+def built_images() -> Path:
+    """firmware/build, with the images in it (the test skips without them)."""
+    if not (FIRMWARE_BUILD / "comm.hex").exists():
+        pytest.skip("firmware not built (make -C firmware)")
+    return FIRMWARE_BUILD

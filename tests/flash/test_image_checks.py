@@ -6,21 +6,13 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import pytest
 from intelhex import IntelHex
 
 from hexbot.protocol.header import SCHEMA_HASH
 from hexbot.protocol.wire import FW_VERSION
 
-BUILD = Path(__file__).resolve().parents[2] / "firmware" / "build"
 SCHEMA = f"{SCHEMA_HASH:08x}"
 
-
-@pytest.fixture
-def built():
-    if not (BUILD / "comm.hex").exists():
-        pytest.skip("firmware not built (make -C firmware)")
-    return BUILD
 
 
 def _other_schema(source: Path, out: Path) -> Path:
@@ -35,23 +27,25 @@ def _other_schema(source: Path, out: Path) -> Path:
     return out
 
 
-def test_another_boards_image_is_refused_before_the_device_is_read(hexbot_flash, built):
-    result = hexbot_flash("--board", "control", "--image", str(built / "comm.hex"),
+def test_another_boards_image_is_refused_before_the_device_is_read(hexbot_flash,
+                                                                   built_images):
+    result = hexbot_flash("--board", "control", "--image", str(built_images / "comm.hex"),
                           "--port", "/dev/pts/0")
     assert result.code == 1
     lines = result.out.splitlines()  # the image's line, and no step on the device
     assert len(lines) == 1 and lines[0].startswith(
-        f"image {built / 'comm.hex'}: comm board firmware {FW_VERSION}, protocol schema "
+        f"image {built_images / 'comm.hex'}: comm board firmware {FW_VERSION}, protocol schema "
         f"{SCHEMA}, ")
     assert result.err.strip() == (
-        f"hexbot flash: error: {built / 'comm.hex'}: it is the comm board's firmware, not "
+        f"hexbot flash: error: {built_images / 'comm.hex'}: it is the comm board's firmware, not "
         "the control board's; refusing to flash it, nothing was written (--force flashes "
         "it anyway)")
 
 
-def test_an_image_of_another_protocol_is_refused_and_force_flashes_it(hexbot_flash, built,
+def test_an_image_of_another_protocol_is_refused_and_force_flashes_it(hexbot_flash,
+                                                                      built_images,
                                                                       tmp_path):
-    old = _other_schema(built / "control.hex", tmp_path / "old-control.hex")
+    old = _other_schema(built_images / "control.hex", tmp_path / "old-control.hex")
     refused = hexbot_flash("--board", "control", "--image", str(old), "--port", "/dev/pts/0")
     assert refused.code == 1
     assert (f"it was built from protocol schema 0badf00d, this host speaks {SCHEMA}: "
@@ -65,9 +59,9 @@ def test_an_image_of_another_protocol_is_refused_and_force_flashes_it(hexbot_fla
     assert "avrdude" in forced.out.splitlines()[-1] and str(old) in forced.out.splitlines()[-1]
 
 
-def test_an_image_given_alone_names_its_board(hexbot_flash, built):
-    result = hexbot_flash("--image", str(built / "control.hex"), "--port", "/dev/pts/0",
+def test_an_image_given_alone_names_its_board(hexbot_flash, built_images):
+    result = hexbot_flash("--image", str(built_images / "control.hex"), "--port", "/dev/pts/0",
                           "--dry-run")
     assert result.code == 0
-    assert result.out.startswith(f"image {built / 'control.hex'}: control board firmware "
+    assert result.out.startswith(f"image {built_images / 'control.hex'}: control board firmware "
                                  f"{FW_VERSION}, protocol schema {SCHEMA}, ")

@@ -13,15 +13,8 @@ from hexbot.cli import main
 from hexbot.hil_sim import Simulator, load_scenario
 from hexbot.protocol.header import SCHEMA_HASH
 
-BUILD = Path(__file__).resolve().parents[2] / "firmware" / "build"
 SCHEMA = f"{SCHEMA_HASH:08x}"
 
-
-@pytest.fixture
-def built():
-    if not (BUILD / "comm.elf").exists():
-        pytest.skip("firmware not built (make -C firmware)")
-    return BUILD
 
 
 def _scenario(tmp: Path, comm: Path, control: Path) -> Path:
@@ -35,27 +28,27 @@ def _scenario(tmp: Path, comm: Path, control: Path) -> Path:
 
 
 @pytest.fixture
-def old_build(built, tmp_path) -> Path:
+def old_build(built_images, tmp_path) -> Path:
     """The real images as if built from another protocol: their marks' schema
     digits changed (the comm board's Status reads them from there too)."""
     out = tmp_path / "old"
     out.mkdir()
     for name in ("comm.elf", "control.elf"):
-        data = (built / name).read_bytes()
+        data = (built_images / name).read_bytes()
         assert data.count(f"schema={SCHEMA}".encode()) == 1
         (out / name).write_bytes(data.replace(f"schema={SCHEMA}".encode(), b"schema=0badf00d"))
     return out
 
 
-def test_a_boards_image_in_the_other_boards_place_is_said(built, tmp_path):
+def test_a_boards_image_in_the_other_boards_place_is_said(built_images, tmp_path):
     """Not refused: tests put a program that does nothing, or the RF12
     board's firmware, in a control board's place on purpose; but said."""
-    path = _scenario(tmp_path, built / "comm.elf", built / "comm.elf")
+    path = _scenario(tmp_path, built_images / "comm.elf", built_images / "comm.elf")
     sim = Simulator(load_scenario(path))
     assert sim.image_notes == [
-        f"{built / 'comm.elf'}: it is the comm board's firmware, not the control board's"]
-    assert Simulator(load_scenario(_scenario(tmp_path, built / "comm.elf",
-                                             built / "control.elf"))).image_notes == []
+        f"{built_images / 'comm.elf'}: it is the comm board's firmware, not the control board's"]
+    assert Simulator(load_scenario(_scenario(tmp_path, built_images / "comm.elf",
+                                             built_images / "control.elf"))).image_notes == []
 
 
 def test_hexbot_sim_warns_of_firmware_from_another_protocol(old_build, tmp_path, capsys):

@@ -4,15 +4,12 @@ generated macro and the reader agree, and the built images carry it."""
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 import pytest
 
 from hexbot.protocol import image_mark
 from hexbot.protocol.header import SCHEMA_HASH, render
 from hexbot.protocol.wire import FW_VERSION
-
-BUILD = Path(__file__).resolve().parents[2] / "firmware" / "build"
 
 
 def test_the_header_macro_spells_what_the_reader_reads():
@@ -40,17 +37,15 @@ def test_a_mark_needs_all_its_fields_and_its_end():
 
 
 @pytest.mark.parametrize("board", ["comm", "control", "rf12", "rflink"])
-def test_every_built_image_says_its_board_version_and_schema(board):
+def test_every_built_image_says_its_board_version_and_schema(board, built_images):
     """ELF and Intel HEX alike: the mark is in flash (.text), so the .hex
     that avrdude writes carries it too."""
     from intelhex import IntelHex
 
-    elf = BUILD / f"{board}.elf"
-    if not elf.exists():
-        pytest.skip("firmware not built (make -C firmware)")
+    elf = built_images / f"{board}.elf"
     expected = image_mark.ImageMark(board, FW_VERSION, SCHEMA_HASH)
     assert image_mark.read_mark(elf.read_bytes()) == expected
-    flash = IntelHex(str(BUILD / f"{board}.hex")).tobinstr()
+    flash = IntelHex(str(built_images / f"{board}.hex")).tobinstr()
     assert image_mark.read_mark(flash) == expected
 
 
