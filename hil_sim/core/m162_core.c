@@ -837,15 +837,28 @@ static void m162_tccr8_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *pa
 		m162_timer_align(m, p, i, count);
 }
 
+/* A prescaler restarted under a running 8-bit timer: the count it holds
+ * goes on from the next edge of the restarted prescaler. */
+static void m162_prescaler_restarted(m162_t *m, avr_timer_t *p, int prescaler)
+{
+	avr_t *avr = m->avr;
+	m->prescaler_base[prescaler] = avr->cycle;
+	if (!p->tov_cycles)
+		return; /* stopped: its next start counts from this base */
+	avr_io_addr_t io = AVR_DATA_TO_IO(p->r_tcnt);
+	uint8_t count = avr->io[io].r.c(avr, p->r_tcnt, avr->io[io].r.param);
+	m162_timer_align(m, p, prescaler, count);
+}
+
 /* SFIOR: PSR2 and PSR310 restart a prescaler; the bits read back 0 */
 static void m162_sfior_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
 {
 	(void)param;
 	m162_t *m = m162_of(avr);
 	if (v & (1 << PSR310))
-		m->prescaler_base[M162_PRESCALER_T0] = avr->cycle;
+		m162_prescaler_restarted(m, &m->mcu.timer0, M162_PRESCALER_T0);
 	if (v & (1 << PSR2))
-		m->prescaler_base[M162_PRESCALER_T2] = avr->cycle;
+		m162_prescaler_restarted(m, &m->mcu.timer2, M162_PRESCALER_T2);
 	avr_core_watch_write(avr, addr, v & ~((1 << PSR310) | (1 << PSR2)));
 }
 
