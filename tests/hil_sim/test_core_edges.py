@@ -571,3 +571,31 @@ def test_set_clock_outside_1_khz_to_100_mhz_is_refused():
             c.set_clock(m, hz)
     c.set_clock(m, 1000.0)
     assert c.clock(m) == 1000
+
+
+def test_a_stack_below_sram_stops_the_mcu_within_four_instructions():
+    """gcc's SPH-first updates pass through a low SP for an instruction or
+    two; a real overflow is stopped after four, before the stack has written
+    far into the I/O registers."""
+    elf = build("spdrop")
+    c = Cluster()
+    m = c.add_mcu(elf, "spdrop")
+    c.run(5_000)
+    assert c.state(m) == "crashed"
+    error = c.last_error(m)
+    assert error.startswith("stack overflow: SP=0040 below SRAM at PC=")
+    crashed_at = int(error.rsplit("PC=", 1)[1], 16)
+    # the instruction that set SP counts as the first; three nops after it
+    assert crashed_at - symbol(elf, "sp_dropped") <= 4 * 2
+
+
+def test_int0_switched_to_low_level_with_the_pin_low_repeats():
+    """No edge and no GICR write after the switch: only the pin's level asks
+    for the interrupt, at the next quantum boundary at the latest."""
+    c = Cluster()
+    m = c.add_mcu(build("levelmode"), "levelmode")
+    c.run(1_000)
+    c.set_input(m, "D", 0x04, 0x00)  # the falling edge: one interrupt
+    c.run(20_000)
+    assert c.port(m, "A")[1] == 5  # then level mode repeated it; the handler stopped at 5
+    assert c.state(m) == "sleeping"
