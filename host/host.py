@@ -199,6 +199,7 @@ class Host:
         self._listeners: list[Listener] = []
         self.warnings: list[str] = []
         self._schema_checked: set[int] = set()
+        self.replaying = False  # events come from a capture (replay), not from a port
         self._restarts_told: dict[int, int] = {}  # module -> restart error warned
         self.clock: Clock = WallClock(self.changed, behind=self._behind)
         #: how commands go out on the IR port (AUTO: the session probes first)
@@ -332,7 +333,8 @@ class Host:
         if self.log:
             self.log.event(t, port, ev)
         self._notify(obs)
-        if isinstance(ev, StatusReport) and ev.module_id not in self._schema_checked:
+        if (isinstance(ev, StatusReport) and ev.module_id not in self._schema_checked
+                and not self.replaying):  # a recorded module is no module of this host's
             self._schema_checked.add(ev.module_id)
             why = schema_mismatch(ev.schema)
             if why is not None:
@@ -391,7 +393,9 @@ class Host:
         bytes go through a parser, sent bytes and state changes to the
         listeners. Nothing is written to a port. ``control`` paces it
         (speed, pause, seek); without, as fast as it goes. Returns records
-        played."""
+        played. A replayed module's protocol schema is not checked against
+        this host's: the capture's own host spoke to it."""
+        self.replaying = True
         decoders = ReplayDecoders()
         n = 0
         stop = cancel or threading.Event()

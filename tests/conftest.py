@@ -93,3 +93,20 @@ def built_images() -> Path:
     if not (FIRMWARE_BUILD / "comm.hex").exists():
         pytest.skip("firmware not built (make -C firmware)")
     return FIRMWARE_BUILD
+
+
+@pytest.fixture
+def old_schema_images(built_images, tmp_path) -> Path:
+    """comm.elf and control.elf as if built from another protocol: their
+    image marks' schema digits are 0badf00d (the comm board's Status reads
+    them from there too), everything else as built."""
+    from hexbot.protocol.header import SCHEMA_HASH
+
+    ours = f"schema={SCHEMA_HASH:08x}".encode()
+    out = tmp_path / "old-schema"
+    out.mkdir()
+    for name in ("comm.elf", "control.elf"):
+        data = (built_images / name).read_bytes()
+        assert data.count(ours) == 1
+        (out / name).write_bytes(data.replace(ours, b"schema=0badf00d"))
+    return out

@@ -42,13 +42,21 @@ from hexbot.host.console.composer import Composer
 from hexbot.host.console.connection import PortPanel
 from hexbot.host.console.dialogs import HelpScreen, PlanScreen, PromptScreen, RotateScreen
 from hexbot.host.console.lattice import LatticeLegend, LatticeView
-from hexbot.host.console.messages import Parsed, PortState, SimEvent
+from hexbot.host.console.messages import HostNote, Parsed, PortState, SimEvent
 from hexbot.host.console.messages import Traffic as TrafficMsg
 from hexbot.host.console.modules_view import ModulesView
 from hexbot.host.console.palette import ConsoleCommands
 from hexbot.host.console.terminal import Entry, Terminal
 from hexbot.host.endpoints import Endpoints
-from hexbot.host.events import HostEvent, Listener, Observed, PortChanged, SimVerdict, Traffic
+from hexbot.host.events import (
+    HostEvent,
+    HostWarning,
+    Listener,
+    Observed,
+    PortChanged,
+    SimVerdict,
+    Traffic,
+)
 from hexbot.host.host import DEBUG, IR, Host
 from hexbot.host.link import LinkState, PortSettings
 from hexbot.host.replay_control import ReplayControl
@@ -343,6 +351,8 @@ class HexBotConsole(App[None]):
                                         event.detail, event.t, time.time()))
         elif isinstance(event, SimVerdict):
             self.post_message(SimEvent(event.verdict))
+        elif isinstance(event, HostWarning):
+            self.post_message(HostNote(event.text, event.t, time.time()))
 
     def terminal(self, port: str) -> Terminal:
         return self.main_query("#ir-term" if port == IR else "#debug-term", Terminal)
@@ -369,6 +379,15 @@ class HexBotConsole(App[None]):
             self.notify(escape(f"{who}: {verdict.reason.value} ({verdict.detail})"),
                         title="Simulator: rotation refused", severity="warning")
         self.refresh_soon()
+
+    def on_host_note(self, msg: HostNote) -> None:
+        """The host's warnings (what `hexbot send` prints as `warning: ...`):
+        in the IR terminal, where the traffic that caused them is, and once
+        as a notification."""
+        if not self._shown():
+            return
+        self.terminal(IR).add(Entry(msg.t, "warning", text=msg.text, wall=msg.wall))
+        self.notify(escape(msg.text), title="Warning", severity="warning", timeout=10)
 
     def on_port_state(self, msg: PortState) -> None:
         if not self._shown():

@@ -42,3 +42,12 @@ class SimEvent(Message):
     def __init__(self, verdict: PlantVerdict) -> None:
         super().__init__()
         self.verdict = verdict
+
+
+class HostNote(Message):
+    """A warning of the host's (``HostWarning``): a module that restarted, a
+    module or an image built from another protocol, a Select said again."""
+
+    def __init__(self, text: str, t: float, wall: float | None = None) -> None:
+        super().__init__()
+        self.text, self.t, self.wall = text, t, wall

@@ -38,7 +38,7 @@ _ARROW = {"tx": ("> ", "bold blue"), "rx": ("< ", "")}
 @dataclass(frozen=True)
 class Entry:
     t: float
-    kind: str  # tx | rx | event | state
+    kind: str  # tx | rx | event | state | warning (the host's: text)
     data: bytes = b""
     event: Event | None = None
     text: str = ""
@@ -61,6 +61,8 @@ def render_entry(e: Entry, mode: str, stamps: str = "session") -> Text | None:
     head = stamp(e.t, e.wall, stamps)
     if e.kind == "state":
         return _line(head, f"-- {e.text}", "bold magenta")
+    if e.kind == "warning":
+        return _line(head, f"!! warning: {e.text}", "bold yellow")
     if mode != "decoded":
         return None
     if e.kind == "tx":
@@ -92,7 +94,7 @@ class TerminalLines:
         if e.kind in ("tx", "rx"):
             done = self.stream.feed(e.kind, e.t, e.wall, e.data)
             return [render_stream_line(x, self.mode, self.stamps) for x in done]
-        if e.kind == "state":
+        if e.kind in ("state", "warning"):
             done = [render_stream_line(x, self.mode, self.stamps) for x in self.stream.interrupt()]
             return done + [render_entry(e, self.mode, self.stamps)]  # type: ignore[list-item]
         return []

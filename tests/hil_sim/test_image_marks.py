@@ -7,8 +7,6 @@ from __future__ import annotations
 
 from pathlib import Path
 
-import pytest
-
 from hexbot.cli import main
 from hexbot.hil_sim import Simulator, load_scenario
 from hexbot.protocol.header import SCHEMA_HASH
@@ -27,19 +25,6 @@ def _scenario(tmp: Path, comm: Path, control: Path) -> Path:
     return path
 
 
-@pytest.fixture
-def old_build(built_images, tmp_path) -> Path:
-    """The real images as if built from another protocol: their marks' schema
-    digits changed (the comm board's Status reads them from there too)."""
-    out = tmp_path / "old"
-    out.mkdir()
-    for name in ("comm.elf", "control.elf"):
-        data = (built_images / name).read_bytes()
-        assert data.count(f"schema={SCHEMA}".encode()) == 1
-        (out / name).write_bytes(data.replace(f"schema={SCHEMA}".encode(), b"schema=0badf00d"))
-    return out
-
-
 def test_a_boards_image_in_the_other_boards_place_is_said(built_images, tmp_path):
     """Not refused: tests put a program that does nothing, or the RF12
     board's firmware, in a control board's place on purpose; but said."""
@@ -51,27 +36,27 @@ def test_a_boards_image_in_the_other_boards_place_is_said(built_images, tmp_path
                                              built_images / "control.elf"))).image_notes == []
 
 
-def test_hexbot_sim_warns_of_firmware_from_another_protocol(old_build, tmp_path, capsys):
-    path = _scenario(tmp_path, old_build / "comm.elf", old_build / "control.elf")
+def test_hexbot_sim_warns_of_firmware_from_another_protocol(old_schema_images, tmp_path, capsys):
+    path = _scenario(tmp_path, old_schema_images / "comm.elf", old_schema_images / "control.elf")
     assert main(["sim", str(path), "--duration", "0.01", "--speed", "0"]) == 0
     err = capsys.readouterr().err.splitlines()
     assert [line for line in err if line.startswith("warning:")] == [
-        f"warning: {old_build / name}: it was built from protocol schema 0badf00d, this "
+        f"warning: {old_schema_images / name}: it was built from protocol schema 0badf00d, this "
         f"host speaks {SCHEMA}: rebuild it (make -C firmware)"
         for name in ("comm.elf", "control.elf")]
 
 
-def test_a_session_on_old_firmware_is_warned_before_any_status(old_build, capsys, tmp_path,
+def test_a_session_on_old_firmware_is_warned_before_any_status(old_schema_images, capsys, tmp_path,
                                                                monkeypatch):
     """The images' warning comes as the port opens; the comm board's Status,
     built from the same mark, then says the same of the running module."""
     monkeypatch.setenv("HEXBOT_LOG_DIR", str(tmp_path / "logs"))
-    url = f"hexbot-sim://pair?speed=0&firmware={old_build}"
+    url = f"hexbot-sim://pair?speed=0&firmware={old_schema_images}"
     assert main(["send", "Status", "--module", "2", "--port", url]) == 0
     err = capsys.readouterr().err.splitlines()
     warnings = [line for line in err if line.startswith("warning:")]
     assert warnings[:2] == [
-        f"warning: {old_build / name}: it was built from protocol schema 0badf00d, this "
+        f"warning: {old_schema_images / name}: it was built from protocol schema 0badf00d, this "
         f"host speaks {SCHEMA}: rebuild it (make -C firmware)"
         for name in ("comm.elf", "control.elf")]
     assert any("module 2: module firmware speaks protocol schema 0badf00d" in w

@@ -99,3 +99,22 @@ def test_a_capture_that_cannot_be_read_is_one_line_with_its_cause(tmp_path, caps
     err = capsys.readouterr().err.strip()
     assert err == (f"hexbot replay: error: {tmp_path / 'capture.hbcap'}: cannot read capture: "
                    "No such file or directory")
+
+
+def test_a_replayed_module_is_not_checked_against_this_hosts_protocol():
+    """The recorded modules spoke to the capture's host: a Status whose
+    schema differs from this host's (any capture older than the last
+    protocol change) is no warning in a replay, where the console showed it
+    for every module."""
+    from pathlib import Path
+
+    from hexbot.host.capture import read_capture
+    from hexbot.host.host import Host
+    from hexbot.protocol.header import SCHEMA_HASH
+
+    capture = Path(__file__).parent / "data" / "flower7_session.hbcap"
+    host = Host()
+    host.replay(read_capture(capture))
+    schemas = {o.event.schema for o in host.since(0) if isinstance(o.event, parser.StatusReport)}
+    assert schemas and SCHEMA_HASH not in schemas  # recorded before this host's protocol
+    assert host.warnings == []
