@@ -53,7 +53,7 @@ class Tracker:
 
     def rolled(self) -> list[list[Hop]]:
         """The rotations of each roll so far, in order."""
-        ends = self.rolls[1:] + [len(self.moves)]
+        ends = self.rolls[1:] + [len(self.moves)] if self.rolls else []  # no roll yet: none
         return [[(m.src, m.dst, _ROW[m.joint, m.direction], m.substrate)
                  for m in self.moves[begin:end]]
                 for begin, end in zip(self.rolls, ends, strict=True)]

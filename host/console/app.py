@@ -938,7 +938,11 @@ class HexBotConsole(App[None]):
         """Both terminals to the session folder (without a session log: the
         current folder), stamped so that a second save keeps the first."""
         folder = self.host.log.folder if self.host and self.host.log else Path.cwd()
-        stamp = time.strftime("%Y%m%d-%H%M%S")
+        stamp = base = time.strftime("%Y%m%d-%H%M%S")
+        n = 1
+        while any((folder / f"terminal-{p}-{stamp}.txt").exists() for p in (IR, DEBUG)):
+            n += 1  # a second save within the same second must not overwrite the first
+            stamp = f"{base}-{n}"
         try:
             paths = [self.terminal(p).save(folder / f"terminal-{p}-{stamp}.txt")
                      for p in (IR, DEBUG)]
