@@ -100,7 +100,8 @@ def test_an_unusable_default_log_dir_warns_and_runs_without_a_log(capsys, tmp_pa
      f"argument --module: a module id is 1..{wire.MAX_MODULE_ID} (0 = every module)"),
     (["replay", CAPTURE, "--port", "nosuch"], "'ir', 'debug'"),
     (["bench", "sim", "--seconds", "-1"], "--seconds"),
-    (["monitor", "--port", "loop://", "--debug-module", "2"], "--debug-port"),
+    # --duration: should the check regress, the monitor ends instead of hanging the suite
+    (["monitor", "--port", "loop://", "--debug-module", "2", "--duration", "1"], "--debug-port"),
     # ``--port "$PORT"`` with the variable unset: not the embedded simulator
     (["send", "Status", "--port", ""], "--port: empty port name"),
     (["monitor", "--port", "loop://", "--debug-port", " "], "--debug-port: empty port name"),
