@@ -93,3 +93,43 @@ class ClusterDouble:
 
     def state(self, mcu: int) -> str:
         return "running"
+
+
+def pair_on_dummy_images(tmp_path):
+    """The pair scenario with stand-in image files (the double loads no
+    firmware): for Simulator(..., cluster=ClusterDouble())."""
+    from hexbot.hil_sim import load_scenario
+    from hexbot.hil_sim.scenario import Firmware
+
+    for name in ("comm.elf", "control.elf"):
+        (tmp_path / name).write_bytes(b"\x7fELF")
+    scenario = load_scenario("pair")
+    fw = Firmware(tmp_path / "comm.elf", tmp_path / "control.elf")
+    scenario.modules = [type(m)(m.id, m.position, m.orientation, fw, m.line)
+                        for m in scenario.modules]
+    return scenario
+
+
+class RadiosDouble:
+    """What RadioMedium reads of the core's RF12 parts (radio_take,
+    radio_carrier, radio_state, radio_deliver), for a few radios: ``cells``
+    start receiving on ``channel``."""
+
+    def __init__(self, cells=(), channel=None) -> None:
+        self.logs: dict[int, list] = {i: [] for i in cells}
+        self.carrier: dict[int, tuple | None] = {}
+        self.state: dict[int, dict] = {i: {"receiving": True, "channel": channel} for i in cells}
+        self.delivered: list[tuple[int, int, int]] = []
+
+    def radio_take(self, index):
+        taken, self.logs[index] = self.logs.get(index, []), []
+        return taken
+
+    def radio_carrier(self, index):
+        return self.carrier.get(index)
+
+    def radio_state(self, index):
+        return self.state[index]
+
+    def radio_deliver(self, index, due, value):
+        self.delivered.append((index, due, value))

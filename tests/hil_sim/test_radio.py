@@ -11,6 +11,7 @@ import subprocess
 from pathlib import Path
 
 import pytest
+from cluster_double import RadiosDouble
 
 from hexbot.hil_sim import Simulator, load_scenario
 from hexbot.hil_sim.radio import RadioMedium
@@ -92,29 +93,6 @@ def test_same_seed_same_trace(rf12_image, tmp_path):
 
 
 # --- the medium's rules, on a double of the core's radio interface -----------
-
-
-class RadiosDouble:
-    """radio_take/radio_carrier/radio_state/radio_deliver of a few radios."""
-
-    def __init__(self) -> None:
-        self.logs: dict[int, list] = {}
-        self.carrier: dict[int, tuple | None] = {}
-        self.state: dict[int, dict] = {}
-        self.delivered: list[tuple[int, int, int]] = []
-
-    def radio_take(self, index):
-        taken, self.logs[index] = self.logs.get(index, []), []
-        return taken
-
-    def radio_carrier(self, index):
-        return self.carrier.get(index)
-
-    def radio_state(self, index):
-        return self.state[index]
-
-    def radio_deliver(self, index, due, value):
-        self.delivered.append((index, due, value))
 
 
 CH = (1, 1600, 71)

@@ -4,13 +4,12 @@ times, debug-port events, generated scenario names. Against the scripted
 Cluster double (no firmware), as test_simulator_unit.py."""
 
 import pytest
-from cluster_double import ClusterDouble, uart_settings
+from cluster_double import ClusterDouble, RadiosDouble, pair_on_dummy_images, uart_settings
 
 from hexbot.errors import HexBotTimeoutError
 from hexbot.hil_sim import Simulator, load_scenario
 from hexbot.hil_sim.module import decode_actuators, decode_leds
 from hexbot.hil_sim.plant import NEG, OFF, POS, SHORT
-from hexbot.hil_sim.scenario import Firmware
 from hexbot.protocol.pins import (
     LED_JOINT_PINS,
     LED_SIDE_NEG_PINS,
@@ -26,12 +25,7 @@ DEBUG_BYTE = 2_083  # one 4800-baud byte
 
 @pytest.fixture
 def pair(tmp_path):
-    for name in ("comm.elf", "control.elf"):
-        (tmp_path / name).write_bytes(b"\x7fELF")
-    scenario = load_scenario("pair")
-    fw = Firmware(tmp_path / "comm.elf", tmp_path / "control.elf")
-    scenario.modules = [type(m)(m.id, m.position, m.orientation, fw, m.line)
-                        for m in scenario.modules]
+    scenario = pair_on_dummy_images(tmp_path)
     double = ClusterDouble()
     return Simulator(scenario, cluster=double), double
 
@@ -146,12 +140,7 @@ class ResettingDouble(ClusterDouble):
 
 
 def test_a_comm_board_reset_mid_byte_cuts_its_byte_with_the_python_medium(tmp_path):
-    for name in ("comm.elf", "control.elf"):
-        (tmp_path / name).write_bytes(b"\x7fELF")
-    scenario = load_scenario("pair")
-    fw = Firmware(tmp_path / "comm.elf", tmp_path / "control.elf")
-    scenario.modules = [type(m)(m.id, m.position, m.orientation, fw, m.line)
-                        for m in scenario.modules]
+    scenario = pair_on_dummy_images(tmp_path)
     c = ResettingDouble()
     sim = Simulator(scenario, cluster=c)
     c.script_pin(2, 0, "A", CENTRE_PORTA)
@@ -184,33 +173,10 @@ def test_the_comm_receiver_went_off_only_by_an_off_change_after_the_moment(pair)
 CH = (1, 1600, 71)
 
 
-class Radios:
-    """What RadioMedium reads of the core's RF12 parts."""
-
-    def __init__(self, cells):
-        self.logs = {i: [] for i in cells}
-        self.carrier = {}
-        self.state = {i: {"receiving": True, "channel": CH} for i in cells}
-        self.delivered = []
-
-    def radio_take(self, index):
-        taken, self.logs[index] = self.logs[index], []
-        return taken
-
-    def radio_carrier(self, index):
-        return self.carrier.get(index)
-
-    def radio_state(self, index):
-        return self.state[index]
-
-    def radio_deliver(self, index, due, value):
-        self.delivered.append((index, due, value))
-
-
 def radio_medium(cells):
     from hexbot.hil_sim.radio import RadioMedium
 
-    radios, events = Radios(cells), []
+    radios, events = RadiosDouble(cells, CH), []
     med = RadioMedium(radios, {i: i for i in cells}, cells.__getitem__, 5, 1,
                       lambda cycle, e: events.append(e))
     for i in cells:

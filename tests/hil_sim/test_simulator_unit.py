@@ -4,7 +4,7 @@ selector history, actuator decoding. The real extension is exercised in test_e2e
 import sys
 
 import pytest
-from cluster_double import ClusterDouble
+from cluster_double import ClusterDouble, pair_on_dummy_images
 
 from hexbot.errors import HexBotError, ScenarioError
 from hexbot.hil_sim import Simulator, load_scenario
@@ -17,12 +17,7 @@ SIDE1_PORTA = 0xE0  # Y0
 
 @pytest.fixture
 def pair(tmp_path):
-    for name in ("comm.elf", "control.elf"):
-        (tmp_path / name).write_bytes(b"\x7fELF")
-    scenario = load_scenario("pair")
-    fw = Firmware(tmp_path / "comm.elf", tmp_path / "control.elf")
-    scenario.modules = [type(m)(m.id, m.position, m.orientation, fw, m.line)
-                        for m in scenario.modules]
+    scenario = pair_on_dummy_images(tmp_path)
     double = ClusterDouble()
     return Simulator(scenario, cluster=double), double
 

@@ -16,3 +16,13 @@ def sync(fn):
         return asyncio.run(fn(*args, **kwargs))
 
     return wrapper
+
+
+async def settled(pilot, pred, limit_s: float = 20.0) -> bool:
+    """Whether ``pred()`` holds, giving the app up to ``limit_s`` to get
+    there (a bound against a hang, not a measurement)."""
+    for _ in range(int(limit_s / 0.05)):
+        if pred():
+            return True
+        await pilot.pause(0.05)
+    return pred()

@@ -4,7 +4,7 @@ that is not complete. A console on no port: nothing here sends."""
 
 from __future__ import annotations
 
-from pilot_sync import sync
+from pilot_sync import settled, sync
 
 from hexbot.host.console.app import HexBotConsole
 from hexbot.host.console.composer import Composer
@@ -13,14 +13,6 @@ from hexbot.host.host import Host
 
 def portless() -> HexBotConsole:
     return HexBotConsole(Host(), start_ports=False)
-
-
-async def settled(pilot, pred, limit_s: float = 20.0) -> bool:
-    for _ in range(int(limit_s / 0.05)):  # a bound against a hang, not a measurement
-        if pred():
-            return True
-        await pilot.pause(0.05)
-    return pred()
 
 
 async def filter_for(pilot, text: str) -> None:

@@ -6,7 +6,7 @@ table emptied and the Select's argument stayed blank)."""
 from __future__ import annotations
 
 import pytest
-from pilot_sync import sync
+from pilot_sync import settled, sync
 from textual import events
 
 from hexbot.host.console.app import HexBotConsole
@@ -36,14 +36,6 @@ def typed_at_once(app: HexBotConsole, *keys: tuple[str, str | None]) -> None:
         event = events.Key(key, char)
         event.set_sender(app)
         app._driver.send_message(event)  # what ``pilot.press`` does, without its waits
-
-
-async def settled(pilot, pred, limit_s: float = 20.0) -> bool:
-    for _ in range(int(limit_s / 0.05)):  # a bound against a hang, not a measurement
-        if pred():
-            return True
-        await pilot.pause(0.05)
-    return pred()
 
 
 def focused_id(app: HexBotConsole) -> str | None:

@@ -9,7 +9,7 @@ with the parallel part of the suite (no ``wallclock`` mark)."""
 
 from __future__ import annotations
 
-from pilot_sync import sync
+from pilot_sync import settled, sync
 
 from hexbot.host import cli_console
 from hexbot.host.console.app import HexBotConsole
@@ -24,14 +24,6 @@ from hexbot.protocol.parser import parse_all
 from hexbot.protocol.simulation import Moved
 
 TURN_OFF_ALL = frames.encode_pc(frames.make("TurnOffAll"))
-
-
-async def settled(pilot, pred, limit_s: float = 20.0) -> bool:
-    for _ in range(int(limit_s / 0.05)):  # a bound against a hang, not a measurement
-        if pred():
-            return True
-        await pilot.pause(0.05)
-    return pred()
 
 
 def on_pty(responder) -> HexBotConsole:
