@@ -231,12 +231,10 @@ class Simulator:
                 self._marks[image] = read_mark(image.read_bytes())
             except OSError as exc:
                 raise ScenarioError(f"{what}: cannot read: {exc.strerror or exc}") from None
-            _, other = mismatch(self._marks[image], boards, SCHEMA_HASH)
-            if other:
-                self.image_notes.append(f"{image}: {other}")
-        wrong, _ = mismatch(self._marks[image], boards, SCHEMA_HASH)
-        if wrong and f"{image}: {wrong}" not in self.image_notes:
-            self.image_notes.append(f"{image}: {wrong}")
+        for problem in mismatch(self._marks[image], boards, SCHEMA_HASH):
+            note = f"{image}: {problem}"
+            if problem and note not in self.image_notes:  # an image many modules run: once
+                self.image_notes.append(note)
 
     def _add_rf12(self, module: Module, image: Any, where: str) -> None:
         """The module's wireless board: an MCU with an RF12 part on its SPI pins

@@ -131,8 +131,8 @@ def guard_image(image: Path, mark: image_mark.ImageMark | None, board: str | Non
                 force: bool, say) -> None:
     """Refuse an image built for another board or from another protocol than
     this host's (its modules would not understand the host), unless forced."""
-    wrong, other = image_mark.mismatch(mark, (board,) if board else (), SCHEMA_HASH)
-    problems = [p for p in (wrong if board else None, other) if p]
+    # no board only without a mark (the mark names one), and then nothing to check
+    problems = [p for p in image_mark.mismatch(mark, (board,) if board else (), SCHEMA_HASH) if p]
     if not problems:
         return
     if force:
