@@ -46,13 +46,16 @@ class SimPorts:
 
 class SimProcess:
     def __init__(self, scenario: str = "flower7", seed: int | None = None,
-                 speed: float = 1.0, start_timeout: float = 60.0) -> None:
+                 speed: float = 1.0, start_timeout: float = 60.0,
+                 wait_client: bool = False) -> None:
         self.scenario = scenario
         self.speed = speed
         cmd = [sys.executable, "-m", "hexbot.cli", "sim", scenario, "--pty",
                "--speed", f"{speed:g}"]
         if seed is not None:
             cmd += ["--seed", str(seed)]
+        if wait_client:  # hold the clock until the IR port is open: the boot texts reach it
+            cmd.append("--wait-client")
         self.command = cmd
         # stderr to a file and stdout drained by a thread: a chatty child
         # must never block on a full pipe.

@@ -69,7 +69,9 @@ def test_the_url_port_reads_the_boot_only_with_the_modules_settings():
 def test_a_pty_client_at_the_wrong_baud_reads_garbage():
     from hexbot.host.simproc import SimProcess
 
-    with SimProcess("single", speed=0) as sim:
+    # --wait-client: at speed 0 the boot can be over before pyserial opens the
+    # port, and pyserial flushes its input on open (CI failed on that race)
+    with SimProcess("single", speed=0, wait_client=True) as sim:
         with serial.Serial(sim.ports.ir, 300, timeout=30) as port:
             boot = port.read_until(b"COMM. LISTENING")
         with serial.Serial(sim.ports.ir, 9600, timeout=1.0) as port:
