@@ -9,6 +9,7 @@ tries the next method or reports the reason (``hexbot plan`` exits 1).
 
 from __future__ import annotations
 
+import copy
 import time
 
 #: Default time budget of one ``hexbot plan`` call, in seconds (10,000 modules fit in it).
@@ -35,9 +36,12 @@ class Deadline:
     own cap, see :meth:`capped`), whichever comes first."""
 
     def __init__(self, seconds: float | None = DEFAULT_BUDGET,
-                 cpu_seconds: float | None = None) -> None:
+                 cpu_seconds: float | None = None, whole: float | None = None) -> None:
         self.seconds = seconds  # of wall time (None: no limit)
         self.cpu_seconds = cpu_seconds
+        # the budget this one is a share of (the plan's ``--budget``): a method
+        # that got a late share of a few ms says what it was a share of
+        self.whole = seconds if whole is None else whole
         self._end = None if seconds is None else time.monotonic() + seconds
         self._cpu_end = None if cpu_seconds is None else time.process_time() + cpu_seconds
 
@@ -56,7 +60,7 @@ class Deadline:
         left = self.remaining()
         if left == float("inf"):
             return Deadline(None)
-        return Deadline(max(0.0, min(left, max(at_least, fraction * left))))
+        return Deadline(max(0.0, min(left, max(at_least, fraction * left))), whole=self.whole)
 
     def capped(self, seconds: float) -> Deadline:
         """This deadline, or once the planner has used ``seconds`` of CPU time
@@ -65,8 +69,10 @@ class Deadline:
         before its cap, so the plans are the same (a blob of 100 lost its local
         plan to the strip's, 218 -> 6,396 moves, in a bench run beside other
         jobs when the caps were wall time)."""
-        left = self.remaining()
-        return Deadline(None if left == float("inf") else max(0.0, left), cpu_seconds=seconds)
+        capped = copy.copy(self)  # the same end and the same words for it
+        capped.cpu_seconds = seconds
+        capped._cpu_end = time.process_time() + seconds
+        return capped
 
     def check(self, what: str) -> None:
         """Raise :class:`PlanningFailure` when the budget is used up; the
@@ -75,8 +81,14 @@ class Deadline:
             raise BudgetExhausted(f"{what}: gave up, its cap of {self.cpu_seconds:.3g} s "
                                   "of CPU time is used up")
         if self.remaining() <= 0:
-            raise BudgetExhausted(f"{what}: gave up, its time budget of "
-                                  f"{self.seconds:.3g} s is used up")
+            raise BudgetExhausted(f"{what}: gave up, {self.describe()} is used up")
+
+    def describe(self) -> str:
+        """'its time budget of 2 s', or with a share: 'its share (0.001 s) of
+        the time budget of 3 s' (a share alone read "0 s" when it came late)."""
+        if self.whole is None or self.whole == self.seconds:
+            return f"its time budget of {self.seconds:.3g} s"
+        return f"its share ({self.seconds:.3g} s) of the time budget of {self.whole:.3g} s"
 
 
 #: A deadline that never expires (library calls without a budget).

@@ -261,7 +261,7 @@ def test_each_method_gets_its_share_of_the_budget(p01, clock):
     plan = plan_robust(initial, goal, budget=60.0, progress=hold)
     assert plan.reached and plan.method == "direct, backwards"
     assert len(plan.tried) == 1
-    assert plan.tried[0].startswith("direct: gave up, its time budget of ")
+    assert plan.tried == ["direct: gave up, its share (30 s) of the time budget of 60 s is used up"]
     assert check_plan(initial, goal, plan.steps).ok
 
 
@@ -276,6 +276,11 @@ def test_a_deadline_names_the_limit_that_ran_out():
                                               r"used up$"):
         Deadline(300).capped(0.0).check("local")
     Deadline(300).capped(60.0).check("local")  # neither ran out
+    # a method whose share came when little was left names the whole budget
+    # too ("its time budget of 0 s" alone read as a bug)
+    with pytest.raises(BudgetExhausted, match=r"^local: gave up, its share \(0 s\) of the time "
+                                              r"budget of 1e-09 s is used up$"):
+        Deadline(1e-9).share(0.5).capped(60.0).check("local")
     # a share is never past the deadline it is a share of
     share = Deadline(1.0).share(0.5, at_least=5.0)
     assert 0.5 < share.seconds <= 1.0
