@@ -10,17 +10,15 @@ import sys
 from hexbot.cli_args import seconds
 from hexbot.errors import LinkUnavailableError
 from hexbot.host.cli_common import session
-from hexbot.host.describe import describe_event, describe_tx, event_json
+from hexbot.host.describe import describe_event, event_json
 from hexbot.host.endpoints import add_port_arguments
-from hexbot.host.events import HostEvent, Observed, Traffic, TrafficDirection
+from hexbot.host.events import HostEvent, Observed
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="one JSON object per line")
     parser.add_argument("--duration", type=seconds, default=None, metavar="S",
                         help="stop after S seconds (default: until Ctrl-C)")
-    parser.add_argument("--tx", action="store_true",
-                        help="also show what this host sends (nothing unless scripted)")
     add_port_arguments(parser)
 
 
@@ -36,14 +34,11 @@ def run(args: argparse.Namespace) -> int:
     lines: queue.Queue[str] = queue.Queue()
     fmt = format_json if args.json else format_line
 
+    # (it sends nothing, so there is no --tx: the option once offered showed
+    # nothing; `send` and the console's terminal show what a host sends)
     def listener(event: HostEvent) -> None:
         if isinstance(event, Observed):
             lines.put(fmt(event))
-        elif isinstance(event, Traffic) and event.direction is TrafficDirection.TX and args.tx:
-            t, port, data = event.t, event.port, event.data
-            lines.put(json.dumps({"t": round(t, 3), "port": port, "kind": "tx",
-                                  "raw": data.hex()}) if args.json
-                      else f"{t:9.3f} {port:<5} > {describe_tx(data)}")
 
     def flush() -> bool:
         while not lines.empty():
