@@ -107,5 +107,8 @@ def describe_tx(data: bytes) -> str:
         return sent
     try:
         return str(frames.decode_pc(data))
-    except FrameError:
-        return f"raw {data.hex(' ')}"
+    except FrameError as exc:
+        try:  # a well-formed frame with an argument out of range (--unchecked)
+            return f"{frames.decode_pc(data, strict=False)} (unchecked: {exc})"
+        except FrameError:
+            return f"raw {data.hex(' ')}"

@@ -107,9 +107,10 @@ def encode_pc(command: Command, *, strict: bool = True) -> bytes:
     return bytes([wire.START, command.code, *args, wire.END])
 
 
-def decode_pc(frame: bytes) -> Command:
+def decode_pc(frame: bytes, strict: bool = True) -> Command:
     """Inverse of :func:`encode_pc`; trailing ``N`` bytes beyond the
-    function's arity are dropped, everything is range-checked."""
+    function's arity are dropped, everything is range-checked (the frame's
+    shape always; the arguments' ranges only when ``strict``, as encode_pc)."""
     if len(frame) != wire.PC_FRAME_LEN:
         raise FrameError(f"PC frame must be {wire.PC_FRAME_LEN} bytes, got {len(frame)}")
     if frame[0] != wire.START:
@@ -128,7 +129,8 @@ def decode_pc(frame: bytes) -> Command:
     # Optional trailing arguments (Select's further ids) are 'N' when absent.
     while args and len(args) > _required_count(fn) and args[-1] == wire.UNUSED:
         args.pop()
-    return validate(Command(code, tuple(args)))
+    command = Command(code, tuple(args))
+    return validate(command) if strict else command
 
 
 def _required_count(fn: FunctionCode) -> int:

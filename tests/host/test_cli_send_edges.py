@@ -16,8 +16,9 @@ def test_dry_run_prints_an_unchecked_frame_instead_of_refusing_it(capsys):
     # firmware's own check): printed, nothing opened
     assert main(["send", "JxOpen", "9", "--unchecked", "--dry-run", "--no-log"]) == 0
     out = capsys.readouterr().out
-    assert out.splitlines() == ["raw 2a 01 09 4e 4e 4e 4e 4e 4e 4e 23: "
-                                "2a 01 09 4e 4e 4e 4e 4e 4e 4e 23"]
+    # named, with the check it skips (it printed only "raw 2a 01 09 ...")
+    assert out.splitlines() == ["JxOpen(9) (unchecked: JxOpen: i (joint number) must be 1..6, "
+                                "got 9): 2a 01 09 4e 4e 4e 4e 4e 4e 4e 23"]
 
 
 def test_a_function_and_raw_bytes_together_are_a_usage_error(capsys, log_dir):
