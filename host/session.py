@@ -48,6 +48,9 @@ from hexbot.protocol.frames import Command
 from hexbot.protocol.mavlink_codec import MAX_FRAME_LEN, Framing, MavStatus
 from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
 
+#: The texts a module prints while it boots (the comm board's, the control board's).
+_BOOT_PHRASES = frozenset({wire.TEXT_COMM_READY, wire.TEXT_CTR_READY,
+                           wire.TEXT_CTR_LISTENING, wire.TEXT_COMM_LISTENING})
 #: ``ID=`` of a boot text's tail, as a regular expression (``wire.BOOT_ID_TAIL``)
 _BOOT_ID = r"\b" + re.escape(wire.BOOT_ID_TAIL.strip())
 
@@ -128,7 +131,8 @@ class Outcome:
             return f"{head}: port lost ({self.detail})" if self.detail else f"{head}: port lost"
         if self.kind is OutcomeKind.GARBLED:
             what = "; ".join(_garbled(g.event) for g in self.garbage)
-            return f"{head}: garbled reply: {what} (replies collided?); {n} decoded"
+            why = f"; {self.detail}" if self.detail else ""
+            return f"{head}: garbled reply: {what} (replies collided?); {n} decoded{why}"
         return f"{head}: cancelled"
 
     def lines(self) -> list[str]:
@@ -209,6 +213,7 @@ class _Collector:
     extra: list[Observed] = field(default_factory=list)
     garbage: list[Observed] = field(default_factory=list)
     checked: int = 0
+    mark: int = 0  # the journal's length when the command went out
     roll_call: bool = False  # every module's answer counts
     anonymous_ok: bool = False  # a module without id (ID=00 at boot) is on this port
     owed: list[_Owed] = field(default_factory=list)  # the session's, struck as paid
@@ -600,8 +605,8 @@ class Session:
             return Outcome(command, OutcomeKind.PORT_LOST, detail=str(exc))
         wanted = set(ids) if ids is not None else set(seen) if roll_call else None
         got = _Collector(code, wanted, need, port,
-                         checked=mark, roll_call=roll_call, anonymous_ok=self._anonymous(port),
-                         owed=self._owed)
+                         checked=mark, mark=mark, roll_call=roll_call,
+                         anonymous_ok=self._anonymous(port), owed=self._owed)
         waiting = self.waiting = Waiting(
             str(command) if isinstance(command, Command) else f"frame {command.hex(' ')}",
             need, started, timeout)
@@ -758,13 +763,32 @@ class Session:
         if lost is not None:
             return Outcome(command, OutcomeKind.PORT_LOST, replies, extra, missing,
                            waited=waited, detail=lost)
+        booting = self._booting(got.mark, port)
         if got.garbage:
             return Outcome(command, OutcomeKind.GARBLED, replies, extra, missing,
-                           waited=waited, garbage=tuple(got.garbage))
+                           waited=waited, garbage=tuple(got.garbage), detail=booting)
         busy = sorted({d.describe() for d in self._owed
                        if d.module is None or d.module in missing})
         return Outcome(command, OutcomeKind.TIMED_OUT, replies, extra, missing, waited=waited,
-                       detail="; ".join(busy))
+                       detail="; ".join(busy + ([booting] if booting else [])))
+
+    def _booting(self, mark: int, port: str) -> str:
+        """Why a command got no clean answer when modules were booting while
+        it waited (a boot text, or the tail of one cut by the command's own
+        frame): "" if none was. A command sent during a boot is lost."""
+        with self.host.lock:
+            heard = [o for o in self.host.since(mark) if o.port == port]
+        for obs in heard:
+            ev = obs.event
+            if isinstance(ev, Text) and ev.phrase in _BOOT_PHRASES:
+                what = f"'{ev.phrase}' at {obs.t:.1f} s"
+            elif isinstance(ev, Garbage) and wire.BOOT_FW_TAIL.strip().encode() in ev.raw:
+                what = f"a boot text's tail at {obs.t:.1f} s"
+            else:
+                continue
+            return (f"modules were booting (heard {what}): a command sent during a boot "
+                    f"is lost; send it again after '{wire.TEXT_COMM_LISTENING}'")
+        return ""
 
 
 #: A version string as long as the boot slots allow (timing.BOOT_GUARD_TICKS):
