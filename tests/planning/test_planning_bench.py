@@ -44,6 +44,10 @@ def test_a_failed_pair_is_listed_and_the_run_fails(monkeypatch, capsys):
     monkeypatch.setattr(bench, "plan_robust", refusing)
     assert bench.exhaustive(2) == 1
     assert "no plan found: test" in capsys.readouterr().out
+    # --scan too (it printed the failures and exited 0)
+    assert bench.scan(2) == 1
+    out = capsys.readouterr().out
+    assert out.count("no plan found: test") == 2 and "2 random pairs: not reached: 2" in out
 
 
 def test_the_holes_family_has_holes_in_both_shapes_and_is_reproducible():
@@ -113,3 +117,25 @@ def test_enclosed_finds_the_cells_a_shape_walls_in():
     assert enclosed(ring - {(1, 0)}) == set()  # an open side: an inlet, not a hole
     assert enclosed(set()) == set()
     assert enclosed({(0, 0)}) == set()
+
+
+def test_the_cases_table_fails_the_run_when_a_robust_case_is_not_planned(monkeypatch, capsys):
+    import argparse
+
+    from hexbot.bench import planning as bench
+    from hexbot.planning.plan import Plan
+
+    parser = argparse.ArgumentParser()
+    bench.add_arguments(parser)
+    args = parser.parse_args(["--cases", "--sizes", "10", "--blob-sizes", "10",
+                              "--apart-sizes", "", "--seeds", "1"])
+    assert bench.run(args) == 0
+    capsys.readouterr()
+
+    def refusing(initial, goal, fixed=None):
+        return Plan(mode="robust", initial=initial, goal=goal, reason="no plan found: test")
+
+    monkeypatch.setattr(bench, "plan_robust", refusing)
+    assert bench.run(args) == 1  # it printed the reasons and exited 0
+    out = capsys.readouterr().out
+    assert "\nparallelogram (10): no plan found: test" in out
