@@ -18,6 +18,7 @@ import sys
 import time
 
 from hexbot.planning.locomotion import flat_scenario, load_ruleset, load_scenario, simulate
+from hexbot.planning.locomotion.cli import run_status
 
 
 def case(ruleset: str, n: int, rounds: int, scenario: str = "flat") -> dict:
@@ -32,6 +33,9 @@ def case(ruleset: str, n: int, rounds: int, scenario: str = "flat") -> dict:
         "n": n,
         "rounds": result.rounds,
         "status": result.status,
+        # as `hexbot locomotion run` judges it: a map's goal reached, no
+        # deadlock or broken invariant (a flat strip has no goal)
+        "ok": run_status(result.status, has_goal=sc.threshold is not None) == 0,
         "advanced": result.advanced,
         "total_moves": int(sum(result.moves_per_module)),
         "seconds": round(seconds, 3),
@@ -62,4 +66,8 @@ def run(args: argparse.Namespace) -> int:
         "cases": [case(*c) for c in cases],
     }
     print(json.dumps(out, indent=2))
-    return 0
+    failed = [f"{c['ruleset']} on {c['scenario']} ({c['n']}): {c['status']}"
+              for c in out["cases"] if not c["ok"]]
+    if failed:
+        print("not ok: " + "; ".join(failed), file=sys.stderr)
+    return 1 if failed else 0

@@ -116,3 +116,17 @@ def test_the_readme_names_every_benchmark():
     readme = (BENCH.parent / "README.md").read_text()
     row = next(line for line in readme.splitlines() if line.startswith("| `bench/` |"))
     assert {name for name in BENCHMARKS if f"`{name}`" not in row} == set()
+
+
+def test_the_locomotion_benchmark_fails_when_a_map_case_misses_its_goal(monkeypatch, capsys):
+    from hexbot.bench import locomotion
+
+    real = locomotion.case
+    # one round each: the flat strips have no goal (fine), the maps miss theirs
+    monkeypatch.setattr(locomotion, "case",
+                        lambda ruleset, n, rounds, scenario="flat": real(ruleset, n, 1, scenario))
+    assert main(["bench", "locomotion", "--quick"]) == 1
+    out, err = capsys.readouterr()
+    cases = json.loads(out)["cases"]
+    assert [c["ok"] for c in cases] == [c["scenario"] == "flat" for c in cases]
+    assert err.startswith("not ok: salvador on histogram-3 (90): rounds-exhausted; ")

@@ -139,3 +139,27 @@ def test_the_cases_table_fails_the_run_when_a_robust_case_is_not_planned(monkeyp
     assert bench.run(args) == 1  # it printed the reasons and exited 0
     out = capsys.readouterr().out
     assert "\nparallelogram (10): no plan found: test" in out
+
+
+def test_the_small_bank_run_fails_when_the_robust_mode_misses_a_case(monkeypatch, capsys):
+    import argparse
+
+    from hexbot.bench import planning as bench
+    from hexbot.planning import bank, robust
+    from hexbot.planning.plan import Plan
+
+    cases = bank.small_cases()[:2]
+    monkeypatch.setattr(bank, "small_cases", lambda: cases)
+    args = argparse.Namespace(budget=30.0, json=False)
+    assert bench.run_small(args) == 0
+    capsys.readouterr()
+
+    def refusing(initial, goal, fixed=None, budget=None):
+        return Plan(mode="robust", initial=initial, goal=goal, reason="no plan found: test")
+
+    monkeypatch.setattr(robust, "plan_robust", refusing)
+    assert bench.run_small(args) == 1  # the gap table printed "-" and exited 0
+    out, err = capsys.readouterr()
+    assert "no plan found: test" in out
+    assert err.strip() == ("robust mode did not plan (or the checker refused): "
+                           + ", ".join(c.name for c in cases))
