@@ -173,7 +173,7 @@ typedef struct m162_t {
 	uint8_t slept;      /* asleep in this step: an interrupt now wakes it (m162_serve) */
 	avr_io_write_t spdr_write_orig;
 	avr_io_write_t wdtcr_write_orig;
-	avr_io_write_t tcnt_write_orig[2], tccr_write_orig[2]; /* timers 0 and 2 */
+	avr_io_write_t tcnt_write_orig[4], tccr_write_orig[4]; /* timers 0..3 */
 } m162_t;
 
 /* Core */

@@ -20,10 +20,11 @@
  *  - Watchdog: WDTCR = 0 after every reset, and WDRF does not hold WDE set
  *    (ATmega162 datasheet, safety level 1; simavr re-arms it after a
  *    watchdog reset, as the newer parts do).
- *  - Timers 0 and 2: a TCNT write or a clock start counts from the written
+ *  - Timers 0..3: a TCNT write or a clock start counts from the written
  *    value on the next edge of the free-running prescaler (simavr rescales
  *    the value by 255 and drops the prescaler phase: a 10 ms tick came out
- *    9,976 cycles instead of 9,984).
+ *    9,976 cycles instead of 9,984; and it loses a 16-bit TCNT written while
+ *    the timer is stopped).
  *  - Each MCU runs on its own clock (m162_clock_t); what it reports to the
  *    scheduler is in cluster cycles.
  */
@@ -770,10 +771,10 @@ static void m162_watchdog_reset(m162_t *m)
 }
 
 /* ------------------------------------------------------------------ */
-/* timers 0 and 2: exact TCNT writes and prescaler phase */
+/* timers 0..3: exact TCNT writes and prescaler phase */
 
-/* prescaler_base index of each 8-bit timer: timer 0 shares its prescaler
- * with timers 1 and 3 (PSR310), timer 2 has its own (PSR2). */
+/* prescaler_base index of each timer: timers 0, 1 and 3 share a prescaler
+ * (PSR310), timer 2 has its own (PSR2). */
 #define M162_PRESCALER_T0 0
 #define M162_PRESCALER_T2 1
 
@@ -809,45 +810,73 @@ static void m162_timer_align(m162_t *m, avr_timer_t *p, int prescaler, uint32_t 
 	}
 }
 
-static int m162_timer8_index(m162_t *m, avr_timer_t *p)
+static avr_timer_t *m162_timer(m162_t *m, int n)
+{
+	avr_timer_t *timers[4] = { &m->mcu.timer0, &m->mcu.timer1, &m->mcu.timer2,
+		&m->mcu.timer3 };
+	return timers[n];
+}
+
+/* which of the four timers p is (the index of its saved write handlers) */
+static int m162_timer_number(m162_t *m, avr_timer_t *p)
+{
+	for (int n = 0; n < 3; n++)
+		if (p == m162_timer(m, n))
+			return n;
+	return 3;
+}
+
+static int m162_prescaler_of(m162_t *m, avr_timer_t *p)
 {
 	return p == &m->mcu.timer2 ? M162_PRESCALER_T2 : M162_PRESCALER_T0;
 }
 
-static void m162_tcnt8_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
+/* The count the timer holds, both bytes of a 16-bit one: a stopped timer
+ * keeps what TCNT was set to; a running one is read as the firmware reads
+ * it (simavr's read refreshes TCNTnH too). */
+static uint32_t m162_timer_count(avr_t *avr, avr_timer_t *p)
 {
-	m162_t *m = m162_of(avr);
-	avr_timer_t *p = param;
-	int i = m162_timer8_index(m, p);
-	m->tcnt_write_orig[i](avr, addr, v, param);
-	m162_timer_align(m, p, i, v);
+	if (p->tov_cycles) {
+		avr_io_addr_t io = AVR_DATA_TO_IO(p->r_tcnt);
+		avr->io[io].r.c(avr, p->r_tcnt, avr->io[io].r.param);
+	}
+	return avr->data[p->r_tcnt] | (p->r_tcnth ? (uint32_t)avr->data[p->r_tcnth] << 8 : 0);
 }
 
-static void m162_tccr8_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
+/* A TCNT write (the low byte of a 16-bit one: avr-gcc writes the high
+ * byte first, which simavr keeps in TCNTnH) */
+static void m162_tcnt_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
 {
 	m162_t *m = m162_of(avr);
 	avr_timer_t *p = param;
-	int i = m162_timer8_index(m, p);
+	m->tcnt_write_orig[m162_timer_number(m, p)](avr, addr, v, param);
+	uint32_t count = v | (p->r_tcnth ? (uint32_t)avr->data[p->r_tcnth] << 8 : 0);
+	m162_timer_align(m, p, m162_prescaler_of(m, p), count);
+}
+
+static void m162_tccr_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *param)
+{
+	m162_t *m = m162_of(avr);
+	avr_timer_t *p = param;
 	uint64_t was_cycles = p->tov_cycles, was_div = p->cs_div_value;
-	/* the count the timer holds: a stopped timer keeps what TCNT was set to */
-	uint8_t count = p->tov_cycles ? avr->io[AVR_DATA_TO_IO(p->r_tcnt)].r.c(avr,
-			p->r_tcnt, avr->io[AVR_DATA_TO_IO(p->r_tcnt)].r.param) : avr->data[p->r_tcnt];
-	m->tccr_write_orig[i](avr, addr, v, param);
+	uint32_t count = m162_timer_count(avr, p);
+	m->tccr_write_orig[m162_timer_number(m, p)](avr, addr, v, param);
 	if (p->tov_cycles != was_cycles || p->cs_div_value != was_div)
-		m162_timer_align(m, p, i, count);
+		m162_timer_align(m, p, m162_prescaler_of(m, p), count);
 }
 
-/* A prescaler restarted under a running 8-bit timer: the count it holds
- * goes on from the next edge of the restarted prescaler. */
-static void m162_prescaler_restarted(m162_t *m, avr_timer_t *p, int prescaler)
+/* A prescaler restarted: every running timer on it goes on with the count
+ * it holds from the next edge of the restarted prescaler; a stopped one
+ * counts from this base when it starts. */
+static void m162_prescaler_restarted(m162_t *m, int prescaler)
 {
 	avr_t *avr = m->avr;
 	m->prescaler_base[prescaler] = avr->cycle;
-	if (!p->tov_cycles)
-		return; /* stopped: its next start counts from this base */
-	avr_io_addr_t io = AVR_DATA_TO_IO(p->r_tcnt);
-	uint8_t count = avr->io[io].r.c(avr, p->r_tcnt, avr->io[io].r.param);
-	m162_timer_align(m, p, prescaler, count);
+	for (int n = 0; n < 4; n++) {
+		avr_timer_t *p = m162_timer(m, n);
+		if (m162_prescaler_of(m, p) == prescaler && p->tov_cycles)
+			m162_timer_align(m, p, prescaler, m162_timer_count(avr, p));
+	}
 }
 
 /* SFIOR: PSR2 and PSR310 restart a prescaler; the bits read back 0 */
@@ -856,9 +885,9 @@ static void m162_sfior_write(avr_t *avr, avr_io_addr_t addr, uint8_t v, void *pa
 	(void)param;
 	m162_t *m = m162_of(avr);
 	if (v & (1 << PSR310))
-		m162_prescaler_restarted(m, &m->mcu.timer0, M162_PRESCALER_T0);
+		m162_prescaler_restarted(m, M162_PRESCALER_T0);
 	if (v & (1 << PSR2))
-		m162_prescaler_restarted(m, &m->mcu.timer2, M162_PRESCALER_T2);
+		m162_prescaler_restarted(m, M162_PRESCALER_T2);
 	avr_core_watch_write(avr, addr, v & ~((1 << PSR310) | (1 << PSR2)));
 }
 
@@ -973,14 +1002,14 @@ static void m162_init(avr_t *avr)
 
 	m->wdtcr_write_orig = avr->io[AVR_DATA_TO_IO(WDTCR)].w.c;
 	avr->io[AVR_DATA_TO_IO(WDTCR)].w.c = m162_wdtcr_write;
-	avr_timer_t *timer8[2] = { &mcu->timer0, &mcu->timer2 };
-	for (int i = 0; i < 2; i++) {
-		avr_io_addr_t tcnt = AVR_DATA_TO_IO(timer8[i]->r_tcnt);
-		avr_io_addr_t tccr = AVR_DATA_TO_IO(timer8[i]->cs[0].reg);
-		m->tcnt_write_orig[i] = avr->io[tcnt].w.c;
-		avr->io[tcnt].w.c = m162_tcnt8_write;
-		m->tccr_write_orig[i] = avr->io[tccr].w.c;
-		avr->io[tccr].w.c = m162_tccr8_write;
+	for (int n = 0; n < 4; n++) {
+		avr_timer_t *p = m162_timer(m, n);
+		avr_io_addr_t tcnt = AVR_DATA_TO_IO(p->r_tcnt);
+		avr_io_addr_t tccr = AVR_DATA_TO_IO(p->cs[0].reg); /* TCCRn, TCCR1B, TCCR3B */
+		m->tcnt_write_orig[n] = avr->io[tcnt].w.c;
+		avr->io[tcnt].w.c = m162_tcnt_write;
+		m->tccr_write_orig[n] = avr->io[tccr].w.c;
+		avr->io[tccr].w.c = m162_tccr_write;
 	}
 
 	m->spdr_write_orig = avr->io[AVR_DATA_TO_IO(SPDR)].w.c;
