@@ -17,7 +17,7 @@ the wall clock.
 from __future__ import annotations
 
 import threading
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 
 from hexbot.errors import LinkUnavailableError
 from hexbot.host.capture import Record
@@ -387,14 +387,17 @@ class Host:
     # --- replay ----------------------------------------------------------------
 
     def replay(self, records: Iterable[Record], *, control: ReplayControl | None = None,
-               cancel: threading.Event | None = None) -> int:
+               cancel: threading.Event | None = None,
+               after_record: Callable[[], None] | None = None) -> int:
         """Play capture records into the host as if they happened now, with
         their recorded time stamps (the console's ``--replay``): received
         bytes go through a parser, sent bytes and state changes to the
         listeners. Nothing is written to a port. ``control`` paces it
-        (speed, pause, seek); without, as fast as it goes. Returns records
-        played. A replayed module's protocol schema is not checked against
-        this host's: the capture's own host spoke to it."""
+        (speed, pause, seek); without, as fast as it goes. ``after_record``
+        runs after each record's events went to the listeners (the console
+        waits there until it has shown them). Returns records played. A
+        replayed module's protocol schema is not checked against this
+        host's: the capture's own host spoke to it."""
         self.replaying = True
         decoders = ReplayDecoders()
         n = 0
@@ -418,6 +421,8 @@ class Host:
                 except ValueError:
                     continue
                 self._notify(PortChanged(rec.port, state, detail, rec.t))
+            if after_record is not None:
+                after_record()
         for port, t, ev in decoders.flush():
             self.observe(t, port, ev)
         return n

@@ -42,7 +42,7 @@ from hexbot.host.console.composer import Composer
 from hexbot.host.console.connection import PortPanel
 from hexbot.host.console.dialogs import HelpScreen, PlanScreen, PromptScreen, RotateScreen
 from hexbot.host.console.lattice import LatticeLegend, LatticeView
-from hexbot.host.console.messages import HostNote, Parsed, PortState, SimEvent
+from hexbot.host.console.messages import CaughtUp, HostNote, Parsed, PortState, SimEvent
 from hexbot.host.console.messages import Traffic as TrafficMsg
 from hexbot.host.console.modules_view import ModulesView
 from hexbot.host.console.palette import ConsoleCommands
@@ -323,9 +323,25 @@ class HexBotConsole(App[None]):
             cancel = self.session.cancel
 
             def replay() -> str:
-                return f"{host.replay(records, control=control, cancel=cancel)} records"
+                played = host.replay(records, control=control, cancel=cancel,
+                                     after_record=lambda: self._caught_up(cancel))
+                return f"{played} records"
             replay.__name__ = f"{len(records)} records"
             self.start_operation("Replay", [replay])
+
+    def _caught_up(self, cancel: threading.Event) -> None:
+        """The replay waits here after each record until the terminals have
+        shown it: it never runs ahead of the screen, so pause and Escape act
+        on what is shown (on a loaded machine the replay had ended while the
+        screen still lagged, and the keys found nothing to pause)."""
+        done = threading.Event()
+        self.post_message(CaughtUp(done))
+        while not done.wait(0.1):
+            if cancel.is_set() or not self.is_running:
+                return
+
+    def on_caught_up(self, msg: CaughtUp) -> None:
+        msg.done.set()
 
     def _fill_panel(self, panel: PortPanel, s: PortSettings) -> None:
         from textual.widgets import Input, Select

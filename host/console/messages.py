@@ -3,6 +3,8 @@
 
 from __future__ import annotations
 
+import threading
+
 from textual.message import Message
 
 from hexbot.host.events import Observed
@@ -51,3 +53,12 @@ class HostNote(Message):
     def __init__(self, text: str, t: float, wall: float | None = None) -> None:
         super().__init__()
         self.text, self.t, self.wall = text, t, wall
+
+
+class CaughtUp(Message):
+    """Posted after a replayed record's messages: handled, every message
+    before it was too (the app handles its messages in order)."""
+
+    def __init__(self, done: threading.Event) -> None:
+        super().__init__()
+        self.done = done
