@@ -47,3 +47,17 @@ def pty_session(responder):
     host.start(5.0)
     yield Session(host, [m.ident for m in responder.modules])
     host.close()
+
+
+@pytest.fixture
+def unknown_cluster(responder):
+    """A Session on the pty test double that was told no module ids."""
+    from hexbot.host.host import IR, Host
+    from hexbot.host.link import PortSettings
+    from hexbot.host.session import Session
+
+    host = Host()
+    host.add_port(IR, PortSettings(responder.path))
+    host.start(5.0)
+    yield Session(host)
+    host.close()
