@@ -35,9 +35,8 @@ def log_dir(tmp_path, monkeypatch):
 
 
 
-@pytest.fixture
-def pty_session(responder):
-    """A Session on the pty test double's seven modules."""
+def _session_on(responder, ids=()):
+    """A Session on the pty test double, told ``ids`` (none: an unknown cluster)."""
     from hexbot.host.host import IR, Host
     from hexbot.host.link import PortSettings
     from hexbot.host.session import Session
@@ -45,19 +44,19 @@ def pty_session(responder):
     host = Host()
     host.add_port(IR, PortSettings(responder.path))
     host.start(5.0)
-    yield Session(host, [m.ident for m in responder.modules])
-    host.close()
+    try:
+        yield Session(host, ids)
+    finally:
+        host.close()
+
+
+@pytest.fixture
+def pty_session(responder):
+    """A Session on the pty test double's seven modules."""
+    yield from _session_on(responder, [m.ident for m in responder.modules])
 
 
 @pytest.fixture
 def unknown_cluster(responder):
     """A Session on the pty test double that was told no module ids."""
-    from hexbot.host.host import IR, Host
-    from hexbot.host.link import PortSettings
-    from hexbot.host.session import Session
-
-    host = Host()
-    host.add_port(IR, PortSettings(responder.path))
-    host.start(5.0)
-    yield Session(host)
-    host.close()
+    yield from _session_on(responder)
