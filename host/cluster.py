@@ -81,8 +81,6 @@ class _PendingReport:
 class ClusterModel:
     modules: dict[str, ModuleState] = field(default_factory=dict)
     placements: dict[tuple[int, int], Placement] = field(default_factory=dict)
-    acks: int = 0
-    errors: int = 0
     _pending: dict[str, _PendingReport] = field(default_factory=dict)
     _unnamed: dict[str, tuple[int, int]] = field(default_factory=dict)
 
@@ -105,7 +103,6 @@ class ClusterModel:
     def apply(self, port: str, ev: Event, t: float = 0.0) -> bool:  # noqa: C901
         """Update from one event; True if anything visible changed."""
         if isinstance(ev, Ack):
-            self.acks += 1
             row = self._row(ev.role, ev.module)
             if row is None:
                 return True
@@ -124,16 +121,14 @@ class ClusterModel:
                     row.position, row.orientation, row.localized = unnamed, p.yref, True
             return True
         if isinstance(ev, ErrorReply):
-            self.errors += 1
             row = self._row(ev.role, ev.module)
             if row is not None:
                 row.last_error, row.last_seen = f"{ev.code}:{error_name(ev.reason)}", t
             return True
         if isinstance(ev, StatusReport):
-            row = self._row(ev.role if ev.role != "-" else None, ev.module_id)
+            row = self._row(ev.role, ev.module_id)  # its own word, '-' (no role) too
             if row is None:
                 return True
-            row.role = ev.role
             row.localized = ev.localized
             if ev.localized:
                 row.assumed = False
@@ -214,13 +209,6 @@ class ClusterModel:
     def cells(self) -> list[Placement]:
         """Every occupied lattice cell the host knows, sorted by position."""
         return [self.placements[k] for k in sorted(self.placements)]
-
-    def clear(self) -> None:
-        self.modules.clear()
-        self.placements.clear()
-        self._pending.clear()
-        self._unnamed.clear()
-        self.acks = self.errors = 0
 
 
 def _id_from_tail(tail: str) -> int | None:

@@ -305,8 +305,7 @@ class Session:
         self.cluster: frozenset[int] = frozenset(modules)
         #: ids seen in replies and boot texts: a hint, there may be more
         self.known: set[int] = set(modules)
-        #: the module the last localization took as origin (workflows.localize)
-        self.reference: int | None = None
+        self._reference: int | None = None  # see the property
         #: after Select: the ids that answer, in rank order (ALL -> every known id)
         self.selection: tuple[int, ...] | None = LEGACY
         self.all_selected = False  # the last Select was Select(0): ranks are id - 1
@@ -320,6 +319,19 @@ class Session:
         #: journal seqs of boot texts reading ID=00 that came in a slot which
         #: several modules share: a collision, not a module without an id
         self._collided_boot_texts: set[int] = set()
+
+    @property
+    def reference(self) -> int | None:
+        """The module the last localization took as origin (workflows.localize);
+        None once its boot text says it restarted (it forgot its Ref), seen
+        even before the next exchange looks at the restarts."""
+        if self._reference is not None and self._reference in self._boot_ids(IR):
+            self._reference = None
+        return self._reference
+
+    @reference.setter
+    def reference(self, ident: int | None) -> None:
+        self._reference = ident
 
     # --- time ----------------------------------------------------------------
 
@@ -662,11 +674,14 @@ class Session:
         the last look: they restarted and forgot any Select and role."""
         with self.host.lock:
             journal = self.host.since(self._boots_checked)
-        ids = [i for obs in journal if obs.port == port
-               and (i := listening_id(obs.event)) is not None]
         if journal:
             self._boots_checked = journal[-1].seq + 1
-        return ids
+        return _listening_ids(journal, port)
+
+    def _boot_ids(self, port: str) -> list[int]:
+        """The ids of the boot texts since the last look, without looking."""
+        with self.host.lock:
+            return _listening_ids(self.host.since(self._boots_checked), port)
 
     def _settle_debts(self, port: str, now: float) -> None:
         """Forget debts past their time; strike those that replies heard
@@ -879,6 +894,11 @@ def _without_id(event: object) -> bool:
     """Whether ``event`` is a ``COMM. LISTENING ID=00`` boot text."""
     return (isinstance(event, Text) and event.phrase == wire.TEXT_COMM_LISTENING.rstrip()
             and re.search(_BOOT_ID + r"0+\b", event.tail) is not None)
+
+
+def _listening_ids(journal: list[Observed], port: str) -> list[int]:
+    return [i for obs in journal if obs.port == port
+            and (i := listening_id(obs.event)) is not None]
 
 
 def listening_id(event: object) -> int | None:

@@ -37,7 +37,6 @@ def test_reply_without_id_invents_no_module_and_boot_tail_names_by_id():
           + wire.PREAMBLE + b"COMM. BOARD READY ID=07\n\r")
     assert list(model.modules) == ["07"]
     assert model.module(7).boot == "ID=07"
-    assert model.acks == 2  # still counted as traffic
 
 
 def test_status_with_id_0_makes_no_module():
@@ -136,3 +135,12 @@ def test_a_mavlink_localization_report_reads_as_the_legacy_one():
         model.apply("ir", ev, 1.0)
     assert [(c.x, c.y, c.yref, c.side, c.module_id) for c in model.cells()] == [
         (-1, 1, 2, 4, 2)]
+
+
+def test_a_status_reply_says_the_modules_role_even_no_role():
+    # the module's own word: 'S' after a Ref, '-' when it has none
+    model = ClusterModel()
+    _feed(model, parser.reply_status(3, "S", True, 0, 0, 0, 0, prefix_role="S"))
+    assert model.module(3).role == "S"
+    _feed(model, parser.reply_status(3, "-", False, 0, 0, 0, 0, prefix_role="M"))
+    assert model.module(3).role == "-" and not model.module(3).localized

@@ -107,6 +107,22 @@ def test_a_reference_that_restarted_is_no_origin_any_more(open_session):
     assert poses[2].cell == (0, 0) and session.reference == 2
 
 
+def test_a_reference_that_restarted_is_no_origin_even_before_the_next_exchange(open_session):
+    from hexbot.host import workflows
+
+    # the same, with nothing sent since the restart: the boot text alone says
+    # it (localize refused "module 1 is this cluster's origin" until an
+    # exchange had looked at the restarts)
+    session = open_session("pair")
+    workflows.localize(session, 1)
+    comm = session.host.simulator.simulator.modules[1].comm
+    comm.cluster.reset(comm.index)
+    session.sleep(4.0)
+    assert session.reference is None
+    poses = workflows.localize(session, 2)
+    assert poses[2].cell == (0, 0) and session.reference == 2
+
+
 def scenario(tmp_path, ids):
     """Modules ``ids`` in a row (the first is the base)."""
     path = tmp_path / "row.toml"
