@@ -92,16 +92,24 @@ def test_a_roll_call_waits_for_every_module_it_knows_of(tmp_path, open_session):
     assert session.selection == (1, 3, 11, 12)
 
 
-def test_a_reference_that_restarted_is_no_origin_any_more(open_session):
+def restarted_reference(open_session):
+    """A pair localized from module 1, whose comm board then restarted and
+    forgot its Ref (its boot text is in, nothing sent since)."""
     from hexbot.host import workflows
 
-    # module 1 took Ref; its comm board restarts and forgets it: the next
-    # localization may take module 2 as origin instead of being refused
     session = open_session("pair")
     workflows.localize(session, 1)
     comm = session.host.simulator.simulator.modules[1].comm
     comm.cluster.reset(comm.index)
     session.sleep(4.0)
+    return session
+
+
+def test_a_reference_that_restarted_is_no_origin_any_more(open_session):
+    from hexbot.host import workflows
+
+    # the next localization may take module 2 as origin instead of being refused
+    session = restarted_reference(open_session)
     session.request(frames.make("Status"))  # the session hears of the restart
     poses = workflows.localize(session, 2)
     assert poses[2].cell == (0, 0) and session.reference == 2
@@ -110,14 +118,9 @@ def test_a_reference_that_restarted_is_no_origin_any_more(open_session):
 def test_a_reference_that_restarted_is_no_origin_even_before_the_next_exchange(open_session):
     from hexbot.host import workflows
 
-    # the same, with nothing sent since the restart: the boot text alone says
-    # it (localize refused "module 1 is this cluster's origin" until an
-    # exchange had looked at the restarts)
-    session = open_session("pair")
-    workflows.localize(session, 1)
-    comm = session.host.simulator.simulator.modules[1].comm
-    comm.cluster.reset(comm.index)
-    session.sleep(4.0)
+    # the boot text alone says it (localize refused "module 1 is this
+    # cluster's origin" until an exchange had looked at the restarts)
+    session = restarted_reference(open_session)
     assert session.reference is None
     poses = workflows.localize(session, 2)
     assert poses[2].cell == (0, 0) and session.reference == 2
