@@ -206,7 +206,7 @@ class Host:
         self.framing = Framing.LEGACY
         self._mavlink: MavlinkEncoder | None = None
         if log is not None:
-            log.capture.use_clock(lambda: self.clock.now())
+            log.capture.use_clock(self.elapsed)
 
     # --- set-up -----------------------------------------------------------
 
@@ -295,6 +295,12 @@ class Host:
     # --- time and journal ---------------------------------------------------
 
     def elapsed(self) -> float:
+        """Seconds since the session started: the simulator's time on its
+        port, 0 before its clock runs (the port's "connecting" line carried
+        a wall-clock 0.001 s, and two runs of a seed differed)."""
+        ch = self.channels.get(IR)
+        if isinstance(self.clock, WallClock) and ch is not None and ch.link.in_process:
+            return 0.0
         return self.clock.now()
 
     def mark(self) -> int:

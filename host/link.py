@@ -167,7 +167,7 @@ class Link:
         A stepped simulated port is opened here, at once, and gets no thread."""
         if self._port is not None and self.stepped:
             return self
-        if self._port is None and self.settings.url.startswith(urlhandler.SCHEME + "://"):
+        if self._port is None and self.in_process:
             self._open_now()  # in-process: there or not, no point in retrying
             if self.stepped:
                 return self
@@ -246,10 +246,15 @@ class Link:
         return self.state is LinkState.CONNECTED
 
     @property
+    def in_process(self) -> bool:
+        """Whether this is the embedded simulator's port (``hexbot-sim://``)."""
+        return self.settings.url.startswith(urlhandler.SCHEME + "://")
+
+    @property
     def retries(self) -> bool:
         """Whether a lost port is opened again. Not an in-process simulator:
         opening its URL again would silently start a fresh cluster."""
-        return not self.settings.url.startswith(urlhandler.SCHEME + "://")
+        return not self.in_process
 
     def write(self, data: bytes) -> None:
         """Write all bytes now; LinkUnavailableError if the port is not open

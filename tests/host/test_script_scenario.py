@@ -175,6 +175,9 @@ def test_two_runs_of_a_seed_write_the_same_capture(tmp_path, monkeypatch):
                          for line in capture.read_text().splitlines()
                          if not line.startswith("#")])
     assert captures[0] == captures[1]
+    # before the simulator's clock runs its time is 0: the "connecting" line
+    # carried a wall-clock 0.001 s now and then (a fresh-clone run failed on it)
+    assert [line.split()[0] for line in captures[0] if " state " in line][:1] == ["0.000"]
 
 
 def test_a_bad_role_in_expect_status_is_named(tmp_path, cli_status):

@@ -43,3 +43,27 @@ def test_a_replay_stamps_a_recorded_cut_to_the_millisecond(tmp_path, capsys):
     rows = [json.loads(line) for line in capsys.readouterr().out.splitlines()]
     assert [(r["t"], r["kind"]) for r in rows] == [(4.105, "garbage")]
 
+
+
+def test_a_simulated_port_is_logged_at_0_s_until_the_simulators_clock_runs(tmp_path):
+    # the host's wall clock starts with the host; the simulator's at its
+    # port's connection: what comes between is at 0 s of the simulation (the
+    # "connecting" line carried wall-clock milliseconds, and two runs of a
+    # seed wrote different captures)
+    import time
+
+    from hexbot.host.capture import read_capture
+    from hexbot.host.endpoints import sim_url
+    from hexbot.host.host import Host
+    from hexbot.host.link import PortSettings
+
+    log = SessionLog(tmp_path / "s")
+    host = Host(log)
+    host.add_port(IR, PortSettings(sim_url("pair", 4, 0.0)))
+    time.sleep(0.05)  # setting up takes the host time, not the simulation
+    host.start(5.0)
+    host.close()
+    log.close()
+    states = [(r.t, r.text.split()[0]) for r in read_capture(log.capture_path)
+              if r.kind == "state"]
+    assert states[:2] == [(0.0, "connecting"), (0.0, "connected")]
