@@ -48,9 +48,6 @@ from hexbot.protocol.frames import Command
 from hexbot.protocol.mavlink_codec import MAX_FRAME_LEN, Framing, MavStatus
 from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
 
-#: The texts a module prints while it boots (the comm board's, the control board's).
-_BOOT_PHRASES = frozenset({wire.TEXT_COMM_READY, wire.TEXT_CTR_READY,
-                           wire.TEXT_CTR_LISTENING, wire.TEXT_COMM_LISTENING})
 #: ``ID=`` of a boot text's tail, as a regular expression (``wire.BOOT_ID_TAIL``)
 _BOOT_ID = r"\b" + re.escape(wire.BOOT_ID_TAIL.strip())
 
@@ -795,7 +792,7 @@ class Session:
             heard = [o for o in self.host.since(mark) if o.port == port]
         for obs in heard:
             ev = obs.event
-            if isinstance(ev, Text) and ev.phrase in _BOOT_PHRASES:
+            if isinstance(ev, Text) and ev.phrase in wire.BOOT_TEXTS:
                 what = f"'{ev.phrase}' at {obs.t:.1f} s"
             elif isinstance(ev, Garbage) and wire.BOOT_FW_TAIL.strip().encode() in ev.raw:
                 what = f"a boot text's tail at {obs.t:.1f} s"

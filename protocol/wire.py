@@ -47,6 +47,8 @@ TEXT_COMM_READY = "COMM. BOARD READY"
 TEXT_CTR_READY = "CTR. BOARD READY"
 TEXT_CTR_LISTENING = "CTR. LISTENING"
 TEXT_COMM_LISTENING = "COMM. LISTENING"
+#: The texts a module prints while it boots (its comm and control boards').
+BOOT_TEXTS = (TEXT_COMM_READY, TEXT_CTR_READY, TEXT_CTR_LISTENING, TEXT_COMM_LISTENING)
 BOOT_ID_TAIL = " ID="  # + the id, two or three digits
 BOOT_FW_TAIL = " FW="  # + the firmware version
 TEXT_RF12_READY = "RF12 READY"  # the RF12 wireless board's boot text (its UART1)
