@@ -111,7 +111,7 @@ def _run(args: argparse.Namespace) -> int:
 
     with ResultStore(out, spec.kind.name, spec.param_names) as store, \
             connect(args.scheduler, args.workers,
-                    on_wait=lambda note: print(note, file=sys.stderr)) as client, \
+                    on_note=lambda note: print(note, file=sys.stderr)) as client, \
             SweepProgress(spec.path.name, not args.no_progress) as bar:
         outcome = run_sweep(spec, client, store, resume=args.resume,
                             on_start=bar.on_start, on_result=bar.on_result)

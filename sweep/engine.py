@@ -34,7 +34,7 @@ import threading
 import time
 import uuid
 from collections.abc import Callable, Coroutine, Iterator
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from dataclasses import dataclass
 from typing import Any
 
@@ -49,6 +49,7 @@ LOST = "lost"  # what the progress callback hears for a task that left no row
 RETRIES = 1  # a task lost with its worker runs again, alone, this many times
 CONNECT_SECONDS = 10.0  # to reach a --scheduler and hear its handshake
 WORKER_WAIT_SECONDS = 60.0  # for a first worker to join a --scheduler that has none
+CLOSE_SECONDS = 20.0  # for the embedded cluster to close; then its workers are killed
 # how the embedded cluster makes its worker processes (see connect): spawn
 # only where there is no fork server (Windows)
 START_METHOD = ("forkserver" if "forkserver" in multiprocessing.get_all_start_methods()
@@ -106,12 +107,13 @@ def lost_reason(fut: Any, task: Task) -> str:
 @contextmanager
 def connect(scheduler: str | None = None, workers: int | None = None,
             worker_wait: float | None = None,
-            on_wait: Callable[[str], None] | None = None) -> Iterator[Any]:
+            on_note: Callable[[str], None] | None = None) -> Iterator[Any]:
     """A Dask client: on ``scheduler`` (``tcp://HOST:8786``), or on an embedded
     LocalCluster of ``workers`` single-threaded processes (default: one per core).
     A scheduler with no worker gets ``worker_wait`` seconds for a first one to
-    join (default :data:`WORKER_WAIT_SECONDS`; ``on_wait`` hears that it
-    waits), then the sweep gives up."""
+    join (default :data:`WORKER_WAIT_SECONDS`), then the sweep gives up. An
+    embedded cluster gets :data:`CLOSE_SECONDS` to close, then its worker
+    processes are killed. ``on_note`` hears of either wait."""
     import dask
     from distributed import Client, LocalCluster
 
@@ -123,7 +125,7 @@ def connect(scheduler: str | None = None, workers: int | None = None,
             raise LinkUnavailableError(f"cannot reach the Dask scheduler {scheduler}: "
                                        f"{type(exc).__name__}: {exc}") from exc
         try:
-            _wait_for_a_worker(client, scheduler, worker_wait or WORKER_WAIT_SECONDS, on_wait)
+            _wait_for_a_worker(client, scheduler, worker_wait or WORKER_WAIT_SECONDS, on_note)
             yield client
         finally:
             _close(client)
@@ -152,12 +154,41 @@ def connect(scheduler: str | None = None, workers: int | None = None,
             restore()
             raise
         try:
-            with cluster:
-                restore()  # from here a Ctrl-C closes the cluster on its way out
-                with Client(cluster) as client:
-                    yield client
+            restore()  # from here a Ctrl-C closes the cluster on its way out
+            client = Client(cluster)
+            try:
+                yield client
+            finally:
+                with suppress(TimeoutError):  # the cluster's close below is what counts
+                    client.close(timeout=CLOSE_SECONDS)
         finally:
-            restore()  # also when entering the cluster failed (a second restore is harmless)
+            restore()  # also when starting the client failed (a second restore is harmless)
+            _close_cluster(cluster, on_note)
+
+
+def _close_cluster(cluster: Any, on_note: Callable[[str], None] | None) -> None:
+    """Close the embedded cluster within :data:`CLOSE_SECONDS`. Dask's own
+    close has no deadline and waits on every nanny; a nanny caught in a
+    restart once kept a Ctrl-C'd sweep from exiting. Past the deadline the
+    worker processes are killed (their rows were stored or are not done,
+    so nothing is lost) and the command goes on to exit."""
+    nannies = list(cluster.workers.values())  # the close takes them off this list first
+    try:
+        cluster.close(timeout=CLOSE_SECONDS)
+        return
+    except TimeoutError:
+        pass
+    killed = 0
+    for nanny in nannies:
+        pid = getattr(nanny, "pid", None)
+        if pid:
+            with suppress(ProcessLookupError):
+                os.kill(pid, signal.SIGKILL)
+                killed += 1
+    cluster.shutdown_on_close = False  # Dask's exit hook would wait for it once more
+    if on_note:
+        on_note(f"the embedded Dask cluster did not close in {CLOSE_SECONDS:g} s: "
+                f"killed its {killed} worker processes")
 
 
 def _ignore_sigint() -> Callable[[], None]:
@@ -250,11 +281,11 @@ def _with_cause(exc: BaseException) -> str:
 
 
 def _wait_for_a_worker(client: Any, scheduler: str, seconds: float,
-                       on_wait: Callable[[str], None] | None) -> None:
+                       on_note: Callable[[str], None] | None) -> None:
     if client.nthreads():
         return
-    if on_wait:
-        on_wait(f"the Dask scheduler {scheduler} has no worker yet: waiting up to "
+    if on_note:
+        on_note(f"the Dask scheduler {scheduler} has no worker yet: waiting up to "
                 f"{seconds:g} s for one (dask worker {scheduler})")
     try:
         client.wait_for_workers(1, timeout=seconds)
