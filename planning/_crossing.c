@@ -267,7 +267,9 @@ static int int_list(PyObject *seq, int *out, int length, const char *what)
     return 0;
 }
 
-/* set_rules(leavable: 64 bools, open_goals: 4096 sequences of goal codes) */
+/* set_rules(leavable: 64 bools, open_goals: 4096 sequences of goal codes)
+ * The tables are read and checked whole before any is replaced: refused rules
+ * leave the search as it was. */
 static PyObject *set_rules(PyObject *self, PyObject *args)
 {
     PyObject *leave, *open;
@@ -276,8 +278,6 @@ static PyObject *set_rules(PyObject *self, PyObject *args)
     int values[64];
     if (int_list(leave, values, 64, "leavable") < 0)
         return NULL;
-    for (int i = 0; i < 64; i++)
-        leavable[i] = (uint8_t)(values[i] != 0);
     PyObject *fast = PySequence_Fast(open, "open goals");
     if (!fast)
         return NULL;
@@ -286,6 +286,8 @@ static PyObject *set_rules(PyObject *self, PyObject *args)
         PyErr_SetString(PyExc_ValueError, "open goals: 4096 masks expected");
         return NULL;
     }
+    static uint8_t new_count[4096];
+    static uint8_t new_goal[4096][MAX_OPEN];
     for (int m = 0; m < 4096; m++) {
         PyObject *goals = PySequence_Fast_GET_ITEM(fast, m);
         Py_ssize_t n = PySequence_Size(goals);
@@ -299,17 +301,21 @@ static PyObject *set_rules(PyObject *self, PyObject *args)
             Py_DECREF(fast);
             return NULL;
         }
-        open_count[m] = (uint8_t)n;
+        new_count[m] = (uint8_t)n;
         for (int k = 0; k < n; k++) {
             if (codes[k] < 0 || codes[k] >= MAX_GOALS) {
                 Py_DECREF(fast);
                 PyErr_SetString(PyExc_ValueError, "open goals: goal code out of range");
                 return NULL;
             }
-            open_goal[m][k] = (uint8_t)codes[k];
+            new_goal[m][k] = (uint8_t)codes[k];
         }
     }
     Py_DECREF(fast);
+    for (int i = 0; i < 64; i++)
+        leavable[i] = (uint8_t)(values[i] != 0);
+    memcpy(open_count, new_count, sizeof open_count);
+    memcpy(open_goal, new_goal, sizeof open_goal);
     rules_set = 1;
     Py_RETURN_NONE;
 }
