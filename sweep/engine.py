@@ -187,8 +187,10 @@ def _close_cluster(cluster: Any, on_note: Callable[[str], None] | None) -> None:
                 killed += 1
     cluster.shutdown_on_close = False  # Dask's exit hook would wait for it once more
     if on_note:
-        on_note(f"the embedded Dask cluster did not close in {CLOSE_SECONDS:g} s: "
-                f"killed its {killed} worker processes")
+        # the close may have retired the workers before a nanny got stuck
+        what = (f"killed {killed} worker process{'es' if killed > 1 else ''} still running"
+                if killed else "no worker process was still running")
+        on_note(f"the embedded Dask cluster did not close in {CLOSE_SECONDS:g} s: {what}")
 
 
 def _ignore_sigint() -> Callable[[], None]:

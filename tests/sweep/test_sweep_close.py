@@ -23,8 +23,14 @@ def test_a_cluster_that_does_not_close_has_its_workers_killed(monkeypatch):
             engine.connect(workers=2, on_note=notes.append) as client:
         assert client.submit(sum, [1, 2]).result() == 3
         workers = [psutil.Process(pid) for pid in client.run(os.getpid).values()]
-    assert notes == ["the embedded Dask cluster did not close in 1.5 s: "
-                     "killed its 2 worker processes"]
+    # the close retires workers first: killed are those still running then
+    assert len(notes) == 1 and notes[0] in (
+        "the embedded Dask cluster did not close in 1.5 s: killed 2 worker processes "
+        "still running",
+        "the embedded Dask cluster did not close in 1.5 s: killed 1 worker process "
+        "still running",
+        "the embedded Dask cluster did not close in 1.5 s: no worker process was still "
+        "running"), notes
     _, alive = psutil.wait_procs(workers, timeout=30)  # a killed process is reaped
     assert [p for p in alive if p.status() != psutil.STATUS_ZOMBIE] == []
 
@@ -52,4 +58,4 @@ def test_the_sweep_command_exits_after_its_cluster_closed_or_timed_out(
     err = capsys.readouterr().err
     assert code == 0, err
     assert "3 of 3 tasks stored" in err
-    assert ("did not close in 1.5 s: killed its 1 worker processes" in err) == hang
+    assert ("the embedded Dask cluster did not close in 1.5 s: " in err) == hang

@@ -244,7 +244,7 @@ def test_the_handshake_probe_works_inside_a_running_event_loop(dask_scheduler_al
     asyncio.run(probe_from_a_coroutine())
 
 
-@pytest.mark.parametrize("fails_in", ["__init__", "__enter__"])
+@pytest.mark.parametrize("fails_in", ["LocalCluster", "Client"])
 def test_ctrl_c_is_restored_whenever_the_embedded_cluster_fails_to_start(monkeypatch,
                                                                          fails_in):
     """SIGINT is ignored while the workers start; a cluster that failed on
@@ -255,19 +255,25 @@ def test_ctrl_c_is_restored_whenever_the_embedded_cluster_fails_to_start(monkeyp
 
     from hexbot.sweep import engine
 
-    class Broken:  # a unit-test double of LocalCluster that fails where asked
+    closed = []
+
+    class Cluster:  # a unit-test double of LocalCluster that fails where asked
+        workers: dict = {}
+
         def __init__(self, **_options):
-            if fails_in == "__init__":
+            if fails_in == "LocalCluster":
                 raise RuntimeError("no cluster")
 
-        def __enter__(self):
-            raise RuntimeError("no cluster")
+        def close(self, timeout=None):
+            closed.append(timeout)
 
-        def __exit__(self, *exc):
-            return False
+    def client(_cluster):
+        raise RuntimeError("no cluster")
 
-    monkeypatch.setattr(distributed, "LocalCluster", Broken)
+    monkeypatch.setattr(distributed, "LocalCluster", Cluster)
+    monkeypatch.setattr(distributed, "Client", client)
     before = signal.getsignal(signal.SIGINT)
     with pytest.raises(RuntimeError, match="no cluster"), engine.connect(workers=1):
         pass
+    assert closed == ([] if fails_in == "LocalCluster" else [engine.CLOSE_SECONDS])
     assert signal.getsignal(signal.SIGINT) is before
