@@ -237,9 +237,14 @@ def _hear_handshake(scheduler: str) -> None:
     except (MemoryError, struct.error, msgpack.UnpackException) as exc:
         # what reading another protocol's bytes as Dask's frames raises (an SSH
         # greeting's first 8 bytes as a frame count: "Unable to allocate 2.82 EiB")
+        # a MemoryError's own text ("Unable to allocate 3.07 EiB") reads as if this
+        # machine ran short of memory: say what it means instead
+        why = ("its first bytes, read as the size of a Dask message, ask for more "
+               "memory than exists" if isinstance(exc, MemoryError)
+               else f"{type(exc).__name__}: {exc}")
         raise LinkUnavailableError(
             f"cannot reach the Dask scheduler {scheduler}: something answers there, but "
-            f"not as a Dask scheduler ({type(exc).__name__}: {exc})") from exc
+            f"not as a Dask scheduler ({why})") from exc
     except Exception as exc:  # noqa: BLE001 - e.g. TLS settings that do not fit the address
         raise LinkUnavailableError(f"cannot reach the Dask scheduler {scheduler}: "
                                    f"{type(exc).__name__}: {exc}") from exc
