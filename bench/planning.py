@@ -55,6 +55,8 @@ import time
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
+from hexbot.cli_args import whole_in
+from hexbot.errors import UsageError
 from hexbot.planning.bounds import plan_bounds
 from hexbot.planning.budget import DEFAULT_BUDGET
 from hexbot.planning.config_io import load_configuration
@@ -73,6 +75,22 @@ PARALLELOGRAMS = {
     300: (20, 15, 30, 10),
     1000: (40, 25, 50, 20),
 }
+
+#: The most modules of a pair built here (also the sweep kind ``plan``'s
+#: ``modules``): growing a random blob takes time quadratic in its size (about
+#: 1 s at 10,000 modules, 38 s at 100,000), so a larger count spends hours
+#: building the pair, and 10^10 never gets past it.
+MAX_MODULES = 100_000
+#: A pair's module count: ``--sizes`` and the other size lists, and the plan kind.
+module_count = whole_in(2, MAX_MODULES)
+
+
+def size_list(text: str, option: str) -> list[int]:
+    """A comma-separated list of module counts; a bad one is a usage error."""
+    try:
+        return [module_count(s) for s in text.split(",") if s]
+    except argparse.ArgumentTypeError as exc:
+        raise UsageError(f"{option}: {exc}") from None
 
 
 def timed(fn):
@@ -271,9 +289,9 @@ def run(args: argparse.Namespace) -> int:
     if not args.cases:
         return run_families(args)
     args.seeds = 5 if args.seeds is None else args.seeds
-    sizes = [int(s) for s in (args.sizes or "10,30,100,300,1000").split(",") if s]
-    blob_sizes = [int(s) for s in args.blob_sizes.split(",") if s]
-    apart_sizes = [int(s) for s in args.apart_sizes.split(",") if s]
+    sizes = size_list(args.sizes or DEFAULT_SIZES, "--sizes")  # all checked before any work
+    blob_sizes = size_list(args.blob_sizes, "--blob-sizes")
+    apart_sizes = size_list(args.apart_sizes, "--apart-sizes")
     rows = (bench_thesis() + bench_parallelograms(sizes) + bench_blobs(blob_sizes, args.seeds)
             + bench_blobs(apart_sizes, args.seeds, "apart"))
     if args.json:
@@ -396,11 +414,11 @@ def summary(rows: list[dict]) -> str:
 
 
 def run_families(args: argparse.Namespace) -> int:
-    sizes = [int(s) for s in (args.sizes or DEFAULT_SIZES).split(",") if s]
+    counts = size_list(args.sizes or DEFAULT_SIZES, "--sizes")
     families = args.families
     fixed_options = {"both": (False, True), "yes": (True,), "no": (False,)}[args.fixed]
     jobs = [(family, n, seed, fixed, args.budget)
-            for family in families for n in sizes
+            for family in families for n in counts
             for seed in range(args.seeds if args.seeds is not None else SEEDS.get(n, 1))
             for fixed in fixed_options]
     rows = []

@@ -41,6 +41,18 @@ def count(text: str) -> int:
     return value
 
 
+def whole_in(low: int, high: int) -> Callable[[str], int]:
+    """An argparse type: a whole number in ``low..high``; the message gives
+    the range (``must be 1..100,000, got 0``)."""
+
+    def check(text: str) -> int:
+        value = _whole(text)
+        if not low <= value <= high:
+            raise argparse.ArgumentTypeError(f"must be {low:,}..{high:,}, got {value}")
+        return value
+    return check
+
+
 def port_name(text: str) -> str:
     """A serial device or pyserial URL. An empty one (``--port "$PORT"`` with
     the variable unset) is a usage error: taking it as "no port given" would

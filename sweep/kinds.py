@@ -22,6 +22,7 @@ clear error that keeps its cause (:func:`load_kind`).
 
 from __future__ import annotations
 
+import argparse
 import importlib
 from collections.abc import Callable
 from dataclasses import dataclass, field
@@ -75,6 +76,20 @@ class Kind:
     @property
     def count_by(self) -> tuple[tuple[str, ...], str] | None:
         return getattr(self.module, "COUNT_BY", None)
+
+
+def cli_check(argtype: Callable[[str], Any]) -> Callable[[Any], None]:
+    """A :class:`Param` check made of a command's argparse type (``count``,
+    ``hexbot locomotion run --n``'s ``strip_size``): the sweep refuses a value
+    exactly when that command refuses it, in its words ("must be at least 1,
+    got -1"), and a limit lives in one place."""
+
+    def check(value: Any) -> None:
+        try:
+            argtype(str(value))
+        except (argparse.ArgumentTypeError, ValueError) as exc:
+            raise ScenarioError(str(exc) or f"{value!r} is refused") from None
+    return check
 
 
 def _import(module_name: str, what: str) -> ModuleType:

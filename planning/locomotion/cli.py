@@ -12,7 +12,7 @@ import argparse
 import json
 import sys
 
-from hexbot.cli_args import count, image_file
+from hexbot.cli_args import count, image_file, whole_in
 from hexbot.errors import UsageError
 from hexbot.host.cli_progress import meter
 from hexbot.planning.locomotion import render
@@ -25,12 +25,8 @@ from hexbot.planning.locomotion.scenarios import (
     simulate,
 )
 
-
-def _strip_size(text: str) -> int:
-    n = count(text)
-    if n > MAX_MODULES:
-        raise argparse.ArgumentTypeError(f"must be 1..{MAX_MODULES:,}, got {n}")
-    return n
+#: ``--n``: modules in the strip (also the check of the sweep kind's ``n``).
+strip_size = whole_in(1, MAX_MODULES)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -38,7 +34,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     run = sub.add_parser("run", help="run RULESET on SCENARIO and report the outcome")
     run.add_argument("ruleset", help="salvador-free, salvador-pyramids, salvador, otero, or a file")
     run.add_argument("scenario", help="flat, a shipped map (see 'list'), or a .map file")
-    run.add_argument("--n", type=_strip_size, default=None,
+    run.add_argument("--n", type=strip_size, default=None,
                      help=f"modules in the strip (1..{MAX_MODULES:,})")
     run.add_argument("--rounds", type=count, default=10_000, help="round limit (10000)")
     run.add_argument(

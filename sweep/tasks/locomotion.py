@@ -9,9 +9,11 @@ from __future__ import annotations
 
 from collections import Counter
 
+from hexbot.cli_args import count
+from hexbot.planning.locomotion.cli import strip_size
 from hexbot.planning.locomotion.randommaps import random_scenario
 from hexbot.planning.locomotion.scenarios import load_ruleset, load_scenario, simulate
-from hexbot.sweep.kinds import Param
+from hexbot.sweep.kinds import Param, cli_check
 from hexbot.sweep.summary import markdown, sort_key
 
 RANDOM = "random"  # the scenario value that draws randommaps.random_map(seed)
@@ -26,10 +28,12 @@ PARAMS = [
     Param("ruleset", str, help="shipped rule set or .rules file", path=True, check=load_ruleset),
     Param("scenario", str, RANDOM, "'random' (the map of the seed), a shipped map or .map file",
           path=True, check=_check_scenario),
-    Param("n", int, 12, "modules in the strip"),
+    # the checks of `hexbot locomotion run --n, --rounds, --until-advance`
+    Param("n", int, 12, "modules in the strip", check=cli_check(strip_size)),
     Param("seed", int, 0, "random map seed (scenario 'random')"),
-    Param("round_limit", int, 2500, "rounds before giving up"),
-    Param("until_advance", int, None, "stop when K modules rest past the strip's cells"),
+    Param("round_limit", int, 2500, "rounds before giving up", check=cli_check(count)),
+    Param("until_advance", int, None, "stop when K modules rest past the strip's cells",
+          check=cli_check(count)),
 ]
 COUNT_BY = (("ruleset", "n"), "result")
 RESULT_ORDER = ("reached", "advanced", "rounds-exhausted", "deadlock", "violation")

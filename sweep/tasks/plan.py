@@ -11,11 +11,18 @@ A plan that does not reach the goal fails the task with its reason.
 
 from __future__ import annotations
 
-from hexbot.bench.planning import PARALLELOGRAMS, apart, markdown_table, row, timed
+from hexbot.bench.planning import (
+    PARALLELOGRAMS,
+    apart,
+    markdown_table,
+    module_count,
+    row,
+    timed,
+)
 from hexbot.errors import ScenarioError
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.generate import parallelogram, random_blob
-from hexbot.sweep.kinds import Param
+from hexbot.sweep.kinds import Param, cli_check
 from hexbot.sweep.summary import generic
 
 FAMILIES = ("blob", "apart", "parallelogram")
@@ -30,16 +37,10 @@ def _one_of(choices: tuple[str, ...]):
     return check
 
 
-def _at_least(low: int):
-    def check(value: int) -> None:
-        if value < low:
-            raise ScenarioError(f"must be at least {low}")
-    return check
-
-
 PARAMS = [
     Param("family", str, "blob", "blob, apart or parallelogram", check=_one_of(FAMILIES)),
-    Param("modules", int, help="module count", check=_at_least(2)),
+    Param("modules", int, help="module count (hexbot bench planning --sizes's check)",
+          check=cli_check(module_count)),
     Param("seed", int, 0, "pair seed (blob and apart)"),
     Param("mode", str, "robust", "robust, faithful-serial or faithful-parallel",
           check=_one_of(MODES)),

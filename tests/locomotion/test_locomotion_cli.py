@@ -134,7 +134,7 @@ def test_a_binary_map_or_rule_file_is_not_text(cli_status, capsys, tmp_path):
 
 
 @pytest.mark.parametrize("argv, words", [
-    (["run", "salvador", "flat", "--n", "0"], "argument --n: must be at least 1, got 0"),
+    (["run", "salvador", "flat", "--n", "0"], "argument --n: must be 1..100,000, got 0"),
     (["run", "salvador", "flat", "--until-advance", "-1"], "argument --until-advance"),
     (["run", "salvador", "flat", "--render", "/nonexistent/x.gif"], "/nonexistent does not exist"),
     (["run", "salvador", "flat", "--render", "x.bmp"], "x.bmp: the name must end in .png or .gif"),

@@ -174,15 +174,19 @@ def test_a_dotted_path_kind_runs_any_pure_function(write_spec, tmp_path, embedde
 
 def test_a_task_that_raises_is_an_error_row_and_the_sweep_goes_on(write_spec, tmp_path,
                                                                   embedded_client):
-    # a map too small for the strip: the kind raises, the row says why
+    # a ledge too short for a strip of 5 (each value is fine on its own, so
+    # the file passes its checks): the kind raises, the row says why
+    (tmp_path / "ledge.map").write_text("..............#\n....ooo.......#\n"
+                                        "....###.......#\n###############\n")
     rows = run_here(write_spec('kind = "locomotion"\n[grid]\nruleset = "salvador-free"\n'
-                               'scenario = "flat"\nn = [0, 3]\nround_limit = 20\n'),
+                               'scenario = "ledge.map"\nn = [5, 3]\nround_limit = 20\n'),
                     embedded_client, tmp_path / "out")
     by_n = {r["n"]: r for r in rows}
-    assert by_n[0]["outcome"] == "error" and "ScenarioError" in by_n[0]["error"]
+    assert by_n[5]["outcome"] == "error" and "ScenarioError" in by_n[5]["error"]
+    assert "nothing holds the cell below" in by_n[5]["error"]
     assert by_n[3]["outcome"] == "ok"
     text = report(tmp_path / "out")
-    assert "failed tasks (1):" in text and "n=0: error: ScenarioError" in text
+    assert "failed tasks (1):" in text and "n=5: error: ScenarioError" in text
 
 
 @pytest.mark.parametrize(("how", "error"), [("exit", "SystemExit: 3"),
