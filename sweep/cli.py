@@ -109,12 +109,13 @@ def _run(args: argparse.Namespace) -> int:
     from hexbot.sweep.progress import SweepProgress
     from hexbot.sweep.results import ResultStore
 
-    with ResultStore(out, spec.kind.name, spec.param_names) as store, \
-            connect(args.scheduler, args.workers,
-                    on_note=lambda note: print(note, file=sys.stderr)) as client, \
-            SweepProgress(spec.path.name, not args.no_progress) as bar:
-        outcome = run_sweep(spec, client, store, resume=args.resume,
-                            on_start=bar.on_start, on_result=bar.on_result)
+    with ResultStore(out, spec.kind.name, spec.param_names) as store:
+        store.existing()  # a folder it refuses (damaged, another kind): before any cluster
+        with connect(args.scheduler, args.workers,
+                     on_note=lambda note: print(note, file=sys.stderr)) as client, \
+                SweepProgress(spec.path.name, not args.no_progress) as bar:
+            outcome = run_sweep(spec, client, store, resume=args.resume,
+                                on_start=bar.on_start, on_result=bar.on_result)
     _write_junit(spec.kind.name, out)
     done = outcome.skipped + outcome.stored
     failed = outcome.failed + outcome.failed_before  # a --resume does not wash them out

@@ -5,11 +5,13 @@ A results folder holds the table as numbered part files
 (``pyarrow.dataset.dataset(folder / "table")``, ``pandas.read_parquet``),
 and whatever a kind writes beside it (``junit.xml``). Rows are buffered and
 written as a new part every ``flush_rows`` rows or ``flush_seconds``
-seconds, each part through a temporary file and a rename, so an interrupt
-or a crash of this process loses at most the unflushed rows and never
-leaves a half-written part. Closing the store merges the parts into one.
-Reading keeps the last row of each task, so a merge cut short by a crash
-only leaves duplicates that reading ignores.
+seconds, each part through a temporary file, flushed to disk, and a rename,
+so an interrupt or a crash of this process (or of the machine) loses at
+most the unflushed rows and never leaves a half-written part. A part that
+cannot be read all the same (a disk error, a copy cut short) stops the
+reading with its path: the user moves it aside. Closing the store merges
+the parts into one. Reading keeps the last row of each task, so a merge
+cut short by a crash only leaves duplicates that reading ignores.
 
 The schema's metadata records the kind and its parameter names, which the
 report needs to tell parameters from figures.
@@ -44,9 +46,12 @@ def part_files(folder: Path) -> list[Path]:
 
 
 def read_table(folder: str | Path) -> pa.Table | None:
-    """Every stored row, the last one of each task; None when there are none."""
+    """Every stored row, the last one of each task; None when there are none.
+    A part that cannot be read stops the reading (HexBotError naming it): a
+    table without its rows would pass for the whole one (a report's counts,
+    a --resume that runs them again and then merges the parts over it)."""
     folder = Path(folder)
-    parts = [pq.read_table(p) for p in part_files(folder)]
+    parts = [_read_part(p) for p in part_files(folder)]
     if not parts:
         return None
     try:
@@ -58,6 +63,25 @@ def read_table(folder: str | Path) -> pa.Table | None:
     if len(last) < table.num_rows:
         table = table.take(sorted(last.values()))
     return table.replace_schema_metadata(parts[-1].schema.metadata)
+
+
+DAMAGED_HINT = "move it aside; --resume then runs its tasks again"
+
+
+def _read_part(path: Path) -> pa.Table:
+    """One part file; HexBotError ``PATH: what is wrong; move it aside ...``."""
+    try:
+        part = pq.read_table(path)
+    except (pa.ArrowException, OSError) as exc:
+        # pyarrow's text repeats the path: "Could not open Parquet input source '...': "
+        reason = re.sub(r"^Could not open Parquet input source '.*?': ", "", str(exc))
+        reason = " ".join(reason.split()) or type(exc).__name__
+        raise HexBotError(f"{path}: cannot read this part of the results table "
+                          f"({reason}): {DAMAGED_HINT}") from None
+    if META_KIND not in (part.schema.metadata or {}) or "task" not in part.column_names:
+        raise HexBotError(f"{path}: a Parquet file, but not a part written by hexbot sweep "
+                          f"(no kind in its metadata or no task column): {DAMAGED_HINT}")
+    return part
 
 
 def table_meta(table: pa.Table) -> tuple[str, list[str]]:
@@ -83,6 +107,8 @@ class ResultStore:
         self._last_flush = time.monotonic()
         self._lock: IO[str] | None = None
         self._refused = False
+        # what existing() read, until this store writes a part
+        self._existing: tuple[pa.Table | None] | None = None
         self.written = 0
         # task id -> its place in the grid; closing sorts the table by it
         self.order: dict[str, int] = {}
@@ -106,9 +132,16 @@ class ResultStore:
         self.close()
 
     def existing(self) -> pa.Table | None:
-        """What an earlier run stored; refuses a folder of another kind (and
-        then writes nothing there, not even when closing)."""
-        table = read_table(self.folder)
+        """What is stored (read again only after this store wrote); refuses a
+        folder of another kind or with a part it cannot read (and then writes
+        nothing there, not even when closing)."""
+        if self._existing is None:
+            try:
+                self._existing = (read_table(self.folder),)
+            except HexBotError:
+                self._refused = True
+                raise
+        table = self._existing[0]
         if table is not None:
             kind, _ = table_meta(table)
             if kind != self.kind:
@@ -177,8 +210,21 @@ class ResultStore:
         number = int(PART.match(parts[-1].name).group(1)) + 1 if parts else 1
         final = self.folder / TABLE / f"part-{number:06d}.parquet"
         tmp = final.with_name(f".{final.name}.tmp")
-        pq.write_table(table, tmp)
+        with open(tmp, "wb") as f:
+            pq.write_table(table, f)
+            f.flush()
+            os.fsync(f.fileno())  # on disk before it has the part's name
         os.replace(tmp, final)
+        _sync_folder(final.parent)  # the new name on disk before anything relies on it
+        self._existing = None
+
+
+def _sync_folder(folder: Path) -> None:
+    fd = os.open(folder, os.O_RDONLY)
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
 
 
 _UNFIT = (pa.ArrowInvalid, pa.ArrowTypeError, pa.ArrowNotImplementedError)
