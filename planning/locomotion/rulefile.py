@@ -28,6 +28,9 @@ asks the same about the module at POS). POS is a name
 must hold. Actions: ``become STATE`` and/or ``move POS`` (a neighbour cell);
 ``become A B C D`` names one state per quarter turn of the rule (0, 90, 180,
 270 degrees counter-clockwise), for states that carry a direction.
+An expression nests at most ``MAX_NESTING`` levels: each ``not`` and each
+pair of parentheses opens one, and a defined name counts as its own
+expression in parentheses (a chain of defines nests as deep as it is long).
 Every error names the file and line.
 """
 
@@ -67,6 +70,14 @@ class _Error(Exception):
     pass
 
 
+#: How deep an expression may nest: each ``not`` and each pair of parentheses
+#: is one level, a defined name one more than its own expression (as if its
+#: expression stood in parentheses where the name is used). The shipped
+#: rules nest at most 6; a deeper file is refused with its line instead of
+#: overflowing the recursive parser and evaluator (a RecursionError traceback).
+MAX_NESTING = 100
+
+
 def _tokenize(text: str) -> list[str]:
     tokens: list[str] = []
     pos = 0
@@ -98,11 +109,22 @@ def parse_position(token: str) -> Offset:
 
 
 class _ExprParser:
-    def __init__(self, tokens: list[str], classes: set[str], names: dict[str, Expr]):
+    def __init__(self, tokens: list[str], classes: set[str], names: dict[str, Expr],
+                 levels: dict[str, int], level: int = 0):
         self.toks = tokens
         self.i = 0
         self.classes = classes
         self.names = names
+        self.levels = levels  # how deep each defined name nests, its parentheses included
+        self.level = level  # levels open where the parser is
+        self.deepest = level  # the most levels open at once
+
+    def enter(self, extra: int = 1, through: str = "") -> None:
+        """Open ``extra`` levels (a ``not``, a parenthesis, a defined name)."""
+        if self.level + extra > MAX_NESTING:
+            via = f" (through {through}, which nests {extra})" if through else ""
+            raise _Error(f"expression nested deeper than {MAX_NESTING} levels{via}")
+        self.deepest = max(self.deepest, self.level + extra)
 
     def peek(self) -> str | None:
         return self.toks[self.i] if self.i < len(self.toks) else None
@@ -138,16 +160,24 @@ class _ExprParser:
         tok = self.peek()
         if tok in ("not", "!"):
             self.take()
-            return Not(self.unary())
+            self.enter()
+            self.level += 1
+            inner = self.unary()
+            self.level -= 1
+            return Not(inner)
         if tok == "(":
             self.take()
+            self.enter()
+            self.level += 1
             inner = self.disjunction()
+            self.level -= 1
             if self.peek() != ")":
                 raise _Error("missing ')'")
             self.take()
             return inner
         if tok in self.names:
             self.take()
+            self.enter(self.levels.get(tok, 1), tok)
             return self.names[tok]
         if tok == "simple":
             self.take()
@@ -189,12 +219,24 @@ class _ExprParser:
 
 
 def parse_expression(
-    text: str, states: list[str], names: dict[str, Expr] | None = None
+    text: str, states: list[str], names: dict[str, Expr] | None = None,
+    levels: dict[str, int] | None = None,
 ) -> Expr:
-    """Parse one ``require`` expression (raises ValueError with the reason)."""
+    """Parse one ``require`` expression (raises ValueError with the reason).
+    ``levels``: how deep each of ``names`` nests (a name missing: 1)."""
+    return _parse_nested(text, states, names or {}, levels or {})[0]
+
+
+def _parse_nested(
+    text: str, states: list[str], names: dict[str, Expr], levels: dict[str, int],
+    level: int = 0,
+) -> tuple[Expr, int]:
+    """The expression and how many levels it nests (see MAX_NESTING),
+    starting ``level`` deep (1: a define's body, in its implied parentheses)."""
     try:
         classes = set(BUILTIN_CLASSES) | set(states)
-        return _ExprParser(_tokenize(text), classes, names or {}).parse()
+        parser = _ExprParser(_tokenize(text), classes, names, levels, level)
+        return parser.parse(), parser.deepest
     except _Error as exc:
         raise ValueError(str(exc)) from None
 
@@ -230,6 +272,7 @@ def loads(text: str, source: str = "<string>") -> RuleSet:
     description: list[str] = []
     states: list[str] = []
     names: dict[str, Expr] = {}
+    levels: dict[str, int] = {}  # how deep each define nests
     current: _Draft | None = None
     lineno = 0
     try:
@@ -260,7 +303,8 @@ def loads(text: str, source: str = "<string>") -> RuleSet:
                 if name in DIRECTIONS or name in names:
                     raise _Error(f"define: {name!r} is already a position or defined")
                 try:
-                    names[name] = parse_expression(body, states, names)
+                    # a name stands for its expression in parentheses: one level more
+                    names[name], levels[name] = _parse_nested(body, states, names, levels, 1)
                 except ValueError as exc:
                     raise _Error(f"define {name}: {exc}") from None
                 current = None
@@ -276,7 +320,7 @@ def loads(text: str, source: str = "<string>") -> RuleSet:
                 continue
             if current is None:
                 raise _Error(f"unknown header keyword {key!r}")
-            _rule_line(current, key, rest, states, names)
+            _rule_line(current, key, rest, states, names, levels)
         if "ruleset" not in header or "states" not in header:
             lineno = 0
             raise _Error("a rule file needs 'ruleset NAME' and 'states ...'")
@@ -325,7 +369,8 @@ def _check_state_names(states: list[str]) -> None:
 
 
 def _rule_line(
-    d: _Draft, key: str, rest: str, states: list[str], names: dict[str, Expr]
+    d: _Draft, key: str, rest: str, states: list[str], names: dict[str, Expr],
+    levels: dict[str, int],
 ) -> None:
     if key == "priority":
         if not re.fullmatch(r"-?\d+", rest):
@@ -337,7 +382,7 @@ def _rule_line(
         d.state = rest
     elif key == "require":
         try:
-            d.conditions.append(parse_expression(rest, states, names))
+            d.conditions.append(parse_expression(rest, states, names, levels))
         except ValueError as exc:
             raise _Error(str(exc)) from None
     elif key == "become":
