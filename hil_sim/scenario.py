@@ -53,6 +53,7 @@ from hexbot.files import load_toml, read_text
 from hexbot.protocol.timing import CLOCK_TOLERANCE
 from hexbot.protocol.wire import LOC_COORD_LIMIT, MAX_MODULE_ID
 from hexbot.toml_lines import TomlLines as _Lines
+from hexbot.toml_lines import unknown_key
 
 from .geometry import Cell
 
@@ -196,7 +197,8 @@ def parse_scenario(text: str, path: Path) -> Scenario:
 
     def unknown(keys: set[str], allowed: set[str], table: str, index: int = -1) -> None:
         for key in sorted(keys - allowed):
-            raise fail(lines.find(table, index, key), f"unknown key {key!r} in [{table or 'top'}]")
+            raise fail(lines.find(table, index, key),
+                       unknown_key(key, allowed, f"[{table or 'top'}]"))
 
     unknown(set(data), _TOP_KEYS, "")
     name = data.get("name", path.stem)
@@ -339,7 +341,7 @@ def _faults(
     if not isinstance(raw, dict):
         raise fail(lines.find(table, index), f"[{table}] must be a table")
     for key in sorted(set(raw) - allowed):
-        raise fail(lines.find(table, index, key), f"unknown key {key!r} in [{table}]")
+        raise fail(lines.find(table, index, key), unknown_key(key, allowed, f"[{table}]"))
     values = {}
     for key in _FAULT_KEYS:
         value = raw.get(key, 0.0)

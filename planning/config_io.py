@@ -12,7 +12,9 @@ Two formats:
   read as a grid). Modules are numbered 1..n in reading order.
 * **TOML**: ``cells = [[x, y], ...]`` (numbered in reading order), or
   ``[[module]]`` tables with ``id``, ``cell = [x, y]`` and optional
-  ``orientation`` (0..5, the module's Yref).
+  ``orientation`` (0..5, the module's Yref). Any other key, at the top or
+  in a ``[[module]]`` table, is an error naming it and its line (and the
+  known key it is close to): a misspelt ``orientaton`` left orientation 0.
 
 The format follows the suffix, never the content. Both formats keep their
 cells within ``hexlattice.COORD_LIMIT`` (one check, :func:`_check_cell`).
@@ -31,8 +33,12 @@ from hexbot.errors import ScenarioError
 from hexbot.files import load_toml, read_text
 from hexbot.planning.configuration import Configuration, Module
 from hexbot.planning.hexlattice import COORD_LIMIT, Cell
+from hexbot.toml_lines import TomlLines, unknown_key
 
 _ASSIGN = re.compile(r"^\s*[A-Za-z_]\w*\s*=(?=\s*\[)")
+#: the keys of a TOML configuration, at the top and in a [[module]] table
+TOP_KEYS = ("cells", "module")
+MODULE_KEYS = ("id", "cell", "orientation")
 
 
 def parse_grid(text: str, source: str = "<grid>") -> Configuration:
@@ -132,6 +138,9 @@ def _is_int(value: object) -> bool:
 def parse_toml(text: str, source: str = "<toml>") -> Configuration:
     """Parse a TOML cell list (see the module docstring)."""
     data = load_toml(text, source)
+    lines = TomlLines(text)
+    for key in sorted(set(data) - set(TOP_KEYS)):
+        raise ScenarioError(f"{source}:{lines.find('', -1, key)}: {unknown_key(key, TOP_KEYS)}")
     if "cells" in data and "module" in data:
         raise ScenarioError(f"{source}:{_toml_line(text, 'cells')}: give either 'cells' or "
                             "[[module]] tables, not both")
@@ -154,6 +163,11 @@ def parse_toml(text: str, source: str = "<toml>") -> Configuration:
     for k, entry in enumerate(modules, start=1):
         line = headers[k - 1] if len(headers) == len(modules) else _toml_line(text, "module")
         where = f"{source}:{line}: [[module]] #{k}"
+        for key in sorted(set(entry) - set(MODULE_KEYS) if isinstance(entry, dict) else ()):
+            # the key's own line; an inline table has only the line that sets 'module'
+            at = lines.find("module", k - 1, key) if len(headers) == len(modules) else line
+            raise ScenarioError(f"{source}:{at}: [[module]] #{k}: "
+                                f"{unknown_key(key, MODULE_KEYS)}")
         if not isinstance(entry, dict) or "id" not in entry or "cell" not in entry:
             raise ScenarioError(f"{where}: needs 'id' and 'cell'")
         mid, orientation = entry["id"], entry.get("orientation", 0)
