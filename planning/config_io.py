@@ -9,7 +9,10 @@ Two formats:
   ``]``, ``;``, ``,``, ``...``), and ``#`` or ``%`` start a comment; any
   other token is an error, a bracket inside a bracket too (a TOML
   configuration in a file not named ``.toml`` fails there instead of being
-  read as a grid). Modules are numbered 1..n in reading order.
+  read as a grid). One pair of brackets, if any, holds all the rows: a
+  ``[`` never closed, a ``[`` after the first row or after the ``]``, and
+  a row after the ``]`` are errors. Modules are numbered 1..n in reading
+  order.
 * **TOML**: ``cells = [[x, y], ...]`` (numbered in reading order), or
   ``[[module]]`` tables with ``id``, ``cell = [x, y]`` and optional
   ``orientation`` (0..5, the module's Yref). Any other key, at the top or
@@ -36,6 +39,8 @@ from hexbot.planning.hexlattice import COORD_LIMIT, Cell
 from hexbot.toml_lines import TomlLines, unknown_key
 
 _ASSIGN = re.compile(r"^\s*[A-Za-z_]\w*\s*=(?=\s*\[)")
+#: a grid line's tokens: brackets, separators, and anything else (a cell or an error)
+_GRID_TOKEN = re.compile(r"[][;,]|[^\s\][;,]+")
 #: the keys of a TOML configuration, at the top and in a [[module]] table
 TOP_KEYS = ("cells", "module")
 MODULE_KEYS = ("id", "cell", "orientation")
@@ -45,37 +50,61 @@ def parse_grid(text: str, source: str = "<grid>") -> Configuration:
     """Parse 0/1 grid rows (see the module docstring)."""
     rows: list[list[int]] = []
     lines: list[int] = []
-    depth = 0  # brackets open
+    opened = 0  # the line of the '[' open, 0: none is
+    closed = 0  # the line of the ']' that closed the grid, 0: none did
+
+    def end_row(row: list[int], lineno: int) -> None:
+        if not row:
+            return
+        if rows and len(row) != len(rows[0]):
+            raise ScenarioError(
+                f"{source}:{lineno}: row has {len(row)} columns, "
+                f"row 1 (line {lines[0]}) has {len(rows[0])}"
+            )
+        rows.append(row)
+        lines.append(lineno)
+
+    lineno = 0
     for lineno, raw in enumerate(text.splitlines(), start=1):
         line = re.split(r"[#%]", raw, maxsplit=1)[0]
-        if not rows and not depth:
+        if not rows and not opened and not closed:
             line = _ASSIGN.sub("", line, count=1)  # MATLAB's `I = [`, before the first row
-        for bracket in re.findall(r"[][]", line):
-            depth += 1 if bracket == "[" else -1
-            if depth > 1:
-                raise ScenarioError(f"{source}:{lineno}: a bracket inside a bracket: not a "
-                                    "0/1 grid (a TOML configuration must be named .toml)")
-            if depth < 0:
-                raise ScenarioError(f"{source}:{lineno}: ']' closes no bracket")
-        line = line.replace("[", " ").replace("]", " ").replace("...", " ")
-        for chunk in line.split(";"):
-            tokens = chunk.replace(",", " ").split()
-            if not tokens:
-                continue
-            row = []
-            for token in tokens:
-                if token not in ("0", "1"):
-                    raise ScenarioError(
-                        f"{source}:{lineno}: expected 0 or 1, found {token!r}"
-                    )
+        line = line.replace("...", " ")
+        if not closed and "[" not in line and "]" not in line and ";" not in line:
+            end_row(_cells(line.replace(",", " ").split(), source, lineno), lineno)
+            continue  # a plain row (most lines of a big grid): no brackets to follow
+        row: list[int] = []
+        for token in _GRID_TOKEN.findall(line):
+            if token == "[":
+                if opened:
+                    raise ScenarioError(f"{source}:{lineno}: a bracket inside a bracket: not a "
+                                        "0/1 grid (a TOML configuration must be named .toml)")
+                if closed:
+                    raise ScenarioError(f"{source}:{lineno}: a second '[' after the grid's ']' "
+                                        f"on line {closed}: a file holds one grid")
+                if rows or row:
+                    raise ScenarioError(f"{source}:{lineno}: '[' after the first row (line "
+                                        f"{lines[0] if rows else lineno}): it opens the grid, "
+                                        "before its rows")
+                opened = lineno
+            elif token == "]":
+                if not opened:
+                    raise ScenarioError(f"{source}:{lineno}: ']' closes no bracket")
+                end_row(row, lineno)
+                row, opened, closed = [], 0, lineno
+            elif token == ";":
+                end_row(row, lineno)
+                row = []
+            elif token != ",":
+                _cells([token], source, lineno)
+                if closed:
+                    raise ScenarioError(f"{source}:{lineno}: a row after the grid's closing "
+                                        f"']' on line {closed}")
                 row.append(int(token))
-            if rows and len(row) != len(rows[0]):
-                raise ScenarioError(
-                    f"{source}:{lineno}: row has {len(row)} columns, "
-                    f"row 1 (line {lines[0]}) has {len(rows[0])}"
-                )
-            rows.append(row)
-            lines.append(lineno)
+        end_row(row, lineno)
+    if opened:
+        raise ScenarioError(f"{source}:{lineno}: ']' missing: the '[' on line {opened} is "
+                            "never closed")
     if not rows:
         raise ScenarioError(f"{source}: no grid rows found")
     height = len(rows)
@@ -90,6 +119,14 @@ def parse_grid(text: str, source: str = "<grid>") -> Configuration:
                 f"{source}:{lines[right]}")
     cells = {(c, height - 1 - r) for r, row in enumerate(rows) for c, v in enumerate(row) if v}
     return Configuration.from_cells(cells)
+
+
+def _cells(tokens: list[str], source: str, lineno: int) -> list[int]:
+    """A grid row's tokens as 0/1 cells."""
+    for token in tokens:
+        if token not in ("0", "1"):
+            raise ScenarioError(f"{source}:{lineno}: expected 0 or 1, found {token!r}")
+    return [int(t) for t in tokens]
 
 
 def _check_cell(cell: Cell, where: str) -> Cell:
