@@ -13,11 +13,16 @@ a killed console or a vanished port loses nothing already received)::
     4.412 ir cut 4.105
 
 Record fields: seconds since ``start`` with three decimals, the port name
-(``ir`` or ``debug``), the kind (``tx`` PC to robot, ``rx`` robot to PC,
-``state`` link state change, ``note`` free text, ``cut`` see below), then
+(``ir`` or ``debug``; notes also ``host`` and ``sim``), the kind (``tx`` PC
+to robot, ``rx`` robot to PC, ``state`` link state change: one of the link's
+states, then detail, ``note`` free text, ``cut`` see below), then
 lowercase hex bytes or text. Each ``rx`` record is one read from the port,
 so the chunking of the original session is kept. Lines starting ``#`` are
-comments.
+comments. Times never go back from the first ``tx``, ``rx`` or ``cut`` on
+(equal times are common: one millisecond holds many reads). The records
+before it may: on the embedded simulator the set-up's notes (and, before
+session 36, its ``connecting`` lines) carry wall-clock milliseconds, and the
+simulation's clock starts at 0 when it connects.
 
 A ``cut`` record (format 2) says that the live session gave up on the
 half reply its parser held: a quiet second was seen on the line, and what
@@ -41,6 +46,16 @@ from typing import TextIO
 
 from hexbot import files
 from hexbot.errors import ScenarioError
+from hexbot.host.link import LinkState
+
+#: The ports a record names: the session's two ports (``host.IR``,
+#: ``host.DEBUG``) and the sources of notes (Host.warn and framing: host;
+#: plant verdicts: sim). Another name is a malformed record.
+PORTS = ("ir", "debug", "host", "sim")
+#: What a ``state`` record's text starts with: the link states.
+STATES = tuple(state.value for state in LinkState)
+#: The records from which on times never go back (see the module docstring).
+BYTE_KINDS = ("tx", "rx", "cut")
 
 MAGIC = "# hexbot-capture 2"
 #: first line -> format; format 1 (before session 33) has no ``cut`` records
@@ -134,16 +149,24 @@ def read_capture(path: Path) -> Iterator[Record]:
     if version is None:
         raise ScenarioError(f"{path}:1: not a hexbot capture (first line must be {MAGIC!r})")
     last = len(lines) - 1  # text after the final newline: possibly half-written
+    latest: Record | None = None  # the record before, from the first byte record on
     for number, raw in enumerate(lines, start=1):
         line = raw.strip()
         if not line or line.startswith("#"):
             continue
+        where = f"{path}:{number}"
         try:
-            yield _parse(line, f"{path}:{number}", number, version)
+            rec = _parse(line, where, number, version)
+            if latest is not None and rec.t < latest.t:
+                raise ScenarioError(f"{where}: time {rec.t:.3f} is before {latest.t:.3f} on "
+                                    f"line {latest.line}: records must not go back in time")
         except ScenarioError:
             if number - 1 == last:
                 return
             raise
+        if latest is not None or rec.kind in BYTE_KINDS:
+            latest = rec
+        yield rec
 
 
 def _parse(line: str, where: str, number: int, version: int) -> Record:
@@ -155,9 +178,15 @@ def _parse(line: str, where: str, number: int, version: int) -> Record:
     t = _stamp(t_text)
     if t is None:
         raise ScenarioError(f"{where}: bad time stamp {t_text!r}")
+    if port not in PORTS:
+        raise ScenarioError(f"{where}: unknown port {port!r} (a capture's ports are "
+                            f"{', '.join(PORTS)})")
     kinds = KINDS if version >= 2 else KINDS[:4]
     if kind not in kinds:
         raise ScenarioError(f"{where}: unknown record kind {kind!r} (expected {kinds})")
+    if kind == "state" and body.split(" ", 1)[0] not in STATES:
+        raise ScenarioError(f"{where}: unknown link state {body.split(' ', 1)[0]!r} "
+                            f"(expected {', '.join(STATES)})")
     if kind in ("tx", "rx"):
         try:
             return Record(t, port, kind, data=bytes.fromhex(body), line=number, format=version)

@@ -9,16 +9,16 @@ import threading
 from pathlib import Path
 
 from hexbot.cli_args import positive, seconds_or_zero
-from hexbot.host.capture import read_capture
+from hexbot.host.capture import PORTS, read_capture
 from hexbot.host.describe import describe_event, describe_tx, event_json
-from hexbot.host.host import DEBUG, IR, ReplayDecoders
+from hexbot.host.host import ReplayDecoders
 from hexbot.host.replay_control import ReplayControl
 from hexbot.host.session_log import CAPTURE_NAME
 
-#: What a capture's records name: the two ports and the sources of notes
-#: (Host.warn and framing: host; plant verdicts: sim). A name outside these
-#: would filter every record away and print nothing.
-RECORD_PORTS = (IR, DEBUG, "host", "sim")
+#: What a capture's records name (capture.PORTS): the two ports and the
+#: sources of notes. A name outside these would filter every record away and
+#: print nothing.
+RECORD_PORTS = PORTS
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
