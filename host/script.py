@@ -40,12 +40,14 @@ first failed step. Grammar (``[...]`` optional, ``ID...`` one or more)::
     echo TEXT                      print TEXT
 
 Expectations look at everything received since the last sent command, so
-a reply that arrived during a ``wait`` still counts.
+a reply that arrived during a ``wait`` still counts. Every ``S`` is a finite
+number of seconds more than 0 and at most :data:`MAX_SECONDS`.
 """
 
 from __future__ import annotations
 
 import enum
+import math
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -63,6 +65,11 @@ from hexbot.protocol.frames import Command
 from hexbot.protocol.parser import Ack, ErrorReply, Garbage, StatusReport, Text
 
 DEFAULT_TIMEOUT = 5.0
+#: The longest time a script may name (``timeout``, ``wait``, ``within``,
+#: ``expect quiet``): an hour. Longer is a typo or a hang (docs/console.md,
+#: "Script language"); a command's own reply wait without ``timeout`` is the
+#: protocol's bound for it, which this does not cap.
+MAX_SECONDS = 3600.0
 
 
 class ScriptFailed(HexBotError):
@@ -90,16 +97,6 @@ def _int(word: str, what: str, where: str) -> int:
         raise ScenarioError(f"{where}: {what} must be a number, got {word!r}") from None
 
 
-def _float(word: str, what: str, where: str) -> float:
-    try:
-        value = float(word)
-    except ValueError:
-        raise ScenarioError(f"{where}: {what} must be a number, got {word!r}") from None
-    if value < 0:
-        raise ScenarioError(f"{where}: {what} must not be negative, got {word!r}")
-    return value
-
-
 def _count(word: str, what: str, where: str) -> int:
     """A count an expectation waits for: at least 1 (0 would pass at once)."""
     value = _int(word, what, where)
@@ -109,10 +106,21 @@ def _count(word: str, what: str, where: str) -> int:
 
 
 def _seconds(word: str, what: str, where: str) -> float:
-    """A time an expectation waits: more than 0 (0 would judge nothing)."""
-    value = _float(word, what, where)
+    """A time to wait (``timeout``, ``wait``, ``within``, ``expect quiet``): a
+    finite number more than 0 and at most MAX_SECONDS. 0 would judge nothing;
+    nan compared as no time at all and passed at once; inf and 1e300 waited
+    for ever on the simulator's virtual clock."""
+    try:
+        value = float(word)
+    except ValueError:
+        raise ScenarioError(f"{where}: {what} must be a number, got {word!r}") from None
+    if not math.isfinite(value):
+        raise ScenarioError(f"{where}: {what} must be a finite number, got {word!r}")
     if value <= 0:
         raise ScenarioError(f"{where}: {what} must be more than 0, got {word!r}")
+    if value > MAX_SECONDS:
+        raise ScenarioError(f"{where}: {what} must be at most {MAX_SECONDS:g} (an hour), "
+                            f"got {word!r}")
     return value
 
 
@@ -174,7 +182,7 @@ def _parse_line(line: str, where: str, number: int) -> Step:  # noqa: C901 - one
         if verb == "timeout" or verb == "wait":
             if len(rest) != 1:
                 raise ScenarioError(f"{where}: {verb} takes one number of seconds")
-            _float(rest[0], "seconds", where)
+            _seconds(rest[0], "seconds", where)
         elif verb == "select":
             if not rest:
                 raise ScenarioError(f"{where}: select needs at least one module id (0 = all)")

@@ -40,8 +40,8 @@ def _after_frames(responder, count, data, delay_s=0.0):
 
 @pytest.mark.parametrize("line, problem", [
     # a negative time-out or wait would time every reply out at once / wait nothing
-    ("timeout -1", "seconds must not be negative, got '-1'"),
-    ("wait -0.5", "seconds must not be negative, got '-0.5'"),
+    ("timeout -1", "seconds must be more than 0, got '-1'"),
+    ("wait -0.5", "seconds must be more than 0, got '-0.5'"),
     # 'wait 1 2' is a typo, not a wait of 1 s with a stray word
     ("wait 1 2", "wait takes one number of seconds"),
     # 'status 3' reads as "the status of 3" but would query every selected module
@@ -55,6 +55,48 @@ def test_the_check_refuses_with_file_and_line(tmp_path, cli_status, line, proble
     code, err = cli_status("run", _write(tmp_path, f"echo hi\n{line}\n"), "--check")
     assert code == 1, err
     assert "e.hbs:2: " in err and problem in err, err
+
+
+# (fuzz, session 37) each of these passed --check, then hung on the
+# simulator's virtual clock (inf, 1e300), passed at once without judging
+# anything (nan: every comparison false), or failed only at run time (0)
+_BAD_TIMES = [
+    ("timeout 0", "seconds must be more than 0, got '0'"),
+    ("timeout nan", "seconds must be a finite number, got 'nan'"),
+    ("timeout inf", "seconds must be a finite number, got 'inf'"),
+    ("timeout 1e400", "seconds must be a finite number, got '1e400'"),
+    ("wait 0", "seconds must be more than 0, got '0'"),
+    ("wait nan", "seconds must be a finite number, got 'nan'"),
+    ("wait inf", "seconds must be a finite number, got 'inf'"),
+    ("wait 1e300", "seconds must be at most 3600 (an hour), got '1e300'"),
+    ("wait 3600.5", "seconds must be at most 3600 (an hour), got '3600.5'"),
+    ("expect quiet nan", "seconds must be a finite number, got 'nan'"),
+    ("expect quiet inf", "seconds must be a finite number, got 'inf'"),
+    ("expect placements 3 within inf", "within must be a finite number, got 'inf'"),
+    ("expect text NEVER within 1e300", "within must be at most 3600 (an hour), got '1e300'"),
+    ("expect ack Status within nan", "within must be a finite number, got 'nan'"),
+    ("expect err Ref from 1 within -inf", "within must be a finite number, got '-inf'"),
+]
+
+
+@pytest.mark.parametrize("line, problem", _BAD_TIMES)
+def test_the_check_refuses_a_time_that_is_not_finite_positive_and_at_most_an_hour(
+        tmp_path, cli_status, line, problem):
+    code, err = cli_status("run", _write(tmp_path, f"select 1\n{line}\n"), "--check")
+    assert code == 1, err
+    assert f"e.hbs:2: {problem}" in err, err
+
+
+def test_a_run_refuses_a_bad_time_before_the_session_opens(tmp_path, log_dir, cli_status):
+    # the run checks the whole file first: nothing boots, nothing is sent
+    # (before, 'wait nan' printed "all 3 steps passed")
+    # (only the time that passed vacuously here: on the old code 'inf' hung)
+    code, err = cli_status("run", _write(tmp_path, "select 1\nwait nan\nexpect quiet nan\n"),
+                           "--scenario", "pair")
+    assert code == 1, err
+    assert "e.hbs:2: seconds must be a finite number, got 'nan'" in err
+    assert "e.hbs:3: seconds must be a finite number, got 'nan'" in err
+    assert "passed" not in err and "booted" not in err and not log_dir.exists()
 
 
 def test_an_err_expectation_with_within_and_no_reason_passes_the_check(tmp_path, cli_status):
