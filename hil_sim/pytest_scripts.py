@@ -24,7 +24,9 @@ class ScriptFile(pytest.File):
     failed = False
 
     def collect(self):
-        for step in load_script(self.path):  # a bad line: a collection error with file:line
+        steps = load_script(self.path)  # a bad line: a collection error with file:line
+        declared_scenario(self.path)  # and a scenario line that names nothing loadable
+        for step in steps:
             yield ScriptStep.from_parent(
                 self, name=testcase_name(StepResult(step, StepStatus.NOT_RUN)), step=step)
 

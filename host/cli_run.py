@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import argparse
+import os
 import re
 import sys
 from pathlib import Path
 
 from hexbot.cli_args import output_file
-from hexbot.errors import ScenarioError
+from hexbot.errors import HexBotError, ScenarioError
 from hexbot.files import read_text
 from hexbot.host.cli_common import session
 from hexbot.host.endpoints import add_port_arguments
@@ -32,13 +33,25 @@ _SCENARIO_PRAGMA = re.compile(r"^#\s*scenario:\s*(\S+)\s*$")
 def declared_scenario(path: Path) -> str | None:
     """A script may name the simulator scenario it was written for in a
     comment line ``# scenario: NAME``; used when neither --port nor
-    --scenario is given, so ``hexbot run SCRIPT`` just works."""
-    for line in read_text(path, "script").splitlines():
+    --scenario is given, so ``hexbot run SCRIPT`` just works. A scenario
+    file (a name ending in ``.toml`` or with a folder in it) is relative to
+    the script's folder, whatever the current one; a built-in or generated
+    name (``pair``, ``blob:50``) stays a name. The scenario must exist and
+    load: else a ScenarioError ``SCRIPT:LINE: scenario: ...`` naming the
+    resolved file (checked with the script's other lines)."""
+    from hexbot.hil_sim.scenario import load_scenario
+
+    for number, line in enumerate(read_text(path, "script").splitlines(), start=1):
         m = _SCENARIO_PRAGMA.match(line.strip())
         if m:
             name = m.group(1)
-            beside = path.parent / name  # a scenario file is the script's neighbour
-            return str(beside) if name.endswith(".toml") and beside.is_file() else name
+            if name.endswith(".toml") or "/" in name or os.sep in name:
+                name = str(path.parent / name)  # beside the script, not the cwd
+            try:
+                load_scenario(name)
+            except HexBotError as exc:
+                raise ScenarioError(f"{path}:{number}: scenario: {exc}") from None
+            return name
     return None
 
 
@@ -46,11 +59,12 @@ def run(args: argparse.Namespace) -> int:
     steps = load_script(args.script)  # every line checked before anything is sent
     if not steps:  # "all 0 steps passed" would pass a truncated or wrong file
         raise ScenarioError(f"{args.script}: no steps (only comments and blank lines)")
+    declared = declared_scenario(args.script)  # a line of the script: checked with them
     if args.check:
         print(f"{args.script}: {len(steps)} steps, syntax OK")
         return 0
     if not args.port and not args.scenario:
-        args.scenario = declared_scenario(args.script)
+        args.scenario = declared
     # Scripts are regressions: on the embedded simulator they run in virtual
     # time (default --sim-speed 0), where every time-out is simulated seconds.
     with session(args) as sess:

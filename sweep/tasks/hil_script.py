@@ -30,6 +30,7 @@ IMAGES = ("comm.elf", "control.elf")
 
 def _check_script(path: str) -> None:
     load_script(Path(path))  # every line checked now, before the sweep runs
+    declared_scenario(Path(path))  # its scenario line too (a file beside the script)
 
 
 def _check_firmware(folder: str) -> None:

@@ -82,3 +82,12 @@ def test_pytest_reports_a_bad_script_line_as_a_collection_error(pytester):
     result = pytester.runpytest_subprocess("-p", "no:cacheprovider")
     result.stdout.fnmatch_lines(["*test_bad.hbs:2: *frobnicate*"])
     assert result.ret == pytest.ExitCode.INTERRUPTED
+
+
+def test_pytest_reports_a_scenario_line_naming_no_file_as_a_collection_error(pytester):
+    # the file is the script's neighbour: missing there, the script is not run
+    # on some other cluster (nor fails in its set-up, step by step)
+    pytester.makefile(".hbs", test_rig="# scenario: rig.toml\nselect 1\n")
+    result = pytester.runpytest_subprocess("-p", "no:cacheprovider")
+    result.stdout.fnmatch_lines(["*test_rig.hbs:1: scenario: *rig.toml: no such scenario file*"])
+    assert result.ret == pytest.ExitCode.INTERRUPTED

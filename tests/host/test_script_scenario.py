@@ -3,6 +3,8 @@
 import re
 from pathlib import Path
 
+import pytest
+
 from hexbot.host.cli_run import declared_scenario
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "docs" / "examples"
@@ -117,11 +119,56 @@ def test_a_module_that_never_boots_is_named_before_the_steps(tmp_path, log_dir, 
     assert code == 3 and "s.hbs:2: select 2" in err  # a step to it fails
 
 
+_RIG = 'name = "{name}"\nbase = {ident}\n[[module]]\nid = {ident}\nposition = [0, 0]\n'
+
+
 def test_a_scenario_pragma_names_a_file_beside_the_script(tmp_path):
-    (tmp_path / "rig.toml").write_text("name = 'rig'\n")
+    (tmp_path / "rig.toml").write_text(_RIG.format(name="rig", ident=1))
     script = tmp_path / "s.hbs"
     script.write_text("# scenario: rig.toml\nselect 1\n")
     assert declared_scenario(script) == str(tmp_path / "rig.toml")
+
+
+def test_a_scenario_file_is_the_scripts_neighbour_not_the_current_folders(
+        tmp_path, monkeypatch, log_dir, cli_status):
+    # (fuzz, session 37) with a rig.toml in the current folder and none
+    # beside the script, the current folder's was run: another cluster,
+    # silently. Now the script's folder decides, in the check and the run
+    scripts, elsewhere = tmp_path / "scripts", tmp_path / "cwd"
+    scripts.mkdir()
+    elsewhere.mkdir()
+    (elsewhere / "rig.toml").write_text(_RIG.format(name="wrong", ident=3))
+    (scripts / "sub").mkdir()
+    (scripts / "sub" / "rig.toml").write_text(_RIG.format(name="right", ident=2))
+    monkeypatch.chdir(elsewhere)
+    script = scripts / "s.hbs"
+    script.write_text("# scenario: rig.toml\nselect 1\n")
+    code, err = cli_status("run", script, "--check")
+    assert code == 1
+    assert f"s.hbs:1: scenario: {scripts / 'rig.toml'}: no such scenario file" in err
+    code, err = cli_status("run", script, "--no-log")
+    assert code == 1 and f"{scripts / 'rig.toml'}: no such scenario file" in err
+    assert "booted" not in err  # refused before the simulator started
+
+    script.write_text("# scenario: sub/rig.toml\nselect 2\n")  # a folder in it: a file too
+    code, err = cli_status("run", script, "--no-log")
+    assert code == 0, err
+    assert f"simulator: {scripts / 'sub' / 'rig.toml'}, 1 of 1 modules booted" in err
+
+
+@pytest.mark.parametrize("pragma, problem", [
+    ("nosuchscenario", "scenario: unknown scenario 'nosuchscenario': built-in ones are "),
+    ("nosuch.toml", "nosuch.toml: no such scenario file"),
+    ("bad.toml", "bad.toml:1: a scenario needs at least one [[module]] table"),
+])
+def test_the_check_refuses_a_scenario_line_that_names_nothing_loadable(tmp_path, cli_status,
+                                                                       pragma, problem):
+    (tmp_path / "bad.toml").write_text("name = 'bad'\n")
+    script = tmp_path / "s.hbs"
+    script.write_text(f"echo hi\n# scenario: {pragma}\nselect 1\n")
+    code, err = cli_status("run", script, "--check")
+    assert code == 1
+    assert "s.hbs:2: scenario: " in err and problem in err, err
 
 
 def test_a_lost_port_is_no_quiet_and_ctrl_c_is_no_pass(log_dir, monkeypatch):

@@ -91,6 +91,16 @@ def test_a_hil_script_with_a_bad_line_stops_the_sweep_before_it_runs(write_spec,
     assert "bad.hbs:2" in str(err.value)  # the script's own line, too
 
 
+def test_a_hil_script_whose_scenario_line_names_no_file_stops_the_sweep_before_it_runs(
+        write_spec, tmp_path):
+    (tmp_path / "s.hbs").write_text("# scenario: rig.toml\nselect 1\n")
+    path = write_spec('kind = "hil-script"\n[grid]\nscript = "s.hbs"\nseed = [1, 2]\n')
+    with pytest.raises(ScenarioError) as err:
+        load_spec(path)
+    assert str(err.value).startswith(f"{path}:3: script = 's.hbs': ")
+    assert f"s.hbs:1: scenario: {tmp_path / 'rig.toml'}: no such scenario file" in str(err.value)
+
+
 def test_the_cli_reports_a_bad_file_with_exit_1_and_writes_nothing(write_spec, tmp_path, capsys):
     path = write_spec('kind = "locomotion"\n[grid]\nruleset = "salvador"\nn = 0.5\n')
     out = tmp_path / "out"
