@@ -14,7 +14,9 @@ the stop bit.
 Decisions (documented in docs/simulator.md): a byte with a parity or
 framing error is delivered as sampled (a port in raw mode without INPCK
 does so); each call is one burst that starts and ends idle (reads and
-writes are bursts: the time between them is not modelled).
+writes are bursts: the time between them is not modelled); a break (a
+whole frame low) is read once, and the next start bit looked for only
+after the line is high again, as a PC's UART does.
 """
 
 from __future__ import annotations
@@ -179,5 +181,17 @@ def _read(wave: list[tuple[float, int]], rx: LineSettings, bit: float | None = N
         for k in range(rx.data_bits):
             word |= level(edge + bit * (1.5 + k)) << k
         stop = edge + bit * (rx.frame_bits - rx.stop_bits + 0.5)
-        yield word, level(stop) == 0
+        framing_error = level(stop) == 0
+        yield word, framing_error
         t = stop  # re-arm after the middle of the (first) stop bit
+        if framing_error and word == 0:
+            # a break: the line low for a whole frame. A PC's UART (a 16550,
+            # the USB adapters after it) reads it as one NUL and looks for
+            # the next start bit only once the line is high again. Re-arming
+            # on the low line read a NUL per frame time of it: a port at
+            # 4,000,000 baud read 13,000 per 300-baud bit (session 37). (Any
+            # other framing error re-arms at once: the 16550 takes the low
+            # stop bit for the next start bit.)
+            while i < len(wave) - 1 and (wave[i][1] != 1 or wave[i + 1][0] <= t):
+                i += 1
+            t = max(t, wave[i][0])

@@ -17,13 +17,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import quote
 
-from hexbot.cli_args import count, port_name, rate, seconds
+from hexbot.cli_args import port_name, rate, seconds
 from hexbot.errors import HexBotError, UsageError
 from hexbot.host.events import Listener
 from hexbot.host.host import DEBUG, IR, Host
 from hexbot.host.link import PortSettings
 from hexbot.host.session_log import SessionLog, default_log_root, new_session_dir
-from hexbot.protocol import wire
+from hexbot.protocol import timing, wire
 from hexbot.protocol.mavlink_codec import Framing
 
 DEFAULT_SCENARIO = "flower7"
@@ -33,15 +33,18 @@ def add_port_arguments(parser: argparse.ArgumentParser, *, debug: bool = True) -
     g = parser.add_argument_group("ports (default: the embedded simulator)")
     g.add_argument("--port", metavar="DEVICE_OR_URL", type=port_name,
                    help="IR transceiver: /dev/ttyUSB0, socket://host:port, rfc2217://, loop://")
-    g.add_argument("--baud", type=count, default=wire.BAUD_IR, help="IR baud rate (default 300)")
+    g.add_argument("--baud", type=baud_rate, default=wire.BAUD_IR,
+                   help=f"IR baud rate (default {wire.BAUD_IR}; "
+                        f"{timing.BAUD_MIN}..{timing.BAUD_MAX})")
     g.add_argument("--parity", default="N", choices=list("NEOMS"))
     g.add_argument("--data-bits", type=int, default=8, choices=[5, 6, 7, 8])
     g.add_argument("--stop-bits", type=float, default=1, choices=[1, 1.5, 2])
     if debug:
         g.add_argument("--debug-port", metavar="DEVICE_OR_URL", type=port_name,
                        help="a control board's UART1 debug port")
-        g.add_argument("--debug-baud", type=count, default=wire.BAUD_DEBUG,
-                       help="debug port baud rate (default 4800)")
+        g.add_argument("--debug-baud", type=baud_rate, default=wire.BAUD_DEBUG,
+                       help=f"debug port baud rate (default {wire.BAUD_DEBUG}; "
+                            f"{timing.BAUD_MIN}..{timing.BAUD_MAX})")
         g.add_argument("--debug-module", type=int, metavar="ID",
                        help="simulator: whose UART1 to open (default: lowest id)")
     g.add_argument("--scenario", default=None,
@@ -61,6 +64,22 @@ def add_port_arguments(parser: argparse.ArgumentParser, *, debug: bool = True) -
                     help="folder for session folders (default $HEXBOT_LOG_DIR or "
                          "$XDG_STATE_HOME/hexbot/sessions)")
     lg.add_argument("--no-log", action="store_true", help="write no session log")
+
+
+def baud_rate(text: str) -> int:
+    """argparse type of a port's baud rate: one a module's UART can make
+    (``protocol.timing.BAUD_MIN..BAUD_MAX``); another talks to no module,
+    and a huge one made the simulator's resampling of each 300-baud bit
+    take minutes before session 37."""
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if not timing.BAUD_MIN <= value <= timing.BAUD_MAX:
+        raise argparse.ArgumentTypeError(
+            f"a module's UART runs at {timing.BAUD_MIN}..{timing.BAUD_MAX} baud "
+            f"(ATmega162 at {timing.F_CPU / 1e6:g} MHz), got {value}")
+    return value
 
 
 @dataclass

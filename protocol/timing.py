@@ -23,8 +23,8 @@ from hexbot.protocol.codes import CODES, Board, lookup
 from hexbot.protocol.wire import BAUD_BOARD, BAUD_DEBUG, BAUD_IR, F_CPU
 
 __all__ = [
-    "ACK_SLOT_S", "ACK_SLOT_TICKS", "BAUD_BOARD", "BAUD_DEBUG", "BAUD_IR", "BAUD_TOLERANCE",
-    "F_CPU",
+    "ACK_SLOT_S", "ACK_SLOT_TICKS", "BAUD_BOARD", "BAUD_DEBUG", "BAUD_IR", "BAUD_MAX",
+    "BAUD_MIN", "BAUD_TOLERANCE", "F_CPU",
     "LOCALIZE_WINDOW_S", "TICK_S", "boot_seconds", "reply_timeout_s",
 ]
 
@@ -65,6 +65,18 @@ def ubrr(baud: int, hz: int = F_CPU) -> int:
     """The USART's divisor for ``baud`` (normal speed), rounded to nearest;
     the firmware's ``HB_UBRR_*`` are generated from it."""
     return (hz + 8 * baud) // (16 * baud) - 1
+
+
+#: The rates a module's USART (ATmega162, asynchronous) can make at F_CPU:
+#: F_CPU / 16 / (UBRR + 1) with its 12-bit UBRR, up to F_CPU / 8 at double
+#: speed (U2X, UBRR 0). A PC port outside BAUD_MIN..BAUD_MAX talks to no
+#: module's UART, whatever its firmware (the IR transceiver and the debug
+#: port both end at one), so the host refuses such a ``--baud`` or
+#: ``--debug-baud`` as a usage error. BAUD_MIN is 15: the slowest rate,
+#: 15.26 baud, is 1.7 % faster, within BAUD_TOLERANCE.
+UBRR_MAX = 4095
+BAUD_MIN = F_CPU // (16 * (UBRR_MAX + 1))
+BAUD_MAX = F_CPU // 8
 
 
 def bit_cycles(baud: int, hz: int = F_CPU) -> int:

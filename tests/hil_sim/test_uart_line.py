@@ -22,11 +22,24 @@ def test_the_same_settings_pass_bytes_unchanged_and_stop_bits_do_not_matter():
 
 def test_a_fast_receiver_reads_breaks_and_a_wrong_parity_reads_other_bytes():
     fast = resample(REPLY, LINE, LineSettings(9600))
-    assert len(fast) > len(REPLY) and fast.count(0) > len(REPLY)  # low bits read as NULs
+    # each run of low bits reads as a NUL (a break): at least one a byte, its start bit
+    assert set(fast) == {0} and len(fast) > len(REPLY)
     assert resample(REPLY, LINE, LineSettings(300, parity="E")) != REPLY
     assert resample(REPLY, LINE, LineSettings(300, data_bits=7)) != REPLY
     # and the other way: a frame sent at 9600 is a glitch to a 300-baud module
     assert b"*F" not in resample(b"*FNNNNNNNN#", LineSettings(9600), LINE)
+
+
+def test_a_low_line_is_read_once_however_fast_the_receiver():
+    # (fuzz, session 37) the receiver re-armed on a line still low after a
+    # framing error and read a NUL per frame time of it: a port at 4,000,000
+    # baud read 13,000 per 300-baud bit, and at 10**11 the host never got
+    # past the boot. A start bit is a falling edge: the 9 low bits of a NUL
+    # sent at 300 are one break, and a faster port reads no more than 9600 does
+    assert resample(b"\x00", LINE, LineSettings(9600)) == b"\x00"
+    assert resample(b"\x00", LINE, LineSettings(4_000_000)) == b"\x00"
+    fast = resample(REPLY, LINE, LineSettings(9600))
+    assert resample(REPLY, LINE, LineSettings(4_000_000)) == fast
 
 
 def test_a_receiver_that_comes_on_mid_line_starts_only_on_a_falling_edge():

@@ -96,6 +96,12 @@ def test_an_unusable_default_log_dir_warns_and_runs_without_a_log(capsys, tmp_pa
     (["monitor", "--duration", "-1"], "--duration"),
     (["send", "JxOpen", "1", "--scenario", "pair", "--expect", "-5"], "--expect"),
     (["send", "Status", "--port", "loop://", "--baud", "0"], "--baud"),
+    # (fuzz, session 37) rates no module's UART makes: 99999999999 hung the run
+    (["send", "Status", "--port", "loop://", "--baud", "125001"],
+     "--baud: a module's UART runs at 15..125000 baud (ATmega162 at 1 MHz), got 125001"),
+    (["run", "x.hbs", "--baud", "99999999999"], "--baud: a module's UART runs at 15..125000"),
+    (["monitor", "--port", "loop://", "--debug-port", "loop://", "--debug-baud", "14",
+      "--duration", "1"], "--debug-baud: a module's UART runs at 15..125000 baud"),
     (["send", "Status", "--scenario", "pair", "--module=-1"],
      f"argument --module: a module id is 1..{wire.MAX_MODULE_ID} (0 = every module)"),
     (["replay", CAPTURE, "--port", "nosuch"], "'ir', 'debug'"),
