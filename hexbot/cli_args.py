@@ -63,6 +63,16 @@ def port_name(text: str) -> str:
     return text
 
 
+def scenario_name(text: str) -> str:
+    """A simulator scenario (a built-in name or a TOML file). An empty one
+    (``--scenario "$SCENARIO"`` with the variable unset) is a usage error:
+    taking it as "none given" ran the default scenario, or the script's."""
+    if not text.strip():
+        raise argparse.ArgumentTypeError("empty scenario name (is the variable that should "
+                                         "hold it set?)")
+    return text
+
+
 def tcp_port(text: str) -> int:
     """A TCP port to listen on; 0 lets the system pick a free one."""
     value = _whole(text)

@@ -100,6 +100,8 @@ def _open(path: str, stack: ExitStack) -> TextIO:
 
 
 def run(args: argparse.Namespace) -> int:
+    if args.wait_client and not args.pty:  # ignored, it started at once (session 37)
+        raise UsageError("--wait-client waits for a client of the --pty ports: give --pty")
     if args.rfc2217 is not None:
         return _serve_rfc2217(args)
     if not args.pty and args.duration is None:

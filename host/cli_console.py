@@ -64,8 +64,9 @@ def run(args: argparse.Namespace) -> int:
         records = list(read_capture(path))  # bad files fail here, before the UI starts
         HexBotConsole(Host(), replay=records, start_ports=False).run()
         return 0
-    endpoints.resolve(args, default_speed=DEFAULT_SIM_SPEED)  # usage errors before the UI
+    ends = endpoints.resolve(args, default_speed=DEFAULT_SIM_SPEED)  # usage errors before the UI
     endpoints.check_log_dir(args)
+    endpoints.check_scenario(ends)  # a scenario that cannot load: exit 4, not retried in the UI
     app = HexBotConsole(opener=make_opener(args), reply_timeout=args.timeout)
     app.run()
     return app.failure_status or 0  # the session could not go on: say so to the shell

@@ -17,11 +17,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import quote
 
-from hexbot.cli_args import port_name, rate, seconds
+from hexbot.cli_args import port_name, rate, scenario_name, seconds
 from hexbot.errors import HexBotError, UsageError
 from hexbot.host.events import Listener
 from hexbot.host.host import DEBUG, IR, Host
-from hexbot.host.link import PortSettings
+from hexbot.host.link import PortSettings, cannot_open
 from hexbot.host.session_log import SessionLog, default_log_root, new_session_dir
 from hexbot.protocol import timing, wire
 from hexbot.protocol.mavlink_codec import Framing
@@ -47,7 +47,7 @@ def add_port_arguments(parser: argparse.ArgumentParser, *, debug: bool = True) -
                             f"{timing.BAUD_MIN}..{timing.BAUD_MAX})")
         g.add_argument("--debug-module", type=int, metavar="ID",
                        help="simulator: whose UART1 to open (default: lowest id)")
-    g.add_argument("--scenario", default=None,
+    g.add_argument("--scenario", default=None, type=scenario_name,
                    help=f"simulator scenario when no --port is given (default {DEFAULT_SCENARIO})")
     g.add_argument("--seed", type=int, default=None, help="simulator seed")
     g.add_argument("--sim-speed", type=rate, default=None, metavar="X",
@@ -94,12 +94,18 @@ class Endpoints:
         """Nothing to stop: an embedded simulator closes with its port."""
 
 
+def _sim_target(scenario: str) -> str:
+    """What a ``hexbot-sim://`` URL names: a TOML file's absolute path, or
+    the built-in (or generated) name as it is."""
+    path = Path(scenario)
+    return str(path.resolve()) if path.suffix == ".toml" or path.is_file() else scenario
+
+
 def sim_url(scenario: str, seed: int | None = None, speed: float = 0.0,
             firmware: str | Path | None = None) -> str:
     """The ``hexbot-sim://`` URL of a scenario (a built-in name or a TOML file),
     optionally with every module on the images of the ``firmware`` folder."""
-    path = Path(scenario)
-    target = str(path.resolve()) if path.suffix == ".toml" or path.is_file() else scenario
+    target = _sim_target(scenario)
     query = [f"speed={speed:g}"] + ([f"seed={seed}"] if seed is not None else [])
     if firmware is not None:
         query.append(f"firmware={quote(str(Path(firmware).resolve()))}")
@@ -143,6 +149,24 @@ def _check_debug_module(ident: int, scenario: str) -> None:
     if ident not in ids:
         raise UsageError(f"--debug-module {ident}: scenario {scenario} has "
                          f"modules {', '.join(map(str, ids))}")
+
+
+def check_scenario(ends: Endpoints) -> None:
+    """The embedded simulator's scenario exists, loads and has its images
+    (a simulator is built from it, 10 ms for flower7, and dropped); else
+    the error opening its port gives (``cannot open URL: reason``, exit 4),
+    before anything starts. For the console, which opens its ports in the
+    UI, where a scenario that can never load stood as an alert until quit
+    (session 37); a serial port that is unplugged still retries there, as
+    it may come back."""
+    if ends.scenario is None or ends.ir is None:
+        return
+    from hexbot.hil_sim import Simulator, load_scenario
+
+    try:
+        Simulator(load_scenario(_sim_target(ends.scenario)))
+    except HexBotError as exc:
+        raise cannot_open(ends.ir.url, exc) from None
 
 
 def check_log_dir(args: argparse.Namespace) -> None:

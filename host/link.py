@@ -84,8 +84,7 @@ class PortSettings:
                 exclusive=True, **writes,  # exclusive: two readers would split the bytes
             )
         except (serial.SerialException, OSError, ValueError) as exc:
-            raise LinkUnavailableError(f"cannot open {self.url}: "
-                                       f"{open_failure(self.url, exc)}") from exc
+            raise cannot_open(self.url, exc) from exc
 
 
 def _errno_of(exc: BaseException) -> int | None:
@@ -101,6 +100,11 @@ def _errno_of(exc: BaseException) -> int | None:
         if isinstance(number, int) and number > 0:
             return number
     return None
+
+
+def cannot_open(url: str, exc: BaseException) -> LinkUnavailableError:
+    """The error of a port that did not open: ``cannot open URL: reason``."""
+    return LinkUnavailableError(f"cannot open {url}: {open_failure(url, exc)}")
 
 
 def open_failure(url: str, exc: BaseException) -> str:

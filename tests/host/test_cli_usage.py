@@ -110,6 +110,12 @@ def test_an_unusable_default_log_dir_warns_and_runs_without_a_log(capsys, tmp_pa
     (["monitor", "--port", "loop://", "--debug-module", "2", "--duration", "1"], "--debug-port"),
     # ``--port "$PORT"`` with the variable unset: not the embedded simulator
     (["send", "Status", "--port", ""], "--port: empty port name"),
+    # (fuzz, session 37) ignored: the default scenario, or the script's, ran instead
+    (["send", "Status", "--scenario", ""], "--scenario: empty scenario name"),
+    (["run", "x.hbs", "--scenario", " "], "--scenario: empty scenario name"),
+    # (fuzz, session 37) ignored: the simulation started at once, for nobody
+    (["sim", "pair", "--duration", "1", "--wait-client"],
+     "--wait-client waits for a client of the --pty ports: give --pty"),
     (["monitor", "--port", "loop://", "--debug-port", " "], "--debug-port: empty port name"),
     (["flash", "--board", "control", "--port", ""], "--port: empty port name"),
 ])
