@@ -173,17 +173,20 @@ def _close_cluster(cluster: Any, on_note: Callable[[str], None] | None) -> None:
     worker processes are killed (their rows were stored or are not done,
     so nothing is lost) and the command goes on to exit."""
     nannies = list(cluster.workers.values())  # the close takes them off this list first
+    before = _worker_processes(nannies)  # a cancelled close forgets its nannies' processes
     try:
         cluster.close(timeout=CLOSE_SECONDS)
         return
     except TimeoutError:
         pass
+    import psutil
+
     killed = 0
-    for nanny in nannies:
-        pid = getattr(nanny, "pid", None)
-        if pid:
-            with suppress(ProcessLookupError):
-                os.kill(pid, signal.SIGKILL)
+    # those seen before the close and any a nanny started since (a restart)
+    for proc in {p.pid: p for p in before + _worker_processes(nannies)}.values():
+        with suppress(psutil.Error):
+            if proc.status() != psutil.STATUS_ZOMBIE:
+                proc.kill()  # psutil checks that the pid is still this process
                 killed += 1
     cluster.shutdown_on_close = False  # Dask's exit hook would wait for it once more
     if on_note:
@@ -191,6 +194,20 @@ def _close_cluster(cluster: Any, on_note: Callable[[str], None] | None) -> None:
         what = (f"killed {killed} worker process{'es' if killed > 1 else ''} still running"
                 if killed else "no worker process was still running")
         on_note(f"the embedded Dask cluster did not close in {CLOSE_SECONDS:g} s: {what}")
+
+
+def _worker_processes(nannies: list[Any]) -> list[Any]:
+    """The worker processes the nannies hold now (psutil, so that a pid taken
+    over by another process later is not killed)."""
+    import psutil
+
+    procs = []
+    for nanny in nannies:
+        pid = getattr(nanny, "pid", None)
+        if pid:
+            with suppress(psutil.Error):
+                procs.append(psutil.Process(pid))
+    return procs
 
 
 def _ignore_sigint() -> Callable[[], None]:
