@@ -10,8 +10,10 @@ from collections.abc import Callable
 from pathlib import Path
 
 
-def _at_least(low: float, strict: bool, unit: str = "") -> Callable[[str], float]:
-    """An argparse type: a finite number above ``low`` (``strict``) or not below it."""
+def _at_least(low: float, strict: bool, unit: str = "",
+              high: float | None = None) -> Callable[[str], float]:
+    """An argparse type: a finite number above ``low`` (``strict``) or not below
+    it, and at most ``high`` when given."""
     suffix = f" {unit}" if unit else ""
     bound = f"more than {low:g}{suffix}" if strict else f"{low:g} or more{suffix}"
 
@@ -19,8 +21,16 @@ def _at_least(low: float, strict: bool, unit: str = "") -> Callable[[str], float
         value = _number(text)
         if value < low or (strict and value == low):
             raise argparse.ArgumentTypeError(f"must be {bound}, got {text}")
+        if high is not None and value > high:
+            raise argparse.ArgumentTypeError(f"must be at most {high:g}{suffix}, got {text}")
         return value
     return check
+
+
+def seconds_up_to(high: float, zero: bool = False) -> Callable[[str], float]:
+    """An argparse type: a duration more than 0 seconds (``zero``: 0 or more)
+    and at most ``high`` (``must be at most 3600 seconds, got 1e300``)."""
+    return _at_least(0, not zero, "seconds", high)
 
 
 #: A duration that must be positive (a time-out, a quiet period).

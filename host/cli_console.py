@@ -11,17 +11,17 @@ import argparse
 from collections.abc import Iterable
 from pathlib import Path
 
-from hexbot.cli_args import seconds
 from hexbot.host import endpoints
 from hexbot.host.capture import read_capture
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.events import Listener
 from hexbot.host.host import Host
+from hexbot.host.script import timeout_seconds
 from hexbot.host.session_log import CAPTURE_NAME
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--timeout", type=seconds, default=None, metavar="S",
+    parser.add_argument("--timeout", type=timeout_seconds, default=None, metavar="S",
                         help="seconds to wait for the replies to a single command "
                              "(default: the protocol's bound for the function)")
     parser.add_argument("--replay", type=Path, metavar="CAPTURE",

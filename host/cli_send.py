@@ -20,7 +20,7 @@ import argparse
 import json
 import sys
 
-from hexbot.cli_args import count, seconds, seconds_or_zero
+from hexbot.cli_args import count
 from hexbot.errors import FrameError, UsageError
 from hexbot.host.cli_common import session
 from hexbot.host.cli_progress import session_waits
@@ -28,6 +28,7 @@ from hexbot.host.commands import parse_command, parse_raw
 from hexbot.host.describe import describe_event, describe_tx, event_json
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.events import Observed
+from hexbot.host.script import linger_seconds, timeout_seconds
 from hexbot.host.session import Session, select
 from hexbot.protocol import frames, wire
 from hexbot.protocol.frames import Command
@@ -50,11 +51,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--expect", type=count, default=None, metavar="N",
                         help="replies to wait for without --module (default: what the "
                              "addressing implies; 1 before any Select)")
-    parser.add_argument("--timeout", type=seconds, default=None, metavar="S",
+    parser.add_argument("--timeout", type=timeout_seconds, default=None, metavar="S",
                         help="seconds to wait for the replies (default: as long as the "
                              "protocol says the function takes)")
     parser.add_argument("--json", action="store_true", help="print replies as JSON lines")
-    parser.add_argument("--linger", type=seconds_or_zero, default=0.0, metavar="S",
+    parser.add_argument("--linger", type=linger_seconds, default=0.0, metavar="S",
                         help="after the replies, keep printing events for S seconds "
                              "(e.g. localization reports)")
     parser.add_argument("--unchecked", action="store_true",

@@ -52,6 +52,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
+from hexbot.cli_args import seconds_up_to
 from hexbot.errors import FrameError, HexBotError, LinkUnavailableError, ScenarioError
 from hexbot.files import read_text
 from hexbot.host import workflows
@@ -70,6 +71,12 @@ DEFAULT_TIMEOUT = 5.0
 #: "Script language"); a command's own reply wait without ``timeout`` is the
 #: protocol's bound for it, which this does not cap.
 MAX_SECONDS = 3600.0
+#: The argparse types of the host commands' own waits, capped as a script's
+#: times are (the same clocks: 1e300 hung a session on the simulator at
+#: speed 0): ``send``/``console --timeout``, and ``send --linger``, where 0
+#: is the default and means no linger.
+timeout_seconds = seconds_up_to(MAX_SECONDS)
+linger_seconds = seconds_up_to(MAX_SECONDS, zero=True)
 
 
 class ScriptFailed(HexBotError):

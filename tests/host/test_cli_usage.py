@@ -118,6 +118,12 @@ def test_an_unusable_default_log_dir_warns_and_runs_without_a_log(capsys, tmp_pa
      "--wait-client waits for a client of the --pty ports: give --pty"),
     (["monitor", "--port", "loop://", "--debug-port", " "], "--debug-port: empty port name"),
     (["flash", "--board", "control", "--port", ""], "--port: empty port name"),
+    # (fuzz, session 37) any finite time was taken: 1e300 hung a session at speed 0;
+    # the cap is a script's (script.MAX_SECONDS)
+    (["send", "Status", "--port", "/nonexistent/ttyNOPE", "--timeout", "1e300"],
+     "--timeout: must be at most 3600 seconds, got 1e300"),
+    (["send", "Status", "--port", "/nonexistent/ttyNOPE", "--linger", "3600.5"],
+     "--linger: must be at most 3600 seconds, got 3600.5"),
 ])
 def test_bad_option_values_are_usage_errors(capsys, log_dir, argv, words):
     code, err = status(capsys, *argv)
@@ -165,6 +171,8 @@ def test_monitor_debug_module_must_be_in_the_scenario(capsys, log_dir):
     (["--scenario", "pair", "--debug-module", "9"],
      "--debug-module 9: scenario pair has modules 1, 2"),
     (["--port", "loop://", "--scenario", "pair"], "cannot be combined with --port"),
+    (["--scenario", "pair", "--timeout", "1e300"],
+     "--timeout: must be at most 3600 seconds, got 1e300"),
 ])
 def test_console_usage_errors_exit_2_before_the_ui_starts(capsys, log_dir, monkeypatch,
                                                           argv, words):
