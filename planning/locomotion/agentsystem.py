@@ -16,7 +16,11 @@ Terms: ``S<state>`` the module's own state, ``E x,y`` an empty cell,
 as are the letter O for a zero in coordinates and code-fence lines.
 
 `read_listing` returns the rules with every defect it had to repair listed,
-so a translation can be checked rule by rule.
+so a translation can be checked rule by rule. A precondition nests at most
+``rulefile.MAX_NESTING`` levels, as a rule file's expression does: each
+``(`` opens one and each ``!`` that negates (an odd run of them) one more;
+`parse` refuses a deeper one with the rule's ``FILE:LINE`` and the rule
+files' words (before, `to_expr` overflowed: a RecursionError traceback).
 """
 
 from __future__ import annotations
@@ -24,6 +28,8 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from hexbot.errors import ScenarioError
+from hexbot.planning.locomotion.rulefile import MAX_NESTING, too_deep
 from hexbot.planning.locomotion.rules import And, Atom, Expr, Not
 
 _TERM = re.compile(
@@ -35,11 +41,17 @@ _TERM = re.compile(
 class ASRule:
     name: str
     priority: int
-    line: int
+    line: int  # of the rule's name
     tokens: list[str]
     move: tuple[int, int] | None = None
     become: str | None = None
     repairs: list[str] = field(default_factory=list)
+    source: str = "<string>"  # the listing's file name, for errors
+
+    @property
+    def where(self) -> str:
+        """``FILE:LINE`` of the rule, for an error about it."""
+        return f"{self.source}:{self.line}"
 
 
 def _normalise(body: str) -> str:
@@ -61,8 +73,9 @@ def tokenize(body: str) -> tuple[list[str], str | None]:
     return out, None
 
 
-def read_listing(text: str) -> list[ASRule]:
-    """Rules of an AgentSystem listing (state declarations and comments skipped)."""
+def read_listing(text: str, source: str = "<string>") -> list[ASRule]:
+    """Rules of an AgentSystem listing (state declarations and comments
+    skipped); ``source`` names the file in errors about its rules."""
     lines: list[tuple[int, str]] = []
     for number, raw in enumerate(text.splitlines(), start=1):
         s = raw.strip()
@@ -76,7 +89,7 @@ def read_listing(text: str) -> list[ASRule]:
         end = prio_at[j + 1] - 1 if j + 1 < len(prio_at) else len(lines)
         body = " ".join(s for _, s in lines[i + 1 : end])
         toks, bad = tokenize(body)
-        rule = ASRule(name, int(lines[i][1]), name_line, toks)
+        rule = ASRule(name, int(lines[i][1]), name_line, toks, source=source)
         if bad:
             rule.repairs.append(f"unreadable text {bad!r} dropped with what follows")
         _split_action(rule)
@@ -103,18 +116,29 @@ def _split_action(rule: ASRule) -> None:
 # --- expressions ----------------------------------------------------------
 
 
-def parse(tokens: list[str], repairs: list[str] | None = None) -> list:
+def parse(tokens: list[str], repairs: list[str] | None = None,
+          where: str = "<listing>") -> list:
     """Nested lists: a group is a list of items; an item is a term, ('!', item)
     or a sub-group. Unbalanced parentheses are repaired (an extra ')' closes
-    nothing and is dropped; missing ')' are added at the end) and noted."""
+    nothing and is dropped; missing ')' are added at the end) and noted.
+    Nesting deeper than MAX_NESTING is a ScenarioError ``where: expression
+    nested deeper than 100 levels`` (``where``: the rule's ``FILE:LINE``)."""
     repairs = repairs if repairs is not None else []
     stack: list[list] = [[]]
+    levels = [0]  # levels open inside each group of the stack
+
+    def enter(extra: int) -> int:
+        if levels[-1] + extra > MAX_NESTING:
+            raise ScenarioError(f"{where}: {too_deep()}")
+        return levels[-1] + extra
+
     pending_not = 0
     for t in tokens:
         if t == "!":
             pending_not += 1
             continue
         if t == "(":
+            levels.append(enter(pending_not % 2 + 1))
             stack.append([])
             stack[-1].append(("not-count", pending_not))
             pending_not = 0
@@ -123,6 +147,7 @@ def parse(tokens: list[str], repairs: list[str] | None = None) -> list:
             if len(stack) == 1:
                 repairs.append("extra ')' dropped")
                 continue
+            levels.pop()
             group = stack.pop()
             nots = group.pop(0)[1]
             item: object = group
@@ -133,6 +158,7 @@ def parse(tokens: list[str], repairs: list[str] | None = None) -> list:
             stack[-1].append(item)
             continue
         item = t
+        enter(pending_not % 2)
         for _ in range(pending_not % 2):
             item = ("!", item)
         if pending_not >= 2:
@@ -151,7 +177,8 @@ def parse(tokens: list[str], repairs: list[str] | None = None) -> list:
 
 
 def to_expr(item) -> Expr:
-    """One parsed item as our expression (own-state terms become (0,0) atoms)."""
+    """One parsed item as our expression (own-state terms become (0,0) atoms);
+    `parse` bounds how deep it recurses (MAX_NESTING)."""
     if isinstance(item, tuple) and item[0] == "!":
         return Not(to_expr(item[1]))
     if isinstance(item, list):

@@ -78,6 +78,12 @@ class _Error(Exception):
 MAX_NESTING = 100
 
 
+def too_deep(via: str = "") -> str:
+    """The refusal of an expression deeper than MAX_NESTING (``via``: how, e.g.
+    through a defined name), for rule files and AgentSystem listings alike."""
+    return f"expression nested deeper than {MAX_NESTING} levels{via}"
+
+
 def _tokenize(text: str) -> list[str]:
     tokens: list[str] = []
     pos = 0
@@ -123,7 +129,7 @@ class _ExprParser:
         """Open ``extra`` levels (a ``not``, a parenthesis, a defined name)."""
         if self.level + extra > MAX_NESTING:
             via = f" (through {through}, which nests {extra})" if through else ""
-            raise _Error(f"expression nested deeper than {MAX_NESTING} levels{via}")
+            raise _Error(too_deep(via))
         self.deepest = max(self.deepest, self.level + extra)
 
     def peek(self) -> str | None:

@@ -1,5 +1,8 @@
 """The AgentSystem listing reader: OCR noise, actions, and repaired defects."""
 
+import pytest
+
+from hexbot.errors import ScenarioError
 from hexbot.planning.locomotion.agentsystem import parse, read_listing, to_expr, tokenize
 from hexbot.planning.locomotion.rules import Atom, Not
 
@@ -55,3 +58,27 @@ def test_defects_are_repaired_and_listed():
     assert "'!!' read as no negation" in repairs
     assert "extra ')' dropped" in repairs
     assert "missing ')' added at the end" in repairs
+
+
+def _deep(body: str) -> str:
+    return f"%----- deep\nDeep\n1\nSACTIV {body}\nP1,0\n"
+
+
+@pytest.mark.parametrize("body, ok", [
+    ("(" * 100 + "E1,0" + ")" * 100, True),
+    ("(" * 101 + "E1,0" + ")" * 101, False),
+    ("!(" * 50 + "E1,0" + ")" * 50, True),  # each negating '!' and each '(' is a level
+    ("!(" * 50 + "!E1,0" + ")" * 50, False),
+    ("!!(" * 100 + "E1,0" + ")" * 100, True),  # '!!' negates nothing
+    ("(" * 5000 + "E1,0", False),  # unclosed: refused before the repair closes them
+], ids=["100 (", "101 (", "50 !(", "50 !( and !", "100 !!(", "5000 ("])
+def test_a_precondition_nests_at_most_as_deep_as_a_rule_file(body, ok):
+    """rulefile.MAX_NESTING and its words, with the rule's FILE:LINE; before,
+    5000 parentheses were a RecursionError traceback in to_expr."""
+    (rule,) = read_listing(_deep(body), "otero.txt")
+    if ok:
+        assert [to_expr(item) for item in parse(rule.tokens, where=rule.where)]
+        return
+    with pytest.raises(ScenarioError) as err:
+        parse(rule.tokens, where=rule.where)
+    assert str(err.value) == "otero.txt:2: expression nested deeper than 100 levels"
