@@ -38,7 +38,7 @@ from hexbot.errors import HexBotError, ScenarioError
 from hexbot.files import load_toml, read_text
 from hexbot.sweep.kinds import Kind, Param, load_kind
 from hexbot.sweep.summary import ENGINE_COLUMNS
-from hexbot.toml_lines import TomlLines
+from hexbot.toml_lines import TomlLines, unknown_key
 
 MAX_TASKS = 1_000_000  # a bigger grid is refused (split it into several sweep files)
 TOP_KEYS = {"kind", "description", "output", "grid"}
@@ -110,8 +110,7 @@ def parse_spec(data: dict[str, Any], text: str, path: Path) -> Spec:
         return ScenarioError(f"{path}:{line}: {problem}")
 
     for key in sorted(set(data) - TOP_KEYS):
-        raise fail(lines.find("", -1, key), f"unknown key {key!r} (known: "
-                   f"{', '.join(sorted(TOP_KEYS))})")
+        raise fail(lines.find("", -1, key), unknown_key(key, TOP_KEYS))
     kind_name = data.get("kind")
     if not isinstance(kind_name, str):
         raise fail(lines.find("", -1, "kind"), "kind must name a task kind, e.g. "

@@ -43,6 +43,9 @@ def test_task_ids_depend_on_the_parameters_only(write_spec):
     ('kind = "locomotion"\n[grid]\nn = [5, 12\n', 3, "Unclosed array"),
     ('kind = "locomotion"\n[grid]\nn = 5 6\nseed = 1\n', 3, "Expected newline"),
     ('kind = "locomotion"\nfoo = 1\n[grid]\nruleset = "salvador"\n', 2, "unknown key 'foo'"),
+    # the words of plan TOML and scenario files (toml_lines.unknown_key): the close key
+    ('kind = "locomotion"\ndescripton = "x"\n[grid]\nruleset = "salvador"\n', 2,
+     "unknown key 'descripton' (did you mean 'description'?)"),
     ('kind = "no-such-kind"\n[grid]\nx = 1\n', 1, "unknown kind 'no-such-kind'"),
     ('kind = "nomodule_here.x:f"\n[grid]\nx = 1\n', 1, "cannot import nomodule_here.x"),
     ('kind = "locomotion"\n[grid]\nruleset = "salvador"\nn = [5, "x"]\n', 4,
