@@ -52,6 +52,7 @@ import resource
 import statistics
 import sys
 import time
+from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
@@ -85,10 +86,22 @@ MAX_MODULES = 100_000
 module_count = whole_in(2, MAX_MODULES)
 
 
-def size_list(text: str, option: str) -> list[int]:
-    """A comma-separated list of module counts; a bad one is a usage error."""
+def parallelogram_size(text: str) -> int:
+    """argparse type of a parallelogram pair's module count: one that
+    :data:`PARALLELOGRAMS` has shapes for (``--cases --sizes``, and the plan
+    kind's ``family = "parallelogram"`` tasks); 7 was a KeyError traceback."""
+    value = module_count(text)
+    if value not in PARALLELOGRAMS:
+        raise argparse.ArgumentTypeError(
+            f"the parallelogram sizes are {', '.join(map(str, PARALLELOGRAMS))}, got {value}")
+    return value
+
+
+def size_list(text: str, option: str, size: Callable[[str], int] = module_count) -> list[int]:
+    """A comma-separated list of module counts (each checked by ``size``); a
+    bad one is a usage error."""
     try:
-        return [module_count(s) for s in text.split(",") if s]
+        return [size(s) for s in text.split(",") if s]
     except argparse.ArgumentTypeError as exc:
         raise UsageError(f"{option}: {exc}") from None
 
@@ -289,7 +302,8 @@ def run(args: argparse.Namespace) -> int:
     if not args.cases:
         return run_families(args)
     args.seeds = 5 if args.seeds is None else args.seeds
-    sizes = size_list(args.sizes or DEFAULT_SIZES, "--sizes")  # all checked before any work
+    # all checked before any work
+    sizes = size_list(args.sizes or DEFAULT_SIZES, "--sizes", parallelogram_size)
     blob_sizes = size_list(args.blob_sizes, "--blob-sizes")
     apart_sizes = size_list(args.apart_sizes, "--apart-sizes")
     rows = (bench_thesis() + bench_parallelograms(sizes) + bench_blobs(blob_sizes, args.seeds)

@@ -41,6 +41,8 @@ seconds_or_zero = _at_least(0, False, "seconds")
 positive = _at_least(0, True)
 #: A speed factor that may be 0 (``--speed 0``: as fast as it goes).
 rate = _at_least(0, False)
+#: A share, 0..1 (a random blob's compactness).
+fraction = _at_least(0, False, high=1)
 
 
 def count(text: str) -> int:

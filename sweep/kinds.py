@@ -4,7 +4,10 @@ A kind is a module with ``PARAMS`` (a list of :class:`Param`), a pure
 function ``run(**params) -> dict`` of figures (a ``failure`` entry, when
 not empty, marks the task failed and says why) and, optionally,
 ``ready()`` (raises when the kind cannot run in this installation),
-``summarize(rows) -> str`` and ``COUNT_BY`` for the report. Workers import
+``check_task(params)`` (raises a HexBotError saying what is wrong with a
+combination of values, e.g. a size the task's family does not have: a
+``Param``'s ``check`` sees one value), ``summarize(rows) -> str`` and
+``COUNT_BY`` for the report. Workers import
 the module by name, so the same sweep runs on any cluster where hexbot is
 installed.
 
@@ -72,6 +75,12 @@ class Kind:
     @property
     def summarize(self) -> Callable[[list[dict]], str] | None:
         return getattr(self.module, "summarize", None)
+
+    @property
+    def check_task(self) -> Callable[[dict[str, Any]], None] | None:
+        """The kind's check of one task's parameters together (resolved, as
+        ``run`` gets them), run for every task of the grid before any runs."""
+        return getattr(self.module, "check_task", None) if self.params is not None else None
 
     @property
     def count_by(self) -> tuple[tuple[str, ...], str] | None:

@@ -16,8 +16,9 @@ The tasks are every combination of the axes (the first axis varies
 slowest), each with the kind's defaults for what the grid leaves out. An
 axis holds each value once and values of one type (ints and floats mix,
 as floats); a grid of more than ``MAX_TASKS`` tasks is refused, its size
-computed before any task is built. A
-task's id is a hash of its kind and parameters: the same task has the same
+computed before any task is built. A kind's ``check_task``, when it has
+one, checks each task's values together (the error names the task, at the
+``[grid]`` line). A task's id is a hash of its kind and parameters: the same task has the same
 id in every run, which is what ``--resume`` and a retried task rely on.
 
 Every error names the file and the line: tomllib's own for syntax, the
@@ -30,6 +31,7 @@ import hashlib
 import itertools
 import json
 import math
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -67,14 +69,16 @@ class Spec:
 
     def tasks(self) -> list[Task]:
         """Every task of the grid, in a fixed order."""
+        return [Task(task_id(self.kind.name, params), params, self._call(params))
+                for params in self._combinations()]
+
+    def _combinations(self) -> Iterator[dict[str, Any]]:
+        """Each task's parameters as written, the kind's defaults included."""
         defaults: dict[str, Any] = {}
         if self.kind.params:
             defaults = {n: p.default for n, p in self.kind.params.items() if n not in self.axes}
-        out = []
         for combo in itertools.product(*self.axes.values()):
-            params = {**dict(zip(self.axes, combo, strict=True)), **defaults}
-            out.append(Task(task_id(self.kind.name, params), params, self._call(params)))
-        return out
+            yield {**dict(zip(self.axes, combo, strict=True)), **defaults}
 
     def _call(self, params: dict[str, Any]) -> dict[str, Any]:
         if not self.kind.params:
@@ -170,8 +174,15 @@ def parse_spec(data: dict[str, Any], text: str, path: Path) -> Spec:
         if missing:
             raise fail(lines.find("grid"), f"kind {kind.name} needs {', '.join(missing)} "
                        "in [grid]")
-    out = (path.parent / output) if output else None
-    return Spec(path, kind, description, out, axes)
+    spec = Spec(path, kind, description, (path.parent / output) if output else None, axes)
+    if kind.check_task is not None:
+        for params in spec._combinations():
+            try:
+                kind.check_task(spec._call(params))
+            except HexBotError as exc:
+                task = ", ".join(f"{n} = {params[n]!r}" for n in axes)
+                raise fail(lines.find("grid"), f"the task {task}: {exc}") from exc
+    return spec
 
 
 def _size(raw: Any) -> int:

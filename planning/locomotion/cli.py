@@ -159,13 +159,27 @@ def _bank(args: argparse.Namespace) -> int:
     return 0
 
 
+def map_seed(text: str) -> int:
+    """argparse type of a random map's seed: a whole number 0 or more (the
+    ends of ``random --seeds``, the sweep kind's ``seed``). A map is named
+    ``random-SEED``, and ``random--1`` names no map a replay can load."""
+    if not text.strip().isdecimal():
+        raise argparse.ArgumentTypeError(f"a map seed is a whole number 0 or more, "
+                                         f"got {text!r}")
+    return int(text)
+
+
 def _seed_range(text: str) -> range:
     first, sep, end = text.partition(":")
-    if not sep or not first.strip().isdigit() or not end.strip().isdigit():
-        raise UsageError(f"--seeds: expected FIRST:END (e.g. 0:100), not {text!r}")
-    if int(end) <= int(first):
+    try:
+        if not sep:
+            raise argparse.ArgumentTypeError
+        low, high = map_seed(first), map_seed(end)
+    except argparse.ArgumentTypeError:
+        raise UsageError(f"--seeds: expected FIRST:END (e.g. 0:100), not {text!r}") from None
+    if high <= low:
         raise UsageError(f"--seeds: {text!r} is empty (END must be above FIRST)")
-    return range(int(first), int(end))
+    return range(low, high)
 
 
 def _random(args: argparse.Namespace) -> int:

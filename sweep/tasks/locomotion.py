@@ -10,7 +10,7 @@ from __future__ import annotations
 from collections import Counter
 
 from hexbot.cli_args import count
-from hexbot.planning.locomotion.cli import strip_size
+from hexbot.planning.locomotion.cli import map_seed, strip_size
 from hexbot.planning.locomotion.randommaps import random_scenario
 from hexbot.planning.locomotion.scenarios import load_ruleset, load_scenario, simulate
 from hexbot.sweep.kinds import Param, cli_check
@@ -30,7 +30,8 @@ PARAMS = [
           path=True, check=_check_scenario),
     # the checks of `hexbot locomotion run --n, --rounds, --until-advance`
     Param("n", int, 12, "modules in the strip", check=cli_check(strip_size)),
-    Param("seed", int, 0, "random map seed (scenario 'random')"),
+    # `hexbot locomotion random --seeds`'s check: -1 ran, and its replay named random--1
+    Param("seed", int, 0, "random map seed (scenario 'random')", check=cli_check(map_seed)),
     Param("round_limit", int, 2500, "rounds before giving up", check=cli_check(count)),
     Param("until_advance", int, None, "stop when K modules rest past the strip's cells",
           check=cli_check(count)),

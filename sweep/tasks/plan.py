@@ -4,8 +4,10 @@ The pairs are ``hexbot bench planning``'s families, built the same way from
 the same seeds (:mod:`hexbot.planning.generate`): ``blob`` (two compact
 random blobs grown from (0, 0)), ``apart`` (the goal shifted clear of the
 initial), ``parallelogram`` (the bench's fixed shapes; sizes 10, 30, 100,
-300, 1000). The planners are called through their public entry points,
-``plan_robust`` and ``plan_faithful``; the figures are the bench's row.
+300, 1000, checked with the other values of the grid by :func:`check_task`,
+as ``hexbot bench planning --cases --sizes`` checks them). The planners are
+called through their public entry points, ``plan_robust`` and
+``plan_faithful``; the figures are the bench's row.
 A plan that does not reach the goal fails the task with its reason.
 """
 
@@ -16,9 +18,11 @@ from hexbot.bench.planning import (
     apart,
     markdown_table,
     module_count,
+    parallelogram_size,
     row,
     timed,
 )
+from hexbot.cli_args import fraction
 from hexbot.errors import ScenarioError
 from hexbot.planning.configuration import Configuration
 from hexbot.planning.generate import parallelogram, random_blob
@@ -45,15 +49,24 @@ PARAMS = [
     Param("mode", str, "robust", "robust, faithful-serial or faithful-parallel",
           check=_one_of(MODES)),
     Param("serial", bool, False, "robust mode: one move per time step"),
-    Param("compact", float, 0.8, "blob compactness 0..1"),
+    Param("compact", float, 0.8, "blob compactness 0..1", check=cli_check(fraction)),
 ]
 COUNT_BY = (("family", "modules", "mode"), "method")
 
 
+_parallelogram_size = cli_check(parallelogram_size)
+
+
+def check_task(params: dict) -> None:
+    """A parallelogram task's size must be one the family has (two
+    parameters together: the sweep checks it for every task of the grid)."""
+    if params["family"] == "parallelogram":
+        _parallelogram_size(params["modules"])
+
+
 def pair(family: str, modules: int, seed: int, compact: float) -> tuple[frozenset, frozenset]:
     if family == "parallelogram":
-        if modules not in PARALLELOGRAMS:
-            raise ScenarioError(f"parallelogram sizes are {', '.join(map(str, PARALLELOGRAMS))}")
+        _parallelogram_size(modules)
         w, h, w2, h2 = PARALLELOGRAMS[modules]
         return parallelogram(w, h), parallelogram(w2, h2)
     a, b = random_blob(modules, 2 * seed, compact), random_blob(modules, 2 * seed + 1, compact)

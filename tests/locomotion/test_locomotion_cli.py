@@ -141,6 +141,8 @@ def test_a_binary_map_or_rule_file_is_not_text(cli_status, capsys, tmp_path):
     (["run", "salvador", "flat", "--render", "/proc/x.gif"], "/proc/x.gif: cannot write"),
     (["bank", "--rulesets", ",", "--n", "5"], "--rulesets: give at least one rule set"),
     (["random", "salvador", "--seeds", "20:0"], "--seeds: '20:0' is empty"),
+    # a digit int() cannot read ('2' squared) was a ValueError traceback
+    (["random", "salvador", "--seeds", "\u00b2:3"], "--seeds: expected FIRST:END"),
     (["run", "salvador-free", "flat", "--n", "100000000"], "--n: must be 1..100,000"),
     (["run", "salvador", "maze", "--n", "100001"], "--n: must be 1..100,000"),
     (["bank", "--n", "5,100001"], "--n: at most 100,000"),

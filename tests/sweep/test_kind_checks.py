@@ -11,6 +11,7 @@ from hexbot.errors import UsageError
 
 LOCOMOTION = 'kind = "locomotion"\n[grid]\nruleset = ["salvador"]\nseed = 1\n'
 PLAN = 'kind = "plan"\n[grid]\nfamily = ["blob"]\nseed = 1\n'
+BLOBS = PLAN.replace("seed = 1", "modules = 10")
 
 
 @pytest.mark.parametrize(("head", "line", "words", "fine"), [
@@ -33,6 +34,17 @@ PLAN = 'kind = "plan"\n[grid]\nfamily = ["blob"]\nseed = 1\n'
                  "modules = [100000]", id="modules-huge"),
     pytest.param(PLAN, "modules = [1, 10]", "modules = 1: must be 2..100,000, got 1",
                  "modules = [2, 10]", id="modules-1"),
+    # documented as 0..1, unchecked before (session 37 fuzz)
+    pytest.param(BLOBS, "compact = [0.5, 1.5]", "compact = 1.5: must be at most 1, got 1.5",
+                 "compact = [0.0, 1.0]", id="compact-over-1"),
+    pytest.param(BLOBS, "compact = -0.1", "compact = -0.1: must be 0 or more, got -0.1",
+                 "compact = 0", id="compact-neg"),
+    pytest.param(BLOBS, "compact = nan", "compact = nan: not a finite number: 'nan'",
+                 "compact = 0.5", id="compact-nan"),
+    # `hexbot locomotion random --seeds`'s check: -1 ran, its replay hint named random--1
+    pytest.param(LOCOMOTION.replace("seed = 1", "n = 5"), "seed = [2, -1]",
+                 "seed = -1: a map seed is a whole number 0 or more, got '-1'",
+                 "seed = [2, 0]", id="seed-neg"),
 ])
 def test_check_refuses_a_value_the_command_refuses(write_spec, tmp_path, capsys, head, line,
                                                    words, fine):
@@ -68,3 +80,25 @@ def test_bench_planning_refuses_the_module_counts_the_plan_kind_refuses():
     with pytest.raises(UsageError, match=r"^--sizes: must be 2\.\.100,000, got 100001$"):
         size_list("10,100001", "--sizes")
     assert size_list("2,100000", "--sizes") == [2, 100000]
+
+
+def test_a_size_the_parallelogram_family_lacks_is_refused_at_check(write_spec, tmp_path,
+                                                                    capsys):
+    """Two parameters together (the kind's check_task, for every task of the
+    grid): before, --check passed and the task failed when it ran."""
+    spec = 'kind = "plan"\n[grid]\nfamily = [{}]\nmodules = [10, 7]\n'
+    path = write_spec(spec.format('"blob", "parallelogram"'))
+    assert main(["sweep", str(path), "--check", "--out", str(tmp_path / "out")]) == 1
+    err = capsys.readouterr().err
+    assert (f"{path}:2: the task family = 'parallelogram', modules = 7: the parallelogram "
+            "sizes are 10, 30, 100, 300, 1000, got 7") in err and "Traceback" not in err
+    path = write_spec(spec.format('"blob", "apart"'))  # 7 is a blob size
+    assert main(["sweep", str(path), "--check", "--out", str(tmp_path / "out")]) == 0
+
+
+def test_bench_planning_cases_refuses_a_size_without_a_parallelogram(cli_status):
+    """The same check: `--cases --sizes 7` was a KeyError traceback after the
+    thesis cases had run."""
+    code, err = cli_status("bench", "planning", "--cases", "--sizes", "10,7")
+    assert code == 2 and err.endswith(
+        "--sizes: the parallelogram sizes are 10, 30, 100, 300, 1000, got 7\n"), err
