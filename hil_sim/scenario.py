@@ -42,6 +42,7 @@ name: ``blob:50``, ``line:12``, ``blob:255:7`` (shape, modules, seed).
 from __future__ import annotations
 
 import math
+import os
 import random
 from dataclasses import dataclass, field, replace
 from importlib import resources
@@ -167,24 +168,39 @@ def builtin_names() -> list[str]:
     return sorted(p.name[: -len(".toml")] for p in folder.iterdir() if p.name.endswith(".toml"))
 
 
+def is_scenario_file(source: str | Path) -> bool:
+    """Whether a scenario value names a file: a Path, or a name ending in
+    ``.toml`` or holding a path separator (``rig.toml``, ``./pair``,
+    ``../rigs/pair``); any other value is a built-in (``pair``) or generated
+    (``blob:50``) name, whatever files the current folder holds. The one
+    rule of ``--scenario``, ``# scenario:`` lines, ``hexbot sim``, the
+    ``hexbot-sim://`` URL and the sweep's hil-script kind (docs/simulator.md,
+    "Scenario names and files"): a file ``pair`` in the current folder ran
+    instead of the built-in pair before session 37."""
+    if isinstance(source, Path):
+        return True
+    return source.endswith(".toml") or "/" in source or os.sep in source
+
+
 def load_scenario(source: str | Path) -> Scenario:
     """A scenario by built-in name (``"pair"``), generator name (``"blob:50"``)
-    or path to a TOML file."""
+    or TOML file (see :func:`is_scenario_file`)."""
     text_source = str(source)
+    if is_scenario_file(source):
+        path = Path(text_source)
+        if not path.is_file():
+            raise ScenarioError(f"{path}: no such scenario file")
+        return parse_scenario(read_text(path), path)
     if text_source.split(":", 1)[0] in ("blob", "line") and ":" in text_source:
         from .scenario_gen import from_name
 
         return from_name(text_source)
-    path = Path(text_source)
-    if text_source.endswith(".toml") or path.is_file():
-        if not path.is_file():
-            raise ScenarioError(f"{path}: no such scenario file")
-        return parse_scenario(read_text(path), path)
     folder = resources.files("hexbot.hil_sim") / "scenarios"
     candidate = folder / f"{text_source}.toml"
     if not candidate.is_file():
         names = ", ".join(builtin_names())
-        raise ScenarioError(f"unknown scenario {text_source!r}: built-in ones are {names}")
+        raise ScenarioError(f"unknown scenario {text_source!r}: built-in ones are {names} "
+                            "(a file: a name ending in .toml, or ./NAME)")
     return parse_scenario(candidate.read_text(encoding="utf-8"), Path(str(candidate)))
 
 

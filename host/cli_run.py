@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import argparse
-import os
 import re
 import sys
 from pathlib import Path
@@ -39,13 +38,13 @@ def declared_scenario(path: Path) -> str | None:
     name (``pair``, ``blob:50``) stays a name. The scenario must exist and
     load: else a ScenarioError ``SCRIPT:LINE: scenario: ...`` naming the
     resolved file (checked with the script's other lines)."""
-    from hexbot.hil_sim.scenario import load_scenario
+    from hexbot.hil_sim.scenario import is_scenario_file, load_scenario
 
     for number, line in enumerate(read_text(path, "script").splitlines(), start=1):
         m = _SCENARIO_PRAGMA.match(line.strip())
         if m:
             name = m.group(1)
-            if name.endswith(".toml") or "/" in name or os.sep in name:
+            if is_scenario_file(name):
                 name = str(path.parent / name)  # beside the script, not the cwd
             try:
                 load_scenario(name)

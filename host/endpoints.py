@@ -97,8 +97,9 @@ class Endpoints:
 def _sim_target(scenario: str) -> str:
     """What a ``hexbot-sim://`` URL names: a TOML file's absolute path, or
     the built-in (or generated) name as it is."""
-    path = Path(scenario)
-    return str(path.resolve()) if path.suffix == ".toml" or path.is_file() else scenario
+    from hexbot.hil_sim.scenario import is_scenario_file
+
+    return str(Path(scenario).resolve()) if is_scenario_file(scenario) else scenario
 
 
 def sim_url(scenario: str, seed: int | None = None, speed: float = 0.0,

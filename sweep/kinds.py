@@ -50,14 +50,17 @@ BUILTIN: dict[str, str] = {
 class Param:
     """One parameter of a kind. ``path``: a file or folder named relative to
     the sweep file (resolved there when it exists, else passed as written,
-    e.g. a shipped name). ``check(value)`` raises a HexBotError whose text
+    e.g. a shipped name); or a function saying which values name a file
+    (the hil-script scenario: ``hil_sim.scenario.is_scenario_file``): those
+    are always resolved there, the others (built-in names) never, whatever
+    files are there. ``check(value)`` raises a HexBotError whose text
     says what is wrong with a value, before anything runs."""
 
     name: str
     type: type
     default: Any = REQUIRED
     help: str = ""
-    path: bool = False
+    path: bool | Callable[[str], bool] = False
     check: Callable[[Any], None] | None = None
 
     @property

@@ -93,11 +93,13 @@ def task_id(kind: str, params: dict[str, Any]) -> str:
 
 
 def _resolve(spec_path: Path, param: Param, value: Any) -> Any:
-    if param.path and isinstance(value, str):
-        candidate = spec_path.parent / value
-        if candidate.exists():
-            return str(candidate.resolve())
-    return value
+    """A path parameter's value, relative to the sweep file (Param.path)."""
+    if not param.path or not isinstance(value, str):
+        return value
+    if callable(param.path):  # it says which values are files
+        return str((spec_path.parent / value).resolve()) if param.path(value) else value
+    candidate = spec_path.parent / value
+    return str(candidate.resolve()) if candidate.exists() else value
 
 
 def load_spec(path: str | Path) -> Spec:

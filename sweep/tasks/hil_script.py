@@ -18,6 +18,7 @@ from contextlib import redirect_stderr
 from pathlib import Path
 
 from hexbot.errors import HexBotError, ScenarioError
+from hexbot.hil_sim.scenario import is_scenario_file, load_scenario
 from hexbot.host.cli_common import session
 from hexbot.host.cli_run import declared_scenario
 from hexbot.host.endpoints import DEFAULT_SCENARIO, add_port_arguments, sim_url
@@ -39,16 +40,11 @@ def _check_firmware(folder: str) -> None:
         raise ScenarioError(f"no {' or '.join(missing)} in {folder} (a firmware build folder)")
 
 
-def _check_scenario(name: str) -> None:
-    from hexbot.hil_sim.scenario import load_scenario
-
-    load_scenario(name)
-
-
 PARAMS = [
     Param("script", str, help=".hbs script", path=True, check=_check_script),
+    # a file (x.toml, ./x) beside the sweep file; a built-in name stays a name
     Param("scenario", str, None, "simulator scenario (default: the script's "
-          "'# scenario:' line, else flower7)", path=True, check=_check_scenario),
+          "'# scenario:' line, else flower7)", path=is_scenario_file, check=load_scenario),
     Param("seed", int, None, "simulator seed (default: the scenario's)"),
     Param("firmware", str, None, "folder with comm.elf and control.elf (default: the "
           "scenario's images)", path=True, check=_check_firmware),

@@ -158,3 +158,18 @@ def test_a_wild_write_above_ramend_crashes_the_mcu_not_the_simulator(tmp_path):
     mcu = cluster.add_mcu(str(elf), "wild")
     cluster.run(2_000_000)
     assert cluster.state(mcu) == "crashed" and "out of ram" in cluster.last_error(mcu)
+
+
+def test_a_name_without_toml_or_a_folder_is_never_a_file_of_the_current_one(
+        tmp_path, monkeypatch):
+    """(fuzz, session 37) `pair` was read from a file `pair` in the current
+    folder first; `./pair` names it."""
+    (tmp_path / "pair").write_text("not a scenario\n")
+    (tmp_path / "nosuch").write_text("not a scenario either\n")
+    monkeypatch.chdir(tmp_path)
+    assert sorted(m.id for m in load_scenario("pair").modules) == [1, 2]
+    with pytest.raises(ScenarioError, match=r"^unknown scenario 'nosuch': built-in ones are .* "
+                                            r"\(a file: a name ending in \.toml, or \./NAME\)$"):
+        load_scenario("nosuch")
+    with pytest.raises(ScenarioError, match=r"^pair:1: "):
+        load_scenario("./pair")

@@ -232,3 +232,21 @@ def test_a_bad_role_in_expect_status_is_named(tmp_path, cli_status):
     script.write_text("expect status 2 role m\n")
     code, err = cli_status("run", script, "--check")
     assert code == 1 and "r.hbs:1: role must be M, S or -, got 'm'" in err
+
+
+def test_a_file_named_like_a_built_in_scenario_does_not_replace_it(
+        tmp_path, monkeypatch, log_dir, cli_status):
+    """(fuzz, session 37) `--scenario pair` and `# scenario: pair` ran a file
+    `pair` of the current folder. A value is a file only when it ends in
+    .toml or holds a path separator (hil_sim.scenario.is_scenario_file)."""
+    (tmp_path / "pair").write_text(_RIG.format(name="wrong", ident=3))
+    monkeypatch.chdir(tmp_path)
+    script = tmp_path / "s.hbs"
+    script.write_text("# scenario: pair\nselect 2\n")
+    for option in ([], ["--scenario", "pair"]):
+        code, err = cli_status("run", script, "--no-log", *option)
+        assert code == 0, err
+        assert "simulator: pair, 2 of 2 modules booted" in err
+    code, err = cli_status("run", script, "--no-log", "--scenario", "./pair")  # the file
+    assert code == 3 and "1 of 1 modules booted" in err
+    assert f"hexbot-sim://{tmp_path / 'pair'}?" in err

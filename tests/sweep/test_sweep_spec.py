@@ -159,3 +159,26 @@ def test_toml_dates_and_times_are_values_with_task_ids(write_spec):
     as_text = load_spec(write_spec(text.replace("1979-05-27,", '"1979-05-27",')
                                    .replace("1980-01-01", '"1980-01-01"'), "s.toml")).tasks()
     assert not {t.id for t in as_text} & {t.id for t in tasks}  # a date is not its text
+
+
+def test_a_hil_script_scenario_is_a_file_by_its_name_only(write_spec, tmp_path, monkeypatch):
+    """(session 37) The rule of --scenario (hil_sim.scenario.is_scenario_file):
+    `pair` beside the sweep file was taken for a file; `rig.toml` missing
+    there was looked up in the current folder."""
+    rig = 'name = "rig"\nbase = 1\n[[module]]\nid = 1\nposition = [0, 0]\n'
+    (tmp_path / "s.hbs").write_text("select 1\n")
+    (tmp_path / "pair").write_text(rig)
+    elsewhere = tmp_path / "cwd"
+    elsewhere.mkdir()
+    (elsewhere / "rig.toml").write_text(rig)
+    monkeypatch.chdir(elsewhere)
+    spec = 'kind = "hil-script"\n[grid]\nscript = "s.hbs"\nscenario = "{}"\n'
+    (task,) = load_spec(write_spec(spec.format("pair"))).tasks()
+    assert task.call["scenario"] == "pair"  # the built-in
+    (task,) = load_spec(write_spec(spec.format("./pair"))).tasks()
+    assert task.call["scenario"] == str(tmp_path / "pair")
+    path = write_spec(spec.format("rig.toml"))
+    with pytest.raises(ScenarioError) as err:
+        load_spec(path)
+    assert str(err.value) == (f"{path}:4: scenario = 'rig.toml': {tmp_path / 'rig.toml'}: "
+                              "no such scenario file")
