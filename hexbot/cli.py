@@ -11,6 +11,7 @@ from __future__ import annotations
 import argparse
 import importlib
 import os
+import signal
 import sys
 from types import ModuleType
 
@@ -78,21 +79,67 @@ def main(argv: list[str] | None = None) -> int:
         return 2 if argv else 0
     name = argv[0]
     module_name, help_text = COMMANDS[name]
-    module, args = load_command(f"hexbot {name}", module_name, help_text, argv[1:])
     status = 0  # until the command has one
     try:
         try:
-            status = int(module.run(args) or 0)
+            # the import takes up to a second: a Ctrl-C in it printed a traceback
+            module, args = load_command(f"hexbot {name}", module_name, help_text, argv[1:])
+            with _terminated_raises():
+                status = int(module.run(args) or 0)
         except HexBotError as exc:
             status = exc.exit_status
             print(f"hexbot {name}: error: {exc}", file=sys.stderr)
-        except KeyboardInterrupt:
-            status = 130
+        except KeyboardInterrupt:  # commands that say more catch it themselves
+            status = INTERRUPTED
+            print(f"hexbot {name}: interrupted (Ctrl-C)", file=sys.stderr)
+        except Terminated:
+            status = TERMINATED
+            print(f"hexbot {name}: terminated (SIGTERM)", file=sys.stderr)
         if sys.stdout is not None:  # None: started with stdout closed (a daemon, `>&-`)
             sys.stdout.flush()  # a reader gone shows here, not as a traceback at exit
     except BrokenPipeError:  # output piped into `head` and the like
         return closed_pipe(status)
     return status
+
+
+#: The statuses of a command stopped by Ctrl-C or by SIGTERM (128 + the signal,
+#: as a shell reports a program that the signal killed).
+INTERRUPTED = 128 + signal.SIGINT
+TERMINATED = 128 + signal.SIGTERM
+
+
+class Terminated(BaseException):
+    """SIGTERM, raised where the main thread is, so that the command's cleanup
+    runs (``finally`` blocks, temporary folders, a JUnit file, the Dask
+    cluster), as on Ctrl-C. A BaseException: ``except Exception`` does not
+    swallow it."""
+
+
+class _terminated_raises:
+    """SIGTERM raises :class:`Terminated` in the main thread while the command
+    runs (a command that installs its own handler, ``hexbot sim``, keeps it).
+    The default handler killed the process at once: temporary folders of
+    ``traverse --execute`` and ``flash --all`` stayed behind."""
+
+    def __enter__(self) -> None:
+        self._installed = _in_main_thread()
+        if self._installed:
+            # None: a handler not set from Python; the default is what it had
+            self._previous = signal.signal(signal.SIGTERM, self._raise) or signal.SIG_DFL
+
+    def __exit__(self, *exc: object) -> None:
+        if self._installed:
+            signal.signal(signal.SIGTERM, self._previous)
+
+    @staticmethod
+    def _raise(signum: int, frame: object) -> None:
+        raise Terminated
+
+
+def _in_main_thread() -> bool:
+    import threading
+
+    return threading.current_thread() is threading.main_thread()
 
 
 #: The status of a command whose output pipe closed before it finished (128 + SIGPIPE,
