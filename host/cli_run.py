@@ -13,7 +13,14 @@ from hexbot.files import read_text
 from hexbot.host.cli_common import session
 from hexbot.host.endpoints import add_port_arguments
 from hexbot.host.junit import write_junit
-from hexbot.host.script import ScriptFailed, ScriptRunner, load_script
+from hexbot.host.script import (
+    INTERRUPTED,
+    ScriptFailed,
+    ScriptRunner,
+    StepResult,
+    load_script,
+    not_started,
+)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -66,16 +73,25 @@ def run(args: argparse.Namespace) -> int:
         args.scenario = declared
     # Scripts are regressions: on the embedded simulator they run in virtual
     # time (default --sim-speed 0), where every time-out is simulated seconds.
-    with session(args) as sess:
-        runner = ScriptRunner(sess, str(args.script))
-        try:
-            runner.run(steps)
-        except ScriptFailed as exc:
-            print(f"FAILED {exc}", file=sys.stderr)
-            print(f"{runner.steps_done} of {len(steps)} steps passed", file=sys.stderr)
-            return exc.exit_status
-        finally:  # a lost port too: CI shows which step could not be judged
-            if args.junit:
-                write_junit(args.junit, str(args.script), runner.results)
+    runner: ScriptRunner | None = None
+    results: list[StepResult] = []
+    try:
+        with session(args) as sess:
+            runner = ScriptRunner(sess, str(args.script))
+            results = runner.results
+            try:
+                runner.run(steps)
+            except ScriptFailed as exc:
+                print(f"FAILED {exc}", file=sys.stderr)
+                print(f"{runner.steps_done} of {len(steps)} steps passed", file=sys.stderr)
+                return exc.exit_status
+    except (HexBotError, KeyboardInterrupt) as exc:
+        if not results:  # no step began: the port, the boot, or Ctrl-C during it
+            reason = INTERRUPTED if isinstance(exc, KeyboardInterrupt) else str(exc)
+            results = not_started(steps, reason)
+        raise
+    finally:  # a lost port too: CI shows which step could not be judged
+        if args.junit:
+            write_junit(args.junit, str(args.script), results)
     print(f"{args.script}: all {len(steps)} steps passed", file=sys.stderr)
     return 0

@@ -15,7 +15,7 @@ import xml.etree.ElementTree as ET
 from collections.abc import Sequence
 from pathlib import Path
 
-from hexbot.host.script import StepResult, StepStatus
+from hexbot.host.script import INTERRUPTED, StepResult, StepStatus
 
 SKIPPED_REASON = "not run: an earlier step failed"
 
@@ -48,8 +48,9 @@ def suite_element(script: str, results: Sequence[StepResult]) -> ET.Element:
             ET.SubElement(case, "failure", {"message": result.message,
                                             "type": "ScriptFailed"}).text = result.message
         elif result.status is StepStatus.ERROR:
+            kind = "Interrupted" if result.message == INTERRUPTED else "PortLost"
             ET.SubElement(case, "error", {"message": result.message,
-                                          "type": "PortLost"}).text = result.message
+                                          "type": kind}).text = result.message
         elif result.status is StepStatus.NOT_RUN:
             ET.SubElement(case, "skipped", {"message": SKIPPED_REASON})
         elif result.message:

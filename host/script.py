@@ -357,7 +357,7 @@ def _parse_status_expect(args: list[str], where: str) -> dict:
 class StepStatus(enum.Enum):
     PASSED = "passed"
     FAILED = "failed"    # the step did not get what it expected
-    ERROR = "error"      # the port was lost: the step could not be judged
+    ERROR = "error"      # the port was lost (or Ctrl-C): the step could not be judged
     NOT_RUN = "not run"  # an earlier step failed
 
 
@@ -367,6 +367,19 @@ class StepResult:
     status: StepStatus
     seconds: float = 0.0  # on the session's clock (simulated seconds on a simulator)
     message: str = ""  # the reply for a pass, the reason for a failure
+
+
+#: the message of the step a Ctrl-C cut short (JUnit: an error of type Interrupted)
+INTERRUPTED = "interrupted (Ctrl-C)"
+
+
+def not_started(steps: list[Step], reason: str) -> list[StepResult]:
+    """The results of a script whose session never ran a step (the port did
+    not open, the modules did not boot, Ctrl-C during the boot): its first
+    step an error with ``reason``, the others not run, so a JUnit report
+    says why and counts every step."""
+    return [StepResult(steps[0], StepStatus.ERROR, 0.0, reason),
+            *(StepResult(s, StepStatus.NOT_RUN) for s in steps[1:])]
 
 
 Printer = Callable[[str], None]
@@ -403,7 +416,7 @@ class ScriptRunner:
                 self.results.extend(StepResult(s, StepStatus.NOT_RUN) for s in steps[index + 1:])
                 raise
             except KeyboardInterrupt:  # the report must not read as a pass
-                self.results.append(StepResult(step, StepStatus.ERROR, 0.0, "interrupted"))
+                self.results.append(StepResult(step, StepStatus.ERROR, 0.0, INTERRUPTED))
                 self.results.extend(StepResult(s, StepStatus.NOT_RUN) for s in steps[index + 1:])
                 raise
 

@@ -91,3 +91,73 @@ def test_pytest_reports_a_scenario_line_naming_no_file_as_a_collection_error(pyt
     result = pytester.runpytest_subprocess("-p", "no:cacheprovider")
     result.stdout.fnmatch_lines(["*test_rig.hbs:1: scenario: *rig.toml: no such scenario file*"])
     assert result.ret == pytest.ExitCode.INTERRUPTED
+
+
+def test_run_junit_is_written_when_the_port_does_not_open(tmp_path, log_dir):
+    # "written also on failure": a port that never opened wrote no report
+    script = tmp_path / "status.hbs"
+    script.write_text(FAILING)
+    out = tmp_path / "out.xml"
+    assert main(["run", str(script), "--port", str(tmp_path / "no-such-tty"),
+                 "--junit", str(out)]) == 4
+    suite, cases = _cases(out)
+    assert (suite.get("tests"), suite.get("errors"), suite.get("skipped")) == ("4", "1", "3")
+    error = cases[0].find("error")
+    assert error.get("type") == "PortLost" and "cannot open" in error.get("message")
+
+
+def test_run_junit_records_a_ctrl_c_mid_script_as_interrupted(tmp_path, log_dir, monkeypatch):
+    from hexbot.host.script import ScriptRunner
+
+    real = ScriptRunner.run_step
+
+    def ctrl_c_at_the_third(self, step):
+        if step.line == 4:
+            raise KeyboardInterrupt
+        return real(self, step)
+
+    monkeypatch.setattr(ScriptRunner, "run_step", ctrl_c_at_the_third)
+    script = tmp_path / "status.hbs"
+    script.write_text(FAILING)
+    out = tmp_path / "out.xml"
+    assert main(["run", str(script), "--junit", str(out)]) == 130
+    suite, cases = _cases(out)
+    assert (suite.get("errors"), suite.get("skipped")) == ("1", "1")
+    error = cases[2].find("error")
+    assert (error.get("type"), error.get("message")) == ("Interrupted", "interrupted (Ctrl-C)")
+
+
+def test_run_junit_is_written_on_ctrl_c_during_the_boot(tmp_path):
+    # a real SIGINT while the simulated modules boot (paced at real time)
+    import os
+    import signal
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    script = tmp_path / "status.hbs"
+    script.write_text(FAILING)
+    out = tmp_path / "out.xml"
+    hexbot = Path(sys.executable).with_name("hexbot")
+    proc = subprocess.Popen([str(hexbot), "run", str(script), "--sim-speed", "1", "--no-log",
+                             "--junit", str(out)], stderr=subprocess.PIPE, text=True,
+                            start_new_session=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    try:
+        lines = []
+        for line in proc.stderr:  # the port is open: the modules boot for ~8 s now
+            lines.append(line)
+            if line.startswith("ir: connected"):
+                break
+        os.killpg(proc.pid, signal.SIGINT)
+        err = "".join(lines) + proc.stderr.read()
+        proc.wait(timeout=120)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    assert proc.returncode == 130, err
+    assert "Traceback" not in err
+    suite, cases = _cases(out)
+    assert (suite.get("tests"), suite.get("errors"), suite.get("skipped")) == ("4", "1", "3")
+    assert cases[0].find("error").get("type") == "Interrupted"
