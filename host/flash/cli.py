@@ -176,9 +176,14 @@ def flash_board(args: argparse.Namespace, say=print) -> int:
     say(f"found an ATmega162 (signature {device.signature_text}); fuses {device.fuses}")
     if fuses is None and device.fuses != TABLE_3_6:
         say("note: the device's fuses differ from Table 3-6; add --fuses to set them")
-    say(f"erasing and writing {hexfile.used} bytes of flash"
-        + (f", then fuses {fuses}" if fuses else "") + " ...")
-    report = avrdude.write(image, fuses, args.verify)
+    try:  # from the line on: a Ctrl-C after it is told as one during the write
+        say(f"erasing and writing {hexfile.used} bytes of flash"
+            + (f", then fuses {fuses}" if fuses else "") + " ...")
+        report = avrdude.write(image, fuses, args.verify)
+    except KeyboardInterrupt:  # the chip was erased: say so before the one-line "interrupted"
+        say(f"stopped while writing: the {label} on {args.port} may hold a part of "
+            f"{image.name} or nothing; flash it again")
+        raise
     done = f"{report.written.get('flash', 0)} bytes of flash written"
     if args.verify:
         done += f", {report.verified.get('flash', 0)} verified"

@@ -59,3 +59,31 @@ def test_flash_all_fails_naming_the_modules_that_did_not_boot(tmp_path, hexbot_f
     assert result.code == 1
     assert "not every module booted FW=isp-test-8" in result.err
     assert "module 1 (no COMM. LISTENING with its id), 2 (no COMM. LISTENING" in result.err
+
+
+def test_ctrl_c_while_a_board_is_written_says_it_may_be_half_programmed(tmp_path):
+    import os
+    import signal
+    import subprocess
+    import sys
+
+    hexbot = Path(sys.executable).with_name("hexbot")
+    proc = subprocess.Popen([str(hexbot), "flash", "--all", "--scenario", "pair",
+                             "--build-dir", str(tmp_path / "build")],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            start_new_session=True,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    try:
+        for line in proc.stdout:
+            if line.startswith("erasing and writing"):  # the chip is being erased
+                os.killpg(proc.pid, signal.SIGINT)
+                break
+        out, err = proc.communicate(timeout=120)
+    finally:
+        if proc.poll() is None:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
+    assert proc.returncode == 130, err
+    assert out.startswith("stopped while writing: the comm board on "), out
+    assert "may hold a part of comm.hex or nothing; flash it again" in out
+    assert err == "hexbot flash: interrupted (Ctrl-C)\n"
