@@ -16,7 +16,7 @@ import sys
 from types import ModuleType
 
 from hexbot import __version__
-from hexbot.errors import HexBotError
+from hexbot.errors import HexBotError, Terminated
 
 # name -> (module, one-line help). Keep sorted by workflow, not alphabet.
 COMMANDS: dict[str, tuple[str, str]] = {
@@ -106,13 +106,6 @@ def main(argv: list[str] | None = None) -> int:
 #: as a shell reports a program that the signal killed).
 INTERRUPTED = 128 + signal.SIGINT
 TERMINATED = 128 + signal.SIGTERM
-
-
-class Terminated(BaseException):
-    """SIGTERM, raised where the main thread is, so that the command's cleanup
-    runs (``finally`` blocks, temporary folders, a JUnit file, the Dask
-    cluster), as on Ctrl-C. A BaseException: ``except Exception`` does not
-    swallow it."""
 
 
 class _terminated_raises:

@@ -65,3 +65,10 @@ class MissingExtraError(HexBotError, ImportError):
     """An optional dependency is not installed: drawing plans or rendering
     locomotion runs without the ``plot`` extra. The message names the
     ``pip install`` that brings it; the ImportError is kept as the cause."""
+
+
+class Terminated(BaseException):  # noqa: N818 - named after the signal's meaning, like KeyboardInterrupt
+    """SIGTERM, raised in the main thread while a command runs (``hexbot.cli``),
+    so that its cleanup runs (``finally`` blocks, temporary folders, a JUnit
+    file, the Dask cluster), as on Ctrl-C. A BaseException, like
+    KeyboardInterrupt: ``except Exception`` does not swallow it."""

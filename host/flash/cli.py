@@ -17,7 +17,7 @@ import shlex
 from pathlib import Path
 
 from hexbot.cli_args import count, port_name
-from hexbot.errors import FlashingError, UsageError
+from hexbot.errors import FlashingError, Terminated, UsageError
 from hexbot.host.flash.avrdude import Avrdude
 from hexbot.host.flash.fuses import TABLE_3_6, FuseSet, check_fuses, fuse_notes
 from hexbot.host.flash.ihex import read_hex
@@ -180,7 +180,7 @@ def flash_board(args: argparse.Namespace, say=print) -> int:
         say(f"erasing and writing {hexfile.used} bytes of flash"
             + (f", then fuses {fuses}" if fuses else "") + " ...")
         report = avrdude.write(image, fuses, args.verify)
-    except KeyboardInterrupt:  # the chip was erased: say so before the one-line "interrupted"
+    except (KeyboardInterrupt, Terminated):  # the chip was erased: say so before the last line
         say(f"stopped while writing: the {label} on {args.port} may hold a part of "
             f"{image.name} or nothing; flash it again")
         raise
