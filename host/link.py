@@ -137,6 +137,11 @@ StateCallback = Callable[[LinkState, str], None]
 IdleCallback = Callable[[], None]
 
 
+#: why a lost pty is not opened again (the link's state detail says it)
+PTY_GONE = ("a pseudo-terminal is not opened again: its number goes to the next one "
+            "opened; start its simulator and this command again")
+
+
 class Link:
     """One port, one reader thread. Callbacks run in that thread.
 
@@ -257,8 +262,17 @@ class Link:
     @property
     def retries(self) -> bool:
         """Whether a lost port is opened again. Not an in-process simulator:
-        opening its URL again would silently start a fresh cluster."""
-        return not self.in_process
+        opening its URL again would silently start a fresh cluster. Nor a
+        pseudo-terminal: once its other end closed, its number goes to the
+        next one opened, another program's terminal (a monitor that retried
+        printed a stranger's avrdude traffic as garbage)."""
+        return not self.in_process and not self.pseudo_terminal
+
+    @property
+    def pseudo_terminal(self) -> bool:
+        """Whether the port is a pty's slave (``/dev/pts/N``, or a link to one:
+        ``hexbot sim --pty``, socat)."""
+        return os.path.realpath(self.settings.url).startswith("/dev/pts/")
 
     def write(self, data: bytes) -> None:
         """Write all bytes now; LinkUnavailableError if the port is not open
@@ -331,6 +345,8 @@ class Link:
             port.timeout = self.poll_s
             self._read_until_failure(port)
             if not self.retries:
+                if self.pseudo_terminal and self.state is LinkState.LOST:
+                    self._set_state(LinkState.LOST, f"{self.detail}; {PTY_GONE}")
                 return  # lost for good: the state says why
             if not self._stop.is_set():
                 self._stop.wait(self.retry_s)

@@ -139,5 +139,10 @@ def test_pty_that_goes_away_is_reported_lost(responder):
     try:
         responder.close()
         assert lost.wait(5)
+        # never opened again: its number is the next pty's (another program's)
+        link = host.channels[IR].link
+        assert not link.retries
+        assert _wait(lambda: "a pseudo-terminal is not opened again" in link.detail)
+        assert _wait(lambda: not link._thread.is_alive())
     finally:
         host.close()
