@@ -15,6 +15,7 @@ import tempfile
 import time
 from pathlib import Path
 
+from hexbot.cli_args import count
 from hexbot.host.capture import CaptureWriter, read_capture
 from hexbot.host.console.terminal import Entry, render_entry
 from hexbot.host.host import Host
@@ -23,7 +24,7 @@ CAPTURE = Path(__file__).resolve().parents[1] / "tests" / "host" / "data" / "flo
 
 
 def add_arguments(ap: argparse.ArgumentParser) -> None:
-    ap.add_argument("--repeat", type=int, default=50)
+    ap.add_argument("--repeat", type=count, default=50)
 
 
 def run(args: argparse.Namespace) -> int:

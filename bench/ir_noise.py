@@ -32,6 +32,8 @@ import random
 import tempfile
 from pathlib import Path
 
+from hexbot.cli_args import comma_list, count, finite, one_of
+from hexbot.hil_sim.scenario import fault_rate_problem
 from hexbot.host.endpoints import sim_url
 from hexbot.host.host import IR, Host
 from hexbot.host.link import PortSettings
@@ -159,11 +161,24 @@ def _reselect(session: Session, tries: int = 5) -> None:
             return
 
 
+def noise_rate(text: str) -> float:
+    """argparse type of a noise level: each of the scenario's fault rates is
+    set to it (:func:`_scenario`), so it must pass their rule."""
+    value = finite(text)
+    for key in ("bit_error_rate", "framing_error_rate", "spurious_byte_rate", "burst_rate"):
+        problem = fault_rate_problem(key, value)
+        if problem:
+            raise argparse.ArgumentTypeError(
+                f"each fault rate of the run's scenario is set to it: {problem}")
+    return value
+
+
 def add_arguments(ap: argparse.ArgumentParser) -> None:
-    ap.add_argument("--commands", type=int, default=1000, help="commands per rate and framing")
-    ap.add_argument("--rates", default=",".join(f"{r:g}" for r in RATES),
+    ap.add_argument("--commands", type=count, default=1000, help="commands per rate and framing")
+    ap.add_argument("--rates", type=comma_list(noise_rate),
+                    default=",".join(f"{r:g}" for r in RATES),
                     help="noise levels (bit error rates), comma-separated")
-    ap.add_argument("--framings", default=",".join(FRAMINGS))
+    ap.add_argument("--framings", type=comma_list(one_of(FRAMINGS)), default=",".join(FRAMINGS))
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--json", action="store_true", help="one JSON object per trial")
     ap.add_argument("--air-time", action="store_true",
@@ -209,8 +224,7 @@ def run(args: argparse.Namespace) -> int:
             print(f"{name:<44} {mav_len:3d} B {mav_len * byte_ms:4.0f} ms "
                   f"{legacy:3d} B {legacy * byte_ms:4.0f} ms")
         return 0
-    rates = [float(r) for r in args.rates.split(",")]
-    framings = args.framings.split(",")
+    rates, framings = args.rates, args.framings
     if not args.json:
         print(f"{'ber':>7} {'framing':<8} {'commands':>8} {'executed':>8} {'wrong':>6} "
               f"{'lost':>6} {'goodput/min':>11}")

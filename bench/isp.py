@@ -12,6 +12,7 @@ import argparse
 import random
 import time
 
+from hexbot.cli_args import count
 from hexbot.hil_sim.isp import standalone_programmer
 from hexbot.hil_sim.isp.avr068 import Cmd
 from hexbot.hil_sim.isp.framing import encode
@@ -32,7 +33,7 @@ def session_frames(image: bytes) -> list[bytes]:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--repeat", type=count, default=5)
 
 
 def run(args: argparse.Namespace) -> int:

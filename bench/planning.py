@@ -56,7 +56,7 @@ from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
-from hexbot.cli_args import whole_in
+from hexbot.cli_args import comma_list, count, whole_in
 from hexbot.errors import UsageError
 from hexbot.planning.bounds import plan_bounds
 from hexbot.planning.budget import DEFAULT_BUDGET
@@ -84,6 +84,9 @@ PARALLELOGRAMS = {
 MAX_MODULES = 100_000
 #: A pair's module count: ``--sizes`` and the other size lists, and the plan kind.
 module_count = whole_in(2, MAX_MODULES)
+#: ``--exhaustive N`` and ``--hub N``: all polyhexes of N modules, N >= 2 (one
+#: module has no pair to plan); the upper end is the module count of a pair.
+polyhex_size = whole_in(2, MAX_MODULES)
 
 
 def parallelogram_size(text: str) -> int:
@@ -97,11 +100,15 @@ def parallelogram_size(text: str) -> int:
     return value
 
 
-def size_list(text: str, option: str, size: Callable[[str], int] = module_count) -> list[int]:
+def size_list(text: str, option: str, size: Callable[[str], int] = module_count,
+              none_ok: bool = False) -> list[int]:
     """A comma-separated list of module counts (each checked by ``size``); a
-    bad one is a usage error."""
+    bad one, an empty one (``10,,30``) or none (``""``, unless ``none_ok``:
+    ``--cases --apart-sizes ""`` leaves that family out) is a usage error."""
+    if none_ok and not text.strip():
+        return []
     try:
-        return [size(s) for s in text.split(",") if s]
+        return comma_list(size)(text)
     except argparse.ArgumentTypeError as exc:
         raise UsageError(f"{option}: {exc}") from None
 
@@ -269,10 +276,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help=f"families: time budget per pair in seconds "
                              f"(default {DEFAULT_BUDGET:g})")
     parser.add_argument("--blob-sizes", default="10,30,100,1000",
-                        help="--cases: random blob sizes")
+                        help="--cases: random blob sizes (\"\": none)")
     parser.add_argument("--apart-sizes", default="10,30,100",
-                        help="--cases: random blob sizes with the goal apart from the initial")
-    parser.add_argument("--seeds", type=int, default=None,
+                        help="--cases: random blob sizes with the goal apart from the initial "
+                             "(\"\": none)")
+    parser.add_argument("--seeds", type=count, default=None,
                         help="pairs per size (families: default per size, see SEEDS; "
                              "--cases: 5)")
     parser.add_argument("--json", action="store_true", help="JSON lines instead of a table")
@@ -280,22 +288,22 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="the per-case table: thesis, parallelograms, blobs, apart")
     parser.add_argument("--small", action="store_true",
                         help="only: exact vs robust on the small bank (optimality gap)")
-    parser.add_argument("--scan", type=int, metavar="N",
+    parser.add_argument("--scan", type=count, metavar="N",
                         help="only: completion over N small random pairs")
-    parser.add_argument("--exhaustive", type=int, metavar="N",
+    parser.add_argument("--exhaustive", type=polyhex_size, metavar="N",
                         help="only: every pair of connected configurations of N modules, "
                              "free and fixed")
-    parser.add_argument("--hub", type=int, metavar="N",
+    parser.add_argument("--hub", type=polyhex_size, metavar="N",
                         help="only: every connected configuration of N modules to a compact "
                              "one and back, free and fixed")
 
 
 def run(args: argparse.Namespace) -> int:
-    if args.scan:
+    if args.scan is not None:
         return scan(args.scan)
-    if args.exhaustive:
+    if args.exhaustive is not None:
         return exhaustive(args.exhaustive)
-    if args.hub:
+    if args.hub is not None:
         return through_hub(args.hub)
     if args.small:
         return run_small(args)
@@ -303,9 +311,10 @@ def run(args: argparse.Namespace) -> int:
         return run_families(args)
     args.seeds = 5 if args.seeds is None else args.seeds
     # all checked before any work
-    sizes = size_list(args.sizes or DEFAULT_SIZES, "--sizes", parallelogram_size)
-    blob_sizes = size_list(args.blob_sizes, "--blob-sizes")
-    apart_sizes = size_list(args.apart_sizes, "--apart-sizes")
+    sizes = size_list(DEFAULT_SIZES if args.sizes is None else args.sizes, "--sizes",
+                      parallelogram_size)
+    blob_sizes = size_list(args.blob_sizes, "--blob-sizes", none_ok=True)
+    apart_sizes = size_list(args.apart_sizes, "--apart-sizes", none_ok=True)
     rows = (bench_thesis() + bench_parallelograms(sizes) + bench_blobs(blob_sizes, args.seeds)
             + bench_blobs(apart_sizes, args.seeds, "apart"))
     if args.json:
@@ -428,7 +437,7 @@ def summary(rows: list[dict]) -> str:
 
 
 def run_families(args: argparse.Namespace) -> int:
-    counts = size_list(args.sizes or DEFAULT_SIZES, "--sizes")
+    counts = size_list(DEFAULT_SIZES if args.sizes is None else args.sizes, "--sizes")
     families = args.families
     fixed_options = {"both": (False, True), "yes": (True,), "no": (False,)}[args.fixed]
     jobs = [(family, n, seed, fixed, args.budget)

@@ -18,6 +18,7 @@ import json
 import random
 from collections import Counter
 
+from hexbot.cli_args import count
 from hexbot.planning.locomotion import load_ruleset, simulate
 from hexbot.planning.locomotion.scenarios import parse_map
 
@@ -48,7 +49,7 @@ def table_rows(steps: list[tuple[int, int]], top: int, rules) -> dict[int, int] 
 
 
 def add_arguments(ap: argparse.ArgumentParser) -> None:
-    ap.add_argument("--samples", type=int, default=2000)
+    ap.add_argument("--samples", type=count, default=2000)
     ap.add_argument("--seed", type=int, default=1)
 
 

@@ -37,6 +37,7 @@ import resource
 import time
 from pathlib import Path
 
+from hexbot import cli_args
 from hexbot.bench.raw import avr_program, raw_simavr_times
 from hexbot.errors import HexBotError, UsageError
 from hexbot.hil_sim.scenario_gen import generate
@@ -52,15 +53,17 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--sizes", default="7,50,200,255",
                         help="cluster sizes, comma-separated (default 7,50,200,255)")
     parser.add_argument(
-        "--seconds", type=float, default=10.0, help="simulated seconds of idle (default 10)"
+        "--seconds", type=cli_args.seconds, default=10.0,
+        help="simulated seconds of idle (default 10)"
     )
     parser.add_argument(
-        "--repeat", type=int, default=1, help="runs per case; the best counts (default 1)"
+        "--repeat", type=cli_args.count, default=1,
+        help="runs per case; the best counts (default 1)"
     )
     parser.add_argument("--ir", choices=("core", "python"), default="core",
                         help="where IR bytes between modules are routed (default core)")
     parser.add_argument(
-        "--threads", type=int, default=1,
+        "--threads", type=cli_args.count, default=1,
         help="host threads per quantum in every case (default 1)",
     )
     parser.add_argument(
@@ -198,12 +201,6 @@ def _firmware_cost(case: dict) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
-    if args.seconds <= 0:
-        raise UsageError(f"--seconds must be positive, not {args.seconds}")
-    if args.repeat < 1:
-        raise UsageError(f"--repeat must be at least 1, not {args.repeat}")
-    if args.threads < 1:
-        raise UsageError(f"--threads must be at least 1, not {args.threads}")
     try:
         sizes = [int(s) for s in args.sizes.split(",")]
     except ValueError:

@@ -29,6 +29,7 @@ import time
 from pathlib import Path
 
 from hexbot.bench.raw import avr_program, raw_simavr_seconds
+from hexbot.cli_args import count, seconds
 from hexbot.hil_sim._avr import SIMAVR_VERSION, Cluster
 from hexbot.protocol.wire import F_CPU
 
@@ -73,11 +74,11 @@ def time_firmware(pairs: int, cycles: int) -> float:
 
 
 def add_arguments(ap: argparse.ArgumentParser) -> None:
-    ap.add_argument("--busy-cycles", type=int, default=20_000_000,
+    ap.add_argument("--busy-cycles", type=count, default=20_000_000,
                     help="cycles per MCU for the CPU-bound runs (busy_14: a quarter)")
-    ap.add_argument("--idle-seconds", type=float, default=10.0,
+    ap.add_argument("--idle-seconds", type=seconds, default=10.0,
                     help="simulated seconds for the idle clusters")
-    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--repeat", type=count, default=3)
 
 
 def run(args: argparse.Namespace) -> int:

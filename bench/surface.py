@@ -16,7 +16,8 @@ from __future__ import annotations
 import argparse
 import json
 
-from hexbot.bench.planning import make_pair
+from hexbot.bench.planning import make_pair, module_count
+from hexbot.cli_args import comma_list, count
 
 
 def measure(label: str, n: int, cells) -> dict:
@@ -50,16 +51,14 @@ def rows(sizes: list[int], seeds: int) -> list[dict]:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--sizes", default="30,100,1000", help="module counts")
-    parser.add_argument("--seeds", type=int, default=2, help="pairs per family and size")
+    parser.add_argument("--sizes", type=comma_list(module_count), default="30,100,1000",
+                        help="module counts")
+    parser.add_argument("--seeds", type=count, default=2, help="pairs per family and size")
     parser.add_argument("--json", action="store_true", help="JSON lines instead of a table")
 
 
 def run(args: argparse.Namespace) -> int:
-    sizes = [int(s) for s in args.sizes.split(",") if s]
-    if args.seeds < 1 or not sizes or min(sizes) < 1:
-        raise SystemExit("hexbot bench surface: sizes and --seeds must be positive")
-    table = rows(sizes, args.seeds)
+    table = rows(args.sizes, args.seeds)
     if args.json:
         for r in table:
             print(json.dumps(r))

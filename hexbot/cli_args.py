@@ -6,8 +6,11 @@ from __future__ import annotations
 
 import argparse
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from pathlib import Path
+from typing import TypeVar
+
+T = TypeVar("T")
 
 
 def _at_least(low: float, strict: bool, unit: str = "",
@@ -44,6 +47,20 @@ rate = _at_least(0, False)
 #: A share, 0..1 (a random blob's compactness).
 fraction = _at_least(0, False, high=1)
 
+#: The slowest simulator speed (``sim_speed``): slower, a simulated second
+#: takes hours of wall time, and 1e-300 overflowed the loop's sleep.
+MIN_SIM_SPEED = 1e-3
+
+
+def sim_speed(text: str) -> float:
+    """A simulator's speed, times real time (``hexbot sim --speed``,
+    ``--sim-speed``): 0 (as fast as it goes) or at least :data:`MIN_SIM_SPEED`."""
+    value = rate(text)
+    if 0 < value < MIN_SIM_SPEED:
+        raise argparse.ArgumentTypeError(
+            f"must be 0 (as fast as it goes) or at least {MIN_SIM_SPEED:g}, got {text}")
+    return value
+
 
 def count(text: str) -> int:
     """A whole number of at least 1 (modules, rounds, steps, threads, a baud rate)."""
@@ -63,6 +80,40 @@ def whole_in(low: int, high: int) -> Callable[[str], int]:
             raise argparse.ArgumentTypeError(f"must be {low:,}..{high:,}, got {value}")
         return value
     return check
+
+
+def comma_list(item: Callable[[str], T]) -> Callable[[str], list[T]]:
+    """An argparse type: a comma-separated list of at least one value, each
+    checked by the argparse type ``item`` (``--sizes 10,30``). An empty list
+    (``--sizes ""``) or an empty item (``5,,10``) is refused, not skipped:
+    taking ``""`` as "none given" ran the whole default list."""
+
+    def check(text: str) -> list[T]:
+        parts = [part.strip() for part in text.split(",")]
+        if not text.strip():
+            raise argparse.ArgumentTypeError("empty list (is the variable that should "
+                                             "hold it set?)")
+        if "" in parts:
+            raise argparse.ArgumentTypeError(f"an empty item in {text!r}")
+        return [item(part) for part in parts]
+    return check
+
+
+def one_of(names: Iterable[str]) -> Callable[[str], str]:
+    """An argparse type: one of ``names`` (an item of :func:`comma_list`,
+    where argparse's ``choices`` cannot check)."""
+    known = tuple(names)
+
+    def check(text: str) -> str:
+        if text not in known:
+            raise argparse.ArgumentTypeError(f"unknown {text!r} (known: {', '.join(known)})")
+        return text
+    return check
+
+
+def finite(text: str) -> float:
+    """Any finite number (``nan``, ``inf`` and ``1e400`` refused)."""
+    return _number(text)
 
 
 def port_name(text: str) -> str:

@@ -22,7 +22,7 @@ from pathlib import Path
 from types import FrameType
 from typing import Any, TextIO
 
-from hexbot.cli_args import output_file, rate, seconds, tcp_port
+from hexbot.cli_args import output_file, seconds, sim_speed, tcp_port
 from hexbot.errors import HexBotError, UsageError
 from hexbot.protocol.wire import BAUD_IR
 
@@ -50,7 +50,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
              "modem lines, parity and baud as a USB adapter takes them",
     )
     parser.add_argument(
-        "--speed", type=rate, default=1.0,
+        "--speed", type=sim_speed, default=1.0,
         help="times real time (default 1; 0 = as fast as possible)",
     )
     parser.add_argument("--seed", type=int, help="override the scenario's seed")

@@ -351,6 +351,15 @@ def _ppm(value: Any, line: int, key: str, fail: Any) -> float:
     return float(value)
 
 
+def fault_rate_problem(key: str, value: Any) -> str | None:
+    """What is wrong with ``value`` as the fault rate ``key`` (a probability
+    0..1), or None: the rule of a scenario's [faults] and of the rates
+    ``hexbot bench ir-noise --rates`` writes into its scenario."""
+    if isinstance(value, bool) or not isinstance(value, int | float) or not 0 <= value <= 1:
+        return f"{key} must be a probability 0..1, not {value!r}"
+    return None
+
+
 def _faults(
     raw: Any, lines: _Lines, table: str, index: int, fail: Any, allowed: set[str]
 ) -> Faults:
@@ -361,10 +370,9 @@ def _faults(
     values = {}
     for key in _FAULT_KEYS:
         value = raw.get(key, 0.0)
-        if isinstance(value, bool) or not isinstance(value, int | float) or not 0 <= value <= 1:
-            raise fail(
-                lines.find(table, index, key), f"{key} must be a probability 0..1, not {value!r}"
-            )
+        problem = fault_rate_problem(key, value)
+        if problem:
+            raise fail(lines.find(table, index, key), problem)
         values[key] = float(value)
     return Faults(**values)
 

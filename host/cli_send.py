@@ -20,7 +20,7 @@ import argparse
 import json
 import sys
 
-from hexbot.cli_args import count
+from hexbot.cli_args import whole_in
 from hexbot.errors import FrameError, UsageError
 from hexbot.host.cli_common import session
 from hexbot.host.cli_progress import session_waits
@@ -48,7 +48,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--module", type=_module_id, action="append", metavar="ID",
                         help="select this module first (code 69) and expect its reply; "
                              "repeat for several; 0 = every module")
-    parser.add_argument("--expect", type=count, default=None, metavar="N",
+    parser.add_argument("--expect", type=reply_count, default=None, metavar="N",
                         help="replies to wait for without --module (default: what the "
                              "addressing implies; 1 before any Select)")
     parser.add_argument("--timeout", type=timeout_seconds, default=None, metavar="S",
@@ -62,6 +62,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                         help="send codes/arguments outside the table's ranges (tests the "
                              "firmware's own checks)")
     add_port_arguments(parser, debug=False)
+
+
+#: ``--expect N``: replies of N modules, one per module id (1..255, the DIP
+#: switches): more never come, and the wait for them grew with N (99999 ran
+#: for minutes).
+reply_count = whole_in(1, wire.MAX_MODULE_ID)
 
 
 def _module_id(text: str) -> int:

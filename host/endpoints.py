@@ -17,7 +17,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from urllib.parse import quote
 
-from hexbot.cli_args import port_name, rate, scenario_name, seconds
+from hexbot.cli_args import port_name, scenario_name, seconds, sim_speed
 from hexbot.errors import HexBotError, UsageError
 from hexbot.host.events import Listener
 from hexbot.host.host import DEBUG, IR, Host
@@ -50,7 +50,7 @@ def add_port_arguments(parser: argparse.ArgumentParser, *, debug: bool = True) -
     g.add_argument("--scenario", default=None, type=scenario_name,
                    help=f"simulator scenario when no --port is given (default {DEFAULT_SCENARIO})")
     g.add_argument("--seed", type=int, default=None, help="simulator seed")
-    g.add_argument("--sim-speed", type=rate, default=None, metavar="X",
+    g.add_argument("--sim-speed", type=sim_speed, default=None, metavar="X",
                    help="simulator speed, times real time (0 = virtual time, as fast as it "
                         "goes; default: 0 for send/run/plan, 1 for console/monitor)")
     g.add_argument("--framing", choices=[f.value for f in Framing], default="legacy",

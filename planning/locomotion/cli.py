@@ -12,7 +12,7 @@ import argparse
 import json
 import sys
 
-from hexbot.cli_args import count, image_file, whole_in
+from hexbot.cli_args import comma_list, count, image_file, one_of, whole_in
 from hexbot.errors import UsageError
 from hexbot.host.cli_progress import meter
 from hexbot.planning.locomotion import render
@@ -52,7 +52,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     bank = sub.add_parser("bank", help="run every scenario of the test bank for several n")
     bank.add_argument("--rulesets", default="salvador-pyramids,salvador",
                       help="comma-separated rule sets (default: salvador-pyramids,salvador)")
-    bank.add_argument("--n", default="5,10,20", help="comma-separated strip sizes (5,10,20)")
+    bank.add_argument("--n", type=strip_sizes, default="5,10,20",
+                      help="comma-separated strip sizes (5,10,20)")
     bank.add_argument("--rounds", type=count, default=3000, help="round limit per run (3000)")
     bank.add_argument("--directions", action="store_true",
                       help="also run the north, west and south versions of every map")
@@ -61,7 +62,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
                          "every broken invariant (replay one with: run RULESET random-SEED)")
     rnd.add_argument("ruleset", help="salvador, otero, ... or a file")
     rnd.add_argument("--seeds", default="0:100", help="seed range FIRST:END (0:100)")
-    rnd.add_argument("--n", default="5,12,20", help="comma-separated strip sizes (5,12,20)")
+    rnd.add_argument("--n", type=strip_sizes, default="5,12,20",
+                     help="comma-separated strip sizes (5,12,20)")
     rnd.add_argument("--rounds", type=count, default=2500, help="round limit per run (2500)")
     rnd.add_argument("--json", action="store_true", help="print one JSON object")
     tables = sub.add_parser("tables", help="our rounds next to Tables 1-5 of Salvador's thesis")
@@ -123,16 +125,8 @@ def run_status(status: str, *, has_goal: bool) -> int:
     return 1
 
 
-def _int_list(text: str, what: str) -> list[int]:
-    try:
-        values = [int(v) for v in text.split(",") if v.strip()]
-    except ValueError:
-        raise UsageError(f"{what}: expected comma-separated integers, not {text!r}") from None
-    if not values or min(values) < 1:
-        raise UsageError(f"{what}: give at least one positive integer")
-    if max(values) > MAX_MODULES:
-        raise UsageError(f"{what}: at most {MAX_MODULES:,}, got {max(values)}")
-    return values
+#: ``--n`` of ``bank`` and ``random``: comma-separated strip sizes.
+strip_sizes = comma_list(strip_size)
 
 
 def _bank(args: argparse.Namespace) -> int:
@@ -143,7 +137,7 @@ def _bank(args: argparse.Namespace) -> int:
         raise UsageError(f"--rulesets: give at least one rule set, not {args.rulesets!r}")
     for r in rulesets:
         load_ruleset(r)  # fail early on a misspelt name
-    rows = bank.run_bank(rulesets, _int_list(args.n, "--n"), args.rounds, args.directions)
+    rows = bank.run_bank(rulesets, args.n, args.rounds, args.directions)
     if args.json:
         print(json.dumps([r.to_dict() for r in rows]))
     else:
@@ -163,8 +157,8 @@ def map_seed(text: str) -> int:
     """argparse type of a random map's seed: a whole number 0 or more (the
     ends of ``random --seeds``, the sweep kind's ``seed``). A map is named
     ``random-SEED``, and ``random--1`` names no map a replay can load."""
-    if not text.strip().isdecimal():
-        raise argparse.ArgumentTypeError(f"a map seed is a whole number 0 or more, "
+    if not text.strip().isdecimal() or int(text) > sys.maxsize:
+        raise argparse.ArgumentTypeError(f"a map seed is a whole number 0..{sys.maxsize}, "
                                          f"got {text!r}")
     return int(text)
 
@@ -187,7 +181,7 @@ def _random(args: argparse.Namespace) -> int:
 
     seeds = _seed_range(args.seeds)
     rs = load_ruleset(args.ruleset)
-    sizes = _int_list(args.n, "--n")
+    sizes = args.n
     report, done = randommaps.SweepReport(), 0
     # One seed at a time: a bar on the terminal, and Ctrl-C keeps what finished.
     with meter(f"random maps, {rs.name}", len(seeds)) as bar:
@@ -222,10 +216,11 @@ def _random(args: argparse.Namespace) -> int:
 def _tables(args: argparse.Namespace) -> int:
     from hexbot.planning.locomotion import bank
 
-    keys = args.only.split(",") if args.only else list(bank.THESIS)
-    unknown = [k for k in keys if k not in bank.THESIS]
-    if unknown:
-        raise UsageError(f"--only: unknown table {unknown[0]!r} (table1 ... table5)")
+    try:
+        keys = (list(bank.THESIS) if args.only is None
+                else comma_list(one_of(bank.THESIS))(args.only))
+    except argparse.ArgumentTypeError as exc:
+        raise UsageError(f"--only: {exc}") from None
     tabs = [bank.thesis_table(k) for k in keys]
     if args.json:
         print(json.dumps(tabs))

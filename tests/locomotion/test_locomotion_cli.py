@@ -145,9 +145,9 @@ def test_a_binary_map_or_rule_file_is_not_text(cli_status, capsys, tmp_path):
     (["random", "salvador", "--seeds", "\u00b2:3"], "--seeds: expected FIRST:END"),
     (["run", "salvador-free", "flat", "--n", "100000000"], "--n: must be 1..100,000"),
     (["run", "salvador", "maze", "--n", "100001"], "--n: must be 1..100,000"),
-    (["bank", "--n", "5,100001"], "--n: at most 100,000"),
-    (["bank", "--n", "0"], "--n: give at least one positive integer"),
-    (["random", "salvador", "--n", "5,x"], "--n: expected comma-separated integers"),
+    (["bank", "--n", "5,100001"], "argument --n: must be 1..100,000, got 100001"),
+    (["bank", "--n", "0"], "argument --n: must be 1..100,000, got 0"),
+    (["random", "salvador", "--n", "5,x"], "argument --n: not a whole number: 'x'"),
 ])
 def test_usage_errors_exit_2(cli_status, capsys, argv, words):
     code, err = cli_status("locomotion", *argv)

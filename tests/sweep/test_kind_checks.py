@@ -43,7 +43,7 @@ BLOBS = PLAN.replace("seed = 1", "modules = 10")
                  "compact = 0.5", id="compact-nan"),
     # `hexbot locomotion random --seeds`'s check: -1 ran, its replay hint named random--1
     pytest.param(LOCOMOTION.replace("seed = 1", "n = 5"), "seed = [2, -1]",
-                 "seed = -1: a map seed is a whole number 0 or more, got '-1'",
+                 "seed = -1: a map seed is a whole number 0..9223372036854775807, got '-1'",
                  "seed = [2, 0]", id="seed-neg"),
 ])
 def test_check_refuses_a_value_the_command_refuses(write_spec, tmp_path, capsys, head, line,
