@@ -6,14 +6,13 @@ from __future__ import annotations
 import importlib
 import os
 import signal
-import subprocess
 import sys
-import time
 from pathlib import Path
 
 import pytest
 
 from hexbot import cli
+from tests.process_signals import signal_when
 
 HEXBOT = Path(sys.executable).with_name("hexbot")
 
@@ -28,28 +27,6 @@ def test_ctrl_c_while_a_command_is_imported_is_one_line(monkeypatch, capsys):
     assert capsys.readouterr().err == "hexbot plan: interrupted (Ctrl-C)\n"
 
 
-def _signal_when(argv: list[str], ready, sig: int, env=None) -> tuple[int, str]:
-    """Run ``hexbot argv`` in its own process group; send ``sig`` to the group
-    once ``ready()`` holds; (exit status, stderr)."""
-    proc = subprocess.Popen([str(HEXBOT), *argv], stdout=subprocess.DEVNULL,
-                            stderr=subprocess.PIPE, text=True, start_new_session=True,
-                            env=env, preexec_fn=lambda: signal.signal(signal.SIGINT,
-                                                                      signal.SIG_DFL))
-    try:
-        deadline = time.monotonic() + 120
-        while not ready():
-            assert proc.poll() is None, proc.stderr.read()
-            assert time.monotonic() < deadline
-            time.sleep(0.02)
-        os.killpg(proc.pid, sig)
-        err = proc.communicate(timeout=120)[1]
-    finally:
-        if proc.poll() is None:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
-    return proc.returncode, err
-
-
 @pytest.mark.parametrize(("sig", "status", "said"), [
     (signal.SIGINT, 130, "hexbot traverse: interrupted (Ctrl-C)"),
     (signal.SIGTERM, 143, "hexbot traverse: terminated (SIGTERM)"),
@@ -59,7 +36,8 @@ def test_a_signal_mid_execution_removes_the_temporary_scenario(tmp_path, sig, st
     # killed the process at once and left the folder behind
     env = {**os.environ, "TMPDIR": str(tmp_path)}
     made = lambda: any(tmp_path.glob("hexbot-traverse-*/*.toml"))  # noqa: E731
-    code, err = _signal_when(["traverse", "hil-basic-2", "--execute"], made, sig, env)
+    code, err = signal_when([str(HEXBOT), "traverse", "hil-basic-2", "--execute"],
+                            lambda proc: made(), env=env, sig=sig)
     assert code == status, err
     assert "Traceback" not in err
     assert list(tmp_path.iterdir()) == []

@@ -16,6 +16,7 @@ from hexbot.errors import HexBotError
 from hexbot.sweep.engine import run_sweep
 from hexbot.sweep.results import ResultStore, part_files, read_table, table_meta
 from hexbot.sweep.spec import load_spec
+from tests.process_signals import signal_when
 
 HEXBOT = Path(sys.executable).with_name("hexbot")
 
@@ -59,30 +60,7 @@ def test_an_interrupt_keeps_the_finished_rows_and_resume_runs_only_the_rest(
     assert len(part_files(out)) == 1  # closing merged the parts
 
 
-def ctrl_c_when(argv: list[str], ready, pause: float = 0.0,
-                env: dict[str, str] | None = None) -> tuple[int, str]:
-    """Run ``argv`` in a group of its own, send the group SIGINT (a terminal's
-    Ctrl-C reaches every process of it) once ``ready(proc)``, plus ``pause``
-    seconds; (exit status, stderr)."""
-    # preexec: a suite started in the background (`make test &`) passes Ctrl-C
-    # on as ignored; the command gets the default, as from a terminal
-    proc = subprocess.Popen(argv, stderr=subprocess.PIPE, text=True, start_new_session=True,
-                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
-                            env=env)
-    try:
-        deadline = time.monotonic() + 120
-        while not ready(proc):
-            assert proc.poll() is None, proc.stderr.read()
-            assert time.monotonic() < deadline
-            time.sleep(0.01)
-        time.sleep(pause)
-        os.killpg(proc.pid, signal.SIGINT)
-        err = proc.communicate(timeout=120)[1]
-    finally:
-        if proc.poll() is None:
-            os.killpg(proc.pid, signal.SIGKILL)
-            proc.wait()
-    return proc.returncode, err
+ctrl_c_when = signal_when  # SIGINT, as from a terminal
 
 
 def test_ctrl_c_on_the_command_exits_130_and_resume_completes(write_spec, tmp_path):
