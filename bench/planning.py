@@ -56,6 +56,7 @@ from collections.abc import Callable
 from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
+from hexbot.bench.quiet_child import quiet_on_ctrl_c
 from hexbot.cli_args import comma_list, count, whole_in
 from hexbot.errors import UsageError
 from hexbot.planning.bounds import plan_bounds
@@ -446,7 +447,8 @@ def run_families(args: argparse.Namespace) -> int:
             for fixed in fixed_options]
     rows = []
     context = multiprocessing.get_context("spawn")
-    with ProcessPoolExecutor(1, mp_context=context, max_tasks_per_child=1) as pool:
+    with ProcessPoolExecutor(1, mp_context=context, max_tasks_per_child=1,
+                             initializer=quiet_on_ctrl_c) as pool:
         for job, future in [(job, pool.submit(plan_pair, *job)) for job in jobs]:
             row = future.result()
             rows.append(row)

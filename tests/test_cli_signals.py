@@ -3,6 +3,7 @@ its cleanup done: no traceback, no temporary folder left behind."""
 
 from __future__ import annotations
 
+import contextlib
 import importlib
 import os
 import signal
@@ -43,3 +44,27 @@ def test_a_signal_mid_execution_removes_the_temporary_scenario(tmp_path, sig, st
     assert list(tmp_path.iterdir()) == []
     if sig == signal.SIGTERM:  # traverse words a Ctrl-C itself
         assert err.rstrip().endswith(said), err
+
+
+def test_ctrl_c_in_a_planning_benchmark_leaves_its_worker_quietly(tmp_path):
+    # the pair is planned in a spawned worker, which got the Ctrl-C too and
+    # printed its KeyboardInterrupt traceback (from a scipy import)
+    import psutil
+
+    argv = [str(HEXBOT), "bench", "planning", "--families", "blob", "--sizes", "1000",
+            "--seeds", "1", "--fixed", "no"]
+    def importing(proc) -> bool:
+        # the worker past its start (about 0.05 s of CPU) and into the
+        # imports of the pair's planner (numpy, scipy: about half a second):
+        # counted in CPU time, which a loaded machine does not stretch
+        for child in psutil.Process(proc.pid).children():  # and the resource tracker
+            with contextlib.suppress(psutil.Error):
+                times = child.cpu_times()
+                if times.user + times.system >= 0.15:
+                    return True
+        return False
+
+    code, err = signal_when(argv, importing)
+    assert code == 130, err
+    assert "Traceback" not in err and "KeyboardInterrupt" not in err, err
+    assert err.endswith("hexbot bench: interrupted (Ctrl-C)\n"), err
