@@ -10,7 +10,7 @@ from hexbot.bench.cli import BENCHMARKS
 from hexbot.cli import main
 
 BENCH = Path(__file__).resolve().parent.parent / "bench"
-HELPERS = {"__init__", "cli", "raw"}
+HELPERS = {"__init__", "cli", "quiet_child", "raw"}
 
 
 def test_every_benchmark_module_is_registered_and_runnable():
