@@ -57,7 +57,7 @@ from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 from hexbot.bench.quiet_child import quiet_on_ctrl_c
-from hexbot.cli_args import comma_list, count, whole_in
+from hexbot.cli_args import comma_list, count, one_of, whole_in
 from hexbot.errors import UsageError
 from hexbot.planning.bounds import plan_bounds
 from hexbot.planning.budget import DEFAULT_BUDGET
@@ -254,21 +254,12 @@ def bench_thesis() -> list[dict]:
     return out
 
 
-def _families(text: str) -> list[str]:
-    names = [f for f in text.split(",") if f]
-    unknown = [f for f in names if f not in FAMILIES]
-    if unknown or not names:
-        raise argparse.ArgumentTypeError(
-            f"unknown family {','.join(unknown) or text!r} (known: {', '.join(FAMILIES)})")
-    return names
-
-
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--sizes", default=None,
                         help="module counts (families: default 10,30,100,300,1000; --cases: "
                              "parallelogram sizes among " + ",".join(map(str, PARALLELOGRAMS))
                              + ")")
-    parser.add_argument("--families", type=_families, default=list(FAMILIES),
+    parser.add_argument("--families", type=family_list, default=list(FAMILIES),
                         help=f"families to plan, comma-separated (default {','.join(FAMILIES)})")
     parser.add_argument("--fixed", choices=("both", "yes", "no"), default="both",
                         help="families: with the module at (0, 0) fixed to the base, without, "
@@ -354,6 +345,8 @@ SEEDS = {10: 10, 30: 10, 100: 6, 300: 4, 1000: 3, 10000: 1}
 DEFAULT_SIZES = "10,30,100,300,1000"
 #: the per-family table's families (``--families``)
 FAMILIES = ("blob", "scramble", "holes")
+#: ``--families``: some of FAMILIES, comma-separated
+family_list = comma_list(one_of(FAMILIES, "family"))
 
 
 def make_pair(family: str, n: int, seed: int):

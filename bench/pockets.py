@@ -23,6 +23,7 @@ import json
 import statistics
 
 from hexbot.bench.planning import make_pair
+from hexbot.cli_args import comma_list, count, whole_in
 
 
 def closures(cells: frozenset, targets: set) -> list[frozenset]:
@@ -55,24 +56,18 @@ def measure(family: str, n: int, seed: int) -> dict:
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    from hexbot.bench.planning import _families
+    from hexbot.bench.planning import MAX_MODULES, family_list
 
-    parser.add_argument("--families", type=_families, default="holes",
+    parser.add_argument("--families", type=family_list, default="holes",
                         help="comma-separated: holes, blob, scramble")
-    parser.add_argument("--sizes", default="100,300,1000", help="module counts")
-    parser.add_argument("--seeds", type=int, default=3, help="pairs per family and size")
+    parser.add_argument("--sizes", type=comma_list(whole_in(7, MAX_MODULES)),
+                        default="100,300,1000", help="module counts, at least 7")
+    parser.add_argument("--seeds", type=count, default=3, help="pairs per family and size")
     parser.add_argument("--json", action="store_true", help="JSON lines instead of a table")
 
 
 def run(args: argparse.Namespace) -> int:
-    families = args.families
-    try:
-        sizes = [int(s) for s in args.sizes.split(",") if s]
-    except ValueError:
-        raise SystemExit(
-            f"hexbot bench pockets: --sizes must be numbers, got {args.sizes!r}") from None
-    if args.seeds < 1 or not sizes or min(sizes) < 7:
-        raise SystemExit("hexbot bench pockets: --seeds must be positive and sizes at least 7")
+    families, sizes = args.families, args.sizes
     table = [measure(f, n, s) for f in families for n in sizes for s in range(args.seeds)]
     if args.json:
         for r in table:

@@ -39,7 +39,7 @@ from pathlib import Path
 
 from hexbot import cli_args
 from hexbot.bench.raw import avr_program, raw_simavr_times
-from hexbot.errors import HexBotError, UsageError
+from hexbot.errors import HexBotError
 from hexbot.hil_sim.scenario_gen import generate
 from hexbot.hil_sim.simulator import Simulator
 from hexbot.protocol.frames import encode_pc, make, select
@@ -50,7 +50,7 @@ BUSY_CYCLES = 100_000  # per MCU, for the CPU-bound case
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object")
-    parser.add_argument("--sizes", default="7,50,200,255",
+    parser.add_argument("--sizes", type=cli_args.comma_list(cli_args.count), default="7,50,200,255",
                         help="cluster sizes, comma-separated (default 7,50,200,255)")
     parser.add_argument(
         "--seconds", type=cli_args.seconds, default=10.0,
@@ -201,11 +201,7 @@ def _firmware_cost(case: dict) -> str:
 
 
 def run(args: argparse.Namespace) -> int:
-    try:
-        sizes = [int(s) for s in args.sizes.split(",")]
-    except ValueError:
-        raise UsageError(
-            f"--sizes takes numbers separated by commas, not {args.sizes!r}") from None
+    sizes = args.sizes
     if args.firmware and not (Path(args.firmware) / "comm.elf").is_file():
         raise HexBotError(f"--firmware {args.firmware}: no comm.elf there")
     result = measure(sizes, args.seconds, args.repeat, args.threads, args.ir, args.firmware)

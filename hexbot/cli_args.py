@@ -99,14 +99,17 @@ def comma_list(item: Callable[[str], T]) -> Callable[[str], list[T]]:
     return check
 
 
-def one_of(names: Iterable[str]) -> Callable[[str], str]:
+def one_of(names: Iterable[str], what: str = "") -> Callable[[str], str]:
     """An argparse type: one of ``names`` (an item of :func:`comma_list`,
-    where argparse's ``choices`` cannot check)."""
+    where argparse's ``choices`` cannot check); ``what`` names the kind in the
+    message (``unknown family 'rings' (known: ...)``)."""
     known = tuple(names)
+    kind = f"{what} " if what else ""
 
     def check(text: str) -> str:
         if text not in known:
-            raise argparse.ArgumentTypeError(f"unknown {text!r} (known: {', '.join(known)})")
+            raise argparse.ArgumentTypeError(
+                f"unknown {kind}{text!r} (known: {', '.join(known)})")
         return text
     return check
 
