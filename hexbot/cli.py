@@ -13,6 +13,7 @@ import importlib
 import os
 import signal
 import sys
+import threading
 from types import ModuleType
 
 from hexbot import __version__
@@ -115,7 +116,7 @@ class _terminated_raises:
     ``traverse --execute`` and ``flash --all`` stayed behind."""
 
     def __enter__(self) -> None:
-        self._installed = _in_main_thread()
+        self._installed = threading.current_thread() is threading.main_thread()
         if self._installed:
             # None: a handler not set from Python; the default is what it had
             self._previous = signal.signal(signal.SIGTERM, self._raise) or signal.SIG_DFL
@@ -127,12 +128,6 @@ class _terminated_raises:
     @staticmethod
     def _raise(signum: int, frame: object) -> None:
         raise Terminated
-
-
-def _in_main_thread() -> bool:
-    import threading
-
-    return threading.current_thread() is threading.main_thread()
 
 
 #: The status of a command whose output pipe closed before it finished (128 + SIGPIPE,
